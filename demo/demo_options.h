@@ -1,0 +1,34 @@
+#pragma once
+// Command-line options shared by lidr-demo (and later lidr-bench): scene choice and renderer settings.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "lidr/context.h"
+#include "lidr/lidr_renderer.h"
+#include "lidr/scene.h"
+
+namespace lidr::demo {
+
+struct SceneChoice {
+    std::string sceneFile;  // empty: the built-in default room
+    int width = 0, height = 0;  // 0: the scene's
+    double time = -1.0;         // < 0: the scene's
+    unsigned seed = 1;
+    void addOptions(CLI::App& app);
+    Scene load() const;  // throws lidr::Error
+};
+
+struct RendererChoice {
+    std::string scheme = "bitshift";
+    int budget = 4;
+    int indexBits = 8;
+    std::string volumeTest = "backface";
+    std::string context = "auto";
+    bool fixedLightTable = false;
+    void addOptions(CLI::App& app);
+    LidrOptions lidrOptions() const;  // throws lidr::Error on a bad name
+    ContextOptions contextOptions() const;
+};
+
+}  // namespace lidr::demo

@@ -1,0 +1,250 @@
+// lidr-demo: renders a scene with LIDR and writes what a person needs to judge it.
+//   --headless (default): render the default room (or --scene FILE) offscreen, compare with the brute-force
+//   reference, write images and a summary to --out DIR; --dump DIR adds the raw artefacts.
+//   --window: an interactive GLFW window (needs a display) that animates the scene.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "demo_options.h"
+#include "lidr/artefacts.h"
+#include "lidr/error.h"
+#include "lidr/frame_evaluation.h"
+#include "lidr/reference_renderer.h"
+#include "lidr/visualize.h"
+
+#if LIDR_HAVE_GLFW
+#include <GLFW/glfw3.h>
+#endif
+
+using namespace lidr;
+
+namespace {
+
+struct MedianTimes {
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> samples;
+    void add(const std::vector<PassTime>& passes) {
+        double total = 0.0;
+        for (const PassTime& p : passes) {
+            if (!samples.count(p.pass)) order.push_back(p.pass);
+            samples[p.pass].push_back(p.milliseconds);
+            total += p.milliseconds;
+        }
+        if (!samples.count("frame")) order.push_back("frame");
+        samples["frame"].push_back(total);
+    }
+    static double median(std::vector<double> v) {
+        if (v.empty()) return 0.0;
+        std::sort(v.begin(), v.end());
+        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    }
+    nlohmann::json json() const {
+        nlohmann::json j = nlohmann::json::object();
+        for (const auto& name : order) j[name] = median(samples.at(name));
+        return j;
+    }
+};
+
+nlohmann::json errorJson(const ImageError& e) {
+    return {{"max_abs_error", e.maxAbsError},       {"rmse", e.rmse},
+            {"psnr_db", std::isinf(e.psnr) ? 999.0 : e.psnr}, {"differing_pixels", e.differingPixels},
+            {"pixels_over_1", e.pixelsOverThreshold}, {"compared_pixels", e.comparedPixels}};
+}
+
+std::string path(const std::string& dir, const std::string& file) {
+    return (std::filesystem::path(dir) / file).string();
+}
+
+int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice& rc, const std::string& outDir,
+                const std::string& dumpDir, int frames, bool withReference) {
+    const Scene scene = sceneChoice.load();
+    const LidrOptions options = rc.lidrOptions();
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
+
+    auto context = GlContext::create(rc.contextOptions());
+    const GlInfo& info = context->info();
+    std::cout << "GL: " << info.summary() << "\n";
+
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    LidrRenderer renderer(info, scene, options, scene.width, scene.height);
+    std::cout << "LIDR: " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+              << ", light table " << (renderer.lightTable().format() == LightTableFormat::Float ? "float" : "fixed16")
+              << "\n";
+
+    MedianTimes lidrTimes;
+    renderer.render(scene.camera, lights, shading);  // warm-up: shader compiles, first uploads
+    for (int i = 0; i < frames; ++i) lidrTimes.add(renderer.render(scene.camera, lights, shading).passes);
+    const FrameStats stats = renderer.lastFrame();
+    const ImageRGBA8 image = renderer.targets().readColor();
+    writePng(path(outDir, "lidr.png"), image);
+
+    nlohmann::json summary;
+    summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
+                     {"vendor", info.vendor}, {"glsl", info.glslVersion}};
+    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time}};
+    summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", options.packing.budget},
+                       {"index_bits", options.packing.indexBits}, {"targets", renderer.scheme().targetCount()},
+                       {"volume_test", volumeTestName(options.volumeTest)},
+                       {"index_memory_bytes", renderer.indexMemoryBytes()},
+                       {"light_table_bytes", renderer.lightTable().bytes()},
+                       {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
+    summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
+
+    FrameArtefacts artefacts;
+    artefacts.indexTargets = renderer.readIndexTargets();
+    artefacts.depth = renderer.targets().readDepth();
+    artefacts.lightCounts = renderer.readLightCounts();
+    artefacts.camera = cameraMatrices(scene.camera, scene.width, scene.height);
+    artefacts.lights = lights;
+    artefacts.drawOrder = LidrRenderer::drawOrder(lights);
+
+    if (withReference) {
+        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()));
+        MedianTimes refTimes;
+        reference.render(scene.camera, lights, shading);
+        for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading));
+        const ImageRGBA8 refImage = reference.targets().readColor();
+        writePng(path(outDir, "reference.png"), refImage);
+        writePng(path(outDir, "difference.png"), differenceImage(image, refImage));
+        summary["timing"]["reference_median_ms"] = refTimes.json();
+
+        const FrameEvaluation ev = evaluateFrame(renderer, scene.camera, lights, image, refImage);
+        writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
+        std::vector<int> truthCounts(ev.truth.surface.size());
+        for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
+        writePng(path(outDir, "overlap.png"),
+                 overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
+        writePng(path(outDir, "marked.png"),
+                 overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
+        summary["lights"] = {{"visible_lights", stats.drawnLights},
+                             {"max_overlap_touching", ev.maxTruthOverlap},
+                             {"max_marked_by_volume_test", ev.maxMarked},
+                             {"pixels_marked_over_budget", ev.pixelsOverBudget},
+                             {"dropped_light_pixels", ev.lists.droppedLightPixels},
+                             {"pixels_with_drops", ev.lists.pixelsWithDrops},
+                             {"max_dropped_per_pixel", ev.lists.maxDroppedPerPixel},
+                             {"invalid_slots", ev.lists.invalidSlots},
+                             {"mean_slots_used", double(ev.lists.slotsUsed) / double(ev.lists.decoded.size())},
+                             {"max_slots_used", ev.lists.maxSlotsUsed}};
+        summary["error"] = {{"whole_image", errorJson(ev.error)},
+                            {"pixels_within_budget", errorJson(ev.errorWithinBudget)}};
+    }
+    if (!dumpDir.empty()) writeFrameArtefacts(dumpDir, artefacts, renderer.scheme());
+
+    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
+    // A short human summary on stdout and in summary.txt.
+    std::ostringstream s;
+    s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
+      << " triangles, " << lights.size() << " lights\n";
+    s << "renderer   " << info.renderer << " (" << info.version << ")\n";
+    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest) << "\n";
+    s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
+    for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
+    s << "\n";
+    if (withReference) {
+        const auto& L = summary["lights"];
+        const auto& E = summary["error"];
+        s << "reference  brute force " << summary["timing"]["reference_median_ms"]["frame"].get<double>() << " ms\n";
+        s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
+          << " (marked " << L["max_marked_by_volume_test"] << "), pixels over budget " << L["pixels_marked_over_budget"]
+          << ", dropped light-pixels " << L["dropped_light_pixels"] << ", invalid slots " << L["invalid_slots"] << "\n";
+        s << "error      whole image: max " << E["whole_image"]["max_abs_error"] << ", RMSE "
+          << E["whole_image"]["rmse"].get<double>() << ", PSNR " << E["whole_image"]["psnr_db"].get<double>()
+          << " dB; within budget: max " << E["pixels_within_budget"]["max_abs_error"] << ", PSNR "
+          << E["pixels_within_budget"]["psnr_db"].get<double>() << " dB, pixels differing by >1: "
+          << E["pixels_within_budget"]["pixels_over_1"] << "\n";
+    }
+    s << "outputs    " << outDir << "/{lidr,reference,difference,index_lists,overlap,marked}.png, summary.json\n";
+    std::ofstream(path(outDir, "summary.txt")) << s.str();
+    std::cout << s.str();
+    return 0;
+}
+
+int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
+#if LIDR_HAVE_GLFW
+    Scene scene = sceneChoice.load();
+    ContextOptions co = rc.contextOptions();
+    co.backend = ContextBackend::Glfw;
+    co.visibleWindow = true;
+    co.windowWidth = scene.width;
+    co.windowHeight = scene.height;
+    co.windowTitle = "lidr-demo";
+    auto context = GlContext::create(co);
+    std::cout << "GL: " << context->info().summary() << "\n";
+    LidrRenderer renderer(context->info(), scene, rc.lidrOptions(), scene.width, scene.height);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
+    const double start = glfwGetTime();
+    double lastReport = start;
+    int framesSinceReport = 0;
+    while (!context->shouldClose()) {
+        const double now = glfwGetTime();
+        const FrameStats& st = renderer.render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer.targets().colorFramebuffer().id());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window, &fw, &fh);
+        glBlitFramebuffer(0, 0, scene.width, scene.height, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        context->swapBuffers();
+        context->pollEvents();
+        if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+        ++framesSinceReport;
+        if (now - lastReport > 1.0) {
+            std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn\n", framesSinceReport / (now - lastReport),
+                        st.frameMilliseconds(), st.timingMethod, st.drawnLights);
+            lastReport = now;
+            framesSinceReport = 0;
+        }
+    }
+    return 0;
+#else
+    (void)sceneChoice;
+    (void)rc;
+    throw UnsupportedError("lidr-demo was built without GLFW; --window is not available");
+#endif
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"lidr-demo: Light Indexed Deferred Rendering on a GL 2.1-class pipeline"};
+    demo::SceneChoice sceneChoice;
+    demo::RendererChoice rc;
+    sceneChoice.addOptions(app);
+    rc.addOptions(app);
+    bool headless = false, window = false, noReference = false;
+    std::string outDir = "out", dumpDir;
+    int frames = 5;
+    app.add_flag("--headless", headless, "Render offscreen and write images and a summary (the default)");
+    app.add_flag("--window", window, "Open an interactive window (needs a display)");
+    app.add_option("--out", outDir, "Folder for images and summary")->capture_default_str();
+    app.add_option("--dump", dumpDir, "Also write raw artefacts (index targets, depth, lights, camera) here");
+    app.add_option("--frames", frames, "Timed frames (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_flag("--no-reference", noReference, "Skip the brute-force reference and the error figures");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    try {
+        if (window && headless) throw Error("--window and --headless exclude each other");
+        if (window) return runWindow(sceneChoice, rc);
+        return runHeadless(sceneChoice, rc, outDir, dumpDir, frames, !noReference);
+    } catch (const std::exception& e) {
+        std::cerr << "lidr-demo: error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,39 @@
+#include "lidr/frame_evaluation.h"
+
+#include <algorithm>
+
+namespace lidr {
+
+FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera,
+                              const std::vector<PointLight>& lights, const ImageRGBA8& image,
+                              const ImageRGBA8& reference) {
+    FrameEvaluation e;
+    const RenderTargets& t = renderer.targets();
+    const CameraMatrices cam = cameraMatrices(camera, t.width(), t.height());
+    e.truth = computeCoverage(t.readDepth(), cam, lights);
+    e.maxTruthOverlap = e.truth.maxOverlap();
+    e.lists = checkIndexLists(e.truth, renderer.scheme(), renderer.readIndexTargets(),
+                              static_cast<uint32_t>(lights.size()));
+    const std::vector<uint8_t> counts = renderer.readLightCounts();
+    const size_t n = size_t(t.width()) * t.height();
+    e.marked.assign(n, 0);
+    for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
+    const int budget = renderer.scheme().config().budget;
+    e.withinBudget.assign(n, 0);
+    for (size_t p = 0; p < n; ++p) {
+        if (!e.truth.surface[p]) {
+            e.withinBudget[p] = 1;  // background: no lights, must match too
+            continue;
+        }
+        e.maxMarked = std::max(e.maxMarked, e.marked[p]);
+        if (e.marked[p] > budget)
+            ++e.pixelsOverBudget;
+        else
+            e.withinBudget[p] = 1;
+    }
+    e.error = compareImages(image, reference);
+    e.errorWithinBudget = compareImages(image, reference, 1, &e.withinBudget);
+    return e;
+}
+
+}  // namespace lidr

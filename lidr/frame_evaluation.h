@@ -1,0 +1,28 @@
+#pragma once
+// Accuracy of one LIDR frame: its image against the brute-force reference, and its index lists against the
+// CPU truth of which lights touch each pixel. Shared by lidr-demo, lidr-bench and the tests.
+#include <vector>
+
+#include "lidr/image_compare.h"
+#include "lidr/lidr_renderer.h"
+#include "lidr/light_coverage.h"
+
+namespace lidr {
+
+struct FrameEvaluation {
+    CoverageTruth truth;            // lights touching each surface pixel
+    ListCheck lists;                // decoded lists against the truth
+    std::vector<int> marked;        // lights the volume test marked per pixel (GPU stencil count), or truth
+    int maxTruthOverlap = 0;        // most lights touching one pixel's surface
+    int maxMarked = 0;              // most lights marking one pixel
+    long pixelsOverBudget = 0;      // surface pixels marked by more lights than the budget
+    std::vector<uint8_t> withinBudget;  // 1 where the pixel is marked by <= budget lights
+    ImageError error;               // whole image against the reference
+    ImageError errorWithinBudget;   // only pixels marked by <= budget lights
+};
+
+FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera,
+                              const std::vector<PointLight>& lights, const ImageRGBA8& image,
+                              const ImageRGBA8& reference);
+
+}  // namespace lidr

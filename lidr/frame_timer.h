@@ -1,0 +1,39 @@
+#pragma once
+// Per-pass timing. GPU timer queries (ARB_timer_query / EXT_timer_query) where the context has them,
+// otherwise CPU time around glFinish; method() says which, and every report carries it.
+#include <string>
+#include <vector>
+
+#include "lidr/context.h"
+#include "lidr/gl_resources.h"
+
+namespace lidr {
+
+struct PassTime {
+    std::string pass;
+    double milliseconds = 0.0;
+};
+
+class FrameTimer {
+public:
+    FrameTimer() = default;
+    explicit FrameTimer(const GlInfo& info, bool preferGpu = true);
+    void begin(const std::string& pass);
+    void end();
+    // Waits for the frame's results, returns them in pass order and starts a new frame.
+    std::vector<PassTime> collect();
+    const char* method() const { return gpu_ ? "gpu-timer-query" : "cpu-glfinish"; }
+    bool enabled() const { return enabled_; }
+    void setEnabled(bool on) { enabled_ = on; }
+
+private:
+    bool gpu_ = false, enabled_ = true, open_ = false;
+    std::vector<gl::Object> queries_;
+    std::vector<std::string> names_;
+    std::vector<double> cpuMs_;
+    double cpuStart_ = 0.0;
+};
+
+double nowMilliseconds();  // steady clock
+
+}  // namespace lidr

@@ -1,0 +1,39 @@
+#pragma once
+// The scene's geometry and material textures in GL buffers, drawn the same way by every pass and mode.
+#include <vector>
+
+#include "lidr/gl_resources.h"
+#include "lidr/scene.h"
+
+namespace lidr {
+
+enum class DrawFilter { Opaque, Transparent, All };
+
+class GpuScene {
+public:
+    GpuScene() = default;
+    // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
+    explicit GpuScene(const Scene& scene);
+    // Draws meshes passing `filter`, setting the shading.glsl material uniforms on `program` when
+    // `setMaterials` (a depth-only pass does not need them). The program must be in use.
+    void draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const;
+    // Transparent meshes sorted back to front for `eye` (by mesh centroid distance).
+    void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const;
+    bool hasTransparent() const;
+    size_t triangleCount() const { return triangles_; }
+
+private:
+    struct Batch {
+        gl::Buffer vertices, indices;
+        GLsizei indexCount = 0;
+        int material = 0;
+        glm::vec3 centroid{0.0f};
+    };
+    void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
+    std::vector<Batch> batches_;
+    std::vector<Material> materials_;
+    std::vector<gl::Texture> textures_;  // one per material; empty texture when none
+    size_t triangles_ = 0;
+};
+
+}  // namespace lidr

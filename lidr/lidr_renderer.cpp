@@ -1,0 +1,113 @@
+#include "lidr/lidr_renderer.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "lidr/error.h"
+
+namespace lidr {
+
+double FrameStats::frameMilliseconds() const {
+    double sum = 0.0;
+    for (const PassTime& p : passes) sum += p.milliseconds;
+    return sum;
+}
+
+namespace {
+std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+    auto scheme = createPackingScheme(o.packing, info);
+    if (scene.lights.size() > scheme->maxLights())
+        throw Error("scene has " + std::to_string(scene.lights.size()) + " lights but " +
+                    std::to_string(o.packing.indexBits) + "-bit indices hold at most " +
+                    std::to_string(scheme->maxLights()) + " (choose a wider index)");
+    return scheme;
+}
+}  // namespace
+
+LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height)
+    : options_(options),
+      scheme_(checkedScheme(info, scene, options)),
+      scene_(scene),
+      targets_(info, width, height),
+      indexTargets_(scheme_->targetCount(), width, height, targets_.depthStencil()),
+      lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
+      volumePass_(info, options.volumeTest),
+      forwardPass_(*scheme_, lightTable_),
+      timer_(info, options.preferGpuTimer) {
+    timer_.setEnabled(options.timing);
+}
+
+std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lights) {
+    std::vector<uint32_t> order(lights.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return lights[a].priority > lights[b].priority; });
+    for (uint32_t& i : order) ++i;  // 1-based light indices
+    return order;
+}
+
+const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                       const ShadingParameters& shading) {
+    if (lights.size() > scheme_->maxLights())
+        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string(scheme_->maxLights()) +
+                    " that " + std::to_string(options_.packing.indexBits) + "-bit indices hold");
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = static_cast<int>(lights.size());
+
+    timer_.begin("light-table");
+    lightTable_.update(lights);
+    std::vector<VolumeLight> volumes;
+    for (uint32_t index : drawOrder(lights)) {
+        const PointLight& l = lights[index - 1];
+        if (options_.cullLights && !sphereMayBeVisible(cam, l.position, l.radius)) continue;
+        volumes.push_back({index, glm::vec4(l.position, l.radius)});
+    }
+    stats_.drawnLights = static_cast<int>(volumes.size());
+    timer_.end();
+
+    timer_.begin("depth-prepass");
+    targets_.bindColor();
+    depthPrepass_.run(scene_, cam);
+    timer_.end();
+
+    timer_.begin("light-volumes");
+    volumePass_.begin(indexTargets_, cam);
+    scheme_->encode(volumePass_, volumes);
+    volumePass_.end();
+    stats_.volumeDrawCalls = volumePass_.drawCalls();
+    timer_.end();
+
+    timer_.begin("forward");
+    forwardPass_.run(targets_, indexTargets_, scene_, lightTable_, cam, shading);
+    timer_.end();
+
+    stats_.passes = timer_.collect();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("LidrRenderer::render");
+    return stats_;
+}
+
+std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
+    std::vector<ImageRGBA8> out;
+    indexTargets_.framebuffer().bind();
+    for (int i = 0; i < indexTargets_.count(); ++i) {
+        glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+        out.push_back(readPixelsRGBA8(indexTargets_.width(), indexTargets_.height()));
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
+}
+
+std::vector<uint8_t> LidrRenderer::readLightCounts() const {
+    const int bits = volumePass_.stencilCountBits();
+    if (bits == 0) return {};
+    std::vector<uint8_t> s = targets_.readStencil();
+    const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
+    for (uint8_t& v : s) v &= mask;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return s;
+}
+
+}  // namespace lidr

@@ -1,0 +1,77 @@
+#pragma once
+// Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
+// (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file;
+// this class owns the frame: targets, light ordering, culling, timing, readback.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lidr/depth_prepass.h"
+#include "lidr/forward_pass.h"
+#include "lidr/frame_timer.h"
+#include "lidr/gpu_scene.h"
+#include "lidr/light_table.h"
+#include "lidr/light_volume_pass.h"
+#include "lidr/packing_scheme.h"
+#include "lidr/render_targets.h"
+
+namespace lidr {
+
+struct LidrOptions {
+    PackingConfig packing;
+    VolumeTest volumeTest = VolumeTest::BackFace;
+    bool cullLights = true;           // skip lights whose volume is wholly outside the view frustum
+    bool forceFixedLightTable = false;  // test the no-float-texture light table path
+    bool timing = true;
+    bool preferGpuTimer = true;
+};
+
+struct FrameStats {
+    std::vector<PassTime> passes;  // in order; frame time is their sum
+    const char* timingMethod = "";
+    int sceneLights = 0;
+    int drawnLights = 0;  // lights whose volumes were drawn (after frustum culling)
+    long volumeDrawCalls = 0;
+    double frameMilliseconds() const;
+};
+
+class LidrRenderer {
+public:
+    // Checks everything before any drawing: FBO support, resolution, scheme x budget x width; throws
+    // UnsupportedError / lidr::Error with the reason.
+    LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height);
+
+    // Renders one frame. `lights` (light i has index i + 1) must fit the index width.
+    const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading);
+
+    const PackingScheme& scheme() const { return *scheme_; }
+    const LidrOptions& options() const { return options_; }
+    const RenderTargets& targets() const { return targets_; }
+    const IndexTargets& indexTargets() const { return indexTargets_; }
+    const LightTable& lightTable() const { return lightTable_; }
+    const FrameStats& lastFrame() const { return stats_; }
+    std::vector<ImageRGBA8> readIndexTargets() const;
+    // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
+    // stencil did not keep a count.
+    std::vector<uint8_t> readLightCounts() const;
+    size_t indexMemoryBytes() const { return indexTargets_.bytes(); }
+
+    // Lights in the order the volume pass draws them: priority high to low, then index low to high.
+    static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
+
+private:
+    LidrOptions options_;
+    std::unique_ptr<PackingScheme> scheme_;
+    GpuScene scene_;
+    RenderTargets targets_;
+    IndexTargets indexTargets_;
+    LightTable lightTable_;
+    DepthPrepass depthPrepass_;
+    LightVolumePass volumePass_;
+    ForwardPass forwardPass_;
+    FrameTimer timer_;
+    FrameStats stats_;
+};
+
+}  // namespace lidr

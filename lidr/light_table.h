@@ -1,0 +1,41 @@
+#pragma once
+// The light table the forward shaders read: light i (1-based; 0 is the null light) at texel
+// (i mod 256, i / 256) of 256-wide textures. Float textures where ARB_texture_float exists; otherwise a
+// documented fixed-point path (16-bit position and radius in two RGBA8 textures, colour in RGBA8).
+#include <vector>
+
+#include "lidr/context.h"
+#include "lidr/gl_resources.h"
+#include "lidr/scene.h"
+#include "lidr/shader_source.h"
+
+namespace lidr {
+
+enum class LightTableFormat { Float, Fixed16 };
+
+class LightTable {
+public:
+    static constexpr int kWidth = 256;
+    static constexpr int kUnitPosRadius = 4, kUnitColor = 5, kUnitPosRadiusLow = 6;
+
+    LightTable() = default;
+    // Room for `capacity` lights (plus the null light). Fixed16 is chosen when the context has no float
+    // textures or when `forceFixed16`.
+    LightTable(const GlInfo& info, int capacity, bool forceFixed16 = false);
+    void update(const std::vector<PointLight>& lights);  // throws if more lights than capacity
+    void bind(const gl::Program& program) const;          // textures to their units and the uniforms
+    LightTableFormat format() const { return format_; }
+    ShaderDefines defines() const;                         // LIDR_LIGHT_TABLE_FIXED16 when fixed
+    int rows() const { return rows_; }
+    int lightCount() const { return count_; }
+    size_t bytes() const;
+
+private:
+    LightTableFormat format_ = LightTableFormat::Float;
+    int capacity_ = 0, rows_ = 1, count_ = 0;
+    gl::Texture posRadius_, posRadiusLow_, color_;
+    glm::vec3 boundsMin_{0.0f}, boundsExtent_{1.0f};
+    float radiusScale_ = 1.0f, colorScale_ = 1.0f;
+};
+
+}  // namespace lidr

@@ -1,0 +1,53 @@
+#include "lidr/reference_renderer.h"
+
+#include "lidr/error.h"
+#include "lidr/gl_state.h"
+#include "lidr/shader_source.h"
+
+namespace lidr {
+
+ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
+                                     bool forceFixedLightTable)
+    : scene_(scene),
+      targets_(info, width, height),
+      lightTable_(info, lightCapacity, forceFixedLightTable),
+      timer_(info) {
+    ShaderDefines defines = lightTable_.defines();
+    defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
+    program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("reference_forward.frag", defines), geometryAttributes());
+}
+
+std::vector<PassTime> ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                                const ShadingParameters& shading) {
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    timer_.begin("light-table");
+    lightTable_.update(lights);
+    timer_.end();
+
+    timer_.begin("depth-prepass");
+    targets_.bindColor();
+    depthPrepass_.run(scene_, cam);
+    timer_.end();
+
+    timer_.begin("brute-force");
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;
+    applyRenderState(s);
+    program_.use();
+    setShadingUniforms(program_, cam, shading);
+    program_.set("uLightCount", float(lights.size()));
+    lightTable_.bind(program_);
+    scene_.draw(program_, DrawFilter::Opaque, true);
+    applyRenderState(RenderState{});
+    timer_.end();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("reference render");
+    return timer_.collect();
+}
+
+}  // namespace lidr

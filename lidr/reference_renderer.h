@@ -1,0 +1,33 @@
+#pragma once
+// The brute-force reference: every light evaluated at every pixel with lidr's one shading function, after
+// the same depth pre-pass. It is the accuracy reference for every other mode, and the "forward-brute"
+// baseline.
+#include "lidr/depth_prepass.h"
+#include "lidr/forward_pass.h"
+#include "lidr/frame_timer.h"
+#include "lidr/gpu_scene.h"
+#include "lidr/light_table.h"
+#include "lidr/render_targets.h"
+
+namespace lidr {
+
+class ReferenceRenderer {
+public:
+    // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
+    ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
+                      bool forceFixedLightTable = false);
+    std::vector<PassTime> render(const Camera& camera, const std::vector<PointLight>& lights,
+                                 const ShadingParameters& shading);
+    const RenderTargets& targets() const { return targets_; }
+    const char* timingMethod() const { return timer_.method(); }
+
+private:
+    GpuScene scene_;
+    RenderTargets targets_;
+    LightTable lightTable_;
+    DepthPrepass depthPrepass_;
+    gl::Program program_;
+    FrameTimer timer_;
+};
+
+}  // namespace lidr

@@ -1,0 +1,21 @@
+#version 120
+// Scene geometry for every pass that draws it (depth pre-pass, LIDR forward, reference, tiled...). The same
+// source and `invariant` keep the depth of the pre-pass and of later EQUAL-tested passes bit-identical.
+attribute vec3 aPosition;
+attribute vec3 aNormal;
+attribute vec2 aTexCoord;
+
+uniform mat4 uViewProj;
+
+varying vec3 vWorldPos;
+varying vec3 vNormal;
+varying vec2 vTexCoord;
+
+invariant gl_Position;
+
+void main() {
+    vWorldPos = aPosition;  // geometry is stored in world space
+    vNormal = aNormal;
+    vTexCoord = aTexCoord;
+    gl_Position = uViewProj * vec4(aPosition, 1.0);
+}

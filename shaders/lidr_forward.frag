@@ -1,0 +1,31 @@
+#version 120
+// LIDR forward pass: unpack this pixel's light indices and shade with those lights only.
+// "lidr_unpack.glsl" is replaced by the packing scheme's unpack file (unpack_<scheme>.glsl); it defines
+// LIDR_SLOTS, lidrUnpackBegin(uv) and lidrUnpackNext() (0.0 for an empty slot), and LIDR_NULL_ENDS_LIST
+// when the first empty slot means no more lights follow.
+#include "light_table.glsl"
+#include "shading.glsl"
+#include "lidr_unpack.glsl"
+
+uniform vec2 uInvViewportSize;
+
+void main() {
+    LidrSurface s = lidrSurface();
+    vec3 color = lidrAmbient(s);
+    lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
+    for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
+        float index = lidrUnpackNext();
+        if (index < 0.5) {
+#ifdef LIDR_NULL_ENDS_LIST
+            break;
+#else
+            continue;
+#endif
+        }
+        vec4 posRadius;
+        vec3 lightColor;
+        lidrFetchLight(index, posRadius, lightColor);
+        color += lidrShadeLight(s, posRadius, lightColor);
+    }
+    gl_FragColor = vec4(color, uMaterialOpacity);
+}

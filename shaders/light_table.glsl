@@ -1,0 +1,36 @@
+// Light table: light i's data sits in texel (i mod 256, floor(i / 256)) of 256-wide textures, looked up at
+// texel centres with NEAREST filtering (never at i/256, which is a texel edge). Index 0 is the null light.
+// Float path (ARB_texture_float): uLightPosRadius = (x, y, z, radius), uLightColor = (r, g, b, unused).
+// Fixed path (no float textures): 16-bit fixed point in two RGBA8 textures (high and low bytes), position
+// relative to the light bounds, radius relative to uLightRadiusScale; colour RGBA8 times uLightColorScale.
+uniform sampler2D uLightPosRadius;
+uniform sampler2D uLightColor;
+uniform float uLightTableRows;
+#ifdef LIDR_LIGHT_TABLE_FIXED16
+uniform sampler2D uLightPosRadiusLow;
+uniform vec3 uLightBoundsMin;
+uniform vec3 uLightBoundsExtent;
+uniform float uLightRadiusScale;
+uniform float uLightColorScale;
+#endif
+
+vec2 lidrLightTexCoord(float index) {
+    float row = floor(index * (1.0 / 256.0));
+    float column = index - row * 256.0;
+    return vec2((column + 0.5) * (1.0 / 256.0), (row + 0.5) / uLightTableRows);
+}
+
+void lidrFetchLight(float index, out vec4 posRadius, out vec3 color) {
+    vec2 uv = lidrLightTexCoord(index);
+#ifdef LIDR_LIGHT_TABLE_FIXED16
+    // Bytes come back as k/255; (high * 256 + low) / 65535 rebuilds the 16-bit fraction.
+    vec4 high = texture2D(uLightPosRadius, uv);
+    vec4 low = texture2D(uLightPosRadiusLow, uv);
+    vec4 unit = (high * (255.0 * 256.0) + low * 255.0) * (1.0 / 65535.0);
+    posRadius = vec4(uLightBoundsMin + unit.xyz * uLightBoundsExtent, unit.w * uLightRadiusScale);
+    color = texture2D(uLightColor, uv).rgb * uLightColorScale;
+#else
+    posRadius = texture2D(uLightPosRadius, uv);
+    color = texture2D(uLightColor, uv).rgb;
+#endif
+}

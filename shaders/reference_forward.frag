@@ -1,0 +1,21 @@
+#version 120
+// Brute-force reference: every light at every pixel, with the same shading function as every other mode.
+// GLSL 1.20-class compilers want a constant loop bound, so the loop runs to LIDR_MAX_LIGHTS and breaks.
+#include "light_table.glsl"
+#include "shading.glsl"
+
+uniform float uLightCount;
+
+void main() {
+    LidrSurface s = lidrSurface();
+    vec3 color = lidrAmbient(s);
+    for (int i = 1; i <= LIDR_MAX_LIGHTS; ++i) {
+        float index = float(i);
+        if (index > uLightCount) break;
+        vec4 posRadius;
+        vec3 lightColor;
+        lidrFetchLight(index, posRadius, lightColor);
+        color += lidrShadeLight(s, posRadius, lightColor);
+    }
+    gl_FragColor = vec4(color, uMaterialOpacity);
+}

@@ -1,0 +1,44 @@
+# End to end: lidr-demo --headless writes its images, summary and dump; bad input exits non-zero.
+file(REMOVE_RECURSE ${OUT})
+set(ENV{LIDR_CONTEXT} egl)
+execute_process(COMMAND ${DEMO} --headless --width 320 --height 240 --frames 1 --out ${OUT} --dump ${OUT}/dump
+                RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT r EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --headless failed (${r})")
+endif()
+foreach(f lidr.png reference.png difference.png index_lists.png overlap.png marked.png summary.json summary.txt
+          dump/index_target0.png dump/depth.pfm dump/lights.json dump/camera.json dump/packing.json dump/light_counts.png)
+  if(NOT EXISTS ${OUT}/${f})
+    message(FATAL_ERROR "lidr-demo did not write ${f}")
+  endif()
+endforeach()
+file(READ ${OUT}/summary.json summary)
+string(JSON lights GET "${summary}" scene lights)
+string(JSON invalid GET "${summary}" lights invalid_slots)
+string(JSON psnr GET "${summary}" error pixels_within_budget psnr_db)
+if(NOT lights EQUAL 255 OR NOT invalid EQUAL 0 OR psnr LESS 50)
+  message(FATAL_ERROR "summary out of bounds: lights ${lights}, invalid slots ${invalid}, PSNR within budget ${psnr}")
+endif()
+
+# Each bad input: a clear message and a non-zero exit, never a crash (a crash exits with a signal).
+set(bad_runs
+  "--scene|${OUT}/missing.json"
+  "--budget|3"
+  "--scheme|nonsense"
+  "--width|0"
+  "--width|100000"
+  "--volume-test|sideways"
+  "--context|carrier-pigeon")
+foreach(args IN LISTS bad_runs)
+  string(REPLACE "|" " " shown "${args}")
+  string(REPLACE "|" ";" argv "${args}")
+  execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/bad ${argv}
+                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(r EQUAL 0 OR NOT r MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "lidr-demo ${shown}: expected a clean non-zero exit, got '${r}'\n${out}${err}")
+  endif()
+  if(NOT err MATCHES "error")
+    message(FATAL_ERROR "lidr-demo ${shown}: no error message on stderr\n${err}")
+  endif()
+endforeach()
