@@ -1,5 +1,6 @@
 #include "lidr/bitshift_scheme.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lidr/error.h"
@@ -14,7 +15,7 @@ BitShiftScheme::BitShiftScheme(const PackingConfig& config, const GlInfo& info) 
     if (budget != 1 && budget != 2 && budget != 4 && budget != 8 && budget != 16)
         throw UnsupportedError("bitshift: budget must be 1, 2, 4, 8 or 16, got " + std::to_string(budget));
     // The widest k-bit group that still leaves `budget` slots in a byte; groups >= 1 bit.
-    int k = 8;
+    int k = std::min(8, bits);
     while (k > 1 && 8 / k < budget) k /= 2;
     if (8 / k < budget || (bits % k) != 0 || bits / k > 4)
         throw UnsupportedError("bitshift: budget " + std::to_string(budget) + " with " + std::to_string(bits) +

@@ -97,6 +97,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
     const GLint posLoc = program.uniform("uLightPosRadius");
     const GLint colorLoc = program.uniform("uIndexColor");
+    const GLint clampLoc = program.uniform("uClampToFar");
 
     // The volume test proper: back faces (cull front) at or behind the surface.
     RenderState inside;
@@ -150,8 +151,9 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         countBits_ = 7;
     }
 
-    // Without depth clamp, a back face beyond the far plane is clipped and would not mark the pixels in
-    // front of it: such lights skip the depth test (conservative: the whole footprint is marked).
+    // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
+    // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
+    // (conservative: the whole footprint is marked).
     const float outside = mesh_.outsideRadius;
     auto reachesFar = [&](const VolumeLight& l) {
         return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * outside >=
@@ -166,6 +168,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         const IndexColors c = colors(l.index);
         glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
         const int want = (!depthClamp_ && reachesFar(l)) ? 1 : 0;
+        glUniform1f(clampLoc, float(want));
         if (test_ == VolumeTest::ExactStencil) {
             applyRenderState(mark);
             drawVolume(l);

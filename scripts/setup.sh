@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
+#   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
+#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, demo, package)
+# Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+job="${1:-}"
+case "$job" in
+  demo|test) ;;
+  *) echo "usage: bash scripts/setup.sh demo|test" >&2; exit 2 ;;
+esac
+
+# Debian 12 packages only; nothing is downloaded at build time.
+packages=(
+  build-essential cmake pkg-config
+  libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
+  libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
+  libosmesa6-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  if [ "$(id -u)" != 0 ]; then
+    echo "setup: these Debian packages are missing and installing them needs root: ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build="${BUILD_DIR:-build}"
+jobs="${JOBS:-$(nproc)}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j "$jobs"
+
+case "$job" in
+  demo)
+    "$build/demo/lidr-demo" --headless --out "${OUT_DIR:-out}"
+    ;;
+  test)
+    ctest --test-dir "$build" --output-on-failure -j "$jobs"
+    ;;
+esac

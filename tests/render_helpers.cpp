@@ -1,0 +1,49 @@
+#include "render_helpers.h"
+
+#include "gl_test_context.h"
+#include "lidr/primitives.h"
+#include "lidr/reference_renderer.h"
+
+namespace lidr::test {
+
+Scene floorScene() {
+    Scene s;
+    s.name = "test-floor";
+    s.materials.push_back(Material{"floor", glm::vec3(0.8f), "", glm::vec3(0.3f), 24.0f, 1.0f});
+    s.materials.push_back(Material{"box", glm::vec3(0.7f, 0.5f, 0.3f), "", glm::vec3(0.2f), 16.0f, 1.0f});
+    addPlane(s, glm::vec3(0.0f), glm::vec2(24.0f), 0, 24);
+    addBox(s, glm::vec3(-2.0f, 0.0f, -2.0f), glm::vec3(1.0f, 2.5f, 1.0f), 1, 4);
+    addSphere(s, glm::vec3(4.0f, 1.5f, 2.0f), 1.5f, 1, 24);
+    s.camera.position = glm::vec3(0.0f, 14.0f, 16.0f);
+    s.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
+    s.camera.fovYDegrees = 55.0f;
+    s.camera.nearPlane = 0.5f;
+    s.camera.farPlane = 80.0f;
+    s.width = testWidth();
+    s.height = testHeight();
+    s.ambient = glm::vec3(0.05f);
+    return s;
+}
+
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options) {
+    return renderAndEvaluate(scene, options, testGl());
+}
+
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info) {
+    testContext();
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    RenderResult r;
+    LidrRenderer renderer(info, scene, options, scene.width, scene.height);
+    r.stats = renderer.render(scene.camera, lights, shading);
+    r.lidr = renderer.targets().readColor();
+    r.indexTargets = renderer.readIndexTargets();
+    ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(std::max<size_t>(lights.size(), 1)),
+                                options.forceFixedLightTable);
+    reference.render(scene.camera, lights, shading);
+    r.reference = reference.targets().readColor();
+    r.evaluation = evaluateFrame(renderer, scene.camera, lights, r.lidr, r.reference);
+    return r;
+}
+
+}  // namespace lidr::test

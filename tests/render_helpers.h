@@ -1,0 +1,29 @@
+#pragma once
+// Shared by the GL tests: small controlled scenes, and "render with LIDR and with the brute-force reference,
+// then evaluate" in one call.
+#include <vector>
+
+#include "lidr/context.h"
+#include "lidr/frame_evaluation.h"
+#include "lidr/lidr_renderer.h"
+#include "lidr/scene.h"
+
+namespace lidr::test {
+
+// A 24 x 24 m floor (finely tessellated) with a box and a sphere on it, seen from above at an angle; the
+// size is testWidth() x testHeight(). No lights: tests add their own.
+Scene floorScene();
+
+struct RenderResult {
+    ImageRGBA8 lidr, reference;
+    FrameEvaluation evaluation;
+    FrameStats stats;
+    std::vector<ImageRGBA8> indexTargets;
+};
+
+// Renders `scene` at scene.time with LIDR (`options`) and the reference; `info` may be a modified copy of
+// the test context's (to take a fallback path).
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options);
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info);
+
+}  // namespace lidr::test
