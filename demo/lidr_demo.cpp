@@ -114,7 +114,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()));
         MedianTimes refTimes;
         reference.render(scene.camera, lights, shading);
-        for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading));
+        for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
         const ImageRGBA8 refImage = reference.targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
         writePng(path(outDir, "difference.png"), differenceImage(image, refImage));

@@ -7,13 +7,9 @@
 #include "lidr/light_volume_pass.h"
 #include "lidr/packing_scheme.h"
 #include "lidr/render_targets.h"
+#include "lidr/renderer.h"
 
 namespace lidr {
-
-struct ShadingParameters {
-    glm::vec3 ambient{0.04f};
-    glm::vec3 background{0.0f};
-};
 
 class ForwardPass {
 public:

@@ -3,8 +3,15 @@
 #include <chrono>
 
 #include "lidr/error.h"
+#include "lidr/renderer.h"
 
 namespace lidr {
+
+double FrameStats::frameMilliseconds() const {
+    double sum = 0.0;
+    for (const PassTime& p : passes) sum += p.milliseconds;
+    return sum;
+}
 
 double nowMilliseconds() {
     using namespace std::chrono;

@@ -7,12 +7,6 @@
 
 namespace lidr {
 
-double FrameStats::frameMilliseconds() const {
-    double sum = 0.0;
-    for (const PassTime& p : passes) sum += p.milliseconds;
-    return sum;
-}
-
 namespace {
 std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
     auto scheme = createPackingScheme(o.packing, info);

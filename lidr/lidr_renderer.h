@@ -14,6 +14,7 @@
 #include "lidr/light_volume_pass.h"
 #include "lidr/packing_scheme.h"
 #include "lidr/render_targets.h"
+#include "lidr/renderer.h"
 
 namespace lidr {
 
@@ -26,36 +27,28 @@ struct LidrOptions {
     bool preferGpuTimer = true;
 };
 
-struct FrameStats {
-    std::vector<PassTime> passes;  // in order; frame time is their sum
-    const char* timingMethod = "";
-    int sceneLights = 0;
-    int drawnLights = 0;  // lights whose volumes were drawn (after frustum culling)
-    long volumeDrawCalls = 0;
-    double frameMilliseconds() const;
-};
-
-class LidrRenderer {
+class LidrRenderer final : public Renderer {
 public:
     // Checks everything before any drawing: FBO support, resolution, scheme x budget x width; throws
     // UnsupportedError / lidr::Error with the reason.
     LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height);
 
     // Renders one frame. `lights` (light i has index i + 1) must fit the index width.
+    std::string modeName() const override { return "lidr"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
-                             const ShadingParameters& shading);
+                             const ShadingParameters& shading) override;
 
     const PackingScheme& scheme() const { return *scheme_; }
     const LidrOptions& options() const { return options_; }
-    const RenderTargets& targets() const { return targets_; }
+    const RenderTargets& targets() const override { return targets_; }
     const IndexTargets& indexTargets() const { return indexTargets_; }
     const LightTable& lightTable() const { return lightTable_; }
-    const FrameStats& lastFrame() const { return stats_; }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;
     size_t indexMemoryBytes() const { return indexTargets_.bytes(); }
+    size_t lightDataBytes() const override { return indexTargets_.bytes(); }
 
     // Lights in the order the volume pass draws them: priority high to low, then index low to high.
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
@@ -71,7 +64,6 @@ private:
     LightVolumePass volumePass_;
     ForwardPass forwardPass_;
     FrameTimer timer_;
-    FrameStats stats_;
 };
 
 }  // namespace lidr

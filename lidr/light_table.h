@@ -28,6 +28,7 @@ public:
     ShaderDefines defines() const;                         // LIDR_LIGHT_TABLE_FIXED16 when fixed
     int rows() const { return rows_; }
     int lightCount() const { return count_; }
+    int capacity() const { return capacity_; }
     size_t bytes() const;
 
 private:

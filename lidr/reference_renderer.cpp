@@ -18,8 +18,14 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
                                    buildShaderSource("reference_forward.frag", defines), geometryAttributes());
 }
 
-std::vector<PassTime> ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
-                                                const ShadingParameters& shading) {
+const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                            const ShadingParameters& shading) {
+    if (static_cast<int>(lights.size()) > lightTable_.capacity())
+        throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
+                    std::to_string(lights.size()));
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = stats_.drawnLights = static_cast<int>(lights.size());
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     timer_.begin("light-table");
     lightTable_.update(lights);
@@ -47,7 +53,8 @@ std::vector<PassTime> ReferenceRenderer::render(const Camera& camera, const std:
     timer_.end();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
-    return timer_.collect();
+    stats_.passes = timer_.collect();
+    return stats_;
 }
 
 }  // namespace lidr

@@ -8,17 +8,19 @@
 #include "lidr/gpu_scene.h"
 #include "lidr/light_table.h"
 #include "lidr/render_targets.h"
+#include "lidr/renderer.h"
 
 namespace lidr {
 
-class ReferenceRenderer {
+class ReferenceRenderer final : public Renderer {
 public:
     // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
     ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
                       bool forceFixedLightTable = false);
-    std::vector<PassTime> render(const Camera& camera, const std::vector<PointLight>& lights,
-                                 const ShadingParameters& shading);
-    const RenderTargets& targets() const { return targets_; }
+    std::string modeName() const override { return "forward-brute"; }
+    const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading) override;
+    const RenderTargets& targets() const override { return targets_; }
     const char* timingMethod() const { return timer_.method(); }
 
 private:
