@@ -35,18 +35,31 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--scheme", scheme, "Packing scheme: bitshift");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
-    app.add_option("--volume-test", volumeTest, "Light volume test: backface (cheap) or exact (stencil)");
+    app.add_option("--volume-test", volumeTest,
+                   "Light volume test: auto (backface; frontface with MSAA), backface, exact (stencil), frontface");
+    app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
+    app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)");
+    app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
 }
 
-LidrOptions RendererChoice::lidrOptions() const {
+LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     LidrOptions o;
+    o.msaaSamples = msaa >= 0 ? msaa : scene.msaaSamples;
+    if (transparency == "on" || transparency == "scene")
+        o.transparency = transparency == "on" || scene.transparency;
+    else if (transparency == "off")
+        o.transparency = false;
+    else
+        throw Error("--transparency must be on, off or scene, got '" + transparency + "'");
     o.packing.scheme = scheme;
     o.packing.budget = budget;
     o.packing.indexBits = indexBits;
-    o.volumeTest = parseVolumeTest(volumeTest);
+    o.volumeTest = volumeTest == "auto" ? (o.msaaSamples > 0 ? VolumeTest::FrontFace : VolumeTest::BackFace)
+                                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
+    o.timingMethod = parseTimingMethod(timer);
     return o;
 }
 

@@ -23,11 +23,14 @@ struct RendererChoice {
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;
-    std::string volumeTest = "backface";
+    std::string volumeTest = "auto";  // backface, or frontface with MSAA
+    int msaa = -1;                     // < 0: the scene's
+    std::string transparency = "scene";
     std::string context = "auto";
     bool fixedLightTable = false;
+    std::string timer = "auto";
     void addOptions(CLI::App& app);
-    LidrOptions lidrOptions() const;  // throws lidr::Error on a bad name
+    LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
     ContextOptions contextOptions() const;
 };
 

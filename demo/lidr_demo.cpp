@@ -66,7 +66,7 @@ std::string path(const std::string& dir, const std::string& file) {
 int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice& rc, const std::string& outDir,
                 const std::string& dumpDir, int frames, bool withReference) {
     const Scene scene = sceneChoice.load();
-    const LidrOptions options = rc.lidrOptions();
+    const LidrOptions options = rc.lidrOptions(scene);
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
@@ -97,6 +97,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", options.packing.budget},
                        {"index_bits", options.packing.indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
+                       {"msaa_samples", options.msaaSamples},
+                       {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexMemoryBytes()},
                        {"light_table_bytes", renderer.lightTable().bytes()},
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
@@ -111,7 +113,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     artefacts.drawOrder = LidrRenderer::drawOrder(lights);
 
     if (withReference) {
-        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()));
+        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
+                                    options.forceFixedLightTable, options.msaaSamples, options.transparency);
         MedianTimes refTimes;
         reference.render(scene.camera, lights, shading);
         for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
@@ -149,7 +152,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
-    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest) << "\n";
+    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+      << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off") << "\n";
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
@@ -183,7 +187,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     co.windowTitle = "lidr-demo";
     auto context = GlContext::create(co);
     std::cout << "GL: " << context->info().summary() << "\n";
-    LidrRenderer renderer(context->info(), scene, rc.lidrOptions(), scene.width, scene.height);
+    LidrRenderer renderer(context->info(), scene, rc.lidrOptions(scene), scene.width, scene.height);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     const double start = glfwGetTime();

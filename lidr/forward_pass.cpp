@@ -22,17 +22,21 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table) {
         geometryAttributes());
 }
 
-void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
-                      const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading) const {
-    targets.bindColor();
-    applyRenderState(RenderState{});
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+RenderState transparentBlendState() {
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = GL_EQUAL;  // the pre-pass depth: one shaded fragment per pixel
+    s.depthFunc = GL_LEQUAL;
     s.depthWrite = false;
-    applyRenderState(s);
+    s.blend = true;
+    s.blendSrcRgb = GL_SRC_ALPHA;
+    s.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
+    s.blendSrcAlpha = GL_ZERO;  // keep the opaque alpha of 1
+    s.blendDstAlpha = GL_ONE;
+    return s;
+}
+
+void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
+                             const CameraMatrices& camera, const ShadingParameters& shading) const {
     program_.use();
     setShadingUniforms(program_, camera, shading);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
@@ -41,14 +45,44 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
         program_.set(("uIndexTex" + std::to_string(i)).c_str(), i);
     }
     table.bind(program_);
-    scene.draw(program_, DrawFilter::Opaque, true);
+}
+
+void ForwardPass::unbindInputs(const IndexTargets& indices) const {
     applyRenderState(RenderState{});
     for (int i = 0; i < indices.count(); ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
+}
+
+void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+                      const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
+                      bool afterPrepass) const {
+    targets.bindColor();
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LESS;  // after a pre-pass: one shaded fragment per pixel
+    s.depthWrite = !afterPrepass;
+    applyRenderState(s);
+    bindInputs(targets, indices, table, camera, shading);
+    scene.draw(program_, DrawFilter::Opaque, true);
+    unbindInputs(indices);
     checkGl("LIDR forward pass");
+}
+
+void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+                                 const LightTable& table, const CameraMatrices& camera,
+                                 const ShadingParameters& shading) const {
+    targets.bindColor();
+    applyRenderState(transparentBlendState());
+    bindInputs(targets, indices, table, camera, shading);
+    scene.drawTransparentSorted(program_, camera.eye);
+    unbindInputs(indices);
+    checkGl("LIDR transparent forward pass");
 }
 
 }  // namespace lidr

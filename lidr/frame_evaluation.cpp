@@ -19,16 +19,19 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.marked.assign(n, 0);
     for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
     const int budget = renderer.scheme().config().budget;
+    if (renderer.drawsTransparency())
+        e.frontFaceMarked = frontFaceCounts(t.readDepth(), cam, lights, renderer.volumeMeshOutsideRadius());
     e.withinBudget.assign(n, 0);
     for (size_t p = 0; p < n; ++p) {
         if (!e.truth.surface[p]) {
-            e.withinBudget[p] = 1;  // background: no lights, must match too
+            // Background: no opaque surface, but transparent layers in front of it read front-face lists.
+            e.withinBudget[p] = e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= budget;
             continue;
         }
         e.maxMarked = std::max(e.maxMarked, e.marked[p]);
         if (e.marked[p] > budget)
             ++e.pixelsOverBudget;
-        else
+        else if (e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= budget)
             e.withinBudget[p] = 1;
     }
     e.error = compareImages(image, reference);

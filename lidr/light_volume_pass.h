@@ -19,9 +19,11 @@ enum class VolumeTest {
     BackFace,      // back faces, depth GEQUAL: cheap; also marks surfaces in front of a light (wastes slots)
     ExactStencil,  // per light: front faces mark the pixels in front of the volume in stencil, then back
                    // faces GEQUAL where unmarked: exactly the surfaces inside the volume
+    FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
+                   // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
 };
 const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact"
+VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface"
 
 constexpr int kMaxIndexTargets = 4;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
@@ -80,6 +82,7 @@ public:
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
+    float meshOutsideRadius() const { return mesh_.outsideRadius; }
 
 private:
     void drawVolume(const VolumeLight& light) const;

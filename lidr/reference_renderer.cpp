@@ -7,11 +7,12 @@
 namespace lidr {
 
 ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
-                                     bool forceFixedLightTable)
+                                     bool forceFixedLightTable, int msaaSamples, bool transparency)
     : scene_(scene),
-      targets_(info, width, height),
+      targets_(info, width, height, msaaSamples),
       lightTable_(info, lightCapacity, forceFixedLightTable),
-      timer_(info) {
+      timer_(info),
+      drawTransparent_(transparency && scene_.hasTransparent()) {
     ShaderDefines defines = lightTable_.defines();
     defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
     program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
@@ -32,7 +33,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     timer_.end();
 
     timer_.begin("depth-prepass");
-    targets_.bindColor();
+    targets_.bindColor();  // the MSAA target when multisampled: the reference has no index pass to feed
     depthPrepass_.run(scene_, cam);
     timer_.end();
 
@@ -49,8 +50,17 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     program_.set("uLightCount", float(lights.size()));
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
+    if (drawTransparent_) {
+        applyRenderState(transparentBlendState());
+        scene_.drawTransparentSorted(program_, cam.eye);
+    }
     applyRenderState(RenderState{});
     timer_.end();
+    if (targets_.samples() > 0) {
+        timer_.begin("msaa-resolve");
+        targets_.resolve();
+        timer_.end();
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();
