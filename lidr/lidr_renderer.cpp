@@ -13,10 +13,10 @@ std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& sc
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
                     " volume test needs the depth pre-pass; only frontface may skip it");
-    checkSamples(info, o.msaaSamples);
     if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace)
         throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the frontface "
                     "volume test with MSAA");
+    checkSamples(info, o.msaaSamples);
     auto scheme = createPackingScheme(o.packing, info);
     if (scene.lights.size() > scheme->maxLights())
         throw Error("scene has " + std::to_string(scene.lights.size()) + " lights but " +

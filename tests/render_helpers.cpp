@@ -39,7 +39,7 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
     r.lidr = renderer.targets().readColor();
     r.indexTargets = renderer.readIndexTargets();
     ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(std::max<size_t>(lights.size(), 1)),
-                                options.forceFixedLightTable);
+                                options.forceFixedLightTable, options.msaaSamples, options.transparency);
     reference.render(scene.camera, lights, shading);
     r.reference = reference.targets().readColor();
     r.evaluation = evaluateFrame(renderer, scene.camera, lights, r.lidr, r.reference);
