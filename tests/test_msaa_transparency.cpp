@@ -173,7 +173,9 @@ TEST_CASE("the default room with MSAA and glass in front-face mode", "[msaa][tra
     d.height = testHeight();
     const Scene scene = makeDefaultScene(d);
     REQUIRE(std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.opacity < 1.0f; }));
-    const RenderResult r = renderWith(scene, VolumeTest::FrontFace, std::min(4, testGl().maxSamples));
+    const int samples = testGl().multisampleFbo ? std::min(4, testGl().maxSamples) : 0;
+    if (samples < 2) WARN("no MSAA on this context (" << testGl().summary() << "): glass only");
+    const RenderResult r = renderWith(scene, VolumeTest::FrontFace, samples >= 2 ? samples : 0);
     requireNeverBrighter(r);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);
     REQUIRE(r.evaluation.errorWithinBudget.psnr >= 50.0);
