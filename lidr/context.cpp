@@ -128,7 +128,10 @@ std::string GlInfo::summary() const {
 
 std::vector<ContextBackend> availableContextBackends() {
     std::vector<ContextBackend> b;
-    if (LIDR_HAVE_EGL) b.insert(b.end(), {ContextBackend::EglSurfaceless, ContextBackend::EglDevice});
+    if (LIDR_HAVE_EGL) {
+        b.push_back(ContextBackend::EglSurfaceless);
+        b.push_back(ContextBackend::EglDevice);
+    }
     if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
     if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
     return b;
