@@ -12,7 +12,8 @@ namespace lidr::demo {
 
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
-    int width = 0, height = 0;  // 0: the scene's
+    static constexpr int kSceneSize = -2147483647 - 1;  // not given: the scene's (0 or less is refused)
+    int width = kSceneSize, height = kSceneSize;
     double time = -1.0;         // < 0: the scene's
     unsigned seed = 1;
     void addOptions(CLI::App& app);

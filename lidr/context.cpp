@@ -47,7 +47,8 @@ std::unique_ptr<GlContext> GlContext::create(const ContextOptions& options) {
     }
     std::vector<ContextBackend> order;
     if (wanted == ContextBackend::Auto)
-        order = {ContextBackend::EglSurfaceless, ContextBackend::EglDevice};
+        order = LIDR_HAVE_EGL ? std::vector<ContextBackend>{ContextBackend::EglSurfaceless, ContextBackend::EglDevice}
+                              : availableContextBackends();
     else
         order = {wanted};
     std::string tried;
@@ -125,15 +126,38 @@ std::string GlInfo::summary() const {
     return s.str();
 }
 
+std::vector<ContextBackend> availableContextBackends() {
+    std::vector<ContextBackend> b;
+    if (LIDR_HAVE_EGL) {
+        b.push_back(ContextBackend::EglSurfaceless);
+        b.push_back(ContextBackend::EglDevice);
+    }
+    if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
+    if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
+    return b;
+}
+
+// This file is compiled into each library with that library's set of backends; the others say why not.
 namespace detail {
+[[maybe_unused]] static const char* const kOnlyOSMesa =
+    "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
+    "program linked to it); link lidr::lidr for egl, egl-device and glfw";
+#if !LIDR_HAVE_EGL
+std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyOSMesa); }
+std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyOSMesa); }
+#endif
 #if !LIDR_HAVE_GLFW
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&) {
-    throw UnsupportedError("lidr was built without GLFW (libglfw3-dev not found at configure time)");
+    throw UnsupportedError(LIDR_HAVE_EGL ? "lidr was built without GLFW (libglfw3-dev not found at configure time)"
+                                         : kOnlyOSMesa);
 }
 #endif
 #if !LIDR_HAVE_OSMESA
 std::unique_ptr<GlContext> createOSMesa() {
-    throw UnsupportedError("lidr was built without OSMesa (osmesa.pc not found; OSMesa is gone from Mesa 25.1 on)");
+    throw UnsupportedError(LIDR_OSMESA_FOUND
+        ? "lidr::lidr does not offer OSMesa, whose GL entry points would clash with glvnd's: link the program "
+          "against lidr::lidr_osmesa instead (see doc/contexts.md)"
+        : "lidr was built without OSMesa (osmesa.pc not found at configure time; OSMesa is gone from Mesa 25.1 on)");
 }
 #endif
 }  // namespace detail

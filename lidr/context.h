@@ -12,6 +12,7 @@ enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
+                                                     // (lidr_osmesa: osmesa)
     int windowWidth = 1024, windowHeight = 768;     // GLFW only
     bool visibleWindow = false;                      // GLFW only
     std::string windowTitle = "lidr";
@@ -58,6 +59,9 @@ protected:
 
 ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa"
 const char* contextBackendName(ContextBackend b);
+// The backends this library offers. lidr::lidr: egl, egl-device (and glfw where built); lidr::lidr_osmesa:
+// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md).
+std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
 std::unique_ptr<GlContext> createEglSurfaceless();
