@@ -1,0 +1,400 @@
+#include "bench_config.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "lidr/bench_scenes.h"
+#include "lidr/default_scene.h"
+#include "lidr/error.h"
+#include "lidr/lidr_renderer.h"
+#include "lidr/packing_scheme.h"
+#include "lidr/primitives.h"
+#include "lidr/reference_renderer.h"
+#include "lidr/scene_loader.h"
+
+// The render-mode factory (lidr/render_mode.h) builds every mode the library has. Until it exists, the
+// bench builds the two modes it can name itself.
+#if __has_include("lidr/render_mode.h")
+#include "lidr/render_mode.h"
+#define LIDR_BENCH_HAS_MODE_FACTORY 1
+#else
+#define LIDR_BENCH_HAS_MODE_FACTORY 0
+#endif
+
+namespace lidr::bench {
+
+namespace {
+
+bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+
+// Parses the whole string as a positive int, or returns -1.
+int positiveInt(const std::string& s) {
+    if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return -1;
+    const int v = std::stoi(s);
+    return v > 0 ? v : -1;
+}
+
+}  // namespace
+
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
+// ---- scenes ---------------------------------------------------------------------------------------------
+
+std::string sceneNameHelp() {
+    return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
+           "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), file:PATH or a path ending in "
+           ".json";
+}
+
+Scene loadBenchScene(const std::string& name, uint32_t seed) {
+    if (name == "room") {
+        DefaultSceneOptions o;
+        o.seed = seed;
+        return makeDefaultScene(o);
+    }
+    if (startsWith(name, "overlap-")) {
+        const int k = positiveInt(name.substr(8));
+        if (k < 1) throw Error("bad scene name '" + name + "': overlap-K needs a positive K (valid: " + sceneNameHelp() + ")");
+        return makeControlledOverlapScene(k);
+    }
+    if (startsWith(name, "many-")) {
+        const size_t dash = name.find('-', 5);
+        const int n = dash == std::string::npos ? -1 : positiveInt(name.substr(5, dash - 5));
+        const std::string view = dash == std::string::npos ? "" : name.substr(dash + 1);
+        if (n < 1 || (view != "top" && view != "fp"))
+            throw Error("bad scene name '" + name + "': use many-N-top or many-N-fp (valid: " + sceneNameHelp() + ")");
+        return makeManyLightScene(n, view == "top" ? ManyLightView::TopDown : ManyLightView::FirstPerson, 1024, 768,
+                                  seed);
+    }
+    std::string path;
+    if (startsWith(name, "file:"))
+        path = name.substr(5);
+    else if (name.size() > 5 && name.substr(name.size() - 5) == ".json")
+        path = name;
+    if (path.empty()) throw Error("unknown scene '" + name + "' (valid: " + sceneNameHelp() + ")");
+    if (!std::filesystem::exists(path)) throw Error("scene file '" + path + "' does not exist");
+    return loadSceneFile(path);
+}
+
+// ---- configurations -------------------------------------------------------------------------------------
+
+std::string ModeConfig::label() const {
+    if (mode == "lidr")
+        return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest;
+    if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
+    return mode;
+}
+
+std::string ModeConfig::key() const {
+    return label() + (msaa > 0 ? " msaa" + std::to_string(msaa) : "") + (transparency ? "" : " opaque");
+}
+
+ModeConfig referenceConfigFor(const ModeConfig& config) {
+    ModeConfig r;
+    r.mode = "forward-brute";
+    r.msaa = config.msaa;
+    r.transparency = config.transparency;
+    return r;
+}
+
+std::vector<std::string> availableModes() {
+#if LIDR_BENCH_HAS_MODE_FACTORY
+    return renderModeNames();
+#else
+    return {"lidr", "forward-brute"};
+#endif
+}
+
+namespace {
+
+LidrOptions lidrOptionsFor(const ModeConfig& c) {
+    LidrOptions o;
+    o.packing.scheme = c.scheme;
+    o.packing.budget = c.budget;
+    o.packing.indexBits = c.indexBits;
+    o.volumeTest = parseVolumeTest(c.volumeTest);
+    o.msaaSamples = c.msaa;
+    o.transparency = c.transparency;
+    return o;
+}
+
+}  // namespace
+
+std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo& info, const Scene& scene, int width,
+                                              int height) {
+    if (c.mode == "forward-brute")  // built here: the bench sets its loop bound to the scene's light count
+        return std::make_unique<ReferenceRenderer>(info, scene, width, height,
+                                                   std::max<int>(1, int(scene.lights.size())), false, c.msaa,
+                                                   c.transparency);
+    if (c.mode == "lidr") return std::make_unique<LidrRenderer>(info, scene, lidrOptionsFor(c), width, height);
+#if LIDR_BENCH_HAS_MODE_FACTORY
+    if (c.msaa > 0) throw UnsupportedError("mode " + c.mode + " has no MSAA");
+    RenderModeOptions o;
+    o.mode = c.mode;
+    o.tiled.depthBounds = c.tiledDepthBounds;
+    o.tiled.transparency = c.transparency;
+    return createRenderer(o, info, scene, width, height);
+#else
+    throw Error("unknown render mode '" + c.mode + "' (valid: " + joinNames(availableModes()) +
+                "; this build's library has no render-mode factory yet)");
+#endif
+}
+
+// ---- sweeps ---------------------------------------------------------------------------------------------
+
+std::pair<int, int> parseResolution(const std::string& text) {
+    if (text == "scene") return {0, 0};
+    const size_t x = text.find('x');
+    const int w = x == std::string::npos ? -1 : positiveInt(text.substr(0, x));
+    const int h = x == std::string::npos ? -1 : positiveInt(text.substr(x + 1));
+    if (w < 1 || h < 1) throw Error("bad resolution '" + text + "' (use WIDTHxHEIGHT, e.g. 1024x768, or 'scene')");
+    return {w, h};
+}
+
+std::vector<SweepGroup> quickPreset() {
+    SweepGroup g;
+    g.name = "quick";
+    g.scenes = {"overlap-2", "room"};
+    g.resolutions = {{96, 72}};
+    g.modes = availableModes();
+    g.schemes = packingSchemeNames();
+    g.budgets = {1, 4};
+    g.indexBits = {8};
+    g.volumeTests = {"backface", "frontface"};
+    g.msaa = {0};
+    g.transparency = {true};
+    g.tiledDepthBounds = {true, false};
+    g.strict = false;
+    return {g};
+}
+
+std::vector<SweepGroup> fullPreset() {
+    const std::vector<int> budgets{1, 2, 4, 8, 16};
+    std::vector<SweepGroup> groups;
+    SweepGroup room;  // the targets: every mode, scheme, budget, width and volume test on the default room
+    room.name = "room";
+    room.scenes = {"room"};
+    room.resolutions = {{1024, 768}};
+    room.modes = availableModes();
+    room.schemes = packingSchemeNames();
+    room.budgets = budgets;
+    room.indexBits = {8, 16};
+    room.volumeTests = {"backface", "exact", "frontface"};
+    room.msaa = {0};
+    room.transparency = {true};
+    room.tiledDepthBounds = {true, false};
+    room.strict = false;
+    groups.push_back(room);
+
+    SweepGroup variants = room;  // MSAA and transparency on/off, at budget 4 with the front-face test
+    variants.name = "room-msaa-transparency";
+    variants.budgets = {4};
+    variants.indexBits = {8};
+    variants.volumeTests = {"frontface"};
+    variants.msaa = {0, 4};
+    variants.transparency = {true, false};
+    variants.tiledDepthBounds = {true};
+    groups.push_back(variants);
+
+    SweepGroup overlap;  // cost and drops against a known overlap
+    overlap.name = "overlap";
+    overlap.scenes = {"overlap-1", "overlap-2", "overlap-4", "overlap-8", "overlap-16"};
+    overlap.resolutions = {{512, 384}};
+    overlap.modes = availableModes();
+    overlap.schemes = packingSchemeNames();
+    overlap.budgets = budgets;
+    overlap.indexBits = {8, 16};
+    overlap.volumeTests = {"backface"};
+    overlap.msaa = {0};
+    overlap.transparency = {true};
+    overlap.tiledDepthBounds = {true, false};
+    groups.push_back(overlap);
+
+    SweepGroup many = overlap;  // many lights: 16-bit indices
+    many.name = "many-lights";
+    many.scenes = {"many-1024-top", "many-1024-fp", "many-4096-top", "many-4096-fp"};
+    many.indexBits = {16};
+    groups.push_back(many);
+    return groups;
+}
+
+namespace {
+
+std::string refKey(const std::string& scene, int w, int h, const ModeConfig& c) {
+    return scene + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + std::to_string(c.msaa) + "|" +
+           (c.transparency ? "t" : "o");
+}
+
+// A small stand-in for `scene` with the same lights, materials and camera: building a renderer for it runs
+// every check the mode's constructor makes (scheme x budget x width x light count, MSAA, volume test,
+// resolution) without uploading the real geometry.
+Scene probeSceneFor(const Scene& scene) {
+    Scene probe;
+    probe.name = scene.name + "-probe";
+    probe.materials = scene.materials;
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        addPlane(probe, glm::vec3(0.0f, 0.01f * float(m), 0.0f), glm::vec2(1.0f), int(m));
+    probe.lights = scene.lights;
+    probe.lightPaths = scene.lightPaths;
+    probe.camera = scene.camera;
+    probe.width = scene.width;
+    probe.height = scene.height;
+    return probe;
+}
+
+template <typename T>
+std::string str(const T& v) {
+    if constexpr (std::is_same_v<T, bool>)
+        return v ? "on" : "off";
+    else if constexpr (std::is_same_v<T, std::string>)
+        return v;
+    else
+        return std::to_string(v);
+}
+
+}  // namespace
+
+Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
+               std::map<std::string, Scene>& scenes) {
+    const std::vector<std::string> modes = availableModes();
+    const std::vector<std::string> schemes = packingSchemeNames();
+    // Names first: every unknown name is reported before any probing.
+    for (const SweepGroup& g : groups) {
+        if (g.scenes.empty() || g.modes.empty() || g.resolutions.empty())
+            throw Error("sweep '" + g.name + "' needs at least one scene, mode and resolution");
+        for (const std::string& m : g.modes)
+            if (std::find(modes.begin(), modes.end(), m) == modes.end())
+                throw Error("unknown render mode '" + m + "' (valid: " + joinNames(modes) + ")");
+        for (const std::string& s : g.schemes)
+            if (std::find(schemes.begin(), schemes.end(), s) == schemes.end())
+                throw Error("unknown packing scheme '" + s + "' (valid: " + joinNames(schemes) + ")");
+        for (const std::string& v : g.volumeTests) parseVolumeTest(v);  // throws naming the valid ones
+        for (int b : g.budgets)
+            if (b < 1) throw Error("budget must be >= 1, got " + std::to_string(b));
+        for (int b : g.indexBits)
+            if (b < 1) throw Error("index width must be >= 1 bit, got " + std::to_string(b));
+        for (int s : g.msaa)
+            if (s < 0) throw Error("MSAA samples must be >= 0, got " + std::to_string(s));
+        for (const std::string& name : g.scenes)
+            if (!scenes.count(name)) scenes.emplace(name, loadBenchScene(name, seed));
+    }
+
+    Plan plan;
+    std::set<std::string> seen;
+    std::map<std::string, std::string> probeResults;  // probe key -> "" (ok) or the library's reason
+    std::map<std::string, Scene> probes;
+    for (const SweepGroup& g : groups) {
+        // For each value of each dimension: did any combination in this group accept it, and if not, why.
+        std::map<std::string, std::string> valueUse;  // "budget 16" -> "" used, or last reason
+        auto note = [&](const std::string& value, const std::string& reason) {
+            auto it = valueUse.find(value);
+            if (it == valueUse.end())
+                valueUse[value] = reason;
+            else if (!it->second.empty())
+                it->second = reason;
+        };
+        size_t groupRuns = 0;
+        for (const std::string& sceneName : g.scenes) {
+            const Scene& scene = scenes.at(sceneName);
+            if (!probes.count(sceneName)) probes.emplace(sceneName, probeSceneFor(scene));
+            for (auto [w, h] : g.resolutions) {
+                if (w == 0) std::tie(w, h) = std::make_pair(scene.width, scene.height);
+                std::vector<ModeConfig> configs;
+                for (const std::string& mode : g.modes) {
+                    ModeConfig base;
+                    base.mode = mode;
+                    for (int msaa : g.msaa)
+                        for (bool transparency : g.transparency) {
+                            base.msaa = msaa;
+                            base.transparency = transparency;
+                            if (mode == "lidr") {
+                                for (const auto& scheme : g.schemes)
+                                    for (int budget : g.budgets)
+                                        for (int bits : g.indexBits)
+                                            for (const auto& vt : g.volumeTests) {
+                                                ModeConfig c = base;
+                                                c.scheme = scheme;
+                                                c.budget = budget;
+                                                c.indexBits = bits;
+                                                c.volumeTest = volumeTestName(parseVolumeTest(vt));
+                                                configs.push_back(c);
+                                            }
+                            } else if (mode == "tiled") {
+                                for (bool db : g.tiledDepthBounds) {
+                                    ModeConfig c = base;
+                                    c.tiledDepthBounds = db;
+                                    configs.push_back(c);
+                                }
+                            } else {
+                                configs.push_back(base);
+                            }
+                        }
+                }
+                for (const ModeConfig& c : configs) {
+                    const std::string probeKey = sceneName + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + c.key();
+                    if (!probeResults.count(probeKey)) {
+                        std::string reason;
+                        try {
+                            createBenchRenderer(c, info, probes.at(sceneName), w, h);
+                        } catch (const GlError&) {
+                            throw;  // a GL failure is a bug to see, not a combination to skip
+                        } catch (const Error& e) {
+                            reason = e.what();
+                            if (reason.empty()) reason = "refused";
+                        }
+                        probeResults[probeKey] = reason;
+                    }
+                    const std::string& reason = probeResults[probeKey];
+                    note("mode " + c.mode, reason);
+                    note("MSAA " + str(c.msaa), reason);
+                    note("transparency " + str(c.transparency), reason);
+                    if (c.mode == "lidr") {
+                        note("scheme " + c.scheme, reason);
+                        note("budget " + str(c.budget), reason);
+                        note("index width " + str(c.indexBits), reason);
+                        note("volume test " + c.volumeTest, reason);
+                    }
+                    if (!reason.empty()) {
+                        plan.skipped.push_back({g.name, sceneName, c.key(), w, h, reason});
+                        continue;
+                    }
+                    ++groupRuns;
+                    Run run{g.name, sceneName, w, h, c};
+                    if (seen.insert(sceneName + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + c.key()).second)
+                        plan.runs.push_back(run);
+                }
+            }
+        }
+        if (groupRuns == 0) {
+            std::set<std::string> reasons;
+            for (const Skipped& s : plan.skipped)
+                if (s.group == g.name) reasons.insert(s.reason);
+            std::string all;
+            for (const auto& r : reasons) all += "\n  " + r;
+            throw Error("sweep '" + g.name + "' has no configuration the library can run:" + all);
+        }
+        for (const auto& [value, reason] : valueUse)
+            if (g.strict && !reason.empty())
+                throw Error("sweep '" + g.name + "': " + value + " works with none of the other settings asked for: " +
+                            reason);
+    }
+    // Group runs by reference (scene, size, MSAA, transparency), first appearance first, forward-brute first
+    // within each: the reference is rendered once and its frames time forward-brute.
+    std::map<std::string, size_t> firstSeen;
+    for (const Run& r : plan.runs) firstSeen.emplace(refKey(r.scene, r.width, r.height, r.config), firstSeen.size());
+    std::stable_sort(plan.runs.begin(), plan.runs.end(), [&](const Run& a, const Run& b) {
+        const size_t ka = firstSeen.at(refKey(a.scene, a.width, a.height, a.config));
+        const size_t kb = firstSeen.at(refKey(b.scene, b.width, b.height, b.config));
+        if (ka != kb) return ka < kb;
+        return (a.config.mode == "forward-brute") > (b.config.mode == "forward-brute");
+    });
+    return plan;
+}
+
+}  // namespace lidr::bench

@@ -1,0 +1,102 @@
+#pragma once
+// What lidr-bench measures: scenes by name, render-mode configurations, and the sweep that expands lists of
+// both into runs. Modes, schemes, budgets and widths come from the library (the render-mode factory,
+// packingSchemeNames(), the schemes' UnsupportedError); nothing here lists what a scheme can do.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lidr/context.h"
+#include "lidr/renderer.h"
+#include "lidr/scene.h"
+
+namespace lidr::bench {
+
+// ---- scenes ---------------------------------------------------------------------------------------------
+// "room" (default room, 255 lights), "overlap-K" (controlled overlap, K lights on every lit pixel),
+// "many-N-top" / "many-N-fp" (N lights, top-down / first-person), or a scene file ("file:PATH", or a path
+// ending in .json).
+std::string sceneNameHelp();
+// Throws lidr::Error naming the valid forms for an unknown name or a file that does not load.
+Scene loadBenchScene(const std::string& name, uint32_t seed);
+
+// ---- configurations -------------------------------------------------------------------------------------
+struct ModeConfig {
+    std::string mode;             // a render-mode name
+    // mode "lidr"
+    std::string scheme;
+    int budget = 0;
+    int indexBits = 0;
+    std::string volumeTest;       // backface, exact, frontface
+    // mode "tiled"
+    bool tiledDepthBounds = false;
+    // every mode
+    int msaa = 0;
+    bool transparency = true;
+    std::string label() const;    // "lidr bitshift b4 8-bit backface", "tiled min/max", "forward-brute", ...
+    std::string key() const;      // label + msaa + transparency: unique per configuration
+};
+
+// Render modes the bench can build: the library's factory where it has one, in its order.
+std::vector<std::string> availableModes();
+std::string joinNames(const std::vector<std::string>& names);
+// Builds the renderer; throws what the mode's constructor throws (UnsupportedError / lidr::Error) for
+// settings it cannot do, before any drawing.
+std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& config, const GlInfo& info, const Scene& scene,
+                                              int width, int height);
+// Which forward-brute configuration judges `config`: same MSAA and transparency.
+ModeConfig referenceConfigFor(const ModeConfig& config);
+
+// ---- sweeps ---------------------------------------------------------------------------------------------
+// One cartesian sweep: every scene x resolution x mode, and for each mode the dimensions it has.
+struct SweepGroup {
+    std::string name;
+    std::vector<std::string> scenes;
+    std::vector<std::pair<int, int>> resolutions;  // (0, 0): the scene's own
+    std::vector<std::string> modes;
+    std::vector<std::string> schemes;
+    std::vector<int> budgets;
+    std::vector<int> indexBits;
+    std::vector<std::string> volumeTests;
+    std::vector<int> msaa;
+    std::vector<bool> transparency;
+    std::vector<bool> tiledDepthBounds;
+    // Lists a person typed: a value no combination can use is an error. Presets sweep "every budget and
+    // width a scheme supports" and only list what the library refused.
+    bool strict = true;
+};
+
+struct Run {
+    std::string group;
+    std::string scene;
+    int width = 0, height = 0;
+    ModeConfig config;
+};
+
+struct Skipped {
+    std::string group, scene, label;
+    int width = 0, height = 0;
+    std::string reason;
+};
+
+struct Plan {
+    std::vector<Run> runs;        // ordered so each reference (scene, size, MSAA, transparency) is made once
+    std::vector<Skipped> skipped; // combinations the library refused, with its reason
+};
+
+// The presets: a seconds-long smoke run, and the documented full run (doc/benchmarks.md).
+std::vector<SweepGroup> quickPreset();
+std::vector<SweepGroup> fullPreset();
+
+// Checks every name (scenes, modes, schemes, volume tests) and every combination against the library, on
+// the live context, before anything is measured. A combination the library refuses is skipped and listed;
+// a value that no combination of its group can use, or a group with no runnable configuration, is a
+// lidr::Error that says why and lists what is valid. `scenes` is filled with the loaded scenes.
+Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
+               std::map<std::string, Scene>& scenes);
+
+// "1024x768" -> (1024, 768); "scene" -> (0, 0). Throws lidr::Error.
+std::pair<int, int> parseResolution(const std::string& text);
+
+}  // namespace lidr::bench

@@ -1,0 +1,549 @@
+#include "bench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "lidr/error.h"
+
+namespace lidr::bench {
+
+namespace fs = std::filesystem;
+
+Stat Stat::of(std::vector<double> v) {
+    Stat s;
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    s.min = v.front();
+    s.max = v.back();
+    s.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    return s;
+}
+
+double finitePsnr(double psnr) { return std::isfinite(psnr) ? psnr : 999.0; }
+
+const std::vector<std::string>& resultColumns() {
+    static const std::vector<std::string> c{
+        "id", "group", "scene", "width", "height", "scene_lights", "max_overlap", "mode", "config", "scheme",
+        "budget", "index_bits", "volume_test", "tiled_depth_bounds", "msaa", "transparency", "timing_method",
+        "warmup_frames", "frames", "frame_ms_median", "frame_ms_min", "frame_ms_max", "wall_ms_median",
+        "light_volume_ms_median", "light_volume_share", "light_data_bytes", "drawn_lights", "rmse", "psnr_db",
+        "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
+        "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db"};
+    return c;
+}
+
+const std::vector<std::string>& passColumns() {
+    static const std::vector<std::string> c{"id", "scene", "config", "pass", "ms_median", "ms_min", "ms_max"};
+    return c;
+}
+
+namespace {
+
+std::string num(double v, int precision = 4) {
+    std::ostringstream s;
+    s << std::setprecision(precision) << std::fixed << v;
+    std::string t = s.str();
+    if (t.find('.') != std::string::npos) {
+        t.erase(t.find_last_not_of('0') + 1);
+        if (t.back() == '.') t.pop_back();
+    }
+    return t;
+}
+
+// CSV field: quoted when it holds a comma, quote or space-sensitive text.
+std::string field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::vector<std::string> csvCells(const Row& r) {
+    const ModeConfig& c = r.run.config;
+    const bool lidr = c.mode == "lidr";
+    auto lists = [&](auto v) { return r.hasLists ? std::to_string(v) : std::string(); };
+    return {std::to_string(r.id), r.run.group, r.run.scene, std::to_string(r.run.width), std::to_string(r.run.height),
+            std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
+            lidr ? std::to_string(c.budget) : "", lidr ? std::to_string(c.indexBits) : "", lidr ? c.volumeTest : "",
+            c.mode == "tiled" ? (c.tiledDepthBounds ? "1" : "0") : "", std::to_string(c.msaa),
+            c.transparency ? "1" : "0", r.timingMethod, std::to_string(r.warmupFrames), std::to_string(r.frames),
+            num(r.frameMs.median), num(r.frameMs.min), num(r.frameMs.max), num(r.wallMs.median),
+            lidr ? num(r.lightVolumeMs) : "", lidr ? num(r.lightVolumeShare()) : "", std::to_string(r.lightDataBytes),
+            std::to_string(r.drawnLights), num(r.error.rmse, 5), num(finitePsnr(r.error.psnr), 3),
+            std::to_string(r.error.maxAbsError), std::to_string(r.error.differingPixels),
+            std::to_string(r.error.comparedPixels), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
+            lists(r.pixelsOverBudget), lists(r.maxMarked), lists(r.invalidSlots),
+            r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : ""};
+}
+
+nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
+
+nlohmann::json rowJson(const Row& r) {
+    const ModeConfig& c = r.run.config;
+    nlohmann::json j;
+    j["id"] = r.id;
+    j["group"] = r.run.group;
+    j["scene"] = r.run.scene;
+    j["width"] = r.run.width;
+    j["height"] = r.run.height;
+    j["scene_lights"] = r.sceneLights;
+    j["max_overlap"] = r.maxOverlap;
+    j["mode"] = c.mode;
+    j["config"] = c.key();
+    if (c.mode == "lidr")
+        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}};
+    if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
+    j["msaa"] = c.msaa;
+    j["transparency"] = c.transparency;
+    j["timing"] = {{"method", r.timingMethod}, {"warmup_frames", r.warmupFrames}, {"frames", r.frames},
+                   {"frame_ms", statJson(r.frameMs)}, {"wall_ms", statJson(r.wallMs)}};
+    nlohmann::json passes = nlohmann::json::array();
+    for (const PassStat& p : r.passes) passes.push_back({{"pass", p.pass}, {"ms", statJson(p.ms)}});
+    j["timing"]["passes"] = passes;
+    if (c.mode == "lidr") j["timing"]["light_volume_share"] = r.lightVolumeShare();
+    j["light_data_bytes"] = r.lightDataBytes;
+    j["drawn_lights"] = r.drawnLights;
+    j["error"] = {{"rmse", r.error.rmse}, {"psnr_db", finitePsnr(r.error.psnr)}, {"max_abs_error", r.error.maxAbsError},
+                  {"differing_pixels", r.error.differingPixels}, {"compared_pixels", r.error.comparedPixels}};
+    if (r.hasLists)
+        j["lists"] = {{"dropped_light_pixels", r.droppedLightPixels}, {"pixels_with_drops", r.pixelsWithDrops},
+                      {"pixels_over_budget", r.pixelsOverBudget}, {"max_marked", r.maxMarked},
+                      {"invalid_slots", r.invalidSlots}, {"psnr_within_budget_db", finitePsnr(r.psnrWithinBudget)}};
+    return j;
+}
+
+std::string sceneKey(const Row& r) { return r.run.scene + " " + std::to_string(r.run.width) + "x" + std::to_string(r.run.height); }
+
+}  // namespace
+
+void ReportWriter::checkWritable(const std::string& dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) throw Error("cannot create output folder '" + dir + "': " + (ec ? ec.message() : "not a folder"));
+    const fs::path probe = fs::path(dir) / ".lidr-bench-write-test";
+    {
+        std::ofstream f(probe);
+        f << "x";
+        if (!f) throw Error("cannot write into output folder '" + dir + "'");
+    }
+    fs::remove(probe, ec);
+}
+
+ReportWriter::ReportWriter(const std::string& dir) : dir_(dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir)) throw Error("cannot create output folder '" + dir + "': " + (ec ? ec.message() : "not a folder"));
+    csv_.open(fs::path(dir) / "results.csv");
+    passesCsv_.open(fs::path(dir) / "passes.csv");
+    if (!csv_ || !passesCsv_) throw Error("cannot write into output folder '" + dir + "'");
+    std::ofstream probe(fs::path(dir) / "results.json");
+    if (!probe) throw Error("cannot write '" + (fs::path(dir) / "results.json").string() + "'");
+    for (size_t i = 0; i < resultColumns().size(); ++i) csv_ << (i ? "," : "") << resultColumns()[i];
+    csv_ << "\n";
+    for (size_t i = 0; i < passColumns().size(); ++i) passesCsv_ << (i ? "," : "") << passColumns()[i];
+    passesCsv_ << std::endl;
+    if (!csv_ || !passesCsv_) throw Error("cannot write into output folder '" + dir + "'");
+}
+
+void ReportWriter::add(const Row& row, const RunInfo& info) {
+    rows_.push_back(row);
+    const auto cells = csvCells(row);
+    for (size_t i = 0; i < cells.size(); ++i) csv_ << (i ? "," : "") << field(cells[i]);
+    csv_ << std::endl;  // flushed: an interrupted or killed sweep keeps its rows
+    for (const PassStat& p : row.passes)
+        passesCsv_ << row.id << "," << field(row.run.scene) << "," << field(row.run.config.key()) << "," << field(p.pass)
+                   << "," << num(p.ms.median) << "," << num(p.ms.min) << "," << num(p.ms.max) << "\n";
+    passesCsv_.flush();
+    if (!csv_ || !passesCsv_) throw Error("writing the CSV files in '" + dir_ + "' failed");
+    writeJson(info);
+}
+
+void ReportWriter::writeJson(const RunInfo& info) const {
+    nlohmann::json j;
+    j["meta"] = info.meta;
+    j["status"] = {{"complete", info.complete}, {"interrupted", info.interrupted}, {"planned_runs", info.planned},
+                   {"measured_runs", rows_.size()}};
+    j["rows"] = nlohmann::json::array();
+    for (const Row& r : rows_) j["rows"].push_back(rowJson(r));
+    j["skipped"] = nlohmann::json::array();
+    for (const Skipped& s : info.skipped)
+        j["skipped"].push_back({{"group", s.group}, {"scene", s.scene}, {"width", s.width}, {"height", s.height},
+                                {"config", s.label}, {"reason", s.reason}});
+    // Written beside, then renamed: a kill mid-write leaves the previous complete file.
+    const fs::path final = fs::path(dir_) / "results.json", tmp = fs::path(dir_) / "results.json.tmp";
+    {
+        std::ofstream out(tmp);
+        out << j.dump(1) << "\n";
+        if (!out) throw Error("cannot write '" + tmp.string() + "'");
+    }
+    fs::rename(tmp, final);
+}
+
+// ---- summary.md ---------------------------------------------------------------------------------------------
+
+namespace {
+
+const Row* findRow(const std::vector<Row>& rows, const std::string& scene, int w, int h, const std::string& key) {
+    for (const Row& r : rows)
+        if (r.run.scene == scene && r.run.width == w && r.run.height == h && r.run.config.key() == key) return &r;
+    return nullptr;
+}
+
+std::string ms(double v) { return v >= 100 ? num(v, 0) : v >= 10 ? num(v, 1) : num(v, 2); }
+
+std::string passBreakdown(const Row& r) {
+    std::string s;
+    for (const PassStat& p : r.passes) s += (s.empty() ? "" : ", ") + p.pass + " " + ms(p.ms.median);
+    return s;
+}
+
+void targetsSection(std::ostream& o, const std::vector<Row>& rows) {
+    o << "## Targets (issue 6)\n\n";
+    const std::string scene = "room";
+    const int w = 1024, h = 768;
+    const Row* b4 = findRow(rows, scene, w, h, "lidr bitshift b4 8-bit backface");
+    const Row* b1 = findRow(rows, scene, w, h, "lidr bitshift b1 8-bit backface");
+    const Row* multipass = findRow(rows, scene, w, h, "forward-multipass");
+    const Row* brute = findRow(rows, scene, w, h, "forward-brute");
+    const Row* tiled = findRow(rows, scene, w, h, "tiled min/max");
+    // The fastest LIDR configuration at budget 4 (any scheme, width, volume test), for comparison.
+    const Row* best4 = nullptr;
+    for (const Row& r : rows)
+        if (r.run.scene == scene && r.run.width == w && r.run.height == h && r.run.config.mode == "lidr" &&
+            r.run.config.budget == 4 && r.run.config.msaa == 0 && r.run.config.transparency &&
+            (!best4 || r.frameMs.median < best4->frameMs.median))
+            best4 = &r;
+    o << "Default room, 255 lights, 1024x768, transparency on, no MSAA. LIDR is `bitshift` 8-bit with the back-face "
+         "test (lidr-demo's defaults); \"best b4\" is the fastest budget-4 LIDR configuration measured.\n\n";
+    o << "| target | measured | met? |\n|---|---|---|\n";
+    auto ratioLine = [&](const std::string& what, const Row* num_, const Row* den, double goal, bool atLeast) {
+        o << "| " << what << " | ";
+        if (!num_ || !den) {
+            o << "not measured (" << (!num_ ? "numerator" : "denominator") << " configuration missing from this run) | - |\n";
+            return;
+        }
+        const double ratio = num_->frameMs.median / den->frameMs.median;
+        const bool met = atLeast ? ratio >= goal : ratio <= goal;
+        o << num(ratio, 2) << "x (" << ms(num_->frameMs.median) << " ms / " << ms(den->frameMs.median) << " ms) | "
+          << (met ? "met" : "**missed**") << " |\n";
+    };
+    ratioLine("forward-multipass / LIDR budget 4 >= 6", multipass, b4, 6.0, true);
+    ratioLine("forward-multipass / LIDR budget 1 >= 10", multipass, b1, 10.0, true);
+    ratioLine("forward-brute / LIDR budget 4 >= 20", brute, b4, 20.0, true);
+    ratioLine("LIDR budget 4 / tiled min/max <= 1.0", b4, tiled, 1.0, false);
+    if (best4 && best4 != b4) {
+        ratioLine("forward-multipass / best b4 (" + best4->run.config.label() + ") >= 6", multipass, best4, 6.0, true);
+        ratioLine("best b4 / tiled min/max <= 1.0", best4, tiled, 1.0, false);
+    }
+    o << "| light-volume pass < 20% of the LIDR budget-4 frame | ";
+    if (b4)
+        o << num(100.0 * b4->lightVolumeShare(), 1) << "% (" << ms(b4->lightVolumeMs) << " of " << ms(b4->frameMs.median)
+          << " ms) | " << (b4->lightVolumeShare() < 0.2 ? "met" : "**missed**") << " |\n";
+    else
+        o << "not measured | - |\n";
+    // Budget at or above the scene's maximum overlap: no drops, PSNR >= 50 dB (every scene in the run).
+    int eligible = 0, passed = 0;
+    std::vector<const Row*> failures;
+    for (const Row& r : rows)
+        if (r.hasLists && r.run.config.budget >= r.maxOverlap) {
+            ++eligible;
+            if (r.droppedLightPixels == 0 && finitePsnr(r.error.psnr) >= 50.0)
+                ++passed;
+            else
+                failures.push_back(&r);
+        }
+    o << "| budget >= max overlap: no drops and PSNR >= 50 dB | " << passed << " of " << eligible
+      << " LIDR rows (all scenes) | " << (eligible == 0 ? "not measured" : failures.empty() ? "met" : "**missed**")
+      << " |\n\n";
+    if (b4) o << "LIDR budget 4 passes (ms): " << passBreakdown(*b4) << ".\n\n";
+    if (tiled) o << "tiled min/max passes (ms): " << passBreakdown(*tiled) << ".\n\n";
+    if (multipass) o << "forward-multipass passes (ms): " << passBreakdown(*multipass) << ".\n\n";
+    if (!failures.empty()) {
+        o << "Rows with budget >= max overlap that dropped lights or fell below 50 dB:\n\n"
+             "| scene | config | max overlap | max marked | dropped light-px | PSNR dB |\n|---|---|---|---|---|---|\n";
+        for (const Row* r : failures)
+            o << "| " << sceneKey(*r) << " | " << r->run.config.key() << " | " << r->maxOverlap << " | " << r->maxMarked
+              << " | " << r->droppedLightPixels << " | " << num(finitePsnr(r->error.psnr), 1) << " |\n";
+        o << "\n";
+    }
+}
+
+}  // namespace
+
+void ReportWriter::writeSummary(const RunInfo& info) const {
+    std::ostringstream o;
+    const auto& m = info.meta;
+    o << "# lidr-bench results\n\n";
+    o << "- status: " << (info.complete ? "complete" : info.interrupted ? "INTERRUPTED (rows so far)" : "incomplete") << ", "
+      << rows_.size() << " of " << info.planned << " configurations measured, " << info.skipped.size()
+      << " combinations skipped (refused by the library)\n";
+    auto metaLine = [&](const char* label, const char* key) {
+        if (m.contains(key)) o << "- " << label << ": " << (m[key].is_string() ? m[key].get<std::string>() : m[key].dump()) << "\n";
+    };
+    metaLine("date (UTC)", "date");
+    metaLine("machine", "machine_summary");
+    metaLine("GL", "gl_summary");
+    metaLine("commit", "commit");
+    metaLine("command", "command_line");
+    metaLine("frames", "frames_summary");
+    metaLine("load average before / after", "load_summary");
+    std::set<std::string> methods;
+    for (const Row& r : rows_) methods.insert(r.timingMethod);
+    o << "- timing method(s): ";
+    for (const auto& t : methods) o << t << " ";
+    o << "(cpu-glfinish: CPU time around glFinish per pass; gpu-timer-query: GL timer queries)\n";
+    o << "- PSNR 999 means identical to the reference; error is against forward-brute with the same MSAA and "
+         "transparency; \"dropped\" counts (pixel, light) pairs a LIDR list missed against the CPU truth.\n\n";
+    targetsSection(o, rows_);
+
+    // One table per scene and size, in measurement order.
+    std::vector<std::string> order;
+    for (const Row& r : rows_)
+        if (std::find(order.begin(), order.end(), sceneKey(r)) == order.end()) order.push_back(sceneKey(r));
+    o << "## Results per scene\n\nTimes are the median of the measured frames (min-max in brackets), in ms. "
+         "\"vol %\" is the light-volume passes' share of the LIDR frame; memory is the index targets / light grid.\n";
+    for (const std::string& key : order) {
+        const Row* first = nullptr;
+        for (const Row& r : rows_)
+            if (sceneKey(r) == key) { first = &r; break; }
+        o << "\n### " << key << " (" << first->sceneLights << " lights, max overlap " << first->maxOverlap << ")\n\n";
+        o << "| config | frame ms | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px |\n"
+             "|---|---|---|---|---|---|---|---|---|\n";
+        for (const Row& r : rows_) {
+            if (sceneKey(r) != key) continue;
+            o << "| " << r.run.config.key() << " | " << ms(r.frameMs.median) << " (" << ms(r.frameMs.min) << "-"
+              << ms(r.frameMs.max) << ") | " << (r.run.config.mode == "lidr" ? num(100.0 * r.lightVolumeShare(), 1) : "-")
+              << " | " << num(double(r.lightDataBytes) / 1024.0, 0) << " | " << num(r.error.rmse, 3) << " | "
+              << num(finitePsnr(r.error.psnr), 1) << " | " << r.error.maxAbsError << " | " << r.error.differingPixels
+              << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
+        }
+    }
+    if (!info.skipped.empty()) {
+        // Collapse the skipped combinations by reason: the list would be long and says the same thing.
+        std::map<std::string, std::vector<std::string>> byReason;
+        for (const Skipped& s : info.skipped) byReason[s.reason].push_back(s.scene + ": " + s.label);
+        o << "\n## Skipped combinations (the library refused them before drawing)\n\n";
+        for (const auto& [reason, what] : byReason) {
+            o << "- " << what.size() << " x \"" << reason << "\" (e.g. " << what.front() << ")\n";
+        }
+    }
+    std::ofstream out(fs::path(dir_) / "summary.md");
+    out << o.str();
+    if (!out) throw Error("cannot write summary.md in '" + dir_ + "'");
+}
+
+// ---- plots (gnuplot) ----------------------------------------------------------------------------------------
+
+namespace {
+
+std::string fileSafe(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+    return s;
+}
+
+std::string gpString(const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) {
+        if (c == '\n') {
+            q += "\\n";
+            continue;
+        }
+        if (c == '"' || c == '\\') q += '\\';
+        q += c;
+    }
+    return q + "\"";
+}
+
+std::string shellQuoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+bool haveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+
+const char* kPreamble =
+    "set terminal pngcairo size 820,520 font 'sans,9' noenhanced\n"
+    "set grid lc rgb '#dddddd'\n"
+    "set key outside right top\n";
+
+// Time against error for one scene: every configuration, coloured by mode, Pareto front stepped through.
+std::string timeVsError(const std::vector<const Row*>& rows, const std::string& title, const std::string& png) {
+    std::ostringstream g;
+    g << kPreamble << "set output " << gpString(png) << "\n";
+    g << "set title " << gpString(title) << "\nset logscale x\nset xlabel 'frame time, ms (median, log scale)'\n"
+         "set ylabel 'RMSE against forward-brute (8-bit steps)'\nset yrange [0:*]\n";
+    std::map<std::string, std::vector<const Row*>> byMode;
+    for (const Row* r : rows) byMode[r->run.config.mode].push_back(r);
+    std::vector<const Row*> sorted = rows;
+    std::sort(sorted.begin(), sorted.end(), [](const Row* a, const Row* b) {
+        return a->frameMs.median < b->frameMs.median ||
+               (a->frameMs.median == b->frameMs.median && a->error.rmse < b->error.rmse);
+    });
+    std::vector<const Row*> front;
+    double best = 1e300;
+    for (const Row* r : sorted)
+        if (r->error.rmse < best) {
+            front.push_back(r);
+            best = r->error.rmse;
+        }
+    int block = 0;
+    for (const auto& [mode, list] : byMode) {
+        g << "$M" << block++ << " << EOD\n";
+        for (const Row* r : list) g << r->frameMs.median << " " << r->error.rmse << "\n";
+        g << "EOD\n";
+    }
+    g << "$FRONT << EOD\n";
+    for (const Row* r : front) g << r->frameMs.median << " " << r->error.rmse << " " << gpString(r->run.config.key()) << "\n";
+    g << "EOD\nplot ";
+    block = 0;
+    for (const auto& [mode, list] : byMode)
+        g << "$M" << block++ << " using 1:2 with points pt 7 ps 1.1 title " << gpString(mode) << ", ";
+    g << "$FRONT using 1:2 with steps lw 2 lc rgb '#cc0000' title 'Pareto front', "
+         "$FRONT using 1:2:3 with labels left offset 0.6,0.5 font ',7' notitle\n";
+    return g.str();
+}
+
+// Frame time against the controlled overlap k, one line per configuration.
+std::string overlapPlot(const std::map<std::string, std::vector<std::pair<int, double>>>& lines, const std::string& title,
+                        const std::string& png) {
+    std::ostringstream g;
+    g << kPreamble << "set output " << gpString(png) << "\n";
+    g << "set title " << gpString(title) << "\nset logscale xy 2\nset xtics (1,2,4,8,16)\nset xrange [0.8:20]\n"
+         "set xlabel 'lights on every lit pixel (k)'\nset ylabel 'frame time, ms (median, log scale)'\n"
+         "set key outside right top font ',8'\n";
+    int block = 0;
+    for (const auto& [label, pts] : lines) {
+        g << "$L" << block++ << " << EOD\n";
+        for (const auto& [k, t] : pts) g << k << " " << t << "\n";
+        g << "EOD\n";
+    }
+    g << "plot ";
+    block = 0;
+    for (const auto& [label, pts] : lines) {
+        g << (block ? ", " : "") << "$L" << block << " using 1:2 with linespoints pt 7 ps 0.7 title " << gpString(label);
+        ++block;
+    }
+    g << "\n";
+    return g.str();
+}
+
+// Stacked per-pass breakdown for one scene; configurations far slower than LIDR and tiled go off scale and
+// are named in the title instead.
+std::string passesPlot(const std::vector<const Row*>& rows, const std::string& title, const std::string& png) {
+    double cap = 0.0;
+    for (const Row* r : rows)
+        if (r->run.config.mode == "lidr" || r->run.config.mode == "tiled") cap = std::max(cap, r->frameMs.median);
+    cap = cap > 0 ? 3.0 * cap : 1e300;
+    std::vector<const Row*> shown;
+    std::string offScale;
+    for (const Row* r : rows) {
+        if (r->frameMs.median <= cap)
+            shown.push_back(r);
+        else
+            offScale += (offScale.empty() ? "" : ", ") + r->run.config.key() + " " + ms(r->frameMs.median) + " ms";
+    }
+    std::vector<std::string> passNames;
+    for (const Row* r : shown)
+        for (const PassStat& p : r->passes)
+            if (std::find(passNames.begin(), passNames.end(), p.pass) == passNames.end()) passNames.push_back(p.pass);
+    std::ostringstream g;
+    const int width = std::clamp(420 + 36 * int(shown.size()), 760, 1600);
+    g << "set terminal pngcairo size " << width << ",560 font 'sans,9' noenhanced\nset output " << gpString(png) << "\n";
+    g << "set title " << gpString(title + (offScale.empty() ? "" : "\noff scale: " + offScale)) << "\n";
+    g << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n"
+         "set boxwidth 0.75\nset xtics rotate by -40 left font ',7'\nset ylabel 'ms (median per pass)'\n"
+         "set key outside right top\nset grid ytics lc rgb '#dddddd'\nset yrange [0:*]\nset bmargin 12\n";
+    g << "$P << EOD\n";
+    for (const Row* r : shown) {
+        g << gpString(r->run.config.key());
+        for (const std::string& name : passNames) {
+            double v = 0.0;
+            for (const PassStat& p : r->passes)
+                if (p.pass == name) v = p.ms.median;
+            g << " " << v;
+        }
+        g << "\n";
+    }
+    g << "EOD\nplot ";
+    for (size_t i = 0; i < passNames.size(); ++i)
+        g << (i ? ", " : "") << "$P using " << (i + 2) << (i == 0 ? ":xtic(1)" : "") << " title " << gpString(passNames[i]);
+    g << "\n";
+    return g.str();
+}
+
+}  // namespace
+
+std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
+    std::vector<std::string> written;
+    if (rows_.empty()) {
+        message = "no rows measured, no plots";
+        return written;
+    }
+    if (!haveGnuplot()) {
+        message = "gnuplot not found: no plots written (CSV, JSON and summary.md are complete). Install Debian's "
+                  "gnuplot-nox (scripts/setup.sh does) and run lidr-bench again.";
+        return written;
+    }
+    const fs::path plotDir = fs::path(dir_) / "plots";
+    fs::create_directories(plotDir);
+    std::vector<std::pair<std::string, std::string>> jobs;  // png name, script
+    std::vector<std::string> order;
+    for (const Row& r : rows_)
+        if (std::find(order.begin(), order.end(), sceneKey(r)) == order.end()) order.push_back(sceneKey(r));
+    std::map<std::string, std::vector<std::pair<int, double>>> overlapLines;
+    std::string overlapSize;
+    for (const std::string& key : order) {
+        std::vector<const Row*> rows;
+        for (const Row& r : rows_)
+            if (sceneKey(r) == key) rows.push_back(&r);
+        const std::string base = fileSafe(key);
+        const bool overlapScene = rows.front()->run.scene.rfind("overlap-", 0) == 0;
+        if (!overlapScene || rows.front()->run.scene == "overlap-16") {
+            jobs.push_back({"time_vs_error_" + base + ".png",
+                            timeVsError(rows, "time against error: " + key + " (" +
+                                                  std::to_string(rows.front()->sceneLights) + " lights)", "")});
+            jobs.push_back({"passes_" + base + ".png", passesPlot(rows, "per-pass breakdown: " + key, "")});
+        }
+        if (overlapScene) {
+            const int k = std::atoi(rows.front()->run.scene.c_str() + 8);
+            for (const Row* r : rows)
+                if (r->run.config.msaa == 0 && r->run.config.transparency)
+                    overlapLines[r->run.config.label() + " @" + std::to_string(r->run.width) + "x" +
+                                 std::to_string(r->run.height)]
+                        .push_back({k, r->frameMs.median});
+        }
+    }
+    if (!overlapLines.empty())
+        jobs.push_back({"overlap_time.png", overlapPlot(overlapLines, "frame time against overlap k (controlled-overlap scenes)", "")});
+    std::string failures;
+    for (auto& [png, script] : jobs) {
+        const fs::path pngPath = plotDir / png;
+        const fs::path gp = plotDir / (png.substr(0, png.size() - 4) + ".gp");
+        // The scripts are kept next to the PNGs: edit and re-run `gnuplot FILE.gp` in that folder.
+        const std::string marker = "set output \"\"";
+        const size_t at = script.find(marker);
+        if (at != std::string::npos) script.replace(at, marker.size(), "set output " + gpString(png));
+        std::ofstream(gp) << script;
+        const std::string cmd = "cd " + shellQuoted(plotDir.string()) + " && gnuplot " +
+                                shellQuoted(gp.filename().string()) + " 2>" + shellQuoted(gp.filename().string() + ".log");
+        if (std::system(cmd.c_str()) == 0 && fs::exists(pngPath) && fs::file_size(pngPath) > 0) {
+            written.push_back(pngPath.string());
+            fs::remove(plotDir / (gp.filename().string() + ".log"));
+        } else {
+            failures += (failures.empty() ? "" : ", ") + png;
+        }
+    }
+    message = std::to_string(written.size()) + " plots in " + plotDir.string() +
+              (failures.empty() ? "" : "; gnuplot failed on " + failures + " (see the .gp.log files)");
+    return written;
+}
+
+}  // namespace lidr::bench

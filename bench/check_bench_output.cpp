@@ -1,0 +1,206 @@
+// lidr-bench-check DIR [--expect-plots] [--expect-interrupted] [--min-rows N]
+// Checks a lidr-bench output folder is well formed: results.csv has the documented columns and every
+// numeric cell is a finite number >= 0; passes.csv belongs to those rows; results.json parses, records the
+// machine, GL renderer, commit and command line, and agrees with the CSV; summary.md exists; with
+// --expect-plots the PNGs are there and are PNGs. Prints each problem and exits 1 if there is any.
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench_report.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int problems = 0;
+void problem(const std::string& what) {
+    std::cerr << "bench output problem: " << what << "\n";
+    ++problems;
+}
+
+// RFC 4180 records (quoted fields may hold commas, doubled quotes; no newlines in lidr-bench's fields).
+std::vector<std::vector<std::string>> readCsv(const fs::path& path) {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(path);
+    if (!in) {
+        problem("cannot read " + path.string());
+        return rows;
+    }
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (size_t i = 0; i < line.size(); ++i) {
+            const char c = line[i];
+            if (quoted) {
+                if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') cell += '"', ++i;
+                else if (c == '"') quoted = false;
+                else cell += c;
+            } else if (c == '"') {
+                quoted = true;
+            } else if (c == ',') {
+                cells.push_back(cell);
+                cell.clear();
+            } else {
+                cell += c;
+            }
+        }
+        cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+bool finiteNonNegative(const std::string& s, double& v) {
+    char* end = nullptr;
+    v = std::strtod(s.c_str(), &end);
+    return end && *end == '\0' && !s.empty() && std::isfinite(v) && v >= 0.0;
+}
+
+bool isPng(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    char sig[8] = {};
+    f.read(sig, 8);
+    return f && std::memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::cerr << "usage: lidr-bench-check DIR [--expect-plots] [--expect-interrupted] [--min-rows N]\n";
+        return 2;
+    }
+    const fs::path dir = argv[1];
+    bool expectPlots = false, expectInterrupted = false;
+    size_t minRows = 1;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--expect-plots") expectPlots = true;
+        else if (a == "--expect-interrupted") expectInterrupted = true;
+        else if (a == "--min-rows" && i + 1 < argc) minRows = std::stoul(argv[++i]);
+        else { std::cerr << "unknown argument " << a << "\n"; return 2; }
+    }
+    const std::set<std::string> textColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method"};
+
+    // results.csv
+    const auto csv = readCsv(dir / "results.csv");
+    const auto& columns = lidr::bench::resultColumns();
+    std::set<std::string> ids;
+    if (csv.empty() || csv[0] != columns) problem("results.csv header is not the documented column list");
+    for (size_t r = 1; r < csv.size(); ++r) {
+        const auto& row = csv[r];
+        if (row.size() != columns.size()) {
+            problem("results.csv row " + std::to_string(r) + " has " + std::to_string(row.size()) + " cells");
+            continue;
+        }
+        ids.insert(row[0]);
+        double frames = 0, median = 0, lo = 0, hi = 0;
+        for (size_t c = 0; c < columns.size(); ++c) {
+            if (textColumns.count(columns[c])) continue;
+            double v = 0;
+            if (row[c].empty()) {  // not applicable to the mode: allowed only in the mode-specific columns
+                static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
+                    "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
+                    "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db"};
+                if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
+                continue;
+            }
+            if (!finiteNonNegative(row[c], v))
+                problem("results.csv row " + row[0] + ": " + columns[c] + " = '" + row[c] + "' is not a finite number >= 0");
+            if (columns[c] == "frames") frames = v;
+            if (columns[c] == "frame_ms_median") median = v;
+            if (columns[c] == "frame_ms_min") lo = v;
+            if (columns[c] == "frame_ms_max") hi = v;
+        }
+        if (frames < 1) problem("results.csv row " + row[0] + ": no measured frames");
+        if (!(lo <= median && median <= hi)) problem("results.csv row " + row[0] + ": frame median outside [min, max]");
+        if (row[7] == "lidr" && row[10].empty()) problem("results.csv row " + row[0] + ": a lidr row without a budget");
+    }
+    if (csv.size() < minRows + 1) problem("results.csv has " + std::to_string(csv.size() - (csv.empty() ? 0 : 1)) + " rows, expected at least " + std::to_string(minRows));
+
+    // passes.csv
+    const auto passes = readCsv(dir / "passes.csv");
+    if (passes.empty() || passes[0] != lidr::bench::passColumns()) problem("passes.csv header is not the documented column list");
+    std::set<std::string> idsWithPasses;
+    for (size_t r = 1; r < passes.size(); ++r) {
+        const auto& row = passes[r];
+        double v = 0;
+        if (row.size() != lidr::bench::passColumns().size()) { problem("passes.csv row " + std::to_string(r) + " malformed"); continue; }
+        if (!ids.count(row[0])) problem("passes.csv names row id " + row[0] + " that results.csv lacks");
+        idsWithPasses.insert(row[0]);
+        for (size_t c = 4; c < row.size(); ++c)
+            if (!finiteNonNegative(row[c], v)) problem("passes.csv row " + std::to_string(r) + ": bad time '" + row[c] + "'");
+    }
+    for (const auto& id : ids)
+        if (!idsWithPasses.count(id)) problem("row " + id + " has no per-pass times");
+
+    // results.json
+    nlohmann::json j;
+    try {
+        std::ifstream in(dir / "results.json");
+        j = nlohmann::json::parse(in);
+    } catch (const std::exception& e) {
+        problem(std::string("results.json does not parse: ") + e.what());
+    }
+    if (j.is_object()) {
+        try {
+            const auto& meta = j.at("meta");
+            if (meta.at("machine").at("cpu_model").get<std::string>().empty()) problem("no CPU model");
+            if (meta.at("machine").at("cpu_cores").get<int>() < 1) problem("no core count");
+            if (meta.at("gl").at("renderer").get<std::string>().empty()) problem("no GL renderer");
+            if (meta.at("commit").get<std::string>().empty()) problem("no commit");
+            if (meta.at("command_line").get<std::string>().find("lidr-bench") == std::string::npos) problem("no command line");
+            const auto& rows = j.at("rows");
+            if (rows.size() + 1 != csv.size()) problem("results.json and results.csv disagree on the row count");
+            for (const auto& row : rows) {
+                const auto& t = row.at("timing");
+                if (t.at("method").get<std::string>().empty()) problem("a row without its timing method");
+                if (!(t.at("frame_ms").at("median").get<double>() >= 0.0)) problem("a negative frame time in JSON");
+                if (row.at("width").get<int>() < 1 || row.at("height").get<int>() < 1) problem("a row without a resolution");
+            }
+            const auto& status = j.at("status");
+            if (expectInterrupted) {
+                if (!status.at("interrupted").get<bool>()) problem("status.interrupted should be true");
+                if (status.at("complete").get<bool>()) problem("an interrupted run marked complete");
+                if (rows.size() >= status.at("planned_runs").get<size_t>()) problem("an interrupted run with every row");
+            } else if (!status.at("complete").get<bool>()) {
+                problem("status.complete is false");
+            }
+        } catch (const std::exception& e) {
+            problem(std::string("results.json lacks a field: ") + e.what());
+        }
+    }
+    if (!fs::exists(dir / "summary.md") || fs::file_size(dir / "summary.md") == 0) problem("no summary.md");
+
+    if (expectPlots) {
+        int timeVsError = 0, passPlots = 0;
+        if (fs::is_directory(dir / "plots"))
+            for (const auto& e : fs::directory_iterator(dir / "plots")) {
+                const std::string name = e.path().filename().string();
+                if (e.path().extension() != ".png") continue;
+                if (!isPng(e.path())) problem(name + " is not a PNG");
+                if (name.rfind("time_vs_error_", 0) == 0) ++timeVsError;
+                if (name.rfind("passes_", 0) == 0) ++passPlots;
+            }
+        if (timeVsError == 0) problem("no time-against-error plot");
+        if (passPlots == 0) problem("no per-pass breakdown plot");
+        if (!fs::exists(dir / "plots" / "overlap_time.png")) problem("no overlap plot");
+    }
+    if (problems) {
+        std::cerr << problems << " problem(s) in " << dir << "\n";
+        return 1;
+    }
+    std::cout << "bench output in " << dir << " is well formed: " << (csv.size() - 1) << " rows\n";
+    return 0;
+}

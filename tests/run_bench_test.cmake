@@ -1,0 +1,61 @@
+# lidr-bench tests (no timing is asserted anywhere):
+#  - --quick writes well-formed outputs (lidr-bench-check parses CSV/JSON, checks columns and numbers, and the
+#    plots when gnuplot is installed);
+#  - an interrupted sweep keeps the rows it measured and says it was interrupted;
+#  - bad input fails before the sweep with the list of valid names.
+# Inputs: BENCH, CHECK (executables), OUT (scratch folder).
+file(REMOVE_RECURSE ${OUT})
+find_program(GNUPLOT gnuplot)
+
+function(run_bench expect_rc expect_text)
+  execute_process(COMMAND ${BENCH} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL expect_rc)
+    message(FATAL_ERROR "lidr-bench ${ARGN}: exit ${rc}, expected ${expect_rc}\n${out}\n${err}")
+  endif()
+  if(NOT "${expect_text}" STREQUAL "" AND NOT "${out}${err}" MATCHES "${expect_text}")
+    message(FATAL_ERROR "lidr-bench ${ARGN}: output lacks '${expect_text}':\n${out}\n${err}")
+  endif()
+endfunction()
+
+function(check_output dir)
+  execute_process(COMMAND ${CHECK} ${dir} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "lidr-bench-check ${dir} ${ARGN} failed:\n${out}\n${err}")
+  endif()
+endfunction()
+
+# The smoke run: every mode the library has, well-formed outputs.
+run_bench(0 "rows in" --quick --no-progress --out ${OUT}/quick)
+if(GNUPLOT)
+  check_output(${OUT}/quick --expect-plots --min-rows 6)
+else()
+  message(STATUS "gnuplot not installed: plots not checked")
+  check_output(${OUT}/quick --min-rows 6)
+endif()
+file(READ ${OUT}/quick/results.csv csv)
+foreach(scene overlap-2 room)
+  if(NOT csv MATCHES ",${scene},")
+    message(FATAL_ERROR "quick run has no row for scene ${scene}")
+  endif()
+endforeach()
+
+# Interrupted after two rows (the same SIGINT path a person's Ctrl-C takes): rows kept, status says so.
+run_bench(130 "INTERRUPTED" --quick --no-progress --no-plots --interrupt-after 2 --out ${OUT}/interrupted)
+check_output(${OUT}/interrupted --expect-interrupted --min-rows 2)
+
+# Bad input: clear error before any measuring, naming what is valid.
+run_bench(1 "unknown packing scheme 'nope'.*valid: .*bitshift" --schemes nope --out ${OUT}/bad)
+run_bench(1 "unknown render mode 'warp'.*valid: .*lidr.*forward-brute" --modes warp --out ${OUT}/bad)
+run_bench(1 "unknown scene 'kitchen'.*valid: room.*overlap-K" --scenes kitchen --out ${OUT}/bad)
+run_bench(1 "unknown volume test 'sideways'.*valid: backface, exact, frontface" --volume-tests sideways --out ${OUT}/bad)
+run_bench(1 "no configuration the library can run:.*budget must be 1, 2, 4, 8 or 16, got 3" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
+run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
+          --volume-tests backface --msaa 4 --out ${OUT}/bad)
+file(WRITE ${OUT}/a-file "not a folder")
+run_bench(1 "cannot create output folder" --quick --out ${OUT}/a-file/sub)
+if(EXISTS ${OUT}/bad/results.csv)
+  message(FATAL_ERROR "a refused sweep opened its output files")
+endif()
+# A value no combination can use, among others that work: named, with the library's reason.
+run_bench(1 "budget 3 works with none.*got 3" --scenes overlap-1 --modes lidr --budgets 1,3 --index-bits 8
+          --volume-tests backface --out ${OUT}/bad)
