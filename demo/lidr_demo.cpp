@@ -186,7 +186,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     co.windowHeight = scene.height;
     co.windowTitle = "lidr-demo";
     auto context = GlContext::create(co);
-    std::cout << "GL: " << context->info().summary() << "\n";
+    std::cout << "GL: " << context->info().summary() << std::endl;
     LidrRenderer renderer(context->info(), scene, rc.lidrOptions(scene), scene.width, scene.height);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
@@ -209,6 +209,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
         if (now - lastReport > 1.0) {
             std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn\n", framesSinceReport / (now - lastReport),
                         st.frameMilliseconds(), st.timingMethod, st.drawnLights);
+            std::fflush(stdout);
             lastReport = now;
             framesSinceReport = 0;
         }
