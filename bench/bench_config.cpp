@@ -214,6 +214,7 @@ std::vector<SweepGroup> fullPreset() {
     overlap.msaa = {0};
     overlap.transparency = {true};
     overlap.tiledDepthBounds = {true, false};
+    overlap.strict = false;
     groups.push_back(overlap);
 
     SweepGroup many = overlap;  // many lights: 16-bit indices

@@ -276,7 +276,8 @@ void targetsSection(std::ostream& o, const std::vector<Row>& rows) {
 
 }  // namespace
 
-void ReportWriter::writeSummary(const RunInfo& info) const {
+void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::string>& plots,
+                                const std::string& plotMessage) const {
     std::ostringstream o;
     const auto& m = info.meta;
     o << "# lidr-bench results\n\n";
@@ -324,6 +325,12 @@ void ReportWriter::writeSummary(const RunInfo& info) const {
               << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
         }
     }
+    o << "\n## Plots\n\n";
+    if (plots.empty()) o << plotMessage << "\n";
+    for (const std::string& p : plots) {
+        const std::string rel = fs::relative(p, dir_).generic_string();
+        o << "![" << fs::path(p).stem().string() << "](" << rel << ")\n\n";
+    }
     if (!info.skipped.empty()) {
         // Collapse the skipped combinations by reason: the list would be long and says the same thing.
         std::map<std::string, std::vector<std::string>> byReason;
@@ -370,7 +377,7 @@ std::string shellQuoted(const std::string& s) {
 bool haveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
 
 const char* kPreamble =
-    "set terminal pngcairo size 820,520 font 'sans,9' noenhanced\n"
+    "set terminal pngcairo size 760,460 font 'sans,8' noenhanced\n"
     "set grid lc rgb '#dddddd'\n"
     "set key outside right top\n";
 
@@ -455,8 +462,8 @@ std::string passesPlot(const std::vector<const Row*>& rows, const std::string& t
         for (const PassStat& p : r->passes)
             if (std::find(passNames.begin(), passNames.end(), p.pass) == passNames.end()) passNames.push_back(p.pass);
     std::ostringstream g;
-    const int width = std::clamp(420 + 36 * int(shown.size()), 760, 1600);
-    g << "set terminal pngcairo size " << width << ",560 font 'sans,9' noenhanced\nset output " << gpString(png) << "\n";
+    const int width = std::clamp(380 + 30 * int(shown.size()), 720, 1400);
+    g << "set terminal pngcairo size " << width << ",520 font 'sans,8' noenhanced\nset output " << gpString(png) << "\n";
     g << "set title " << gpString(title + (offScale.empty() ? "" : "\noff scale: " + offScale)) << "\n";
     g << "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n"
          "set boxwidth 0.75\nset xtics rotate by -40 left font ',7'\nset ylabel 'ms (median per pass)'\n"

@@ -67,8 +67,9 @@ public:
     const std::string& dir() const { return dir_; }
     void add(const Row& row, const RunInfo& info);  // appends to the CSVs (flushed) and rewrites the JSON
     void writeJson(const RunInfo& info) const;
-    // summary.md: settings, the targets, one table per scene, what was skipped.
-    void writeSummary(const RunInfo& info) const;
+    // summary.md: settings, the targets, one table per scene, the plots (paths relative to dir), what was
+    // skipped.
+    void writeSummary(const RunInfo& info, const std::vector<std::string>& plots, const std::string& plotMessage) const;
     // Plots via gnuplot; returns the PNGs written, or nothing with `message` saying why.
     std::vector<std::string> writePlots(std::string& message) const;
     const std::vector<Row>& rows() const { return rows_; }

@@ -484,9 +484,10 @@ int main(int argc, char** argv) {
         meta["load_average_after"] = readLoadAverage();
         meta["load_summary"] = loadBefore + " / " + meta["load_average_after"].get<std::string>();
         writer->writeJson(runInfo);
-        writer->writeSummary(runInfo);
         std::string plotMessage = "plots not asked for (--no-plots)";
-        if (!noPlots) writer->writePlots(plotMessage);
+        std::vector<std::string> plots;
+        if (!noPlots) plots = writer->writePlots(plotMessage);
+        writer->writeSummary(runInfo, plots, plotMessage);
         std::cout << "lidr-bench: " << writer->rows().size() << " rows"
                   << (runInfo.interrupted ? " (INTERRUPTED: the rows measured so far are kept)" : "") << " in " << outDir
                   << "/{results.csv,passes.csv,results.json,summary.md}; " << plotMessage << "\n";

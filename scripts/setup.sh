@@ -2,14 +2,15 @@
 # lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
 #   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
 #   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, package)
+#   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 job="${1:-}"
 case "$job" in
-  demo|test) ;;
-  *) echo "usage: bash scripts/setup.sh demo|test" >&2; exit 2 ;;
+  demo|test|bench) ;;
+  *) echo "usage: bash scripts/setup.sh demo|test|bench" >&2; exit 2 ;;
 esac
 
 # Debian 12 packages only; nothing is downloaded at build time.
@@ -17,6 +18,7 @@ packages=(
   build-essential cmake pkg-config
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
   libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
+  gnuplot-nox
 )
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)
@@ -47,6 +49,9 @@ cmake --build "$build" -j "$jobs"
 case "$job" in
   demo)
     "$build/demo/lidr-demo" --headless --out "${OUT_DIR:-out}"
+    ;;
+  bench)
+    BUILD_DIR="$build" bash scripts/bench.sh
     ;;
   test)
     ctest --test-dir "$build" --output-on-failure -j "$jobs"
