@@ -174,7 +174,6 @@ std::vector<SweepGroup> quickPreset() {
     g.msaa = {0};
     g.transparency = {true};
     g.tiledDepthBounds = {true, false};
-    g.strict = false;
     return {g};
 }
 
@@ -195,7 +194,6 @@ std::vector<SweepGroup> fullPreset() {
     // every mode (the targets) is the opaque one.
     room.transparency = {false, true};
     room.tiledDepthBounds = {true, false};
-    room.strict = false;
     groups.push_back(room);
 
     SweepGroup variants = room;  // MSAA and transparency on/off, at budget 4 with the front-face test
@@ -220,7 +218,6 @@ std::vector<SweepGroup> fullPreset() {
     overlap.msaa = {0};
     overlap.transparency = {true};
     overlap.tiledDepthBounds = {true, false};
-    overlap.strict = false;
     groups.push_back(overlap);
 
     SweepGroup many = overlap;  // many lights: 16-bit indices
@@ -298,8 +295,10 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
     std::map<std::string, Scene> probes;
     for (const SweepGroup& g : groups) {
         // For each value of each dimension: did any combination in this group accept it, and if not, why.
-        std::map<std::string, std::string> valueUse;  // "budget 16" -> "" used, or last reason
-        auto note = [&](const std::string& value, const std::string& reason) {
+        // (dimension, value) -> "" when some combination used it, else the library's last reason.
+        std::map<std::pair<std::string, std::string>, std::string> valueUse;
+        auto note = [&](const std::string& dimension, const std::string& v, const std::string& reason) {
+            const auto value = std::make_pair(dimension, v);
             auto it = valueUse.find(value);
             if (it == valueUse.end())
                 valueUse[value] = reason;
@@ -358,14 +357,14 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                         probeResults[probeKey] = reason;
                     }
                     const std::string& reason = probeResults[probeKey];
-                    note("mode " + c.mode, reason);
-                    note("MSAA " + str(c.msaa), reason);
-                    note("transparency " + str(c.transparency), reason);
+                    note("mode", c.mode, reason);
+                    note("MSAA", str(c.msaa), reason);
+                    note("transparency", str(c.transparency), reason);
                     if (c.mode == "lidr") {
-                        note("scheme " + c.scheme, reason);
-                        note("budget " + str(c.budget), reason);
-                        note("index width " + str(c.indexBits), reason);
-                        note("volume test " + c.volumeTest, reason);
+                        note("scheme", c.scheme, reason);
+                        note("budget", str(c.budget), reason);
+                        note("index width", str(c.indexBits), reason);
+                        note("volume test", c.volumeTest, reason);
                     }
                     if (!reason.empty()) {
                         plan.skipped.push_back({g.name, sceneName, c.key(), w, h, reason});
@@ -387,9 +386,9 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
             throw Error("sweep '" + g.name + "' has no configuration the library can run:" + all);
         }
         for (const auto& [value, reason] : valueUse)
-            if (g.strict && !reason.empty())
-                throw Error("sweep '" + g.name + "': " + value + " works with none of the other settings asked for: " +
-                            reason);
+            if (g.strictDimensions.count(value.first) && !reason.empty())
+                throw Error("sweep '" + g.name + "': " + value.first + " " + value.second +
+                            " works with none of the other settings asked for: " + reason);
     }
     // Group runs by reference (scene, size, MSAA, transparency), first appearance first, forward-brute first
     // within each: the reference is rendered once and its frames time forward-brute.

@@ -4,6 +4,7 @@
 // packingSchemeNames(), the schemes' UnsupportedError); nothing here lists what a scheme can do.
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -62,9 +63,10 @@ struct SweepGroup {
     std::vector<int> msaa;
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
-    // Lists a person typed: a value no combination can use is an error. Presets sweep "every budget and
-    // width a scheme supports" and only list what the library refused.
-    bool strict = true;
+    // Dimensions whose list a person typed ("mode", "scheme", "budget", "index width", "volume test",
+    // "MSAA", "transparency"): a typed value that no combination can use is an error. Lists left at their
+    // defaults and the presets sweep "whatever the library supports" and only list what it refused.
+    std::set<std::string> strictDimensions;
 };
 
 struct Run {

@@ -348,9 +348,12 @@ int main(int argc, char** argv) {
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
-            // Defaults that were not typed sweep "whatever the library supports"; typed lists are strict.
-            g.strict = app.count("--budgets") || app.count("--index-bits") || app.count("--schemes") ||
-                       app.count("--volume-tests") || app.count("--msaa");
+            // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
+            const std::pair<const char*, const char*> typed[] = {
+                {"--modes", "mode"}, {"--schemes", "scheme"}, {"--budgets", "budget"}, {"--index-bits", "index width"},
+                {"--volume-tests", "volume test"}, {"--msaa", "MSAA"}, {"--transparency", "transparency"}};
+            for (const auto& [option, dimension] : typed)
+                if (app.count(option)) g.strictDimensions.insert(dimension);
             groups.push_back(g);
         }
 
