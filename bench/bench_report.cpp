@@ -432,11 +432,12 @@ std::string timeVsError(const std::vector<const Row*>& rows, const std::string& 
 
 // Frame time against the controlled overlap k, one line per configuration.
 std::string overlapPlot(const std::map<std::string, std::vector<std::pair<int, double>>>& lines, const std::string& title,
-                        const std::string& png) {
+                        const std::string& png, const std::string& ylabel, bool logY) {
     std::ostringstream g;
     g << kPreamble << "set output " << gpString(png) << "\n";
-    g << "set title " << gpString(title) << "\nset logscale xy 2\nset xtics (1,2,4,8,16)\nset xrange [0.8:20]\n"
-         "set xlabel 'lights on every lit pixel (k)'\nset ylabel 'frame time, ms (median, log scale)'\n"
+    g << "set title " << gpString(title) << "\nset logscale x 2\n" << (logY ? "set logscale y 2\n" : "set yrange [0:*]\n")
+      << "set xtics (1,2,4,8,16)\nset xrange [0.8:20]\n"
+         "set xlabel 'lights on every lit pixel (k)'\nset ylabel " << gpString(ylabel) << "\n"
          "set key outside right top font ',8'\n";
     int block = 0;
     for (const auto& [label, pts] : lines) {
@@ -517,7 +518,7 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
     std::vector<std::string> order;
     for (const Row& r : rows_)
         if (std::find(order.begin(), order.end(), sceneKey(r)) == order.end()) order.push_back(sceneKey(r));
-    std::map<std::string, std::vector<std::pair<int, double>>> overlapLines;
+    std::map<std::string, std::vector<std::pair<int, double>>> overlapLines, overlapErrors;
     std::string overlapSize;
     for (const std::string& key : order) {
         std::vector<const Row*> rows;
@@ -534,14 +535,20 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
         if (overlapScene) {
             const int k = std::atoi(rows.front()->run.scene.c_str() + 8);
             for (const Row* r : rows)
-                if (r->run.config.msaa == 0 && r->run.config.transparency)
-                    overlapLines[r->run.config.label() + " @" + std::to_string(r->run.width) + "x" +
-                                 std::to_string(r->run.height)]
-                        .push_back({k, r->frameMs.median});
+                if (r->run.config.msaa == 0 && r->run.config.transparency) {
+                    const std::string line = r->run.config.label() + " @" + std::to_string(r->run.width) + "x" +
+                                             std::to_string(r->run.height);
+                    overlapLines[line].push_back({k, r->frameMs.median});
+                    if (r->run.config.mode != "forward-brute") overlapErrors[line].push_back({k, r->error.rmse});
+                }
         }
     }
-    if (!overlapLines.empty())
-        jobs.push_back({"overlap_time.png", overlapPlot(overlapLines, "frame time against overlap k (controlled-overlap scenes)", "")});
+    if (!overlapLines.empty()) {
+        jobs.push_back({"overlap_time.png", overlapPlot(overlapLines, "frame time against overlap k (controlled-overlap scenes)",
+                                                        "", "frame time, ms (median, log scale)", true)});
+        jobs.push_back({"overlap_error.png", overlapPlot(overlapErrors, "error against overlap k (controlled-overlap scenes)",
+                                                         "", "RMSE against forward-brute (8-bit steps)", false)});
+    }
     std::string failures;
     for (auto& [png, script] : jobs) {
         const fs::path pngPath = plotDir / png;
