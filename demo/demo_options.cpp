@@ -39,6 +39,8 @@ void RendererChoice::addOptions(CLI::App& app) {
                    "Light volume test: auto (backface; frontface with MSAA), backface, exact (stencil), frontface");
     app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
     app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
+    app.add_flag("--msaa-per-sample", msaaPerSample,
+                 "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
@@ -56,8 +58,10 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     o.packing.scheme = scheme;
     o.packing.budget = budget;
     o.packing.indexBits = indexBits;
-    o.volumeTest = volumeTest == "auto" ? (o.msaaSamples > 0 ? VolumeTest::FrontFace : VolumeTest::BackFace)
-                                        : parseVolumeTest(volumeTest);
+    o.perSampleIndices = msaaPerSample;
+    o.volumeTest = volumeTest == "auto"
+                       ? (o.msaaSamples > 0 && !msaaPerSample ? VolumeTest::FrontFace : VolumeTest::BackFace)
+                       : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
     o.timingMethod = parseTimingMethod(timer);
     return o;

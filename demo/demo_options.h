@@ -27,6 +27,7 @@ struct RendererChoice {
     std::string volumeTest = "auto";  // backface, or frontface with MSAA
     int msaa = -1;                     // < 0: the scene's
     std::string transparency = "scene";
+    bool msaaPerSample = false;
     std::string context = "auto";
     bool fixedLightTable = false;
     std::string timer = "auto";

@@ -99,6 +99,8 @@ void GlContext::initialiseGl(const std::string& backendName) {
     info_.vendor = str(GL_VENDOR);
     info_.glslVersion = str(GL_SHADING_LANGUAGE_VERSION);
     std::sscanf(info_.version.c_str(), "%d.%d", &info_.major, &info_.minor);
+    int glslMajor = 0, glslMinor = 0;
+    if (std::sscanf(info_.glslVersion.c_str(), "%d.%d", &glslMajor, &glslMinor) == 2) info_.glsl = glslMajor * 100 + glslMinor;
     const bool gl30 = info_.major >= 3;
     info_.framebufferObject = (gl30 || hasExtension("GL_ARB_framebuffer_object")) && glGenFramebuffers &&
                               glBindFramebuffer && glFramebufferTexture2D;
@@ -110,6 +112,13 @@ void GlContext::initialiseGl(const std::string& backendName) {
     info_.multisampleFbo = (gl30 || hasExtension("GL_EXT_framebuffer_multisample") ||
                             hasExtension("GL_ARB_framebuffer_object")) && glRenderbufferStorageMultisample;
     if (info_.multisampleFbo) glGetIntegerv(GL_MAX_SAMPLES, &info_.maxSamples);
+    const bool gl32 = info_.major > 3 || (info_.major == 3 && info_.minor >= 2);
+    const bool gl40 = info_.major >= 4;
+    info_.multisampleTexture = (gl32 || hasExtension("GL_ARB_texture_multisample")) && glTexImage2DMultisample;
+    // Per-sample reads are written in GLSL 1.50 (texelFetch on sampler2DMS) with ARB_sample_shading.
+    info_.sampleShading = (gl40 || hasExtension("GL_ARB_sample_shading")) && glMinSampleShading;
+    if (info_.glsl < 150) info_.multisampleTexture = info_.sampleShading = false;
+    if (info_.multisampleTexture) glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &info_.maxColorTextureSamples);
     if (info_.drawBuffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS, &info_.maxDrawBuffers);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
     while (glGetError() != GL_NO_ERROR) {

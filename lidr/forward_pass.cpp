@@ -11,15 +11,38 @@ void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera
     program.set("uViewProj", camera.viewProjection);
     program.set("uEyePosition", camera.eye);
     program.set("uAmbient", shading.ambient);
+    // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
+    // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
+    program.set("uMaterialTexture", GpuScene::kMaterialTextureUnit);
 }
 
-ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table) {
+namespace {
+// Per-sample index reads need texelFetch on sampler2DMS (GLSL 1.50) and gl_SampleID (ARB_sample_shading);
+// the compatibility profile keeps every GLSL 1.20 construct the shaders use.
+std::string perSampleVersion(std::string source) {
+    const std::string v120 = "#version 120";
+    const size_t at = source.find(v120);
+    if (at == std::string::npos) throw Error("shader without #version 120");
+    return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
+}
+}  // namespace
+
+ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample) : perSample_(perSample) {
     ShaderDefines defines = table.defines();
     for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
-    program_ = gl::Program::create(
-        "lidr-forward-" + scheme.name(), buildShaderSource("geometry.vert"),
-        buildShaderSource("lidr_forward.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
-        geometryAttributes());
+    if (perSample) {
+        defines.push_back({"LIDR_INDEX_SAMPLER", "sampler2DMS"});
+        defines.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
+    }
+    std::string vertex = buildShaderSource("geometry.vert");
+    std::string fragment =
+        buildShaderSource("lidr_forward.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}});
+    if (perSample) {
+        vertex = perSampleVersion(vertex);
+        fragment = perSampleVersion(fragment);
+    }
+    program_ = gl::Program::create(std::string("lidr-forward-") + scheme.name() + (perSample ? "-per-sample" : ""),
+                                   vertex, fragment, geometryAttributes());
 }
 
 RenderState transparentBlendState() {
@@ -67,6 +90,7 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     s.depthTest = true;
     s.depthFunc = afterPrepass ? GL_EQUAL : GL_LESS;  // after a pre-pass: one shaded fragment per pixel
     s.depthWrite = !afterPrepass;
+    s.sampleShading = perSample_;
     applyRenderState(s);
     bindInputs(targets, indices, table, camera, shading);
     scene.draw(program_, DrawFilter::Opaque, true);
@@ -78,7 +102,9 @@ void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTarget
                                  const LightTable& table, const CameraMatrices& camera,
                                  const ShadingParameters& shading) const {
     targets.bindColor();
-    applyRenderState(transparentBlendState());
+    RenderState s = transparentBlendState();
+    s.sampleShading = perSample_;
+    applyRenderState(s);
     bindInputs(targets, indices, table, camera, shading);
     scene.drawTransparentSorted(program_, camera.eye);
     unbindInputs(indices);

@@ -14,7 +14,9 @@ namespace lidr {
 
 class ForwardPass {
 public:
-    ForwardPass(const PackingScheme& scheme, const LightTable& table);
+    // perSample: the index targets are multisample textures read per sample (GLSL 1.50 compatibility +
+    // ARB_sample_shading); the pass then shades every sample.
+    ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false);
     // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
     // depth there, or LESS with depth writes when that target had no pre-pass.
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
@@ -30,6 +32,7 @@ private:
                     const CameraMatrices& camera, const ShadingParameters& shading) const;
     void unbindInputs(const IndexTargets& indices) const;
     gl::Program program_;
+    bool perSample_ = false;
 };
 
 // The state transparent layers are drawn with, in every mode: over the opaque depth, no depth writes,

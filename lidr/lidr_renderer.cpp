@@ -13,9 +13,23 @@ std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& sc
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
                     " volume test needs the depth pre-pass; only frontface may skip it");
-    if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace)
+    if (o.perSampleIndices) {
+        if (o.msaaSamples < 2) throw Error("per-sample index targets need MSAA (2 or more samples)");
+        if (!info.multisampleTexture || !info.sampleShading)
+            throw UnsupportedError("per-sample index targets need multisample textures (GL 3.2 / "
+                                   "ARB_texture_multisample) and sample shading (GL 4.0 / ARB_sample_shading); this "
+                                   "context (GL " + info.version + ") lacks them: use the single-sample front-face "
+                                   "index texture instead");
+        if (o.msaaSamples > info.maxColorTextureSamples)
+            throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
+                                   " samples asked for, multisample textures allow at most " +
+                                   std::to_string(info.maxColorTextureSamples));
+    } else if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace) {
         throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the frontface "
-                    "volume test with MSAA");
+                    "volume test with MSAA (or per-sample index targets where the context has them)");
+    }
+    if (o.perSampleIndices && !o.depthPrepass)
+        throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
     checkSamples(info, o.msaaSamples);
     auto scheme = createPackingScheme(o.packing, info);
     if (scene.lights.size() > scheme->maxLights())
@@ -31,15 +45,20 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       scheme_(checkedScheme(info, scene, options)),
       scene_(scene),
       targets_(info, width, height, options.msaaSamples),
-      indexTargets_(scheme_->targetCount(), width, height, targets_.depthStencil()),
+      indexTargets_(scheme_->targetCount(), width, height,
+                    options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+                    options.perSampleIndices ? options.msaaSamples : 0),
       lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
       volumePass_(info, options.volumeTest),
-      forwardPass_(*scheme_, lightTable_),
+      forwardPass_(*scheme_, lightTable_, options.perSampleIndices),
       timer_(info, options.timingMethod) {
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
     if (drawTransparent_ && options.volumeTest != VolumeTest::FrontFace) {
-        transparentIndexTargets_ = IndexTargets(scheme_->targetCount(), width, height, targets_.depthStencil());
+        transparentIndexTargets_ =
+            IndexTargets(scheme_->targetCount(), width, height,
+                         options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+                         options.perSampleIndices ? options.msaaSamples : 0);
         transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace);
     }
 }
@@ -78,7 +97,11 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     stats_.drawnLights = static_cast<int>(volumes.size());
     timer_.end();
 
-    targets_.bindSingleSample();
+    // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
+    if (options_.perSampleIndices)
+        targets_.bindColor();
+    else
+        targets_.bindSingleSample();
     if (options_.depthPrepass) {
         timer_.begin("depth-prepass");
         depthPrepass_.run(scene_, cam);
@@ -108,7 +131,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     timer_.end();
 
     const bool multisampled = targets_.samples() > 0;
-    if (multisampled && options_.depthPrepass) {
+    if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
         timer_.begin("msaa-depth-prepass");
         targets_.bindColor();
         depthPrepass_.run(scene_, cam);

@@ -26,6 +26,10 @@ struct LidrOptions {
     // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
     // a front-face index texture: the main one in front-face mode, else one more volume pass for it alone.
     bool transparency = true;
+    // Trebilco's MSAA technique 1, optional (GL 3.2 multisample textures + ARB_sample_shading): pre-pass,
+    // light volumes and index targets are all multisampled and every sample reads its own index list, so
+    // any volume test works with MSAA. Needs msaaSamples >= 2.
+    bool perSampleIndices = false;
     bool cullLights = true;           // skip lights whose volume is wholly outside the view frustum
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     bool timing = true;
@@ -50,6 +54,7 @@ public:
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
     bool drawsTransparency() const { return drawTransparent_; }
+    bool perSampleIndices() const { return options_.perSampleIndices; }
     float volumeMeshOutsideRadius() const { return volumePass_.meshOutsideRadius(); }
     const LightTable& lightTable() const { return lightTable_; }
     std::vector<ImageRGBA8> readIndexTargets() const;

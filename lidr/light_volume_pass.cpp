@@ -1,5 +1,7 @@
 #include "lidr/light_volume_pass.h"
 
+#include <algorithm>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "lidr/error.h"
@@ -23,12 +25,13 @@ VolumeTest parseVolumeTest(const std::string& name) {
     throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface)");
 }
 
-IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil)
-    : width_(width), height_(height) {
+IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
+    : width_(width), height_(height), samples_(samples) {
     if (count < 1 || count > kMaxIndexTargets) throw Error("index target count must be 1..4");
     fbo_ = gl::Framebuffer::create();
     for (int i = 0; i < count; ++i) {
-        textures_.push_back(gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
+        textures_.push_back(samples > 0 ? gl::Texture::create2DMultisample(GL_RGBA8, width, height, samples)
+                                        : gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, textures_.back());
     }
     fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
@@ -36,7 +39,7 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4; }
+size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
     : test_(test), depthClamp_(info.depthClamp), mesh_(makeLightVolumeMesh(2)) {

@@ -38,7 +38,9 @@ struct VolumeLight {
 class IndexTargets {
 public:
     IndexTargets() = default;
-    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil);
+    // samples > 0: multisample textures (the per-sample MSAA path); depthStencil must have as many samples.
+    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples = 0);
+    int samples() const { return samples_; }
     int count() const { return static_cast<int>(textures_.size()); }
     const gl::Texture& texture(int i) const { return textures_[i]; }
     const gl::Framebuffer& framebuffer() const { return fbo_; }
@@ -49,7 +51,7 @@ public:
 private:
     std::vector<gl::Texture> textures_;
     gl::Framebuffer fbo_;
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0, samples_ = 0;
 };
 
 // One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.

@@ -7,12 +7,16 @@
 namespace lidr {
 
 ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
-                                     bool forceFixedLightTable, int msaaSamples, bool transparency)
+                                     bool forceFixedLightTable, int msaaSamples, bool transparency,
+                                     bool sampleShading)
     : scene_(scene),
       targets_(info, width, height, msaaSamples),
       lightTable_(info, lightCapacity, forceFixedLightTable),
       timer_(info),
-      drawTransparent_(transparency && scene_.hasTransparent()) {
+      drawTransparent_(transparency && scene_.hasTransparent()),
+      sampleShading_(sampleShading) {
+    if (sampleShading && !info.sampleShading)
+        throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
     ShaderDefines defines = lightTable_.defines();
     defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
     program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
@@ -44,6 +48,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_EQUAL;
+    s.sampleShading = sampleShading_;
     applyRenderState(s);
     program_.use();
     setShadingUniforms(program_, cam, shading);
@@ -51,7 +56,9 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
     if (drawTransparent_) {
-        applyRenderState(transparentBlendState());
+        RenderState t = transparentBlendState();
+        t.sampleShading = sampleShading_;
+        applyRenderState(t);
         scene_.drawTransparentSorted(program_, cam.eye);
     }
     applyRenderState(RenderState{});

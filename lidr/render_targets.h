@@ -20,6 +20,8 @@ public:
     void resolve() const;           // MSAA colour into color(); nothing without MSAA
     int samples() const { return samples_; }
     const gl::Renderbuffer& depthStencil() const { return depthStencil_; }
+    // The MSAA depth-stencil (per-sample index targets attach it); empty without MSAA.
+    const gl::Renderbuffer& multisampleDepthStencil() const { return msaaDepthStencil_; }
     const gl::Texture& color() const { return color_; }
     const gl::Framebuffer& colorFramebuffer() const { return colorFbo_; }
     int width() const { return width_; }
