@@ -92,13 +92,15 @@ std::string ModeConfig::label() const {
 }
 
 std::string ModeConfig::key() const {
-    return label() + (msaa > 0 ? " msaa" + std::to_string(msaa) : "") + (transparency ? "" : " opaque");
+    return label() + (msaa > 0 ? " msaa" + std::to_string(msaa) + (perSample ? " per-sample" : "") : "") +
+           (transparency ? "" : " opaque");
 }
 
 ModeConfig referenceConfigFor(const ModeConfig& config) {
     ModeConfig r;
     r.mode = "forward-brute";
     r.msaa = config.msaa;
+    r.perSample = config.perSample;
     r.transparency = config.transparency;
     return r;
 }
@@ -120,6 +122,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.packing.indexBits = c.indexBits;
     o.volumeTest = parseVolumeTest(c.volumeTest);
     o.msaaSamples = c.msaa;
+    o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;
     return o;
 }
@@ -131,11 +134,11 @@ std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo&
     if (c.mode == "forward-brute")  // built here: the bench sets its loop bound to the scene's light count
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), false, c.msaa,
-                                                   c.transparency);
+                                                   c.transparency, c.perSample);
     if (c.mode == "lidr") return std::make_unique<LidrRenderer>(info, scene, lidrOptionsFor(c), width, height);
 #if LIDR_BENCH_HAS_MODE_FACTORY
     // What the factory's options cannot express is refused here, so no row claims a setting it did not use.
-    if (c.msaa > 0) throw UnsupportedError("mode " + c.mode + " has no MSAA option");
+    if (c.msaa > 0 || c.perSample) throw UnsupportedError("mode " + c.mode + " has no MSAA option");
     if (c.mode == "forward-multipass" && c.transparency)
         throw UnsupportedError("forward-multipass does not draw transparent meshes (additive light passes cannot "
                                "alpha-blend); measure it with transparency off");
@@ -172,6 +175,7 @@ std::vector<SweepGroup> quickPreset() {
     g.indexBits = {8};
     g.volumeTests = {"backface", "frontface"};
     g.msaa = {0};
+    g.perSample = {false};
     g.transparency = {true};
     g.tiledDepthBounds = {true, false};
     return {g};
@@ -190,20 +194,25 @@ std::vector<SweepGroup> fullPreset() {
     room.indexBits = {8, 16};
     room.volumeTests = {"backface", "exact", "frontface"};
     room.msaa = {0};
+    room.perSample = {false};
     // Off as well as on: forward-multipass draws no transparent meshes, so the like-for-like comparison of
     // every mode (the targets) is the opaque one.
     room.transparency = {false, true};
     room.tiledDepthBounds = {true, false};
     groups.push_back(room);
 
-    SweepGroup variants = room;  // MSAA and transparency on/off, at budget 4 with the front-face test
-    variants.name = "room-msaa-transparency";
+    SweepGroup variants = room;  // MSAA 4x, one index list per pixel and per-sample lists, at budget 4
+    variants.name = "room-msaa";
+    variants.modes = {"lidr", "forward-brute"};  // the modes with an MSAA option
     variants.budgets = {4};
     variants.indexBits = {8};
-    variants.volumeTests = {"frontface"};
+    variants.volumeTests = {"backface", "frontface"};  // back-face needs per-sample lists under MSAA
+    // 320x240: brute force with 4x MSAA costs seconds a frame at this size on llvmpipe, shaded per sample
+    // four times that; at 1024x768 the two references alone would take minutes.
+    variants.resolutions = {{320, 240}};
     variants.msaa = {0, 4};
-    variants.transparency = {false, true};
-    variants.tiledDepthBounds = {true};
+    variants.perSample = {false, true};  // per-sample index lists where the context has them (GL 3.2)
+    variants.transparency = {true};
     groups.push_back(variants);
 
     SweepGroup overlap;  // cost and drops against a known overlap
@@ -216,6 +225,7 @@ std::vector<SweepGroup> fullPreset() {
     overlap.indexBits = {8, 16};
     overlap.volumeTests = {"backface"};
     overlap.msaa = {0};
+    overlap.perSample = {false};
     overlap.transparency = {true};
     overlap.tiledDepthBounds = {true, false};
     groups.push_back(overlap);
@@ -231,8 +241,7 @@ std::vector<SweepGroup> fullPreset() {
 namespace {
 
 std::string refKey(const std::string& scene, int w, int h, const ModeConfig& c) {
-    return scene + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + std::to_string(c.msaa) + "|" +
-           (c.transparency ? "t" : "o");
+    return scene + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + referenceConfigFor(c).key();
 }
 
 // A small stand-in for `scene` with the same lights, materials and camera: building a renderer for it runs
@@ -316,8 +325,11 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                     ModeConfig base;
                     base.mode = mode;
                     for (int msaa : g.msaa)
+                      for (bool perSample : g.perSample)
                         for (bool transparency : g.transparency) {
+                            if (perSample && msaa == 0) continue;  // per-sample lists exist only with MSAA
                             base.msaa = msaa;
+                            base.perSample = perSample;
                             base.transparency = transparency;
                             if (mode == "lidr") {
                                 for (const auto& scheme : g.schemes)
@@ -359,6 +371,7 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                     const std::string& reason = probeResults[probeKey];
                     note("mode", c.mode, reason);
                     note("MSAA", str(c.msaa), reason);
+                    if (c.msaa > 0) note("per-sample", str(c.perSample), reason);
                     note("transparency", str(c.transparency), reason);
                     if (c.mode == "lidr") {
                         note("scheme", c.scheme, reason);

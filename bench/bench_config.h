@@ -34,6 +34,9 @@ struct ModeConfig {
     bool tiledDepthBounds = false;
     // every mode
     int msaa = 0;
+    // With MSAA: LIDR's per-sample index lists (LidrOptions::perSampleIndices) and a reference shaded per
+    // sample; else one index list per pixel.
+    bool perSample = false;
     bool transparency = true;
     std::string label() const;    // "lidr bitshift b4 8-bit backface", "tiled min/max", "forward-brute", ...
     std::string key() const;      // label + msaa + transparency: unique per configuration
@@ -61,6 +64,7 @@ struct SweepGroup {
     std::vector<int> indexBits;
     std::vector<std::string> volumeTests;
     std::vector<int> msaa;
+    std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
     // Dimensions whose list a person typed ("mode", "scheme", "budget", "index width", "volume test",

@@ -30,7 +30,7 @@ double finitePsnr(double psnr) { return std::isfinite(psnr) ? psnr : 999.0; }
 const std::vector<std::string>& resultColumns() {
     static const std::vector<std::string> c{
         "id", "group", "scene", "width", "height", "scene_lights", "max_overlap", "mode", "config", "scheme",
-        "budget", "index_bits", "volume_test", "tiled_depth_bounds", "msaa", "transparency", "timing_method",
+        "budget", "index_bits", "volume_test", "tiled_depth_bounds", "msaa", "per_sample", "transparency", "timing_method",
         "warmup_frames", "frames", "frame_ms_median", "frame_ms_min", "frame_ms_max", "wall_ms_median",
         "light_volume_ms_median", "light_volume_share", "light_data_bytes", "drawn_lights", "rmse", "psnr_db",
         "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
@@ -72,7 +72,7 @@ std::vector<std::string> csvCells(const Row& r) {
             std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
             lidr ? std::to_string(c.budget) : "", lidr ? std::to_string(c.indexBits) : "", lidr ? c.volumeTest : "",
             c.mode == "tiled" ? (c.tiledDepthBounds ? "1" : "0") : "", std::to_string(c.msaa),
-            c.transparency ? "1" : "0", r.timingMethod, std::to_string(r.warmupFrames), std::to_string(r.frames),
+            c.perSample ? "1" : "0", c.transparency ? "1" : "0", r.timingMethod, std::to_string(r.warmupFrames), std::to_string(r.frames),
             num(r.frameMs.median), num(r.frameMs.min), num(r.frameMs.max), num(r.wallMs.median),
             lidr ? num(r.lightVolumeMs) : "", lidr ? num(r.lightVolumeShare()) : "", std::to_string(r.lightDataBytes),
             std::to_string(r.drawnLights), num(r.error.rmse, 5), num(finitePsnr(r.error.psnr), 3),
@@ -100,6 +100,7 @@ nlohmann::json rowJson(const Row& r) {
         j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
     j["msaa"] = c.msaa;
+    j["per_sample"] = c.perSample;
     j["transparency"] = c.transparency;
     j["timing"] = {{"method", r.timingMethod}, {"warmup_frames", r.warmupFrames}, {"frames", r.frames},
                    {"frame_ms", statJson(r.frameMs)}, {"wall_ms", statJson(r.wallMs)}};

@@ -230,8 +230,8 @@ void fillTiming(Row& row, const Measured& m) {
 }
 
 std::string refKey(const Run& r) {
-    return r.scene + "|" + std::to_string(r.width) + "x" + std::to_string(r.height) + "|" + std::to_string(r.config.msaa) +
-           "|" + (r.config.transparency ? "t" : "o");
+    return r.scene + "|" + std::to_string(r.width) + "x" + std::to_string(r.height) + "|" +
+           referenceConfigFor(r.config).key();
 }
 
 // ---- command line ----------------------------------------------------------------------------------------
@@ -286,7 +286,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"backface,exact,frontface"}, msaa{"0"}, transparency{"on"}, tiledBounds{"on,off"}, resolutions{"1024x768"};
+        volumeTests{"backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     bool quick = false, full = false, noProgress = false, noPlots = false, dryRun = false, list = false;
@@ -297,7 +297,8 @@ int main(int argc, char** argv) {
     app.add_option("--budgets", budgets, "LIDR light slots per pixel")->capture_default_str();
     app.add_option("--index-bits", indexBits, "LIDR light index widths")->capture_default_str();
     app.add_option("--volume-tests", volumeTests, "LIDR volume tests: backface, exact, frontface")->capture_default_str();
-    app.add_option("--msaa", msaa, "MSAA sample counts (0 = off); LIDR needs the frontface test for MSAA")->capture_default_str();
+    app.add_option("--msaa", msaa, "MSAA sample counts (0 = off); LIDR needs the frontface test for MSAA unless per-sample")->capture_default_str();
+    app.add_option("--per-sample", perSample, "With MSAA: LIDR per-sample index lists (GL 3.2) off, on")->capture_default_str();
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();
     app.add_option("--resolution", resolutions, "WIDTHxHEIGHT, or 'scene' for the scene's own")->capture_default_str();
@@ -336,7 +337,7 @@ int main(int argc, char** argv) {
         std::vector<SweepGroup> groups;
         const bool listsGiven = app.count("--scenes") || app.count("--modes") || app.count("--schemes") ||
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
-                                app.count("--msaa") || app.count("--transparency") || app.count("--tiled-depth-bounds") ||
+                                app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") ||
                                 app.count("--resolution");
         if ((quick || full) && listsGiven)
             throw Error(std::string("--") + (quick ? "quick" : "full") +
@@ -360,13 +361,15 @@ int main(int argc, char** argv) {
             g.indexBits = intList(indexBits, "index width");
             g.volumeTests = splitList(volumeTests);
             g.msaa = intList(msaa, "MSAA sample count");
+            g.perSample = onOffList(perSample, "--per-sample value");
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
             // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
             const std::pair<const char*, const char*> typed[] = {
                 {"--modes", "mode"}, {"--schemes", "scheme"}, {"--budgets", "budget"}, {"--index-bits", "index width"},
-                {"--volume-tests", "volume test"}, {"--msaa", "MSAA"}, {"--transparency", "transparency"}};
+                {"--volume-tests", "volume test"}, {"--msaa", "MSAA"}, {"--per-sample", "per-sample"},
+                {"--transparency", "transparency"}};
             for (const auto& [option, dimension] : typed)
                 if (app.count(option)) g.strictDimensions.insert(dimension);
             groups.push_back(g);
@@ -482,7 +485,8 @@ int main(int argc, char** argv) {
                 if (auto* lidrRenderer = dynamic_cast<LidrRenderer*>(renderer.get())) {
                     const FrameEvaluation ev = evaluateFrame(*lidrRenderer, scene.camera, lights, image, reference.image);
                     row.error = ev.error;
-                    row.hasLists = true;
+                    // Per-sample index targets are multisample textures: evaluateFrame judges only the image.
+                    row.hasLists = !lidrRenderer->perSampleIndices();
                     row.droppedLightPixels = ev.lists.droppedLightPixels;
                     row.pixelsWithDrops = ev.lists.pixelsWithDrops;
                     row.pixelsOverBudget = ev.pixelsOverBudget;
