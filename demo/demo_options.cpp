@@ -32,6 +32,9 @@ Scene SceneChoice::load() const {
 }
 
 void RendererChoice::addOptions(CLI::App& app) {
+    app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
+    app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
+    app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
     app.add_option("--scheme", scheme, "Packing scheme: bitshift");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
@@ -46,6 +49,18 @@ LidrOptions RendererChoice::lidrOptions() const {
     o.packing.budget = budget;
     o.packing.indexBits = indexBits;
     o.volumeTest = parseVolumeTest(volumeTest);
+    o.forceFixedLightTable = fixedLightTable;
+    return o;
+}
+
+RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
+    RenderModeOptions o;
+    o.mode = mode.empty() ? scene.renderMode : mode;
+    if (!isRenderModeName(o.mode))
+        throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
+    o.lidr = lidrOptions();
+    o.tiled.tileSize = tileSize;
+    o.tiled.depthBounds = !noDepthBounds;
     o.forceFixedLightTable = fixedLightTable;
     return o;
 }

@@ -6,6 +6,7 @@
 
 #include "lidr/context.h"
 #include "lidr/lidr_renderer.h"
+#include "lidr/render_mode.h"
 #include "lidr/scene.h"
 
 namespace lidr::demo {
@@ -20,6 +21,9 @@ struct SceneChoice {
 };
 
 struct RendererChoice {
+    std::string mode;  // empty: the scene's ("lidr" unless its file says otherwise)
+    int tileSize = 32;
+    bool noDepthBounds = false;
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;
@@ -28,6 +32,8 @@ struct RendererChoice {
     bool fixedLightTable = false;
     void addOptions(CLI::App& app);
     LidrOptions lidrOptions() const;  // throws lidr::Error on a bad name
+    // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
+    RenderModeOptions renderModeOptions(const Scene& scene) const;
     ContextOptions contextOptions() const;
 };
 

@@ -49,8 +49,20 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     program_.set("uLightCount", float(lights.size()));
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
-    applyRenderState(RenderState{});
     timer_.end();
+    if (drawTransparent_ && scene_.hasTransparent()) {
+        timer_.begin("brute-force-transparent");
+        RenderState t;
+        t.depthTest = true;
+        t.depthFunc = GL_LESS;  // hidden behind opaque geometry; no depth writes, layers blend back to front
+        t.blend = true;
+        t.blendSrcRgb = GL_SRC_ALPHA, t.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
+        t.blendSrcAlpha = GL_ZERO, t.blendDstAlpha = GL_ONE;  // the image stays opaque
+        applyRenderState(t);
+        scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
+    }
+    applyRenderState(RenderState{});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();

@@ -40,9 +40,12 @@ std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInf
         mo.forceFixedLightTable = mo.forceFixedLightTable || o.forceFixedLightTable;
         return std::make_unique<MultipassForwardRenderer>(info, scene, mo, width, height);
     }
-    if (o.mode == "forward-brute")
-        return std::make_unique<ReferenceRenderer>(info, scene, width, height,
-                                                   std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable);
+    if (o.mode == "forward-brute") {
+        auto r = std::make_unique<ReferenceRenderer>(info, scene, width, height,
+                                                     std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable);
+        r->setDrawTransparent(true);  // a render mode draws the whole scene
+        return r;
+    }
     throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
 }
 

@@ -12,13 +12,11 @@
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
 #include "lidr/gl_resources.h"
-#include "lidr/gl_state.h"
 #include "lidr/image_compare.h"
 #include "lidr/light_coverage.h"
 #include "lidr/primitives.h"
 #include "lidr/reference_renderer.h"
 #include "lidr/render_mode.h"
-#include "lidr/shader_source.h"
 #include "lidr/sphere_bounds.h"
 #include "lidr/tiled_renderer.h"
 #include "lidr/visualize.h"
@@ -57,42 +55,12 @@ std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsig
     return lights;
 }
 
-// Brute-force reference with transparency: the reference renderer's opaque image, then the transparent
-// meshes back to front, alpha blended, every light at every fragment (reference_forward.frag). The state is
-// the one any forward mode uses for transparency: depth LESS against the opaque depth, no depth writes.
+// The brute-force reference, transparent meshes included (back to front, alpha blended, every light).
 ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable) {
-    const int capacity = std::max<int>(1, int(lights.size()));
-    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, capacity, fixedTable);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
-    reference.render(scene.camera, lights, shading);
-    GpuScene gpu(scene);
-    if (gpu.hasTransparent()) {
-        LightTable table(testGl(), capacity, fixedTable);
-        table.update(lights);
-        ShaderDefines d = table.defines();
-        d.push_back({"LIDR_MAX_LIGHTS", std::to_string(capacity)});
-        gl::Program p = gl::Program::create("reference-transparent", buildShaderSource("geometry.vert"),
-                                            buildShaderSource("reference_forward.frag", d), {{"aPosition", gl::kPosition},
-                                            {"aNormal", gl::kNormal}, {"aTexCoord", gl::kTexCoord}});
-        const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
-        reference.targets().bindColor();
-        RenderState t;
-        t.depthTest = true;
-        t.depthFunc = GL_LESS;
-        t.blend = true;
-        t.blendSrcRgb = GL_SRC_ALPHA, t.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
-        t.blendSrcAlpha = GL_ZERO, t.blendDstAlpha = GL_ONE;
-        applyRenderState(t);
-        p.use();
-        p.set("uViewProj", cam.viewProjection);
-        p.set("uEyePosition", cam.eye);
-        p.set("uAmbient", shading.ambient);
-        p.set("uLightCount", float(lights.size()));
-        table.bind(p);
-        gpu.drawTransparentSorted(p, cam.eye);
-        applyRenderState(RenderState{});
-        checkGl("reference transparency");
-    }
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
+                                fixedTable);
+    reference.setDrawTransparent(true);
+    reference.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
     return reference.targets().readColor();
 }
 
