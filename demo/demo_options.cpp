@@ -25,8 +25,8 @@ Scene SceneChoice::load() const {
         scene = loadSceneFile(sceneFile);
         if (time >= 0.0) scene.time = float(time);
     }
-    if (width != 0) scene.width = width;
-    if (height != 0) scene.height = height;
+    if (width) scene.width = *width;
+    if (height) scene.height = *height;
     scene.validate();
     return scene;
 }

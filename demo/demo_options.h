@@ -1,5 +1,6 @@
 #pragma once
 // Command-line options shared by lidr-demo (and later lidr-bench): scene choice and renderer settings.
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -13,7 +14,7 @@ namespace lidr::demo {
 
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
-    int width = 0, height = 0;  // 0: the scene's
+    std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
     double time = -1.0;         // < 0: the scene's
     unsigned seed = 1;
     void addOptions(CLI::App& app);

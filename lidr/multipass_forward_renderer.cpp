@@ -1,6 +1,7 @@
 #include "lidr/multipass_forward_renderer.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "lidr/error.h"
 #include "lidr/forward_pass.h"
@@ -96,9 +97,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         if (!spherePixelRect(cam, l.position, radius, rect)) continue;  // touches no pixel
         if (options_.scissor) glScissor(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
         light_.set("uLightIndex", float(i + 1));
-        const int drawn = options_.cullMeshes
-                              ? scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, radius, true)
-                              : (scene_.draw(light_, DrawFilter::Opaque, true), 1);
+        const float cullRadius = options_.cullMeshes ? radius : std::numeric_limits<float>::infinity();
+        const int drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, cullRadius, true);
         if (drawn == 0) continue;
         meshDraws_ += drawn;
         ++stats_.drawnLights;
