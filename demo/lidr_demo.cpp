@@ -109,7 +109,10 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                             {"max_opaque_lights", g.maxOpaqueLights}, {"max_transparent_lights", g.maxTransparentLights},
                             {"opaque_entries", g.opaqueEntries}, {"transparent_entries", g.transparentEntries},
                             {"loop_bound", tiled->frameInfo().loopBound},
-                            {"list_texture_rows", tiled->frameInfo().listTextureRows}};
+                            {"list_texture_rows", tiled->frameInfo().listTextureRows},
+                            {"grid_bytes", tiled->gridBytes()}, {"list_bytes", tiled->listBytes()},
+                            {"depth_reduction_bytes", tiled->depthReductionBytes()},
+                            {"light_table_bytes", tiled->lightTable().bytes()}};
         writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
         outputs += ", tile_heatmap.png";
         s << "tiled      " << tiled->options().tileSize << " px tiles (" << tiled->grid().tilesX() << "x"

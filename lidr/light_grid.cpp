@@ -180,8 +180,7 @@ void LightGridTextures::bind(const gl::Program& program, bool transparent) const
     program.set("uLightListRows", float(listRows_));
 }
 
-size_t LightGridTextures::bytes() const {
-    return size_t(tilesX_) * tilesY_ * 4 * 2 + size_t(kListWidth) * listRows_ * 2;
-}
+size_t LightGridTextures::gridBytes() const { return size_t(tilesX_) * tilesY_ * 4 * 2; }
+size_t LightGridTextures::listBytes() const { return size_t(kListWidth) * listRows_ * 2; }
 
 }  // namespace lidr

@@ -86,7 +86,9 @@ public:
     // Binds the grid textures and sets tiled_grid.glsl's uniforms; `transparent` picks that grid.
     void bind(const gl::Program& program, bool transparent) const;
     int listRows() const { return listRows_; }
-    size_t bytes() const;  // both grids and the whole list texture
+    size_t bytes() const { return gridBytes() + listBytes(); }
+    size_t gridBytes() const;  // the two tile grids
+    size_t listBytes() const;  // the whole list texture, as allocated
 
 private:
     int maxTextureSize_ = 0, tilesX_ = 0, tilesY_ = 0, listRows_ = 0;

@@ -63,6 +63,8 @@ public:
     const LightTable& lightTable() const { return lightTable_; }
     DepthReductionFormat depthFormat() const;  // of the reduction (meaningful with depthBounds)
     size_t depthReductionBytes() const { return depthBounds_ ? depthBounds_->bytes() : 0; }
+    size_t gridBytes() const { return gridTextures_.gridBytes(); }
+    size_t listBytes() const { return gridTextures_.listBytes(); }
 
     // Lights per tile as an image (width x height, rows top to bottom), coloured like overlapHeatMap:
     // blue -> yellow up to `budget`, red past it; `transparent` shows the transparent lists.
