@@ -41,7 +41,7 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
     tilesX_ = shape.tilesX();
     tilesY_ = shape.tilesY();
     createTargets(depthStencil);
-    if (format_ == DepthReductionFormat::Float32 && !(complete(prepassFbo_) && complete(chains_[0].columnsFbo))) {
+    if (format_ == DepthReductionFormat::Float32 && !(complete(chains_[0].columnsFbo) && complete(chains_[0].tilesFbo))) {
         // ARB_texture_float makes float textures, not necessarily float render targets: fall back.
         format_ = DepthReductionFormat::PackedRGBA8;
         createTargets(depthStencil);
@@ -53,13 +53,14 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-    ShaderDefines base;
-    if (format_ == DepthReductionFormat::PackedRGBA8) base.push_back({"LIDR_DEPTH_PACKED", "1"});
     prepassProgram_ = gl::Program::create("tile-prez", buildShaderSource("geometry.vert"),
-                                          buildShaderSource("depth_to_color.frag", base), geometryAttributes());
+                                          buildShaderSource("depth_to_color.frag"), geometryAttributes());
+    const bool packed = format_ == DepthReductionFormat::PackedRGBA8;
     for (size_t c = 0; c < chains_.size(); ++c) {
         for (int vertical = 0; vertical < 2; ++vertical) {
-            ShaderDefines d = base;
+            ShaderDefines d;
+            d.push_back({"LIDR_INPUT_PACKED", packed || !vertical ? "1" : "0"});  // the depth copy is packed
+            d.push_back({"LIDR_OUTPUT_PACKED", packed ? "1" : "0"});
             d.push_back({"LIDR_REDUCE_COUNT", std::to_string(tileSize)});
             d.push_back({"LIDR_REDUCE_VERTICAL", std::to_string(vertical)});
             d.push_back({"LIDR_REDUCE_MAX", c == 1 ? "1" : "0"});
@@ -75,7 +76,8 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
 }
 
 void TileDepthBounds::createTargets(const gl::Renderbuffer& depthStencil) {
-    depthCopy_ = colorTexture(format_, width_, height_);
+    // The full-size copy is always packed RGBA8 (4 bytes a pixel); the small reduced ones use the format.
+    depthCopy_ = colorTexture(DepthReductionFormat::PackedRGBA8, width_, height_);
     prepassFbo_ = colorFbo(depthCopy_);
     prepassFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
     chains_.clear();
@@ -94,8 +96,8 @@ void TileDepthBounds::createTargets(const gl::Renderbuffer& depthStencil) {
 
 size_t TileDepthBounds::bytes() const {
     const size_t texel = format_ == DepthReductionFormat::Float32 ? 16 : 4;
-    return texel * (size_t(width_) * height_ +
-                    chains_.size() * (size_t(tilesX_) * height_ + size_t(tilesX_) * tilesY_));
+    return 4 * size_t(width_) * height_ +
+           texel * chains_.size() * (size_t(tilesX_) * height_ + size_t(tilesX_) * tilesY_);
 }
 
 void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camera) const {

@@ -1,9 +1,9 @@
-// Depth in colour targets for the tile min/max reduction (lidr/tile_depth_bounds.h).
-// Float path (ARB_texture_float): RGBA32F, R = min and G = max window depth in [0, 1].
-// Packed path (LIDR_DEPTH_PACKED, no float render targets): RGBA8, one 24-bit integer depth in RGB (R high),
-// in units of 1 / (2^24 - 1); the min and the max are reduced in two chains. Values stay integers below 2^24
-// in the shader, so the reduction itself is exact in fp32; only the first conversion rounds (by <= 1 unit).
-#ifdef LIDR_DEPTH_PACKED
+// Depth in colour targets for the tile min/max reduction (lidr/tile_depth_bounds.h). GL 2.1 cannot sample
+// the packed depth-stencil renderbuffer, so the pre-Z pass also writes each fragment's depth here.
+// Packed: an RGBA8 texel holds one depth as a 24-bit integer in RGB (R high), in units of 1 / (2^24 - 1).
+// The values stay integers below 2^24 in the shader, so min/max over them is exact in fp32; only the first
+// conversion (pre-Z) rounds, by at most one unit.
+// Float (ARB_texture_float render targets): an RGBA32F texel holds R = min and G = max window depth.
 const float kLidrDepthUnits = 16777215.0;
 
 vec4 lidrPackDepthUnits(float v) {
@@ -17,4 +17,3 @@ vec4 lidrPackDepthUnits(float v) {
 float lidrUnpackDepthUnits(vec4 c) {
     return dot(floor(c.rgb * 255.0 + 0.5), vec3(65536.0, 256.0, 1.0));
 }
-#endif
