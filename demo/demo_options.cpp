@@ -35,6 +35,7 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
     app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
+    app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
     app.add_option("--scheme", scheme, "Packing scheme: bitshift");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
@@ -61,6 +62,7 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.lidr = lidrOptions();
     o.tiled.tileSize = tileSize;
     o.tiled.depthBounds = !noDepthBounds;
+    o.tiled.forcePackedDepth = packedDepth;
     o.forceFixedLightTable = fixedLightTable;
     return o;
 }

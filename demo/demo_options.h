@@ -25,6 +25,7 @@ struct RendererChoice {
     std::string mode;  // empty: the scene's ("lidr" unless its file says otherwise)
     int tileSize = 32;
     bool noDepthBounds = false;
+    bool packedDepth = false;
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;

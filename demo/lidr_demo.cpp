@@ -112,13 +112,14 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                             {"list_texture_rows", tiled->frameInfo().listTextureRows},
                             {"grid_bytes", tiled->gridBytes()}, {"list_bytes", tiled->listBytes()},
                             {"depth_reduction_bytes", tiled->depthReductionBytes()},
-                            {"light_table_bytes", tiled->lightTable().bytes()}};
+                            {"light_table_bytes", tiled->lightTable().bytes()},
+                            {"cpu_assign_ms_last_frame", tiled->frameInfo().assignMilliseconds}};
         writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
         outputs += ", tile_heatmap.png";
         s << "tiled      " << tiled->options().tileSize << " px tiles (" << tiled->grid().tilesX() << "x"
           << tiled->grid().tilesY() << "), depth bounds " << (tiled->options().depthBounds ? "on" : "off")
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
-          << g.opaqueEntries << " entries\n";
+          << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();

@@ -108,6 +108,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     }
 
     timer_.begin("light-grid");
+    const double assignStart = nowMilliseconds();
     const float reach = lightTable_.format() == LightTableFormat::Fixed16 ? fixedTableReach(lights) : 0.0f;
     grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
     gridTextures_.upload(grid_);
@@ -119,6 +120,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         buildProgram(std::min(bound, 65535));
     }
     stats_.drawnLights = gs.assignedLights;
+    const double assignMs = nowMilliseconds() - assignStart;
     timer_.end();
 
     timer_.begin("tiled-forward");
@@ -175,6 +177,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     stats_.passes = timer_.collect();
 
     frameInfo_.grid = gs;
+    frameInfo_.assignMilliseconds = assignMs;
     frameInfo_.listTextureRows = gridTextures_.listRows();
     frameInfo_.depthBoundsUsed = depthBounds_ != nullptr;
     return stats_;

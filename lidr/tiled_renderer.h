@@ -41,6 +41,8 @@ struct TiledFrameInfo {
     int shaderRebuilds = 0;     // times the loop bound grew, since construction
     int listTextureRows = 0;    // rows of the index list texture (it grows too)
     bool depthBoundsUsed = false;
+    double assignMilliseconds = 0.0;  // CPU time of the light assignment and grid upload (GPU timer queries
+                                      // do not see CPU work)
 };
 
 class TiledRenderer final : public Renderer {
