@@ -46,6 +46,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
                                                    const ShadingParameters& shading) {
     if (lights.size() > 65535)
         throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
+    checkLightSpheres(lights, "forward-multipass");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
     stats_.timingMethod = timer_.method();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "lidr/error.h"
 
@@ -81,6 +82,18 @@ bool spherePixelRect(const CameraMatrices& m, const glm::vec3& center, float rad
     rect.z = int(std::min(double(m.width - 1), std::floor(x1)));
     rect.w = int(std::min(double(m.height - 1), std::floor(y1)));
     return rect.x <= rect.z && rect.y <= rect.w;
+}
+
+void checkLightSpheres(const std::vector<PointLight>& lights, const char* who) {
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        bool finite = true;
+        for (int k = 0; k < 3; ++k) finite = finite && std::isfinite(l.position[k]) && std::isfinite(l.color[k]);
+        if (!finite || !std::isfinite(l.radius) || !(l.radius > 0.0f))
+            throw Error(std::string(who) + ": light " + std::to_string(i + 1) +
+                        (finite ? " has radius " + std::to_string(l.radius) + ", must be a finite number > 0"
+                                : " has a non-finite position or colour"));
+    }
 }
 
 float viewDepthFromWindowDepth(const CameraMatrices& m, float windowDepth) {

@@ -5,6 +5,8 @@
 // camera are handled, and nothing that lies in front of the near plane can widen them. The pixel rectangle
 // adds a margin for float rounding, so it is conservative: a pixel whose centre's view ray meets the sphere
 // between the near and far planes is always inside it.
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "lidr/camera.h"
@@ -28,6 +30,10 @@ SphereBounds projectSphereBounds(const CameraMatrices& camera, const glm::vec3& 
 // side (1 covers rounding in the projection; the result stays conservative for any margin >= 0.5).
 bool spherePixelRect(const CameraMatrices& camera, const glm::vec3& center, float radius, glm::ivec4& rect,
                      float margin = 1.0f);
+
+// Throws lidr::Error naming the first light (1-based index) with a non-finite position or colour, or a radius
+// that is not a finite number > 0; `who` starts the message ("tiled", "forward-multipass").
+void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);
 
 // View-space distance along the view direction of a window depth in [0, 1] (inverse of the projection's
 // depth mapping).

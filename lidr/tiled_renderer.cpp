@@ -6,6 +6,7 @@
 #include "lidr/forward_pass.h"
 #include "lidr/gl_state.h"
 #include "lidr/shader_source.h"
+#include "lidr/sphere_bounds.h"
 #include "lidr/visualize.h"
 
 namespace lidr {
@@ -78,6 +79,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
                                         const ShadingParameters& shading) {
     if (lights.size() > 65535)
         throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
+    checkLightSpheres(lights, "tiled");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
     stats_.timingMethod = timer_.method();

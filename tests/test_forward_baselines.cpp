@@ -186,3 +186,12 @@ TEST_CASE("multi-pass forward: every GL object is released with its renderer", "
     }
     REQUIRE(gl::liveGlObjects() == before);
 }
+
+TEST_CASE("multi-pass forward: bad lights are refused before drawing", "[forward][bad-input]") {
+    Scene scene = floorScene();
+    scene.lights = {light({0, 1, 0}, 3.0f)};
+    MultipassForwardRenderer r(testGl(), scene, MultipassOptions{}, scene.width, scene.height);
+    const std::vector<PointLight> bad = {light({0, 1, 0}, 0.0f)};
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("forward-multipass: light 1"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}

@@ -4,6 +4,7 @@
 // Verified on Mesa llvmpipe, softpipe and the GL 2.1 override.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -541,6 +542,12 @@ TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input]") {
     TiledRenderer r(testGl(), scene, TiledOptions{}, scene.width, scene.height);
     const std::vector<PointLight> tooMany(65536, light({0, 0, 0}, 1.0f));
     REQUIRE_THROWS_WITH(r.render(scene.camera, tooMany, {}), Catch::Contains("65535"));
+    std::vector<PointLight> bad = {light({0, 1, 0}, 2.0f), light({0, 1, 0}, -1.0f)};
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("light 2") && Catch::Contains("radius"));
+    bad[1] = light({std::nanf(""), 1, 0}, 1.0f);
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("non-finite"));
+    bad[1] = light({0, 1, 0}, std::numeric_limits<float>::infinity());
+    REQUIRE_THROWS_AS(r.render(scene.camera, bad, {}), Error);
     REQUIRE(glGetError() == GL_NO_ERROR);
 }
 
