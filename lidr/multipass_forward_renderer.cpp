@@ -11,21 +11,6 @@
 
 namespace lidr {
 
-namespace {
-// As in the tiled mode: the fixed-point light table may reach this much beyond a light's real sphere.
-float fixedTableReach(const std::vector<PointLight>& lights) {
-    if (lights.empty()) return 0.0f;
-    glm::vec3 lo = lights[0].position, hi = lo;
-    float maxRadius = 0.0f;
-    for (const PointLight& l : lights) {
-        lo = glm::min(lo, l.position);
-        hi = glm::max(hi, l.position);
-        maxRadius = std::max(maxRadius, l.radius);
-    }
-    return (0.5f * glm::length(hi - lo) + maxRadius) / 65535.0f * 1.01f;
-}
-}  // namespace
-
 MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
                                                    const MultipassOptions& options, int width, int height)
     : options_(options),
@@ -90,7 +75,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     light_.use();
     setShadingUniforms(light_, cam, shading);
     lightTable_.bind(light_);
-    const float reach = lightTable_.format() == LightTableFormat::Fixed16 ? fixedTableReach(lights) : 0.0f;
+    const float reach = lightTable_.reachError();
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
         const float radius = l.radius + reach;

@@ -22,20 +22,6 @@ const TiledOptions& checkedOptions(const TiledOptions& o) {
 
 int lightCapacity(const Scene& scene) { return std::max<int>(1, int(scene.lights.size())); }
 
-// How far a light of the RGBA8 fixed-point table may reach beyond the real sphere: positions round to the
-// nearest 1/65535 of the lights' bounding box, radii round up by at most 1/65535 of the largest radius
-// (lidr/light_table.cpp). The light assignment widens every sphere by this much.
-float fixedTableReach(const std::vector<PointLight>& lights) {
-    if (lights.empty()) return 0.0f;
-    glm::vec3 lo = lights[0].position, hi = lo;
-    float maxRadius = 0.0f;
-    for (const PointLight& l : lights) {
-        lo = glm::min(lo, l.position);
-        hi = glm::max(hi, l.position);
-        maxRadius = std::max(maxRadius, l.radius);
-    }
-    return (0.5f * glm::length(hi - lo) + maxRadius) / 65535.0f * 1.01f;
-}
 }  // namespace
 
 TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const TiledOptions& options, int width,
@@ -111,7 +97,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
 
     timer_.begin("light-grid");
     const double assignStart = nowMilliseconds();
-    const float reach = lightTable_.format() == LightTableFormat::Fixed16 ? fixedTableReach(lights) : 0.0f;
+    const float reach = lightTable_.reachError();
     grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
     gridTextures_.upload(grid_);
     const LightGridStats& gs = grid_.stats();
