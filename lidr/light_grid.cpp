@@ -119,7 +119,9 @@ LightGridTextures::LightGridTextures(const GlInfo& info, int tilesX, int tilesY)
     if (tilesX > info.maxTextureSize || tilesY > info.maxTextureSize)
         throw Error("light grid of " + std::to_string(tilesX) + "x" + std::to_string(tilesY) +
                     " tiles exceeds the driver's texture size " + std::to_string(info.maxTextureSize));
-    if (kListWidth > info.maxTextureSize) throw UnsupportedError("textures narrower than 1024 texels");
+    if (kListWidth > info.maxTextureSize)
+        throw UnsupportedError("this driver's textures are at most " + std::to_string(info.maxTextureSize) +
+                               " texels wide; the tiled light list needs " + std::to_string(kListWidth));
     opaqueGrid_ = gl::Texture::create2D(GL_RGBA8, tilesX, tilesY, GL_RGBA, GL_UNSIGNED_BYTE);
     transparentGrid_ = gl::Texture::create2D(GL_RGBA8, tilesX, tilesY, GL_RGBA, GL_UNSIGNED_BYTE);
 }
