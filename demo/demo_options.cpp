@@ -25,13 +25,17 @@ Scene SceneChoice::load() const {
         scene = loadSceneFile(sceneFile);
         if (time >= 0.0) scene.time = float(time);
     }
-    if (width != kSceneSize) scene.width = width;
-    if (height != kSceneSize) scene.height = height;
+    if (width) scene.width = *width;
+    if (height) scene.height = *height;
     scene.validate();
     return scene;
 }
 
 void RendererChoice::addOptions(CLI::App& app) {
+    app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
+    app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
+    app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
+    app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
     app.add_option("--scheme", scheme, "Packing scheme: bitshift");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
@@ -64,6 +68,21 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
     o.timingMethod = parseTimingMethod(timer);
+    return o;
+}
+
+RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
+    RenderModeOptions o;
+    o.mode = mode.empty() ? scene.renderMode : mode;
+    if (!isRenderModeName(o.mode))
+        throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
+    o.lidr = lidrOptions(scene);
+    o.tiled.tileSize = tileSize;
+    o.tiled.depthBounds = !noDepthBounds;
+    o.tiled.forcePackedDepth = packedDepth;
+    o.forceFixedLightTable = fixedLightTable;
+    o.tiled.timingMethod = o.multipass.timingMethod = o.lidr.timingMethod;
+    o.tiled.transparency = o.lidr.transparency;
     return o;
 }
 

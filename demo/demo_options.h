@@ -1,19 +1,20 @@
 #pragma once
 // Command-line options shared by lidr-demo (and later lidr-bench): scene choice and renderer settings.
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "lidr/context.h"
 #include "lidr/lidr_renderer.h"
+#include "lidr/render_mode.h"
 #include "lidr/scene.h"
 
 namespace lidr::demo {
 
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
-    static constexpr int kSceneSize = -2147483647 - 1;  // not given: the scene's (0 or less is refused)
-    int width = kSceneSize, height = kSceneSize;
+    std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
     double time = -1.0;         // < 0: the scene's
     unsigned seed = 1;
     void addOptions(CLI::App& app);
@@ -21,6 +22,10 @@ struct SceneChoice {
 };
 
 struct RendererChoice {
+    std::string mode;  // empty: the scene's ("lidr" unless its file says otherwise)
+    int tileSize = 32;
+    bool noDepthBounds = false;
+    bool packedDepth = false;
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;
@@ -33,6 +38,8 @@ struct RendererChoice {
     std::string timer = "auto";
     void addOptions(CLI::App& app);
     LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
+    // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
+    RenderModeOptions renderModeOptions(const Scene& scene) const;
     ContextOptions contextOptions() const;
 };
 

@@ -29,6 +29,11 @@ size_t LightTable::bytes() const {
     return 2 * (format_ == LightTableFormat::Float ? texels * 32 : texels * 12);
 }
 
+float LightTable::reachError() const {
+    if (format_ == LightTableFormat::Float) return 0.0f;
+    return (0.5f * glm::length(boundsExtent_) + radiusScale_) / 65535.0f * 1.01f;  // 1 %: float rounding here
+}
+
 ShaderDefines LightTable::defines() const {
     if (format_ == LightTableFormat::Fixed16) return {{"LIDR_LIGHT_TABLE_FIXED16", "1"}};
     return {};

@@ -32,6 +32,10 @@ public:
     int lightCount() const { return count_; }
     int capacity() const { return capacity_; }
     size_t bytes() const;  // both sets
+    // How much farther than the real sphere a light of the last update() may reach in the shader: 0 for the
+    // float table; for fixed16, half a 1/65535 step of the lights' box (positions round to nearest) plus a
+    // 1/65535 step of the largest radius (radii round up). Light assignment widens spheres by it.
+    float reachError() const;
 
 private:
     LightTableFormat format_ = LightTableFormat::Float;

@@ -55,14 +55,16 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     program_.set("uLightCount", float(lights.size()));
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
-    if (drawTransparent_) {
-        RenderState t = transparentBlendState();
+    timer_.end();
+    if (drawTransparent_ && scene_.hasTransparent()) {
+        timer_.begin("brute-force-transparent");
+        RenderState t = transparentBlendState();  // the state every mode draws its layers with
         t.sampleShading = sampleShading_;
         applyRenderState(t);
         scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
     }
     applyRenderState(RenderState{});
-    timer_.end();
     if (targets_.samples() > 0) {
         timer_.begin("msaa-resolve");
         targets_.resolve();

@@ -70,6 +70,7 @@ struct Scene {
     Camera camera;
     int width = 1024, height = 768;
     float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
+    std::string renderMode = "lidr";     // the mode tools render it with (lidr/render_mode.h names them)
     glm::vec3 ambient{0.04f};
     glm::vec3 backgroundColor{0.0f};
     // How the scene asks to be rendered (tools may override): MSAA samples (0 = off) and whether
