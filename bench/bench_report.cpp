@@ -563,8 +563,8 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
         if (overlapScene) {
             const int k = std::atoi(rows.front()->run.scene.c_str() + 8);
             for (const Row* r : rows)
-                if (r->run.config.msaa == 0 && r->run.config.transparency) {
-                    const std::string line = r->run.config.label() + " @" + std::to_string(r->run.width) + "x" +
+                if (r->run.config.msaa == 0) {
+                    const std::string line = r->run.config.key() + " @" + std::to_string(r->run.width) + "x" +
                                              std::to_string(r->run.height);
                     overlapLines[line].push_back({k, r->frameMs.median});
                     if (r->run.config.mode != "forward-brute") overlapErrors[line].push_back({k, r->error.rmse});
