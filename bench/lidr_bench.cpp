@@ -349,7 +349,7 @@ int main(int argc, char** argv) {
         } else if (full) {
             groups = fullPreset();
             settings.warmup = app.count("--warmup") ? settings.warmup : 1;
-            settings.frames = app.count("--frames") ? settings.frames : 3;
+            settings.frames = app.count("--frames") ? settings.frames : 5;
             settings.maxSeconds = app.count("--max-seconds") ? settings.maxSeconds : 3.0;
         } else {
             SweepGroup g;
