@@ -104,7 +104,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     if (tiled) {
         const LightGridStats& g = tiled->frameInfo().grid;
         summary["tiled"] = {{"tile_size", tiled->options().tileSize}, {"tiles_x", tiled->grid().tilesX()},
-                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->options().depthBounds},
+                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->options().depthBounds}, {"half_z", tiled->options().halfZ},
                             {"depth_format", depthReductionFormatName(tiled->depthFormat())},
                             {"max_opaque_lights", g.maxOpaqueLights}, {"max_transparent_lights", g.maxTransparentLights},
                             {"opaque_entries", g.opaqueEntries}, {"transparent_entries", g.transparentEntries},
@@ -116,8 +116,9 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                             {"cpu_assign_ms_last_frame", tiled->frameInfo().assignMilliseconds}};
         writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
         outputs += ", tile_heatmap.png";
-        s << "tiled      " << tiled->options().tileSize << " px tiles (" << tiled->grid().tilesX() << "x"
-          << tiled->grid().tilesY() << "), depth bounds " << (tiled->options().depthBounds ? "on" : "off")
+        const TiledOptions& to = tiled->options();
+        s << "tiled      " << to.tileSize << " px tiles (" << tiled->grid().tilesX() << "x" << tiled->grid().tilesY()
+          << "), depth bounds " << (to.depthBounds ? (to.halfZ ? "half-Z" : "min/max") : "off")
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }

@@ -15,6 +15,8 @@ namespace {
 const TiledOptions& checkedOptions(const TiledOptions& o) {
     if (o.depthBounds && !o.preZ)
         throw Error("tiled: per-tile depth bounds need the pre-Z pass (depthBounds without preZ)");
+    if (o.halfZ && !o.depthBounds)
+        throw Error("tiled: half-Z splits the per-tile depth bounds (halfZ without depthBounds)");
     if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
         throw Error("tiled: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
     return o;
@@ -36,7 +38,8 @@ TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const Tiled
       info_(info) {
     if (options_.depthBounds)
         depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
-                                                         targets_.depthStencil(), options_.forcePackedDepth);
+                                                         targets_.depthStencil(), options_.forcePackedDepth,
+                                                         options_.halfZ);
     buildProgram(options_.initialLoopBound);
     frameInfo_.shaderRebuilds = 0;
     timer_.setEnabled(options_.timing);

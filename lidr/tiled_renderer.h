@@ -27,6 +27,7 @@ struct TiledOptions {
     int tileSize = 32;                 // tile edge in pixels; 1..min(width, height)
     bool preZ = true;                  // depth pre-pass, then shading with depth EQUAL (no overdraw shading)
     bool depthBounds = true;           // per-tile min/max depth from the pre-Z pass prunes lights (needs preZ)
+    bool halfZ = false;                // also split each tile's depth range in two (needs depthBounds)
     bool transparency = true;          // draw transparent meshes (opacity < 1) after the opaque ones
     bool forceFixedLightTable = false; // the RGBA8 fixed-point light table even with float textures
     bool forcePackedDepth = false;     // the RGBA8 packed depth reduction even with float render targets
