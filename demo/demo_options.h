@@ -14,7 +14,8 @@ namespace lidr::demo {
 
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
-    std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
+    static constexpr int kSceneSize = -2147483647 - 1;  // not given: the scene's (0 or less is refused)
+    int width = kSceneSize, height = kSceneSize;
     double time = -1.0;         // < 0: the scene's
     unsigned seed = 1;
     void addOptions(CLI::App& app);
@@ -30,11 +31,15 @@ struct RendererChoice {
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;
-    std::string volumeTest = "backface";
+    std::string volumeTest = "auto";  // backface, or frontface with MSAA
+    int msaa = -1;                     // < 0: the scene's
+    std::string transparency = "scene";
+    bool msaaPerSample = false;
     std::string context = "auto";
     bool fixedLightTable = false;
+    std::string timer = "auto";
     void addOptions(CLI::App& app);
-    LidrOptions lidrOptions() const;  // throws lidr::Error on a bad name
+    LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
     // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
     RenderModeOptions renderModeOptions(const Scene& scene) const;
     ContextOptions contextOptions() const;

@@ -104,7 +104,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     if (tiled) {
         const LightGridStats& g = tiled->frameInfo().grid;
         summary["tiled"] = {{"tile_size", tiled->options().tileSize}, {"tiles_x", tiled->grid().tilesX()},
-                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->options().depthBounds}, {"half_z", tiled->options().halfZ},
+                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->frameInfo().depthBoundsUsed}, {"half_z", tiled->options().halfZ},
+                            {"msaa_samples", tiled->targets().samples()},
                             {"depth_format", depthReductionFormatName(tiled->depthFormat())},
                             {"max_opaque_lights", g.maxOpaqueLights}, {"max_transparent_lights", g.maxTransparentLights},
                             {"opaque_entries", g.opaqueEntries}, {"transparent_entries", g.transparentEntries},
@@ -118,7 +119,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         outputs += ", tile_heatmap.png";
         const TiledOptions& to = tiled->options();
         s << "tiled      " << to.tileSize << " px tiles (" << tiled->grid().tilesX() << "x" << tiled->grid().tilesY()
-          << "), depth bounds " << (to.depthBounds ? (to.halfZ ? "half-Z" : "min/max") : "off")
+          << "), depth bounds "
+          << (tiled->frameInfo().depthBoundsUsed ? (to.halfZ ? "half-Z" : "min/max") : "off")
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
@@ -126,10 +128,10 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
     if (withReference) {
+        // Rendered the way the mode renders: same MSAA, transparency where the mode draws it.
         ReferenceRenderer reference(info, scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                    mo.forceFixedLightTable);
-        // Transparency where the mode draws it (tiled, forward-brute; multi-pass forward is opaque only).
-        reference.setDrawTransparent(mo.mode != "forward-multipass" && !(tiled && !tiled->options().transparency));
+                                    mo.forceFixedLightTable, mo.msaaSamples,
+                                    mo.transparency && mo.mode != "forward-multipass");
         reference.render(scene.camera, lights, shading);
         const ImageRGBA8 refImage = reference.targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
@@ -139,7 +141,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         summary["error"] = {{"whole_image", errorJson(e)}};
         s << "error      max " << e.maxAbsError << ", RMSE " << e.rmse << ", PSNR " << (std::isinf(e.psnr) ? 999.0 : e.psnr)
           << " dB, pixels differing by >1: " << e.pixelsOverThreshold << "\n";
-        if (tiled) {  // every light that touches an opaque pixel must be in its tile's list
+        if (tiled && mo.msaaSamples == 0) {  // every light that touches an opaque pixel must be in its tile's list
+            // (from the single-sample depth buffer, which MSAA frames do not fill)
             const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
             const CoverageTruth truth = computeCoverage(tiled->targets().readDepth(), cam, lights);
             long missing = 0;
@@ -171,7 +174,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         if (!dumpDir.empty()) throw Error("--dump writes LIDR index targets; it needs --mode lidr");
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
     }
-    const LidrOptions options = rc.lidrOptions();
+    const LidrOptions options = rc.lidrOptions(scene);
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
@@ -202,13 +205,17 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", options.packing.budget},
                        {"index_bits", options.packing.indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
+                       {"msaa_samples", options.msaaSamples},
+                       {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexMemoryBytes()},
                        {"light_table_bytes", renderer.lightTable().bytes()},
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
 
+    if (renderer.perSampleIndices() && !dumpDir.empty())
+        throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
     FrameArtefacts artefacts;
-    artefacts.indexTargets = renderer.readIndexTargets();
+    if (!renderer.perSampleIndices()) artefacts.indexTargets = renderer.readIndexTargets();
     artefacts.depth = renderer.targets().readDepth();
     artefacts.lightCounts = renderer.readLightCounts();
     artefacts.camera = cameraMatrices(scene.camera, scene.width, scene.height);
@@ -216,7 +223,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     artefacts.drawOrder = LidrRenderer::drawOrder(lights);
 
     if (withReference) {
-        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()));
+        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
+                                    options.forceFixedLightTable, options.msaaSamples, options.transparency,
+                                    options.perSampleIndices);
         MedianTimes refTimes;
         reference.render(scene.camera, lights, shading);
         for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
@@ -226,23 +235,29 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         summary["timing"]["reference_median_ms"] = refTimes.json();
 
         const FrameEvaluation ev = evaluateFrame(renderer, scene.camera, lights, image, refImage);
-        writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
-        std::vector<int> truthCounts(ev.truth.surface.size());
-        for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
-        writePng(path(outDir, "overlap.png"),
-                 overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
-        writePng(path(outDir, "marked.png"),
-                 overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
-        summary["lights"] = {{"visible_lights", stats.drawnLights},
-                             {"max_overlap_touching", ev.maxTruthOverlap},
-                             {"max_marked_by_volume_test", ev.maxMarked},
-                             {"pixels_marked_over_budget", ev.pixelsOverBudget},
-                             {"dropped_light_pixels", ev.lists.droppedLightPixels},
-                             {"pixels_with_drops", ev.lists.pixelsWithDrops},
-                             {"max_dropped_per_pixel", ev.lists.maxDroppedPerPixel},
-                             {"invalid_slots", ev.lists.invalidSlots},
-                             {"mean_slots_used", double(ev.lists.slotsUsed) / double(ev.lists.decoded.size())},
-                             {"max_slots_used", ev.lists.maxSlotsUsed}};
+        if (renderer.perSampleIndices()) {
+            summary["lights"] = {{"visible_lights", stats.drawnLights},
+                                 {"lists_checked", false},
+                                 {"why", "per-sample index targets are multisample textures; only the image is judged"}};
+        } else {
+            writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
+            std::vector<int> truthCounts(ev.truth.surface.size());
+            for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
+            writePng(path(outDir, "overlap.png"),
+                     overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
+            writePng(path(outDir, "marked.png"),
+                     overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
+            summary["lights"] = {{"visible_lights", stats.drawnLights},
+                                 {"max_overlap_touching", ev.maxTruthOverlap},
+                                 {"max_marked_by_volume_test", ev.maxMarked},
+                                 {"pixels_marked_over_budget", ev.pixelsOverBudget},
+                                 {"dropped_light_pixels", ev.lists.droppedLightPixels},
+                                 {"pixels_with_drops", ev.lists.pixelsWithDrops},
+                                 {"max_dropped_per_pixel", ev.lists.maxDroppedPerPixel},
+                                 {"invalid_slots", ev.lists.invalidSlots},
+                                 {"mean_slots_used", double(ev.lists.slotsUsed) / double(ev.lists.decoded.size())},
+                                 {"max_slots_used", ev.lists.maxSlotsUsed}};
+        }
         summary["error"] = {{"whole_image", errorJson(ev.error)},
                             {"pixels_within_budget", errorJson(ev.errorWithinBudget)}};
     }
@@ -254,15 +269,17 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
-    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest) << "\n";
+    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+      << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off") << "\n";
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
     if (withReference) {
         const auto& L = summary["lights"];
         const auto& E = summary["error"];
+        const bool listsChecked = !renderer.perSampleIndices();
         s << "reference  brute force " << summary["timing"]["reference_median_ms"]["frame"].get<double>() << " ms\n";
-        s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
+        if (listsChecked) s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
           << " (marked " << L["max_marked_by_volume_test"] << "), pixels over budget " << L["pixels_marked_over_budget"]
           << ", dropped light-pixels " << L["dropped_light_pixels"] << ", invalid slots " << L["invalid_slots"] << "\n";
         s << "error      whole image: max " << E["whole_image"]["max_abs_error"] << ", RMSE "
@@ -287,7 +304,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     co.windowHeight = scene.height;
     co.windowTitle = "lidr-demo";
     auto context = GlContext::create(co);
-    std::cout << "GL: " << context->info().summary() << "\n";
+    std::cout << "GL: " << context->info().summary() << std::endl;
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
@@ -311,6 +328,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
         if (now - lastReport > 1.0) {
             std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn\n", framesSinceReport / (now - lastReport),
                         st.frameMilliseconds(), st.timingMethod, st.drawnLights);
+            std::fflush(stdout);
             lastReport = now;
             framesSinceReport = 0;
         }

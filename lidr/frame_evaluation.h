@@ -16,7 +16,12 @@ struct FrameEvaluation {
     int maxTruthOverlap = 0;        // most lights touching one pixel's surface
     int maxMarked = 0;              // most lights marking one pixel
     long pixelsOverBudget = 0;      // surface pixels marked by more lights than the budget
-    std::vector<uint8_t> withinBudget;  // 1 where the pixel is marked by <= budget lights
+    // Lights a front-face pass marks per pixel (CPU, conservative), when transparent layers read front-face
+    // lists; else empty.
+    std::vector<int> frontFaceMarked;
+    // 1 where every list the pixel reads holds <= budget lights: the main one by the GPU count, the
+    // front-face one of transparent layers by the conservative CPU count.
+    std::vector<uint8_t> withinBudget;
     ImageError error;               // whole image against the reference
     ImageError errorWithinBudget;   // only pixels marked by <= budget lights
 };

@@ -81,8 +81,8 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
         const gl::Texture& tex = textures_[b.material];
         program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {
-            tex.bind(7);  // unit 7 is the material texture in every lidr program
-            program.set("uMaterialTexture", 7);
+            tex.bind(kMaterialTextureUnit);
+            program.set("uMaterialTexture", kMaterialTextureUnit);
         }
     }
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());

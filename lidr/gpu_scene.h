@@ -11,6 +11,7 @@ enum class DrawFilter { Opaque, Transparent, All };
 
 class GpuScene {
 public:
+    static constexpr int kMaterialTextureUnit = 7;
     GpuScene() = default;
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene);

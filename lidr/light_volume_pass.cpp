@@ -1,5 +1,7 @@
 #include "lidr/light_volume_pass.h"
 
+#include <algorithm>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "lidr/error.h"
@@ -11,6 +13,7 @@ const char* volumeTestName(VolumeTest t) {
     switch (t) {
     case VolumeTest::BackFace: return "backface";
     case VolumeTest::ExactStencil: return "exact";
+    case VolumeTest::FrontFace: return "frontface";
     }
     return "?";
 }
@@ -18,15 +21,17 @@ const char* volumeTestName(VolumeTest t) {
 VolumeTest parseVolumeTest(const std::string& name) {
     if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
     if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact)");
+    if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
+    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface)");
 }
 
-IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil)
-    : width_(width), height_(height) {
+IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
+    : width_(width), height_(height), samples_(samples) {
     if (count < 1 || count > kMaxIndexTargets) throw Error("index target count must be 1..4");
     fbo_ = gl::Framebuffer::create();
     for (int i = 0; i < count; ++i) {
-        textures_.push_back(gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
+        textures_.push_back(samples > 0 ? gl::Texture::create2DMultisample(GL_RGBA8, width, height, samples)
+                                        : gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, textures_.back());
     }
     fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
@@ -34,7 +39,7 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4; }
+size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
     : test_(test), depthClamp_(info.depthClamp), mesh_(makeLightVolumeMesh(2)) {
@@ -115,7 +120,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     inside.stencilTest = true;
 
     RenderState mark, count, unmark;
-    if (test_ == VolumeTest::BackFace) {
+    if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
         // Stencil counts every light that marks the pixel; with a slot limit only the first ones write.
         inside.stencil.func = d.slotLimit > 0 ? GL_GREATER : GL_ALWAYS;  // passes while limit > count
         inside.stencil.ref = d.slotLimit;
@@ -155,39 +160,51 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
     // (conservative: the whole footprint is marked).
     const float outside = mesh_.outsideRadius;
+    auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
     auto reachesFar = [&](const VolumeLight& l) {
-        return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * outside >=
-               camera_.farPlane * 0.999f;
+        return depthOf(l) + l.posRadius.w * outside >= camera_.farPlane * 0.999f;
     };
     RenderState insideNoDepth = inside;
     insideNoDepth.depthFunc = GL_ALWAYS;
+    // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
+    // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
+    // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
+    RenderState front = inside;
+    front.depthFunc = GL_LEQUAL;
+    front.cullFace = GL_BACK;
+    auto reachesNear = [&](const VolumeLight& l) {
+        return depthOf(l) - l.posRadius.w * outside <= camera_.nearPlane * 1.001f;
+    };
 
-    int applied = -1;  // 0: inside, 1: insideNoDepth; re-applied only when it changes
+    enum Choice { kInside, kInsideNoDepth, kFront };
+    int applied = -1;  // re-applied only when the choice changes
     for (const VolumeLight& l : lights) {
         glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
         const IndexColors c = colors(l.index);
         glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
-        const int want = (!depthClamp_ && reachesFar(l)) ? 1 : 0;
-        glUniform1f(clampLoc, float(want));
+        const bool clampToFar = !depthClamp_ && reachesFar(l);
+        glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
         if (test_ == VolumeTest::ExactStencil) {
             applyRenderState(mark);
             drawVolume(l);
-            applyRenderState(want ? insideNoDepth : inside);
+            applyRenderState(clampToFar ? insideNoDepth : inside);
             drawVolume(l);
             RenderState c2 = count;
-            if (want) c2.depthFunc = GL_ALWAYS;
+            if (clampToFar) c2.depthFunc = GL_ALWAYS;
             applyRenderState(c2);
             drawVolume(l);
             applyRenderState(unmark);
             drawVolume(l);
             applied = -1;
-        } else {
-            if (want != applied) {
-                applyRenderState(want ? insideNoDepth : inside);
-                applied = want;
-            }
-            drawVolume(l);
+            continue;
         }
+        int want = clampToFar ? kInsideNoDepth : kInside;
+        if (test_ == VolumeTest::FrontFace) want = reachesNear(l) ? kInsideNoDepth : kFront;
+        if (want != applied) {
+            applyRenderState(want == kInside ? inside : want == kFront ? front : insideNoDepth);
+            applied = want;
+        }
+        drawVolume(l);
     }
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }

@@ -23,8 +23,9 @@ struct MultipassOptions {
     bool scissor = true;                // scissor each light pass to the light's screen rectangle
     bool cullMeshes = true;             // draw only the meshes whose bounds the light's sphere touches
     bool forceFixedLightTable = false;
+    int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES: shading multisampled, then resolved
     bool timing = true;
-    bool preferGpuTimer = true;
+    TimingMethod timingMethod = TimingMethod::Auto;
 };
 
 class MultipassForwardRenderer final : public Renderer {

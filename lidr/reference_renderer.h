@@ -15,17 +15,15 @@ namespace lidr {
 class ReferenceRenderer final : public Renderer {
 public:
     // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
+    // MSAA and transparency as in LidrOptions: the reference is rendered the way the mode it judges is.
     ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
-                      bool forceFixedLightTable = false);
+                      bool forceFixedLightTable = false, int msaaSamples = 0, bool transparency = true,
+                      bool sampleShading = false);
     std::string modeName() const override { return "forward-brute"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return targets_; }
     const char* timingMethod() const { return timer_.method(); }
-    // Also draw transparent meshes (opacity < 1) after the opaque ones: back to front, alpha blended, depth
-    // tested against the opaque depth, every light at every fragment. Off by default: a mode compared with
-    // the reference must draw transparency too (tiled does; the "forward-brute" mode turns it on).
-    void setDrawTransparent(bool on) { drawTransparent_ = on; }
 
 private:
     GpuScene scene_;
@@ -35,6 +33,7 @@ private:
     gl::Program program_;
     FrameTimer timer_;
     bool drawTransparent_ = false;
+    bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does
 };
 
 }  // namespace lidr

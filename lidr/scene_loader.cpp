@@ -477,7 +477,7 @@ public:
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
                            "ambient", "background", "materials", "models", "primitives", "lights", "generate",
-                           "mode"});
+                           "msaa", "transparency", "mode"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
@@ -491,6 +491,8 @@ public:
         if (root.has("camera")) readCamera(root["camera"]);
         if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
         if (root.has("background")) scene_.backgroundColor = color(root["background"]);
+        if (root.has("msaa")) scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+        if (root.has("transparency")) scene_.transparency = root["transparency"].boolean();
         if (root.has("materials"))
             for (const Field& material : root["materials"].items()) readMaterial(material);
         if (root.has("models"))

@@ -9,11 +9,11 @@
 //   LIDR_CHANNEL_WEIGHTS  vec4(1, 2^k, 2^2k, 2^3k), zero for unused channels
 #define LIDR_NULL_ENDS_LIST 1
 
-uniform sampler2D uIndexTex0;
+uniform LIDR_INDEX_SAMPLER uIndexTex0;
 vec4 lidrPacked;  // bytes not yet unpacked, as integers
 
 void lidrUnpackBegin(vec2 uv) {
-    lidrPacked = floor(texture2D(uIndexTex0, uv) * 255.0 + 0.5);
+    lidrPacked = floor(LIDR_FETCH_INDEX(uIndexTex0, uv) * 255.0 + 0.5);
 }
 
 float lidrUnpackNext() {

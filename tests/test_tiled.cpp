@@ -57,10 +57,10 @@ std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsig
 }
 
 // The brute-force reference, transparent meshes included (back to front, alpha blended, every light).
-ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable) {
+ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable,
+                          int samples = 0) {
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                fixedTable);
-    reference.setDrawTransparent(true);
+                                fixedTable, samples, true);
     reference.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
     return reference.targets().readColor();
 }
@@ -494,6 +494,37 @@ TEST_CASE("tiled: transparent meshes are lit from their own lists and blended ba
             }
             CHECK(g.stats().transparentEntries > g.stats().opaqueEntries);
         }
+    }
+}
+
+TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same way", "[tiled][msaa][transparency]") {
+    const GlInfo& info = testGl();
+    if (!info.multisampleFbo || info.maxSamples < 2) {
+        WARN("no multisample FBOs in this context; MSAA not tested");
+        return;
+    }
+    Scene scene = firstPersonScene();
+    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
+    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
+    scene.lights = scatteredLights(60, 0.5f, 3.0f, 8);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const ImageRGBA8 single = [&] {
+        TiledRenderer r(info, scene, TiledOptions{}, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, shading);
+        return r.targets().readColor();
+    }();
+    for (int samples : {2, 4}) {
+        if (samples > info.maxSamples) continue;
+        TiledOptions t;
+        t.msaaSamples = samples;
+        TiledRenderer r(info, scene, t, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, shading);
+        const ImageRGBA8 image = r.targets().readColor();
+        const ImageError e = compareImages(image, referenceImage(scene, scene.lights, false, samples));
+        INFO(samples << "x MSAA: max " << e.maxAbsError << ", differing " << e.differingPixels);
+        REQUIRE(e.maxAbsError <= 1);
+        CHECK_FALSE(r.frameInfo().depthBoundsUsed);  // 2D lists: right for every sample
+        CHECK(compareImages(image, single).differingPixels > 50);  // the edges really are antialiased
     }
 }
 
