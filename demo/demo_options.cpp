@@ -35,6 +35,7 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
     app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
+    app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
     app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
     app.add_option("--scheme", scheme, "Packing scheme: bitshift");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
@@ -77,12 +78,14 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     if (!isRenderModeName(o.mode))
         throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
     o.lidr = lidrOptions(scene);
+    o.msaaSamples = o.lidr.msaaSamples;
+    o.transparency = o.lidr.transparency;
+    o.timingMethod = o.lidr.timingMethod;
     o.tiled.tileSize = tileSize;
     o.tiled.depthBounds = !noDepthBounds;
     o.tiled.forcePackedDepth = packedDepth;
+    o.tiled.halfZ = halfZ;
     o.forceFixedLightTable = fixedLightTable;
-    o.tiled.timingMethod = o.multipass.timingMethod = o.lidr.timingMethod;
-    o.tiled.transparency = o.lidr.transparency;
     return o;
 }
 

@@ -26,6 +26,7 @@ struct RendererChoice {
     int tileSize = 32;
     bool noDepthBounds = false;
     bool packedDepth = false;
+    bool halfZ = false;
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;

@@ -104,7 +104,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     if (tiled) {
         const LightGridStats& g = tiled->frameInfo().grid;
         summary["tiled"] = {{"tile_size", tiled->options().tileSize}, {"tiles_x", tiled->grid().tilesX()},
-                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->options().depthBounds},
+                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->frameInfo().depthBoundsUsed}, {"half_z", tiled->options().halfZ},
+                            {"msaa_samples", tiled->targets().samples()},
                             {"depth_format", depthReductionFormatName(tiled->depthFormat())},
                             {"max_opaque_lights", g.maxOpaqueLights}, {"max_transparent_lights", g.maxTransparentLights},
                             {"opaque_entries", g.opaqueEntries}, {"transparent_entries", g.transparentEntries},
@@ -116,8 +117,10 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                             {"cpu_assign_ms_last_frame", tiled->frameInfo().assignMilliseconds}};
         writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
         outputs += ", tile_heatmap.png";
-        s << "tiled      " << tiled->options().tileSize << " px tiles (" << tiled->grid().tilesX() << "x"
-          << tiled->grid().tilesY() << "), depth bounds " << (tiled->options().depthBounds ? "on" : "off")
+        const TiledOptions& to = tiled->options();
+        s << "tiled      " << to.tileSize << " px tiles (" << tiled->grid().tilesX() << "x" << tiled->grid().tilesY()
+          << "), depth bounds "
+          << (tiled->frameInfo().depthBoundsUsed ? (to.halfZ ? "half-Z" : "min/max") : "off")
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
@@ -125,10 +128,10 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
     if (withReference) {
+        // Rendered the way the mode renders: same MSAA, transparency where the mode draws it.
         ReferenceRenderer reference(info, scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                    mo.forceFixedLightTable);
-        // Transparency where the mode draws it (tiled, forward-brute; multi-pass forward is opaque only).
-        reference.setDrawTransparent(mo.mode != "forward-multipass" && !(tiled && !tiled->options().transparency));
+                                    mo.forceFixedLightTable, mo.msaaSamples,
+                                    mo.transparency && mo.mode != "forward-multipass");
         reference.render(scene.camera, lights, shading);
         const ImageRGBA8 refImage = reference.targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
@@ -138,7 +141,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         summary["error"] = {{"whole_image", errorJson(e)}};
         s << "error      max " << e.maxAbsError << ", RMSE " << e.rmse << ", PSNR " << (std::isinf(e.psnr) ? 999.0 : e.psnr)
           << " dB, pixels differing by >1: " << e.pixelsOverThreshold << "\n";
-        if (tiled) {  // every light that touches an opaque pixel must be in its tile's list
+        if (tiled && mo.msaaSamples == 0) {  // every light that touches an opaque pixel must be in its tile's list
+            // (from the single-sample depth buffer, which MSAA frames do not fill)
             const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
             const CoverageTruth truth = computeCoverage(tiled->targets().readDepth(), cam, lights);
             long missing = 0;

@@ -43,14 +43,26 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
 
     // Per tile, the view-space depth interval its geometry can have (opaque: [min, max], transparent:
     // [near, max]); widened by the slack so that pruning never drops a light that touches a pixel.
+    // With half-Z, the gap (gapStart, gapEnd) between the two halves holds no geometry.
     std::vector<float> tileNear(tiles, camera.nearPlane), tileFar(tiles, camera.farPlane);
+    std::vector<float> gapStart(tiles, 0.0f), gapEnd(tiles, 0.0f);
+    auto nearer = [&](float d) {  // view distance of window depth d, moved towards the eye by the slack
+        return float(viewDepthFromWindowDepth(camera, std::clamp(d - kWindowDepthSlack, 0.0f, 1.0f)) *
+                     (1.0 - kRelativeViewDepthSlack));
+    };
+    auto farther = [&](float d) {
+        return float(viewDepthFromWindowDepth(camera, std::clamp(d + kWindowDepthSlack, 0.0f, 1.0f)) *
+                     (1.0 + kRelativeViewDepthSlack));
+    };
     if (depth) {
         for (int t = 0; t < tiles; ++t) {
             const TileDepthRange& r = (*depth)[t];
-            const float d0 = std::clamp(r.minDepth - kWindowDepthSlack, 0.0f, 1.0f);
-            const float d1 = std::clamp(r.maxDepth + kWindowDepthSlack, 0.0f, 1.0f);
-            tileNear[t] = float(viewDepthFromWindowDepth(camera, d0) * (1.0 - kRelativeViewDepthSlack));
-            tileFar[t] = float(viewDepthFromWindowDepth(camera, d1) * (1.0 + kRelativeViewDepthSlack));
+            tileNear[t] = nearer(r.minDepth);
+            tileFar[t] = farther(r.maxDepth);
+            if (r.split) {
+                gapStart[t] = farther(std::max(r.nearMaxDepth, r.minDepth));
+                gapEnd[t] = nearer(std::min(r.farMinDepth, r.maxDepth));
+            }
         }
     }
 
@@ -69,6 +81,7 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
                 if (depth && b.viewDepthMin > tileFar[t]) continue;  // hidden behind the tile's opaque max
                 if (separate) transparent[t].push_back(uint32_t(i + 1)), used = true;
                 if (depth && b.viewDepthMax < tileNear[t]) continue;  // wholly in front of the opaque min
+                if (b.viewDepthMin > gapStart[t] && b.viewDepthMax < gapEnd[t]) continue;  // in the half-Z gap
                 opaque[t].push_back(uint32_t(i + 1));
                 used = true;
             }

@@ -22,6 +22,12 @@ namespace lidr {
 struct TileDepthRange {
     float minDepth = 0.0f;
     float maxDepth = 1.0f;
+    // Half-Z: with `split`, the tile's depths all lie in [minDepth, nearMaxDepth] or [farMinDepth, maxDepth]
+    // (the range split at its middle, each half shrunk to its depths), and opaque lists keep only lights that
+    // reach one of the two.
+    bool split = false;
+    float nearMaxDepth = 1.0f;
+    float farMinDepth = 0.0f;
 };
 
 struct LightGridStats {

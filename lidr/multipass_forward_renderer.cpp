@@ -15,7 +15,7 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
                                                    const MultipassOptions& options, int width, int height)
     : options_(options),
       scene_(scene),
-      targets_(info, width, height),
+      targets_(info, width, height, options.msaaSamples),
       lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
       timer_(info, options.timingMethod),
       info_(info) {
@@ -92,6 +92,11 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     stats_.volumeDrawCalls = meshDraws_;
     applyRenderState(RenderState{});
     timer_.end();
+    if (targets_.samples() > 0) {
+        timer_.begin("msaa-resolve");
+        targets_.resolve();
+        timer_.end();
+    }
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MultipassForwardRenderer::render");

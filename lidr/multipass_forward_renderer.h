@@ -23,6 +23,7 @@ struct MultipassOptions {
     bool scissor = true;                // scissor each light pass to the light's screen rectangle
     bool cullMeshes = true;             // draw only the meshes whose bounds the light's sphere touches
     bool forceFixedLightTable = false;
+    int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES: shading multisampled, then resolved
     bool timing = true;
     TimingMethod timingMethod = TimingMethod::Auto;
 };

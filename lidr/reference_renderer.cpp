@@ -56,7 +56,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
     timer_.end();
-    if (drawTransparent_ && scene_.hasTransparent()) {
+    if (drawTransparent_) {
         timer_.begin("brute-force-transparent");
         RenderState t = transparentBlendState();  // the state every mode draws its layers with
         t.sampleShading = sampleShading_;

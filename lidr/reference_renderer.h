@@ -24,10 +24,6 @@ public:
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return targets_; }
     const char* timingMethod() const { return timer_.method(); }
-    // Also draw transparent meshes (opacity < 1) after the opaque ones: back to front, alpha blended, depth
-    // tested against the opaque depth, every light at every fragment. Off by default: a mode compared with
-    // the reference must draw transparency too (tiled does; the "forward-brute" mode turns it on).
-    void setDrawTransparent(bool on) { drawTransparent_ = on; }
 
 private:
     GpuScene scene_;

@@ -28,24 +28,30 @@ std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInf
     if (o.mode == "lidr") {
         LidrOptions lo = o.lidr;
         lo.forceFixedLightTable = lo.forceFixedLightTable || o.forceFixedLightTable;
+        lo.msaaSamples = o.msaaSamples;
+        lo.transparency = o.transparency;
+        lo.timingMethod = o.timingMethod;
         return std::make_unique<LidrRenderer>(info, scene, lo, width, height);
     }
     if (o.mode == "tiled") {
         TiledOptions to = o.tiled;
         to.forceFixedLightTable = to.forceFixedLightTable || o.forceFixedLightTable;
+        to.msaaSamples = o.msaaSamples;
+        to.transparency = o.transparency;
+        to.timingMethod = o.timingMethod;
         return std::make_unique<TiledRenderer>(info, scene, to, width, height);
     }
     if (o.mode == "forward-multipass") {
         MultipassOptions mo = o.multipass;
         mo.forceFixedLightTable = mo.forceFixedLightTable || o.forceFixedLightTable;
+        mo.msaaSamples = o.msaaSamples;
+        mo.timingMethod = o.timingMethod;
         return std::make_unique<MultipassForwardRenderer>(info, scene, mo, width, height);
     }
-    if (o.mode == "forward-brute") {
-        // MSAA and transparency as asked for LIDR: the same frame, brute force.
+    if (o.mode == "forward-brute")
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable,
-                                                   o.lidr.msaaSamples, o.lidr.transparency);
-    }
+                                                   o.msaaSamples, o.transparency);
     throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
 }
 

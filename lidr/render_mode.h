@@ -19,7 +19,11 @@ struct RenderModeOptions {
     LidrOptions lidr;            // mode "lidr"
     TiledOptions tiled;          // mode "tiled"
     MultipassOptions multipass;  // mode "forward-multipass"
-    bool forceFixedLightTable = false;  // every mode: the RGBA8 fixed-point light table
+    // These apply to every mode and replace the per-mode fields of the same name.
+    bool forceFixedLightTable = false;  // the RGBA8 fixed-point light table
+    int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES
+    bool transparency = true;           // draw transparent materials (forward-multipass never does)
+    TimingMethod timingMethod = TimingMethod::Auto;
 };
 
 // The valid mode names, in the order above.

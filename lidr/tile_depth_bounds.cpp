@@ -32,11 +32,12 @@ bool complete(const gl::Framebuffer& f) {
 }  // namespace
 
 TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int tileSize,
-                                 const gl::Renderbuffer& depthStencil, bool forcePacked)
+                                 const gl::Renderbuffer& depthStencil, bool forcePacked, bool halfZ)
     : format_(info.textureFloat && !forcePacked ? DepthReductionFormat::Float32 : DepthReductionFormat::PackedRGBA8),
       width_(width),
       height_(height),
-      tileSize_(tileSize) {
+      tileSize_(tileSize),
+      halfZ_(halfZ) {
     const LightGrid shape(width, height, tileSize);  // validates the tile size
     tilesX_ = shape.tilesX();
     tilesY_ = shape.tilesY();
@@ -47,10 +48,11 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
         createTargets(depthStencil);
     }
     prepassFbo_.checkComplete("tile pre-Z");
-    for (const Chain& c : chains_) {
-        c.columnsFbo.checkComplete("tile depth reduction (columns)");
-        c.tilesFbo.checkComplete("tile depth reduction (tiles)");
-    }
+    for (const std::vector<Chain>* chains : {&chains_, &splitChains_})
+        for (const Chain& c : *chains) {
+            c.columnsFbo.checkComplete("tile depth reduction (columns)");
+            c.tilesFbo.checkComplete("tile depth reduction (tiles)");
+        }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     prepassProgram_ = gl::Program::create("tile-prez", buildShaderSource("geometry.vert"),
@@ -70,6 +72,22 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
             (vertical ? vertical_ : horizontal_).push_back(std::move(p));
         }
     }
+    for (size_t c = 0; c < splitChains_.size(); ++c) {
+        ShaderDefines d;
+        d.push_back({"LIDR_OUTPUT_PACKED", packed ? "1" : "0"});
+        d.push_back({"LIDR_REDUCE_COUNT", std::to_string(tileSize)});
+        d.push_back({"LIDR_SPLIT_NEAR_MAX", c == 1 ? "1" : "0"});
+        splitHorizontal_.push_back(gl::Program::create("tile-depth-split", buildShaderSource("fullscreen.vert"),
+                                                       buildShaderSource("tile_depth_split.frag", d),
+                                                       {{"aPosition", gl::kPosition}}));
+        // The vertical step is the plain reduction: min of the far mins (R), max of the near maxes (G).
+        ShaderDefines v = {{"LIDR_INPUT_PACKED", packed ? "1" : "0"}, {"LIDR_OUTPUT_PACKED", packed ? "1" : "0"},
+                           {"LIDR_REDUCE_COUNT", std::to_string(tileSize)}, {"LIDR_REDUCE_VERTICAL", "1"},
+                           {"LIDR_REDUCE_MAX", c == 1 ? "1" : "0"}};
+        splitVertical_.push_back(gl::Program::create("tile-depth-split-reduce", buildShaderSource("fullscreen.vert"),
+                                                     buildShaderSource("tile_depth_reduce.frag", v),
+                                                     {{"aPosition", gl::kPosition}}));
+    }
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     checkGl("TileDepthBounds");
@@ -81,23 +99,29 @@ void TileDepthBounds::createTargets(const gl::Renderbuffer& depthStencil) {
     prepassFbo_ = colorFbo(depthCopy_);
     prepassFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
     chains_.clear();
+    splitChains_.clear();
     const int chainCount = format_ == DepthReductionFormat::Float32 ? 1 : 2;
     for (int c = 0; c < chainCount; ++c) {
-        Chain chain;
-        chain.columns = colorTexture(format_, tilesX_, height_);
-        chain.columnsFbo = colorFbo(chain.columns);
-        chain.tiles = colorTexture(format_, tilesX_, tilesY_);
-        chain.tilesFbo = colorFbo(chain.tiles);
-        chains_.push_back(std::move(chain));
+        chains_.push_back(makeChain());
+        if (halfZ_) splitChains_.push_back(makeChain());
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("TileDepthBounds targets");
 }
 
+TileDepthBounds::Chain TileDepthBounds::makeChain() const {
+    Chain chain;
+    chain.columns = colorTexture(format_, tilesX_, height_);
+    chain.columnsFbo = colorFbo(chain.columns);
+    chain.tiles = colorTexture(format_, tilesX_, tilesY_);
+    chain.tilesFbo = colorFbo(chain.tiles);
+    return chain;
+}
+
 size_t TileDepthBounds::bytes() const {
     const size_t texel = format_ == DepthReductionFormat::Float32 ? 16 : 4;
     return 4 * size_t(width_) * height_ +
-           texel * chains_.size() * (size_t(tilesX_) * height_ + size_t(tilesX_) * tilesY_);
+           texel * (chains_.size() + splitChains_.size()) * (size_t(tilesX_) * height_ + size_t(tilesX_) * tilesY_);
 }
 
 void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camera) const {
@@ -132,6 +156,27 @@ void TileDepthBounds::runPass(const gl::Program& program, const gl::Texture& inp
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+std::vector<float> TileDepthBounds::readChain(const Chain& chain, int component) const {
+    const size_t tiles = size_t(tilesX_) * tilesY_;
+    std::vector<float> out(tiles);
+    chain.tilesFbo.bind();
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (format_ == DepthReductionFormat::Float32) {
+        std::vector<float> texels(tiles * 4);
+        glReadPixels(0, 0, tilesX_, tilesY_, GL_RGBA, GL_FLOAT, texels.data());
+        for (size_t t = 0; t < tiles; ++t) out[t] = texels[t * 4 + component];
+    } else {
+        std::vector<uint8_t> texels(tiles * 4);
+        glReadPixels(0, 0, tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+        for (size_t t = 0; t < tiles; ++t) {
+            const uint32_t v = (uint32_t(texels[t * 4]) << 16) | (uint32_t(texels[t * 4 + 1]) << 8) | texels[t * 4 + 2];
+            out[t] = float(double(v) / kDepthUnits);
+        }
+    }
+    return out;
+}
+
 std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     applyRenderState(RenderState{});
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
@@ -141,30 +186,39 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
         runPass(horizontal_[c], depthCopy_, chains_[c].columnsFbo, tilesX_, height_);
         runPass(vertical_[c], chains_[c].columns, chains_[c].tilesFbo, tilesX_, tilesY_);
     }
+    for (size_t c = 0; c < splitChains_.size(); ++c) {  // half-Z: needs the min/max tiles just reduced
+        const gl::Program& p = splitHorizontal_[c];
+        p.use();
+        chains_[0].tiles.bind(1);
+        p.set("uTileMin", 1);
+        if (chains_.size() > 1) {
+            chains_[1].tiles.bind(2);
+            p.set("uTileMax", 2);
+        }
+        p.set("uTileGridSize", glm::vec2(float(tilesX_), float(tilesY_)));
+        runPass(p, depthCopy_, splitChains_[c].columnsFbo, tilesX_, height_);
+        runPass(splitVertical_[c], splitChains_[c].columns, splitChains_[c].tilesFbo, tilesX_, tilesY_);
+    }
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    for (int unit : {2, 1, 0}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
 
     // Read back with GL's bottom-up rows: tile (x, y) lands at y * tilesX + x, as LightGrid counts tiles.
-    const size_t tiles = size_t(tilesX_) * tilesY_;
-    std::vector<TileDepthRange> out(tiles);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (format_ == DepthReductionFormat::Float32) {
-        std::vector<float> texels(tiles * 4);
-        chains_[0].tilesFbo.bind();
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glReadPixels(0, 0, tilesX_, tilesY_, GL_RGBA, GL_FLOAT, texels.data());
-        for (size_t t = 0; t < tiles; ++t) out[t] = {texels[t * 4], texels[t * 4 + 1]};
-    } else {
-        std::vector<uint8_t> texels(tiles * 4);
-        for (int c = 0; c < 2; ++c) {
-            chains_[c].tilesFbo.bind();
-            glReadBuffer(GL_COLOR_ATTACHMENT0);
-            glReadPixels(0, 0, tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-            for (size_t t = 0; t < tiles; ++t) {
-                const uint32_t v = (uint32_t(texels[t * 4]) << 16) | (uint32_t(texels[t * 4 + 1]) << 8) | texels[t * 4 + 2];
-                (c == 0 ? out[t].minDepth : out[t].maxDepth) = float(double(v) / kDepthUnits);
-            }
+    const bool packed = format_ == DepthReductionFormat::PackedRGBA8;
+    const std::vector<float> mins = readChain(chains_[0], 0);
+    const std::vector<float> maxs = readChain(chains_[packed ? 1 : 0], packed ? 0 : 1);
+    std::vector<TileDepthRange> out(mins.size());
+    for (size_t t = 0; t < out.size(); ++t) out[t].minDepth = mins[t], out[t].maxDepth = maxs[t];
+    if (halfZ_) {
+        const std::vector<float> farMins = readChain(splitChains_[0], 0);
+        const std::vector<float> nearMaxs = readChain(splitChains_[packed ? 1 : 0], packed ? 0 : 1);
+        for (size_t t = 0; t < out.size(); ++t) {
+            out[t].split = true;
+            out[t].farMinDepth = farMins[t];
+            out[t].nearMaxDepth = nearMaxs[t];
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -5,7 +5,8 @@
 // The pre-Z pass fills the frame's depth-stencil buffer as usual and also writes each fragment's window depth
 // into a colour texture (GL 2.1 cannot sample a packed depth-stencil renderbuffer). Two fragment-shader
 // passes reduce it: W x H -> tilesX x H (min/max over T texels along x), then -> tilesX x tilesY (along y).
-// The tilesX x tilesY result is read back: one TileDepthRange per tile, rows from the bottom.
+// The tilesX x tilesY result is read back: one TileDepthRange per tile, rows from the bottom. Half-Z (optional)
+// adds two passes that split each tile's range at its middle and shrink both halves to their depths.
 //
 // Formats: the full-size depth copy is always RGBA8 with depth packed as a 24-bit integer in RGB (4 bytes a
 // pixel, exact). The reduced textures are RGBA32F (R = min, G = max) where ARB_texture_float exists and the
@@ -27,8 +28,10 @@ const char* depthReductionFormatName(DepthReductionFormat f);
 class TileDepthBounds {
 public:
     // `depthStencil` is the frame's depth-stencil buffer (width x height), filled by prepass().
+    // `halfZ`: also split each tile's range at its middle (two more passes, tile_depth_split.frag), so the
+    // ranges come back with `split` set.
     TileDepthBounds(const GlInfo& info, int width, int height, int tileSize, const gl::Renderbuffer& depthStencil,
-                    bool forcePacked = false);
+                    bool forcePacked = false, bool halfZ = false);
     // Clears depth, stencil and the depth copy, then draws the scene's opaque geometry.
     void prepass(const GpuScene& scene, const CameraMatrices& camera) const;
     // Reduces the depth copy to one (min, max) per tile on the GPU and reads the result back.
@@ -44,16 +47,21 @@ private:
         gl::Framebuffer columnsFbo, tilesFbo;
     };
     void createTargets(const gl::Renderbuffer& depthStencil);
+    Chain makeChain() const;
     void runPass(const gl::Program& program, const gl::Texture& input, const gl::Framebuffer& output, int outW,
                  int outH) const;
+    std::vector<float> readChain(const Chain& chain, int component) const;  // one value per tile, [0, 1]
 
     DepthReductionFormat format_;
     int width_, height_, tileSize_, tilesX_, tilesY_;
     gl::Texture depthCopy_;
     gl::Framebuffer prepassFbo_;
     std::vector<Chain> chains_;  // float: one (min and max together); packed: min, then max
+    std::vector<Chain> splitChains_;  // half-Z. float: one (far min, near max); packed: far min, then near max
     gl::Program prepassProgram_;
     std::vector<gl::Program> horizontal_, vertical_;  // per chain
+    std::vector<gl::Program> splitHorizontal_, splitVertical_;  // per split chain
+    bool halfZ_ = false;
     gl::Buffer triangle_;
 };
 

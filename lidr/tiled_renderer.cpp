@@ -15,6 +15,8 @@ namespace {
 const TiledOptions& checkedOptions(const TiledOptions& o) {
     if (o.depthBounds && !o.preZ)
         throw Error("tiled: per-tile depth bounds need the pre-Z pass (depthBounds without preZ)");
+    if (o.halfZ && !o.depthBounds)
+        throw Error("tiled: half-Z splits the per-tile depth bounds (halfZ without depthBounds)");
     if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
         throw Error("tiled: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
     return o;
@@ -28,15 +30,16 @@ TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const Tiled
                              int height)
     : options_(checkedOptions(options)),
       scene_(scene),
-      targets_(info, width, height),
+      targets_(info, width, height, options.msaaSamples),
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()),
       lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),
       timer_(info, options.timingMethod),
       info_(info) {
-    if (options_.depthBounds)
+    if (options_.depthBounds && options_.msaaSamples == 0)
         depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
-                                                         targets_.depthStencil(), options_.forcePackedDepth);
+                                                         targets_.depthStencil(), options_.forcePackedDepth,
+                                                         options_.halfZ);
     buildProgram(options_.initialLoopBound);
     frameInfo_.shaderRebuilds = 0;
     timer_.setEnabled(options_.timing);
@@ -139,18 +142,15 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
 
     if (transparent) {
         timer_.begin("tiled-transparent");
-        RenderState t;
-        t.depthTest = true;
-        t.depthFunc = GL_LESS;  // behind opaque geometry: hidden
-        t.depthWrite = false;   // sorted back to front, every layer blends over the ones behind it
-        t.blend = true;
-        t.blendSrcRgb = GL_SRC_ALPHA;
-        t.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
-        t.blendSrcAlpha = GL_ZERO;  // the target's alpha stays 1 (opaque image)
-        t.blendDstAlpha = GL_ONE;
-        applyRenderState(t);
+        applyRenderState(transparentBlendState());  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program_, true);
         scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
+    }
+    if (targets_.samples() > 0) {
+        timer_.begin("msaa-resolve");
+        applyRenderState(RenderState{});
+        targets_.resolve();
         timer_.end();
     }
 

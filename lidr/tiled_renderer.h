@@ -27,7 +27,12 @@ struct TiledOptions {
     int tileSize = 32;                 // tile edge in pixels; 1..min(width, height)
     bool preZ = true;                  // depth pre-pass, then shading with depth EQUAL (no overdraw shading)
     bool depthBounds = true;           // per-tile min/max depth from the pre-Z pass prunes lights (needs preZ)
+    bool halfZ = false;                // also split each tile's depth range in two (needs depthBounds)
     bool transparency = true;          // draw transparent meshes (opacity < 1) after the opaque ones
+    // MSAA samples: 0, or 2..GL_MAX_SAMPLES. Shading goes to the multisampled targets and is resolved. The
+    // depth bounds are then not used (2D lists only): GL 2.1 cannot read per-sample depth, and one depth per
+    // pixel misses samples of triangles that cover no pixel centre. frameInfo().depthBoundsUsed says so.
+    int msaaSamples = 0;
     bool forceFixedLightTable = false; // the RGBA8 fixed-point light table even with float textures
     bool forcePackedDepth = false;     // the RGBA8 packed depth reduction even with float render targets
     int initialLoopBound = 16;         // first LIDR_MAX_TILE_LIGHTS; grows (power of two) with the lists
@@ -40,7 +45,7 @@ struct TiledFrameInfo {
     int loopBound = 0;          // LIDR_MAX_TILE_LIGHTS the frame's shader ran with (>= every list's length)
     int shaderRebuilds = 0;     // times the loop bound grew, since construction
     int listTextureRows = 0;    // rows of the index list texture (it grows too)
-    bool depthBoundsUsed = false;
+    bool depthBoundsUsed = false;   // false without depthBounds, and under MSAA
     double assignMilliseconds = 0.0;  // CPU time of the light assignment and grid upload (GPU timer queries
                                       // do not see CPU work)
 };

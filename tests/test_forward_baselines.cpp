@@ -60,7 +60,7 @@ MultipassCheck checkMultipass(const Scene& scene, const MultipassOptions& option
     const ImageRGBA8 image = mp.targets().readColor();
     // Multi-pass forward draws opaque geometry only; so does its reference.
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                options.forceFixedLightTable, 0, false);
+                                options.forceFixedLightTable, options.msaaSamples, false);  // no transparency
     reference.render(scene.camera, lights, shading);
     const ImageRGBA8 ref = reference.targets().readColor();
     const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
@@ -108,6 +108,27 @@ TEST_CASE("multi-pass forward equals the reference on the default room", "[forwa
     INFO("max error " << c.maxError << ", most lights at a pixel " << c.maxLightsAtPixel << ", PSNR " << c.error.psnr);
     REQUIRE(c.violations == 0);
     CHECK(c.error.psnr > 45.0);
+}
+
+TEST_CASE("multi-pass forward with MSAA stays within the bound of its most lit pixel", "[forward][msaa]") {
+    const GlInfo& info = testGl();
+    if (!info.multisampleFbo || info.maxSamples < 4) {
+        WARN("no 4x multisample FBOs in this context; MSAA not tested");
+        return;
+    }
+    Scene scene = floorScene();
+    scene.lights = scatteredLights(60, 0.5f, 4.0f, 21);
+    const MultipassCheck single = checkMultipass(scene, MultipassOptions{});
+    MultipassOptions o;
+    o.msaaSamples = 4;
+    MultipassForwardRenderer mp(info, scene, o, scene.width, scene.height);
+    mp.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    ReferenceRenderer reference(info, scene, scene.width, scene.height, int(scene.lights.size()), false, 4, false);
+    reference.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    // Each sample obeys the per-pixel bound; a resolved pixel averages samples, so the largest bound holds.
+    const ImageError e = compareImages(mp.targets().readColor(), reference.targets().readColor());
+    INFO("max " << e.maxAbsError << ", bound " << single.maxBound);
+    REQUIRE(e.maxAbsError <= single.maxBound);
 }
 
 TEST_CASE("multi-pass forward: scissor and mesh culling never cut light off", "[forward]") {

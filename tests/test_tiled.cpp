@@ -57,10 +57,10 @@ std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsig
 }
 
 // The brute-force reference, transparent meshes included (back to front, alpha blended, every light).
-ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable) {
+ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable,
+                          int samples = 0) {
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                fixedTable);
-    reference.setDrawTransparent(true);
+                                fixedTable, samples, true);
     reference.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
     return reference.targets().readColor();
 }
@@ -292,7 +292,7 @@ TEST_CASE("light grid: tile size is checked, lists are ascending and terminated"
 
 // --- GPU ----------------------------------------------------------------------------------------------
 
-TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer", "[tiled][depth]") {
+TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer; half-Z ranges hold every depth", "[tiled][depth]") {
     Scene scene = firstPersonScene();
     scene.lights = {light({0, 1, 0}, 2.0f)};
     for (bool packed : {false, true})
@@ -300,6 +300,7 @@ TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer",
             TiledOptions o;
             o.tileSize = tile;
             o.forcePackedDepth = packed;
+            o.halfZ = true;
             TiledRenderer r(testGl(), scene, o, scene.width, scene.height);
             r.render(scene.camera, scene.lights, {});
             INFO("format " << depthReductionFormatName(r.depthFormat()) << ", tile " << tile);
@@ -307,6 +308,7 @@ TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer",
             if (packed) CHECK(r.depthFormat() == DepthReductionFormat::PackedRGBA8);
             const ImageFloat depth = r.targets().readDepth();
             const LightGrid& g = r.grid();
+            auto g_tile = [&](int x, int y) { return g.tileOf(x, depth.height - 1 - y); };
             std::vector<TileDepthRange> cpu(g.tileCount(), {1.0f, 0.0f});
             for (int y = 0; y < depth.height; ++y)
                 for (int x = 0; x < depth.width; ++x) {
@@ -315,6 +317,25 @@ TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer",
                     t.minDepth = std::min(t.minDepth, d), t.maxDepth = std::max(t.maxDepth, d);
                 }
             REQUIRE(r.tileDepth().size() == cpu.size());
+            // Half-Z: every depth of a tile lies in one of its two ranges, and the split finds real gaps.
+            const float tol = 4.0f / 16777215.0f;
+            int gaps = 0;
+            for (size_t t = 0; t < cpu.size(); ++t) {
+                const TileDepthRange& g = r.tileDepth()[t];
+                REQUIRE(g.split);
+                if (g.farMinDepth - g.nearMaxDepth > 1e-3f) ++gaps;
+            }
+            for (int y = 0; y < depth.height; ++y)
+                for (int x = 0; x < depth.width; ++x) {
+                    const float d = depth.at(x, y);
+                    const TileDepthRange& g = r.tileDepth()[g_tile(x, y)];
+                    const bool inNear = d >= g.minDepth - tol && d <= std::max(g.nearMaxDepth, g.minDepth) + tol;
+                    const bool inFar = d >= std::min(g.farMinDepth, g.maxDepth) - tol && d <= g.maxDepth + tol;
+                    INFO("pixel " << x << "," << y << " depth " << d << " ranges " << g.minDepth << ".." << g.nearMaxDepth
+                                  << " | " << g.farMinDepth << ".." << g.maxDepth);
+                    REQUIRE((inNear || inFar));
+                }
+            CHECK(gaps > 0);
             int differentTiles = 0;
             for (size_t t = 0; t < cpu.size(); ++t) {
                 INFO("tile " << t << ": gpu " << r.tileDepth()[t].minDepth << ".." << r.tileDepth()[t].maxDepth
@@ -351,22 +372,25 @@ void checkViews(const std::vector<int>& tileSizes) {
         Scene scene = base;
         scene.lights = lights;
         const ImageRGBA8 reference = referenceImage(scene, lights, false);
-        long entriesWith = -1, entriesWithout = -1;
+        long entriesWith = -1, entriesWithout = -1, entriesHalfZ = -1;
         for (int tile : tileSizes)
-            for (int bounds = 0; bounds < 3; ++bounds) {  // 0: none, 1: float (where available), 2: packed
+            for (int bounds = 0; bounds < 5; ++bounds) {  // 0: none, 1/2: min/max float/packed, 3/4: half-Z
                 TiledOptions t;
                 t.tileSize = tile;
                 t.depthBounds = bounds > 0;
-                t.forcePackedDepth = bounds == 2;
+                t.forcePackedDepth = bounds == 2 || bounds == 4;
+                t.halfZ = bounds >= 3;
                 const TiledCheck c = renderTiled(scene, t, nullptr, &reference);
                 INFO("camera y " << scene.camera.position.y << ", tile " << tile << ", bounds " << bounds);
                 requireEqualsReference(c);
                 CHECK(c.truthPairs > 500);
                 if (bounds == 0) entriesWithout = c.grid.opaqueEntries;
                 if (bounds == 1) entriesWith = c.grid.opaqueEntries;
+                if (bounds == 3) entriesHalfZ = c.grid.opaqueEntries;
             }
         // Depth bounds only ever remove lights; in the first-person view they remove many.
         CHECK(entriesWith <= entriesWithout);
+        CHECK(entriesHalfZ <= entriesWith);
         if (base.camera.position.y < 5.0f) CHECK(entriesWith < entriesWithout * 3 / 4);
     }
 }
@@ -473,6 +497,37 @@ TEST_CASE("tiled: transparent meshes are lit from their own lists and blended ba
     }
 }
 
+TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same way", "[tiled][msaa][transparency]") {
+    const GlInfo& info = testGl();
+    if (!info.multisampleFbo || info.maxSamples < 2) {
+        WARN("no multisample FBOs in this context; MSAA not tested");
+        return;
+    }
+    Scene scene = firstPersonScene();
+    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
+    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
+    scene.lights = scatteredLights(60, 0.5f, 3.0f, 8);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const ImageRGBA8 single = [&] {
+        TiledRenderer r(info, scene, TiledOptions{}, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, shading);
+        return r.targets().readColor();
+    }();
+    for (int samples : {2, 4}) {
+        if (samples > info.maxSamples) continue;
+        TiledOptions t;
+        t.msaaSamples = samples;
+        TiledRenderer r(info, scene, t, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, shading);
+        const ImageRGBA8 image = r.targets().readColor();
+        const ImageError e = compareImages(image, referenceImage(scene, scene.lights, false, samples));
+        INFO(samples << "x MSAA: max " << e.maxAbsError << ", differing " << e.differingPixels);
+        REQUIRE(e.maxAbsError <= 1);
+        CHECK_FALSE(r.frameInfo().depthBoundsUsed);  // 2D lists: right for every sample
+        CHECK(compareImages(image, single).differingPixels > 50);  // the edges really are antialiased
+    }
+}
+
 TEST_CASE("tiled: a tile list longer than the loop bound grows the shader, a full list texture grows", "[tiled][growth]") {
     Scene scene = topDownScene();
     // 70 lights all covering the middle of the floor: the longest tile list has 70 entries.
@@ -536,6 +591,12 @@ TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input]") {
     t = TiledOptions{};
     t.preZ = false;
     REQUIRE_THROWS_WITH(TiledRenderer(testGl(), scene, t, scene.width, scene.height), Catch::Contains("pre-Z"));
+    t = TiledOptions{};
+    t.depthBounds = false;
+    t.halfZ = true;
+    REQUIRE_THROWS_WITH(TiledRenderer(testGl(), scene, t, scene.width, scene.height), Catch::Contains("half-Z"));
+    t = TiledOptions{};
+    t.preZ = false;
     t.depthBounds = false;  // no pre-Z and no bounds is a valid mode: depth LESS in the shading pass
     const TiledCheck c = renderTiled([&] { Scene s = scene; s.lights = scatteredLights(40, 0.5f, 3.0f, 2); return s; }(), t);
     requireEqualsReference(c);
