@@ -131,14 +131,13 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
 
 std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo& info, const Scene& scene, int width,
                                               int height) {
-    if (c.mode == "forward-brute")  // built here: the bench sets its loop bound to the scene's light count
+    if (c.perSample && c.mode == "forward-brute")  // the factory has no per-sample shading for the reference
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), false, c.msaa,
-                                                   c.transparency, c.perSample);
-    if (c.mode == "lidr") return std::make_unique<LidrRenderer>(info, scene, lidrOptionsFor(c), width, height);
+                                                   c.transparency, true);
+    if (c.perSample && c.mode != "lidr") throw UnsupportedError("per-sample index lists are LIDR's; " + c.mode + " has none");
 #if LIDR_BENCH_HAS_MODE_FACTORY
     // What the factory's options cannot express is refused here, so no row claims a setting it did not use.
-    if (c.msaa > 0 || c.perSample) throw UnsupportedError("mode " + c.mode + " has no MSAA option");
     const bool sceneHasTransparency = std::any_of(scene.materials.begin(), scene.materials.end(),
                                                   [](const Material& m) { return m.opacity < 1.0f; });
     if (c.mode == "forward-multipass" && c.transparency && sceneHasTransparency)
@@ -146,10 +145,17 @@ std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo&
                                "alpha-blend); measure it with transparency off");
     RenderModeOptions o;
     o.mode = c.mode;
+    if (c.mode == "lidr") o.lidr = lidrOptionsFor(c);
     o.tiled.depthBounds = c.tiledDepthBounds;
-    o.tiled.transparency = c.transparency;
+    o.msaaSamples = c.msaa;
+    o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);
 #else
+    if (c.mode == "forward-brute")
+        return std::make_unique<ReferenceRenderer>(info, scene, width, height,
+                                                   std::max<int>(1, int(scene.lights.size())), false, c.msaa,
+                                                   c.transparency);
+    if (c.mode == "lidr") return std::make_unique<LidrRenderer>(info, scene, lidrOptionsFor(c), width, height);
     throw Error("unknown render mode '" + c.mode + "' (valid: " + joinNames(availableModes()) +
                 "; this build's library has no render-mode factory yet)");
 #endif
@@ -205,7 +211,7 @@ std::vector<SweepGroup> fullPreset() {
 
     SweepGroup variants = room;  // MSAA 4x, one index list per pixel and per-sample lists, at budget 4
     variants.name = "room-msaa";
-    variants.modes = {"lidr", "forward-brute"};  // the modes with an MSAA option
+    variants.tiledDepthBounds = {true};
     variants.budgets = {4};
     variants.indexBits = {8};
     variants.volumeTests = {"backface", "frontface"};  // back-face needs per-sample lists under MSAA
@@ -214,7 +220,7 @@ std::vector<SweepGroup> fullPreset() {
     variants.resolutions = {{320, 240}};
     variants.msaa = {0, 4};
     variants.perSample = {false, true};  // per-sample index lists where the context has them (GL 3.2)
-    variants.transparency = {true};
+    variants.transparency = {false};  // opaque: forward-multipass, which draws no glass, is compared too
     groups.push_back(variants);
 
     SweepGroup overlap;  // cost and drops against a known overlap
@@ -330,7 +336,8 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                     for (int msaa : g.msaa)
                       for (bool perSample : g.perSample)
                         for (bool transparency : g.transparency) {
-                            if (perSample && msaa == 0) continue;  // per-sample lists exist only with MSAA
+                            // Per-sample lists exist only with MSAA, and only in LIDR (and its reference).
+                            if (perSample && (msaa == 0 || (mode != "lidr" && mode != "forward-brute"))) continue;
                             base.msaa = msaa;
                             base.perSample = perSample;
                             base.transparency = transparency;
