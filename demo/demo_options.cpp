@@ -2,6 +2,7 @@
 
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
+#include "lidr/packing_scheme.h"
 #include "lidr/scene_loader.h"
 
 namespace lidr::demo {
@@ -32,7 +33,12 @@ Scene SceneChoice::load() const {
 }
 
 void RendererChoice::addOptions(CLI::App& app) {
-    app.add_option("--scheme", scheme, "Packing scheme: bitshift");
+    std::string schemes;
+    for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
+    app.add_option("--scheme", scheme,
+                   "Packing scheme: " + schemes +
+                       " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
+                       "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
     app.add_option("--volume-test", volumeTest, "Light volume test: backface (cheap) or exact (stencil)");

@@ -19,14 +19,18 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.marked.assign(n, 0);
     for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
     const int budget = renderer.scheme().config().budget;
+    const bool wholeLights = !renderer.scheme().keepsFirstMarks();
     e.withinBudget.assign(n, 0);
+    e.droppedMarks.assign(n, 0);
+    for (size_t p = 0; p < n; ++p)
+        e.droppedMarks[p] = std::max(0, e.marked[p] - static_cast<int>(e.lists.decoded[p].size()));
     for (size_t p = 0; p < n; ++p) {
         if (!e.truth.surface[p]) {
             e.withinBudget[p] = 1;  // background: no lights, must match too
             continue;
         }
         e.maxMarked = std::max(e.maxMarked, e.marked[p]);
-        if (e.marked[p] > budget)
+        if (e.marked[p] > budget || (wholeLights && e.droppedMarks[p] > 0))
             ++e.pixelsOverBudget;
         else
             e.withinBudget[p] = 1;

@@ -15,8 +15,11 @@ struct FrameEvaluation {
     std::vector<int> marked;        // lights the volume test marked per pixel (GPU stencil count), or truth
     int maxTruthOverlap = 0;        // most lights touching one pixel's surface
     int maxMarked = 0;              // most lights marking one pixel
-    long pixelsOverBudget = 0;      // surface pixels marked by more lights than the budget
-    std::vector<uint8_t> withinBudget;  // 1 where the pixel is marked by <= budget lights
+    long pixelsOverBudget = 0;      // surface pixels where a marking light was not kept (see withinBudget)
+    // 1 where every light marking the pixel was kept: marked <= budget; with CPU sorting, which drops whole
+    // lights, also marked <= the pixel's decoded slots.
+    std::vector<uint8_t> withinBudget;
+    std::vector<int> droppedMarks;  // per pixel: marks the index lists do not hold (GPU count - kept slots)
     ImageError error;               // whole image against the reference
     ImageError errorWithinBudget;   // only pixels marked by <= budget lights
 };
