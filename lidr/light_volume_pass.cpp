@@ -44,32 +44,27 @@ LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, mesh_.positions.data(), mesh_.positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh_.indices.data(),
                                   mesh_.indices.size() * sizeof(uint16_t));
-    for (int n = 1; n <= kMaxIndexTargets; ++n) {
-        if (n > 1 && n > info.maxDrawBuffers) break;
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(n)}};
-        programs_.push_back(gl::Program::create("light-volume-" + std::to_string(n),
-                                                buildShaderSource("light_volume.vert", defs),
-                                                buildShaderSource("light_volume.frag", defs),
-                                                {{"aPosition", gl::kPosition}}));
-    }
+    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
+    programs_.resize(kMaxIndexTargets);
+    listPrograms_.resize(kMaxIndexTargets);
 }
 
 const gl::Program& LightVolumePass::programFor(int targetCount) const {
-    if (targetCount < 1 || targetCount > static_cast<int>(programs_.size()))
+    if (targetCount < 1 || targetCount > maxDrawTargets_)
         throw UnsupportedError("writing " + std::to_string(targetCount) +
                                " index targets at once needs that many draw buffers");
-    return listSource_ ? listPrograms_[targetCount - 1] : programs_[targetCount - 1];
+    gl::Program& p = (listSource_ ? listPrograms_ : programs_)[size_t(targetCount - 1)];
+    if (!p) {
+        const std::string base = listSource_ ? "pixel_list_volume" : "light_volume";
+        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        p = gl::Program::create(base + "-" + std::to_string(targetCount), buildShaderSource(base + ".vert", defs),
+                                buildShaderSource(base + ".frag", defs), {{"aPosition", gl::kPosition}});
+    }
+    return p;
 }
 
 void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera) {
-    if (listSource_ && listPrograms_.empty()) {
-        for (size_t n = 1; n <= programs_.size(); ++n) {
-            const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(n)}};
-            listPrograms_.push_back(gl::Program::create("pixel-list-volume-" + std::to_string(n),
-                                                        buildShaderSource("pixel_list_volume.vert", defs),
-                                                        buildShaderSource("pixel_list_volume.frag", defs),
-                                                        {{"aPosition", gl::kPosition}}));
-        }
+    if (listSource_ && !quad_) {
         // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
         const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
         quad_ = gl::Buffer::create(GL_ARRAY_BUFFER, q, sizeof(q));

@@ -111,8 +111,9 @@ private:
     bool depthClamp_ = false;
     LightVolumeMesh mesh_;
     gl::Buffer vertices_, indices_;
-    std::vector<gl::Program> programs_;  // one per target count 1..kMaxIndexTargets
-    std::vector<gl::Program> listPrograms_;  // the test hook's, built on first use
+    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
+    mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's
+    int maxDrawTargets_ = 1;
     gl::Buffer quad_;
     gl::Texture colorTable_;
     const PixelListSource* listSource_ = nullptr;
