@@ -177,13 +177,28 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
     const bool window = d.rankCount > 0;
     const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
+    // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
+    // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
+    // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
+    // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
+    // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
+    bool separateCount = false;
     if (test_ == VolumeTest::BackFace) {
-        // Stencil counts every light that marks the pixel; with a rank window only those ranks write.
         inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
         inside.stencil.ref = d.rankFirst;
         inside.stencil.readMask = windowMask;
-        inside.stencil.stencilFail = GL_INCR;
-        inside.stencil.depthPass = GL_INCR;
+        if (window) {
+            separateCount = true;
+            inside.stencil.writeMask = 0;
+            count = inside;
+            count.colorMask = glm::bvec4(false);
+            count.blend = false;
+            count.stencil.func = GL_ALWAYS;
+            count.stencil.depthPass = GL_INCR;  // saturates at 255
+            count.stencil.writeMask = 0xFF;
+        } else {
+            inside.stencil.depthPass = GL_INCR;
+        }
         countBits_ = 8;
     } else {
         // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
@@ -244,6 +259,15 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
             applyRenderState(unmark);
             drawVolume(l);
             applied = -1;
+        } else if (separateCount) {
+            if (d.writesColor()) {
+                applyRenderState(want ? insideNoDepth : inside);
+                drawVolume(l);
+            }
+            RenderState c2 = count;
+            if (want) c2.depthFunc = GL_ALWAYS;
+            applyRenderState(c2);
+            drawVolume(l);
         } else {
             if (want != applied) {
                 applyRenderState(want ? insideNoDepth : inside);

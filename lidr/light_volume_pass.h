@@ -72,9 +72,10 @@ struct VolumeDraw {
 // Test hook: instead of light volumes, "light" j (VolumeLight::index = j + 1) is a full-target quad that marks
 // exactly the pixels whose list has a j-th entry, and writes the colours of THAT entry's index (looked up in a
 // table the pass fills from the draw's colors callback). Through it any per-pixel index lists go through the
-// real blend and stencil state of a scheme's draws. The quad is a back face at depth 0.5: clear depth to 0.
+// real blend and stencil state of a scheme's draws. The quad is a back face; clear depth to 0.5: list entries
+// pass the depth test, "decoy" entries (B = 255: a volume in front of the surface) fail it.
 struct PixelListSource {
-    std::vector<const gl::Texture*> steps;  // RGBA8, target-sized: R = index low byte, G = high byte, 0 = none
+    std::vector<const gl::Texture*> steps;  // RGBA8, target-sized: R, G = index low, high byte (0: none); B decoy
     uint32_t maxIndex = 255;                // colour table covers indices 0..maxIndex
 };
 

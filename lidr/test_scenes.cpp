@@ -16,7 +16,7 @@ Scene makeControlledOverlapScene(const ControlledOverlapOptions& o) {
     s.name = "controlled-overlap-" + std::to_string(o.overlap);
     s.materials.push_back(Material{"floor", glm::vec3(0.8f), "", glm::vec3(0.3f), 24.0f, 1.0f});
     addPlane(s, glm::vec3(0.0f), glm::vec2(30.0f), 0, 30);
-    s.camera.position = glm::vec3(0.0f, 22.0f, 6.0f);
+    s.camera.position = glm::vec3(0.0f, 26.0f, 5.0f);
     s.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
     s.camera.fovYDegrees = 55.0f;
     s.camera.nearPlane = 0.5f;
@@ -29,7 +29,7 @@ Scene makeControlledOverlapScene(const ControlledOverlapOptions& o) {
     std::mt19937 rng(o.seed);
     std::uniform_real_distribution<float> colour(0.05f, 0.35f);
     for (int c = 0; c < clusters; ++c) {
-        const glm::vec3 centre(-7.0f + 7.0f * float(c % 3), 0.4f, -6.0f + 6.0f * float(c / 3));
+        const glm::vec3 centre(-8.5f + 8.5f * float(c % 3), 0.4f, -7.5f + 7.5f * float(c / 3));
         const float radius = 1.8f + 0.15f * float(c % 4);
         std::vector<int> priorities(static_cast<size_t>(k), 0);
         std::iota(priorities.begin(), priorities.end(), 0);

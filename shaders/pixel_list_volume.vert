@@ -1,6 +1,6 @@
 #version 120
 // Test hook of the light-volume pass (PixelListSource): a full-target quad instead of a light volume.
-// Wound clockwise, so the volume test sees a back face; at depth 0.5 it passes GEQUAL against a depth of 0.
+// Wound clockwise, so the volume test sees a back face; the fragment shader sets the depth.
 attribute vec3 aPosition;
 
 void main() {

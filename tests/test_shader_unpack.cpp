@@ -49,15 +49,31 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     testContext();
     const int width = std::min<int>(1024, std::max<int>(1, static_cast<int>(lists.size())));
     const int height = static_cast<int>((lists.size() + width - 1) / width);
+    // Each pixel's steps: its list, with decoys (volumes in front of the surface: they must neither write nor
+    // count) before about a third of the entries and after the last, seeded by the pixel.
+    constexpr uint32_t kDecoy = 0x10000u;
+    std::vector<std::vector<uint32_t>> sequences(lists.size());
     size_t steps = 0;
-    for (const auto& l : lists) steps = std::max(steps, l.size());
+    for (size_t p = 0; p < lists.size(); ++p) {
+        uint32_t h = uint32_t(p) * 2654435761u + 12345u;
+        for (uint32_t index : lists[p]) {
+            h = h * 1664525u + 1013904223u;
+            // CPU sorting maps step j to group j, so there a decoy may only follow the list.
+            if ((h >> 28) < 5 && scheme.keepsFirstMarks()) sequences[p].push_back(kDecoy | index);
+            sequences[p].push_back(index);
+        }
+        if ((h >> 20) & 1) sequences[p].push_back(kDecoy | 1u);
+        if ((h >> 21) & 1) sequences[p].push_back(kDecoy | 2u);
+        steps = std::max(steps, sequences[p].size());
+    }
     std::vector<gl::Texture> stepTextures;
     for (size_t j = 0; j < steps; ++j) {
         std::vector<uint8_t> texels(size_t(width) * height * 4, 0);
         for (size_t p = 0; p < lists.size(); ++p)
-            if (j < lists[p].size()) {
-                texels[p * 4 + 0] = uint8_t(lists[p][j] & 0xFF);
-                texels[p * 4 + 1] = uint8_t(lists[p][j] >> 8);
+            if (j < sequences[p].size()) {
+                texels[p * 4 + 0] = uint8_t(sequences[p][j] & 0xFF);
+                texels[p * 4 + 1] = uint8_t((sequences[p][j] >> 8) & 0xFF);
+                texels[p * 4 + 2] = (sequences[p][j] & kDecoy) ? 255 : 0;
             }
         stepTextures.push_back(gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data()));
     }
@@ -76,7 +92,7 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     RenderState depthClear;
     depthClear.depthWrite = true;
     applyRenderState(depthClear);
-    glClearDepth(0.0);  // the hook's quad (depth 0.5) passes the volume test's GEQUAL everywhere
+    glClearDepth(0.5);  // list entries (depth 1) pass the volume test's GEQUAL, decoys (0.25) fail it
     glClear(GL_DEPTH_BUFFER_BIT);
     glClearDepth(1.0);
     CameraMatrices camera;
