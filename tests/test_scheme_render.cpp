@@ -77,7 +77,7 @@ TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width 
                         REQUIRE(e.lists.droppedPerPixel[p] == kk - kept);
                         REQUIRE(e.droppedMarks[p] == kk - kept);
                     }
-                    CHECK(clusterPixels > 100);
+                    CHECK(clusterPixels > 40);  // one cluster covers about 50 pixels at softpipe's 96 x 72
                 }
 }
 
@@ -106,7 +106,7 @@ TEST_CASE("controlled overlap under the exact stencil test: every scheme x width
                         REQUIRE(r.evaluation.marked[p] == r.evaluation.truth.count(p));
                         REQUIRE(r.evaluation.lists.droppedPerPixel[p] == r.evaluation.droppedMarks[p]);
                     }
-                CHECK(pixels > 100);
+                CHECK(pixels > 40);
             }
 }
 
