@@ -26,13 +26,18 @@ Scene SceneChoice::load() const {
         scene = loadSceneFile(sceneFile);
         if (time >= 0.0) scene.time = float(time);
     }
-    if (width != 0) scene.width = width;
-    if (height != 0) scene.height = height;
+    if (width) scene.width = *width;
+    if (height) scene.height = *height;
     scene.validate();
     return scene;
 }
 
 void RendererChoice::addOptions(CLI::App& app) {
+    app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
+    app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
+    app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
+    app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
+    app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
     std::string schemes;
     for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
     app.add_option("--scheme", scheme,
@@ -41,17 +46,51 @@ void RendererChoice::addOptions(CLI::App& app) {
                        "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
-    app.add_option("--volume-test", volumeTest, "Light volume test: backface (cheap) or exact (stencil)");
+    app.add_option("--volume-test", volumeTest,
+                   "Light volume test: auto (backface; frontface with MSAA), backface, exact (stencil), frontface");
+    app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
+    app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
+    app.add_flag("--msaa-per-sample", msaaPerSample,
+                 "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)");
+    app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
 }
 
-LidrOptions RendererChoice::lidrOptions() const {
+LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     LidrOptions o;
+    o.msaaSamples = msaa >= 0 ? msaa : scene.msaaSamples;
+    if (transparency == "on" || transparency == "scene")
+        o.transparency = transparency == "on" || scene.transparency;
+    else if (transparency == "off")
+        o.transparency = false;
+    else
+        throw Error("--transparency must be on, off or scene, got '" + transparency + "'");
     o.packing.scheme = scheme;
     o.packing.budget = budget;
     o.packing.indexBits = indexBits;
-    o.volumeTest = parseVolumeTest(volumeTest);
+    o.perSampleIndices = msaaPerSample;
+    o.volumeTest = volumeTest == "auto"
+                       ? (o.msaaSamples > 0 && !msaaPerSample ? VolumeTest::FrontFace : VolumeTest::BackFace)
+                       : parseVolumeTest(volumeTest);
+    o.forceFixedLightTable = fixedLightTable;
+    o.timingMethod = parseTimingMethod(timer);
+    return o;
+}
+
+RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
+    RenderModeOptions o;
+    o.mode = mode.empty() ? scene.renderMode : mode;
+    if (!isRenderModeName(o.mode))
+        throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
+    o.lidr = lidrOptions(scene);
+    o.msaaSamples = o.lidr.msaaSamples;
+    o.transparency = o.lidr.transparency;
+    o.timingMethod = o.lidr.timingMethod;
+    o.tiled.tileSize = tileSize;
+    o.tiled.depthBounds = !noDepthBounds;
+    o.tiled.forcePackedDepth = packedDepth;
+    o.tiled.halfZ = halfZ;
     o.forceFixedLightTable = fixedLightTable;
     return o;
 }

@@ -1,18 +1,20 @@
 #pragma once
 // Command-line options shared by lidr-demo (and later lidr-bench): scene choice and renderer settings.
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "lidr/context.h"
 #include "lidr/lidr_renderer.h"
+#include "lidr/render_mode.h"
 #include "lidr/scene.h"
 
 namespace lidr::demo {
 
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
-    int width = 0, height = 0;  // 0: the scene's
+    std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
     double time = -1.0;         // < 0: the scene's
     unsigned seed = 1;
     void addOptions(CLI::App& app);
@@ -20,14 +22,25 @@ struct SceneChoice {
 };
 
 struct RendererChoice {
+    std::string mode;  // empty: the scene's ("lidr" unless its file says otherwise)
+    int tileSize = 32;
+    bool noDepthBounds = false;
+    bool packedDepth = false;
+    bool halfZ = false;
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;
-    std::string volumeTest = "backface";
+    std::string volumeTest = "auto";  // backface, or frontface with MSAA
+    int msaa = -1;                     // < 0: the scene's
+    std::string transparency = "scene";
+    bool msaaPerSample = false;
     std::string context = "auto";
     bool fixedLightTable = false;
+    std::string timer = "auto";
     void addOptions(CLI::App& app);
-    LidrOptions lidrOptions() const;  // throws lidr::Error on a bad name
+    LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
+    // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
+    RenderModeOptions renderModeOptions(const Scene& scene) const;
     ContextOptions contextOptions() const;
 };
 

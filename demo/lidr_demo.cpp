@@ -1,4 +1,5 @@
-// lidr-demo: renders a scene with LIDR and writes what a person needs to judge it.
+// lidr-demo: renders a scene with LIDR (or --mode tiled, forward-multipass, forward-brute) and writes what a
+// person needs to judge it.
 //   --headless (default): render the default room (or --scene FILE) offscreen, compare with the brute-force
 //   reference, write images and a summary to --out DIR; --dump DIR adds the raw artefacts.
 //   --window: an interactive GLFW window (needs a display) that animates the scene.
@@ -17,7 +18,9 @@
 #include "lidr/artefacts.h"
 #include "lidr/error.h"
 #include "lidr/frame_evaluation.h"
+#include "lidr/light_coverage.h"
 #include "lidr/reference_renderer.h"
+#include "lidr/render_mode.h"
 #include "lidr/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -63,10 +66,115 @@ std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
 
+// Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
+                    bool withReference, const demo::RendererChoice& rc) {
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
+    auto context = GlContext::create(rc.contextOptions());
+    const GlInfo& info = context->info();
+    std::cout << "GL: " << info.summary() << "\n";
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
+    MedianTimes times;
+    renderer->render(scene.camera, lights, shading);  // warm-up
+    for (int i = 0; i < frames; ++i) times.add(renderer->render(scene.camera, lights, shading).passes);
+    const FrameStats stats = renderer->lastFrame();
+    const ImageRGBA8 image = renderer->targets().readColor();
+    const std::string imageFile = mo.mode + ".png";
+    writePng(path(outDir, imageFile), image);
+
+    nlohmann::json summary;
+    summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
+                     {"vendor", info.vendor}, {"glsl", info.glslVersion}};
+    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time}};
+    summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
+                       {"light_data_bytes", renderer->lightDataBytes()}};
+    summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
+    std::ostringstream s;
+    s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
+      << " triangles, " << lights.size() << " lights\n";
+    s << "renderer   " << info.renderer << " (" << info.version << ")\n";
+    s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
+    std::string outputs = imageFile;
+    const auto* tiled = dynamic_cast<const TiledRenderer*>(renderer.get());
+    if (tiled) {
+        const LightGridStats& g = tiled->frameInfo().grid;
+        summary["tiled"] = {{"tile_size", tiled->options().tileSize}, {"tiles_x", tiled->grid().tilesX()},
+                            {"tiles_y", tiled->grid().tilesY()}, {"depth_bounds", tiled->frameInfo().depthBoundsUsed}, {"half_z", tiled->options().halfZ},
+                            {"msaa_samples", tiled->targets().samples()},
+                            {"depth_format", depthReductionFormatName(tiled->depthFormat())},
+                            {"max_opaque_lights", g.maxOpaqueLights}, {"max_transparent_lights", g.maxTransparentLights},
+                            {"opaque_entries", g.opaqueEntries}, {"transparent_entries", g.transparentEntries},
+                            {"loop_bound", tiled->frameInfo().loopBound},
+                            {"list_texture_rows", tiled->frameInfo().listTextureRows},
+                            {"grid_bytes", tiled->gridBytes()}, {"list_bytes", tiled->listBytes()},
+                            {"depth_reduction_bytes", tiled->depthReductionBytes()},
+                            {"light_table_bytes", tiled->lightTable().bytes()},
+                            {"cpu_assign_ms_last_frame", tiled->frameInfo().assignMilliseconds}};
+        writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
+        outputs += ", tile_heatmap.png";
+        const TiledOptions& to = tiled->options();
+        s << "tiled      " << to.tileSize << " px tiles (" << tiled->grid().tilesX() << "x" << tiled->grid().tilesY()
+          << "), depth bounds "
+          << (tiled->frameInfo().depthBoundsUsed ? (to.halfZ ? "half-Z" : "min/max") : "off")
+          << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
+          << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
+    }
+    s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
+    for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
+    s << "\n";
+    if (withReference) {
+        // Rendered the way the mode renders: same MSAA, transparency where the mode draws it.
+        ReferenceRenderer reference(info, scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
+                                    mo.forceFixedLightTable, mo.msaaSamples,
+                                    mo.transparency && mo.mode != "forward-multipass");
+        reference.render(scene.camera, lights, shading);
+        const ImageRGBA8 refImage = reference.targets().readColor();
+        writePng(path(outDir, "reference.png"), refImage);
+        writePng(path(outDir, "difference.png"), differenceImage(image, refImage));
+        outputs += ", reference.png, difference.png";
+        const ImageError e = compareImages(image, refImage);
+        summary["error"] = {{"whole_image", errorJson(e)}};
+        s << "error      max " << e.maxAbsError << ", RMSE " << e.rmse << ", PSNR " << (std::isinf(e.psnr) ? 999.0 : e.psnr)
+          << " dB, pixels differing by >1: " << e.pixelsOverThreshold << "\n";
+        if (tiled && mo.msaaSamples == 0) {  // every light that touches an opaque pixel must be in its tile's list
+            // (from the single-sample depth buffer, which MSAA frames do not fill)
+            const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+            const CoverageTruth truth = computeCoverage(tiled->targets().readDepth(), cam, lights);
+            long missing = 0;
+            for (int y = 0; y < scene.height; ++y)
+                for (int x = 0; x < scene.width; ++x) {
+                    const size_t p = size_t(y) * scene.width + x;
+                    const std::vector<uint32_t> list = tiled->grid().opaqueList(tiled->grid().tileOf(x, scene.height - 1 - y));
+                    for (uint32_t k = truth.offsets[p]; k < truth.offsets[p + 1]; ++k)
+                        missing += !std::binary_search(list.begin(), list.end(), truth.lights[k]);
+                }
+            summary["tiled"]["missing_light_pixels"] = missing;
+            summary["tiled"]["max_overlap_touching"] = truth.maxOverlap();
+            s << "lists      light-pixels missing from tile lists: " << missing << ", max overlap "
+              << truth.maxOverlap() << "\n";
+        }
+    }
+    s << "outputs    " << outDir << "/{" << outputs << "}, summary.json\n";
+    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
+    std::ofstream(path(outDir, "summary.txt")) << s.str();
+    std::cout << s.str();
+    return 0;
+}
+
 int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice& rc, const std::string& outDir,
                 const std::string& dumpDir, int frames, bool withReference) {
     const Scene scene = sceneChoice.load();
-    const LidrOptions options = rc.lidrOptions();
+    const RenderModeOptions modeOptions = rc.renderModeOptions(scene);
+    if (modeOptions.mode != "lidr") {
+        if (!dumpDir.empty()) throw Error("--dump writes LIDR index targets; it needs --mode lidr");
+        return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
+    }
+    const LidrOptions options = rc.lidrOptions(scene);
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
@@ -97,6 +205,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", options.packing.budget},
                        {"index_bits", options.packing.indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
+                       {"msaa_samples", options.msaaSamples},
+                       {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexMemoryBytes()},
                        {"stencil_use", renderer.scheme().stencilUse()},
                        {"volume_passes", renderer.scheme().geometryPasses()},
@@ -104,8 +214,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
 
+    if (renderer.perSampleIndices() && !dumpDir.empty())
+        throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
     FrameArtefacts artefacts;
-    artefacts.indexTargets = renderer.readIndexTargets();
+    if (!renderer.perSampleIndices()) artefacts.indexTargets = renderer.readIndexTargets();
     artefacts.depth = renderer.targets().readDepth();
     artefacts.lightCounts = renderer.readLightCounts();
     artefacts.camera = cameraMatrices(scene.camera, scene.width, scene.height);
@@ -113,7 +225,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     artefacts.drawOrder = LidrRenderer::drawOrder(lights);
 
     if (withReference) {
-        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()));
+        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
+                                    options.forceFixedLightTable, options.msaaSamples, options.transparency,
+                                    options.perSampleIndices);
         MedianTimes refTimes;
         reference.render(scene.camera, lights, shading);
         for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
@@ -123,23 +237,29 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         summary["timing"]["reference_median_ms"] = refTimes.json();
 
         const FrameEvaluation ev = evaluateFrame(renderer, scene.camera, lights, image, refImage);
-        writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
-        std::vector<int> truthCounts(ev.truth.surface.size());
-        for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
-        writePng(path(outDir, "overlap.png"),
-                 overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
-        writePng(path(outDir, "marked.png"),
-                 overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
-        summary["lights"] = {{"visible_lights", stats.drawnLights},
-                             {"max_overlap_touching", ev.maxTruthOverlap},
-                             {"max_marked_by_volume_test", ev.maxMarked},
-                             {"pixels_marked_over_budget", ev.pixelsOverBudget},
-                             {"dropped_light_pixels", ev.lists.droppedLightPixels},
-                             {"pixels_with_drops", ev.lists.pixelsWithDrops},
-                             {"max_dropped_per_pixel", ev.lists.maxDroppedPerPixel},
-                             {"invalid_slots", ev.lists.invalidSlots},
-                             {"mean_slots_used", double(ev.lists.slotsUsed) / double(ev.lists.decoded.size())},
-                             {"max_slots_used", ev.lists.maxSlotsUsed}};
+        if (renderer.perSampleIndices()) {
+            summary["lights"] = {{"visible_lights", stats.drawnLights},
+                                 {"lists_checked", false},
+                                 {"why", "per-sample index targets are multisample textures; only the image is judged"}};
+        } else {
+            writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
+            std::vector<int> truthCounts(ev.truth.surface.size());
+            for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
+            writePng(path(outDir, "overlap.png"),
+                     overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
+            writePng(path(outDir, "marked.png"),
+                     overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
+            summary["lights"] = {{"visible_lights", stats.drawnLights},
+                                 {"max_overlap_touching", ev.maxTruthOverlap},
+                                 {"max_marked_by_volume_test", ev.maxMarked},
+                                 {"pixels_marked_over_budget", ev.pixelsOverBudget},
+                                 {"dropped_light_pixels", ev.lists.droppedLightPixels},
+                                 {"pixels_with_drops", ev.lists.pixelsWithDrops},
+                                 {"max_dropped_per_pixel", ev.lists.maxDroppedPerPixel},
+                                 {"invalid_slots", ev.lists.invalidSlots},
+                                 {"mean_slots_used", double(ev.lists.slotsUsed) / double(ev.lists.decoded.size())},
+                                 {"max_slots_used", ev.lists.maxSlotsUsed}};
+        }
         summary["error"] = {{"whole_image", errorJson(ev.error)},
                             {"pixels_within_budget", errorJson(ev.errorWithinBudget)}};
     }
@@ -151,15 +271,17 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
-    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest) << "\n";
+    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+      << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off") << "\n";
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
     if (withReference) {
         const auto& L = summary["lights"];
         const auto& E = summary["error"];
+        const bool listsChecked = !renderer.perSampleIndices();
         s << "reference  brute force " << summary["timing"]["reference_median_ms"]["frame"].get<double>() << " ms\n";
-        s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
+        if (listsChecked) s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
           << " (marked " << L["max_marked_by_volume_test"] << "), pixels over budget " << L["pixels_marked_over_budget"]
           << ", dropped light-pixels " << L["dropped_light_pixels"] << ", invalid slots " << L["invalid_slots"] << "\n";
         s << "error      whole image: max " << E["whole_image"]["max_abs_error"] << ", RMSE "
@@ -184,8 +306,9 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     co.windowHeight = scene.height;
     co.windowTitle = "lidr-demo";
     auto context = GlContext::create(co);
-    std::cout << "GL: " << context->info().summary() << "\n";
-    LidrRenderer renderer(context->info(), scene, rc.lidrOptions(), scene.width, scene.height);
+    std::cout << "GL: " << context->info().summary() << std::endl;
+    std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
+                                                        scene.width, scene.height);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     const double start = glfwGetTime();
@@ -193,8 +316,8 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     int framesSinceReport = 0;
     while (!context->shouldClose()) {
         const double now = glfwGetTime();
-        const FrameStats& st = renderer.render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer.targets().colorFramebuffer().id());
+        const FrameStats& st = renderer->render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer->targets().colorFramebuffer().id());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
@@ -207,6 +330,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
         if (now - lastReport > 1.0) {
             std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn\n", framesSinceReport / (now - lastReport),
                         st.frameMilliseconds(), st.timingMethod, st.drawnLights);
+            std::fflush(stdout);
             lastReport = now;
             framesSinceReport = 0;
         }

@@ -47,7 +47,8 @@ std::unique_ptr<GlContext> GlContext::create(const ContextOptions& options) {
     }
     std::vector<ContextBackend> order;
     if (wanted == ContextBackend::Auto)
-        order = {ContextBackend::EglSurfaceless, ContextBackend::EglDevice};
+        order = LIDR_HAVE_EGL ? std::vector<ContextBackend>{ContextBackend::EglSurfaceless, ContextBackend::EglDevice}
+                              : availableContextBackends();
     else
         order = {wanted};
     std::string tried;
@@ -98,6 +99,8 @@ void GlContext::initialiseGl(const std::string& backendName) {
     info_.vendor = str(GL_VENDOR);
     info_.glslVersion = str(GL_SHADING_LANGUAGE_VERSION);
     std::sscanf(info_.version.c_str(), "%d.%d", &info_.major, &info_.minor);
+    int glslMajor = 0, glslMinor = 0;
+    if (std::sscanf(info_.glslVersion.c_str(), "%d.%d", &glslMajor, &glslMinor) == 2) info_.glsl = glslMajor * 100 + glslMinor;
     const bool gl30 = info_.major >= 3;
     info_.framebufferObject = (gl30 || hasExtension("GL_ARB_framebuffer_object")) && glGenFramebuffers &&
                               glBindFramebuffer && glFramebufferTexture2D;
@@ -109,6 +112,13 @@ void GlContext::initialiseGl(const std::string& backendName) {
     info_.multisampleFbo = (gl30 || hasExtension("GL_EXT_framebuffer_multisample") ||
                             hasExtension("GL_ARB_framebuffer_object")) && glRenderbufferStorageMultisample;
     if (info_.multisampleFbo) glGetIntegerv(GL_MAX_SAMPLES, &info_.maxSamples);
+    const bool gl32 = info_.major > 3 || (info_.major == 3 && info_.minor >= 2);
+    const bool gl40 = info_.major >= 4;
+    info_.multisampleTexture = (gl32 || hasExtension("GL_ARB_texture_multisample")) && glTexImage2DMultisample;
+    // Per-sample reads are written in GLSL 1.50 (texelFetch on sampler2DMS) with ARB_sample_shading.
+    info_.sampleShading = (gl40 || hasExtension("GL_ARB_sample_shading")) && glMinSampleShading;
+    if (info_.glsl < 150) info_.multisampleTexture = info_.sampleShading = false;
+    if (info_.multisampleTexture) glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &info_.maxColorTextureSamples);
     if (info_.drawBuffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS, &info_.maxDrawBuffers);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
     if (info_.framebufferObject) glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &info_.maxColorAttachments);
@@ -127,15 +137,38 @@ std::string GlInfo::summary() const {
     return s.str();
 }
 
+std::vector<ContextBackend> availableContextBackends() {
+    std::vector<ContextBackend> b;
+    if (LIDR_HAVE_EGL) {
+        b.push_back(ContextBackend::EglSurfaceless);
+        b.push_back(ContextBackend::EglDevice);
+    }
+    if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
+    if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
+    return b;
+}
+
+// This file is compiled into each library with that library's set of backends; the others say why not.
 namespace detail {
+[[maybe_unused]] static const char* const kOnlyOSMesa =
+    "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
+    "program linked to it); link lidr::lidr for egl, egl-device and glfw";
+#if !LIDR_HAVE_EGL
+std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyOSMesa); }
+std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyOSMesa); }
+#endif
 #if !LIDR_HAVE_GLFW
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&) {
-    throw UnsupportedError("lidr was built without GLFW (libglfw3-dev not found at configure time)");
+    throw UnsupportedError(LIDR_HAVE_EGL ? "lidr was built without GLFW (libglfw3-dev not found at configure time)"
+                                         : kOnlyOSMesa);
 }
 #endif
 #if !LIDR_HAVE_OSMESA
 std::unique_ptr<GlContext> createOSMesa() {
-    throw UnsupportedError("lidr was built without OSMesa (osmesa.pc not found; OSMesa is gone from Mesa 25.1 on)");
+    throw UnsupportedError(LIDR_OSMESA_FOUND
+        ? "lidr::lidr does not offer OSMesa, whose GL entry points would clash with glvnd's: link the program "
+          "against lidr::lidr_osmesa instead (see doc/contexts.md)"
+        : "lidr was built without OSMesa (osmesa.pc not found at configure time; OSMesa is gone from Mesa 25.1 on)");
 }
 #endif
 }  // namespace detail

@@ -12,6 +12,7 @@ enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
+                                                     // (lidr_osmesa: osmesa)
     int windowWidth = 1024, windowHeight = 768;     // GLFW only
     bool visibleWindow = false;                      // GLFW only
     std::string windowTitle = "lidr";
@@ -22,6 +23,7 @@ struct GlInfo {
     std::string backend;
     std::string version, renderer, vendor, glslVersion;
     int major = 0, minor = 0;
+    int glsl = 0;  // GLSL version as a number: 120, 150, 450...
     bool framebufferObject = false;   // ARB_framebuffer_object or EXT_framebuffer_object + packed depth-stencil
     bool textureFloat = false;        // ARB_texture_float (light table in float textures)
     bool timerQuery = false;          // ARB_timer_query or EXT_timer_query
@@ -29,6 +31,11 @@ struct GlInfo {
     bool drawBuffers = false;         // GL 2.0 glDrawBuffers
     bool multisampleFbo = false;      // EXT_framebuffer_multisample (or GL 3.0)
     int maxSamples = 0;
+    // The optional per-sample MSAA index path (Trebilco's MSAA technique 1): multisample textures
+    // (GL 3.2 / ARB_texture_multisample) read per sample (GL 4.0 / ARB_sample_shading).
+    bool multisampleTexture = false;
+    bool sampleShading = false;
+    int maxColorTextureSamples = 0;
     int maxDrawBuffers = 1;
     int maxColorAttachments = 1;      // FBO colour attachments (index targets of one frame)
     int maxTextureUnits = 2;          // fragment-shader texture image units
@@ -60,6 +67,9 @@ protected:
 
 ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa"
 const char* contextBackendName(ContextBackend b);
+// The backends this library offers. lidr::lidr: egl, egl-device (and glfw where built); lidr::lidr_osmesa:
+// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md).
+std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
 std::unique_ptr<GlContext> createEglSurfaceless();

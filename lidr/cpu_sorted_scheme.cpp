@@ -39,7 +39,7 @@ bool CpuSortedScheme::mayShareAPixel(const VolumeLight& a, const VolumeLight& b,
     const float outside = pass.volumeOutsideRadius();
     const CameraMatrices& cam = pass.camera();
     if (!screenFootprint(cam, a.posRadius, outside).overlaps(screenFootprint(cam, b.posRadius, outside))) return false;
-    if (pass.test() == VolumeTest::BackFace) return true;
+    if (pass.test() != VolumeTest::ExactStencil) return true;  // back-face and front-face tests: footprints
     if (pass.marksWholeFootprint(a) || pass.marksWholeFootprint(b)) return true;
     // Exact test: a marked surface point lies inside the volume mesh, within outside * radius of the centre.
     const float reach = (a.posRadius.w + b.posRadius.w) * outside * 1.001f + 1e-4f;

@@ -10,7 +10,8 @@
 // drawn without its depth test, see LightVolumePass::marksWholeFootprint). The back-face test marks every
 // surface IN FRONT of the volume's back faces inside its screen footprint: a light hidden behind a wall marks
 // the wall where another light, in front of the wall, marks it too, although the two spheres are far apart.
-// Under it two lights conflict when their conservative screen footprints overlap.
+// Under it (and under the front-face test, which marks every volume the eye ray crosses in front of the
+// surface) two lights conflict when their conservative screen footprints overlap.
 //
 // Slots: 8-bit one channel, 16-bit two channels (low, high byte), 4-bit one nibble (two groups share a
 // channel, written with ADD blending, which is exact because each nibble is written at most once).

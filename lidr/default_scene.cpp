@@ -144,7 +144,7 @@ void addLargeMovers(Scene& scene, int count, uint32_t seed) {
         PointLight light;
         light.position = evaluatePath(path, glm::vec3(0.0f), 0.0f);
         light.radius = random.uniform(7.0f, 9.0f);
-        light.color = 0.8f * colors[i];
+        light.color = 1.0f * colors[i];
         light.priority = 10.0f;
         scene.lights.push_back(light);
         scene.lightPaths.push_back(path);
@@ -172,7 +172,7 @@ Scene makeDefaultScene(const DefaultSceneOptions& options) {
     scene.width = options.width;
     scene.height = options.height;
     scene.time = options.time;
-    scene.ambient = glm::vec3(0.03f);
+    scene.ambient = glm::vec3(0.06f);
 
     const int largeCount = std::min(options.lightCount, 3);
     addLargeMovers(scene, largeCount, options.seed);
@@ -183,7 +183,7 @@ Scene makeDefaultScene(const DefaultSceneOptions& options) {
     particles.boundsMax = {halfRoom - 0.5f, 3.5f, halfRoom - 0.5f};
     particles.radiusMin = 0.8f;
     particles.radiusMax = 2.2f;
-    particles.intensity = 1.0f;
+    particles.intensity = 1.5f;
     particles.speed = 1.5f;
     generateLights(scene, particles);
 

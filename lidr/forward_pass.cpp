@@ -11,28 +11,55 @@ void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera
     program.set("uViewProj", camera.viewProjection);
     program.set("uEyePosition", camera.eye);
     program.set("uAmbient", shading.ambient);
+    // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
+    // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
+    program.set("uMaterialTexture", GpuScene::kMaterialTextureUnit);
 }
 
-ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table) {
+namespace {
+// Per-sample index reads need texelFetch on sampler2DMS (GLSL 1.50) and gl_SampleID (ARB_sample_shading);
+// the compatibility profile keeps every GLSL 1.20 construct the shaders use.
+std::string perSampleVersion(std::string source) {
+    const std::string v120 = "#version 120";
+    const size_t at = source.find(v120);
+    if (at == std::string::npos) throw Error("shader without #version 120");
+    return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
+}
+}  // namespace
+
+ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample) : perSample_(perSample) {
     ShaderDefines defines = table.defines();
     for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
-    program_ = gl::Program::create(
-        "lidr-forward-" + scheme.name(), buildShaderSource("geometry.vert"),
-        buildShaderSource("lidr_forward.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
-        geometryAttributes());
+    if (perSample) {
+        defines.push_back({"LIDR_INDEX_SAMPLER", "sampler2DMS"});
+        defines.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
+    }
+    std::string vertex = buildShaderSource("geometry.vert");
+    std::string fragment =
+        buildShaderSource("lidr_forward.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}});
+    if (perSample) {
+        vertex = perSampleVersion(vertex);
+        fragment = perSampleVersion(fragment);
+    }
+    program_ = gl::Program::create(std::string("lidr-forward-") + scheme.name() + (perSample ? "-per-sample" : ""),
+                                   vertex, fragment, geometryAttributes());
 }
 
-void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
-                      const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading) const {
-    targets.bindColor();
-    applyRenderState(RenderState{});
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+RenderState transparentBlendState() {
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = GL_EQUAL;  // the pre-pass depth: one shaded fragment per pixel
+    s.depthFunc = GL_LEQUAL;
     s.depthWrite = false;
-    applyRenderState(s);
+    s.blend = true;
+    s.blendSrcRgb = GL_SRC_ALPHA;
+    s.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
+    s.blendSrcAlpha = GL_ZERO;  // keep the opaque alpha of 1
+    s.blendDstAlpha = GL_ONE;
+    return s;
+}
+
+void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
+                             const CameraMatrices& camera, const ShadingParameters& shading) const {
     program_.use();
     setShadingUniforms(program_, camera, shading);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
@@ -41,14 +68,47 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
         program_.set(("uIndexTex" + std::to_string(i)).c_str(), i);
     }
     table.bind(program_);
-    scene.draw(program_, DrawFilter::Opaque, true);
+}
+
+void ForwardPass::unbindInputs(const IndexTargets& indices) const {
     applyRenderState(RenderState{});
     for (int i = 0; i < indices.count(); ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
+}
+
+void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+                      const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
+                      bool afterPrepass) const {
+    targets.bindColor();
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LESS;  // after a pre-pass: one shaded fragment per pixel
+    s.depthWrite = !afterPrepass;
+    s.sampleShading = perSample_;
+    applyRenderState(s);
+    bindInputs(targets, indices, table, camera, shading);
+    scene.draw(program_, DrawFilter::Opaque, true);
+    unbindInputs(indices);
     checkGl("LIDR forward pass");
+}
+
+void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+                                 const LightTable& table, const CameraMatrices& camera,
+                                 const ShadingParameters& shading) const {
+    targets.bindColor();
+    RenderState s = transparentBlendState();
+    s.sampleShading = perSample_;
+    applyRenderState(s);
+    bindInputs(targets, indices, table, camera, shading);
+    scene.drawTransparentSorted(program_, camera.eye);
+    unbindInputs(indices);
+    checkGl("LIDR transparent forward pass");
 }
 
 }  // namespace lidr

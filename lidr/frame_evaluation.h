@@ -16,8 +16,12 @@ struct FrameEvaluation {
     int maxTruthOverlap = 0;        // most lights touching one pixel's surface
     int maxMarked = 0;              // most lights marking one pixel
     long pixelsOverBudget = 0;      // surface pixels where a marking light was not kept (see withinBudget)
-    // 1 where every light marking the pixel was kept: marked <= budget; with CPU sorting, which drops whole
-    // lights, also marked <= the pixel's decoded slots.
+    // Lights a front-face pass marks per pixel (CPU, conservative), when transparent layers read front-face
+    // lists; else empty.
+    std::vector<int> frontFaceMarked;
+    // 1 where every list the pixel reads holds all its lights: the main one by the GPU count (marked <= budget;
+    // with CPU sorting, which drops whole lights, also no dropped mark), the front-face one of transparent
+    // layers by the conservative CPU count.
     std::vector<uint8_t> withinBudget;
     std::vector<int> droppedMarks;  // per pixel: marks the index lists do not hold (GPU count - kept slots)
     ImageError error;               // whole image against the reference

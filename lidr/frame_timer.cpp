@@ -18,7 +18,21 @@ double nowMilliseconds() {
     return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
 }
 
-FrameTimer::FrameTimer(const GlInfo& info, bool preferGpu) : gpu_(preferGpu && info.timerQuery) {}
+TimingMethod parseTimingMethod(const std::string& name) {
+    if (name == "auto") return TimingMethod::Auto;
+    if (name == "gpu") return TimingMethod::GpuQueries;
+    if (name == "cpu") return TimingMethod::CpuFinish;
+    throw Error("unknown timing method '" + name + "' (valid: auto, gpu, cpu)");
+}
+
+FrameTimer::FrameTimer(const GlInfo& info, TimingMethod method) {
+    const bool software = info.renderer.find("llvmpipe") != std::string::npos ||
+                          info.renderer.find("softpipe") != std::string::npos ||
+                          info.renderer.find("swrast") != std::string::npos;
+    if (method == TimingMethod::GpuQueries && !info.timerQuery)
+        throw UnsupportedError("GPU timer queries asked for, but the context has no ARB/EXT_timer_query");
+    gpu_ = method == TimingMethod::GpuQueries || (method == TimingMethod::Auto && info.timerQuery && !software);
+}
 
 void FrameTimer::begin(const std::string& pass) {
     if (!enabled_) return;

@@ -61,9 +61,22 @@ Texture Texture::create2D(GLint internalFormat, int width, int height, GLenum fo
     return t;
 }
 
+Texture Texture::create2DMultisample(GLint internalFormat, int width, int height, int samples) {
+    Texture t;
+    static_cast<Object&>(t) = Object(Kind::Texture);
+    t.width_ = width;
+    t.height_ = height;
+    t.samples_ = samples;
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.id_);
+    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internalFormat, width, height, GL_TRUE);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    checkGl("Texture::create2DMultisample");
+    return t;
+}
+
 void Texture::bind(int unit) const {
     glActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(GL_TEXTURE_2D, id_);
+    glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, id_);
 }
 
 Renderbuffer Renderbuffer::create(GLenum internalFormat, int width, int height, int samples) {
@@ -87,7 +100,8 @@ Framebuffer Framebuffer::create() {
 
 void Framebuffer::attachTexture(GLenum attachment, const Texture& t) {
     glBindFramebuffer(GL_FRAMEBUFFER, id_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, t.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, t.samples() > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D,
+                           t.id(), 0);
 }
 
 void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) {

@@ -49,12 +49,15 @@ public:
     // texel centres; no filtering may mix neighbouring texels).
     static Texture create2D(GLint internalFormat, int width, int height, GLenum format, GLenum type,
                             const void* data = nullptr, GLint filter = GL_NEAREST);
+    // A multisample 2D texture (GL 3.2 / ARB_texture_multisample), read with texelFetch per sample.
+    static Texture create2DMultisample(GLint internalFormat, int width, int height, int samples);
     int width() const { return width_; }
     int height() const { return height_; }
+    int samples() const { return samples_; }
     void bind(int unit) const;
 
 private:
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0, samples_ = 0;
 };
 
 class Renderbuffer : public Object {

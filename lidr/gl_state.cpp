@@ -25,6 +25,15 @@ void applyRenderState(const RenderState& s) {
 
     glColorMask(s.colorMask.r, s.colorMask.g, s.colorMask.b, s.colorMask.a);
 
+    // GL_SAMPLE_SHADING is touched only by contexts that turned it on (the per-sample path checked the
+    // context for it); an unsupported enum in glDisable would be an error elsewhere.
+    static bool sampleShadingOn = false;
+    if (s.sampleShading || sampleShadingOn) {
+        enable(GL_SAMPLE_SHADING, s.sampleShading);
+        if (s.sampleShading) glMinSampleShading(1.0f);
+        sampleShadingOn = s.sampleShading;
+    }
+
     enable(GL_SCISSOR_TEST, s.scissor);
     if (s.scissor) glScissor(s.scissorBox.x, s.scissorBox.y, s.scissorBox.z, s.scissorBox.w);
 }

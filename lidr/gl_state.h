@@ -35,6 +35,8 @@ struct RenderState {
 
     glm::bvec4 colorMask{true, true, true, true};
 
+    bool sampleShading = false;  // every sample shaded (ARB_sample_shading), for per-sample index reads
+
     bool scissor = false;
     glm::ivec4 scissorBox{0};
 };

@@ -39,6 +39,8 @@ GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
         b.indexCount = static_cast<GLsizei>(mesh.indices.size());
         b.material = mesh.material;
         b.centroid = sum / float(std::max<size_t>(vertices.size(), 1));
+        b.boundsMin = b.boundsMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
+        for (const glm::vec3& p : mesh.positions) b.boundsMin = glm::min(b.boundsMin, p), b.boundsMax = glm::max(b.boundsMax, p);
         triangles_ += mesh.triangleCount();
         batches_.push_back(std::move(b));
     }
@@ -79,8 +81,8 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
         const gl::Texture& tex = textures_[b.material];
         program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {
-            tex.bind(7);  // unit 7 is the material texture in every lidr program
-            program.set("uMaterialTexture", 7);
+            tex.bind(kMaterialTextureUnit);
+            program.set("uMaterialTexture", kMaterialTextureUnit);
         }
     }
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
@@ -124,6 +126,26 @@ void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3
     glDisableVertexAttribArray(gl::kTexCoord);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+int GpuScene::drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center,
+                                 float radius, bool setMaterials) const {
+    int drawn = 0;
+    for (const Batch& b : batches_) {
+        const bool transparent = materials_[b.material].opacity < 1.0f;
+        if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
+            continue;
+        const glm::vec3 nearest = glm::clamp(center, b.boundsMin, b.boundsMax);
+        if (glm::dot(nearest - center, nearest - center) > radius * radius) continue;
+        drawBatch(program, b, setMaterials);
+        ++drawn;
+    }
+    glDisableVertexAttribArray(gl::kPosition);
+    glDisableVertexAttribArray(gl::kNormal);
+    glDisableVertexAttribArray(gl::kTexCoord);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    return drawn;
 }
 
 }  // namespace lidr

@@ -11,6 +11,7 @@ enum class DrawFilter { Opaque, Transparent, All };
 
 class GpuScene {
 public:
+    static constexpr int kMaterialTextureUnit = 11;  // above the index targets (0-7) and the light table (8-10)
     GpuScene() = default;
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene);
@@ -19,6 +20,9 @@ public:
     void draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const;
     // Transparent meshes sorted back to front for `eye` (by mesh centroid distance).
     void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const;
+    // Draws the meshes passing `filter` whose bounding box the sphere touches; returns how many it drew.
+    int drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center, float radius,
+                           bool setMaterials) const;
     bool hasTransparent() const;
     size_t triangleCount() const { return triangles_; }
 
@@ -28,6 +32,7 @@ private:
         GLsizei indexCount = 0;
         int material = 0;
         glm::vec3 centroid{0.0f};
+        glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     };
     void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
     std::vector<Batch> batches_;

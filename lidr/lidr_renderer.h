@@ -21,10 +21,19 @@ namespace lidr {
 struct LidrOptions {
     PackingConfig packing;
     VolumeTest volumeTest = VolumeTest::BackFace;
+    bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
+    int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
+    // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
+    // a front-face index texture: the main one in front-face mode, else one more volume pass for it alone.
+    bool transparency = true;
+    // Trebilco's MSAA technique 1, optional (GL 3.2 multisample textures + ARB_sample_shading): pre-pass,
+    // light volumes and index targets are all multisampled and every sample reads its own index list, so
+    // any volume test works with MSAA. Needs msaaSamples >= 2.
+    bool perSampleIndices = false;
     bool cullLights = true;           // skip lights whose volume is wholly outside the view frustum
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     bool timing = true;
-    bool preferGpuTimer = true;
+    TimingMethod timingMethod = TimingMethod::Auto;
 };
 
 class LidrRenderer final : public Renderer {
@@ -42,13 +51,18 @@ public:
     const LidrOptions& options() const { return options_; }
     const RenderTargets& targets() const override { return targets_; }
     const IndexTargets& indexTargets() const { return indexTargets_; }
+    // The index targets transparent layers read: the main ones in front-face mode.
+    const IndexTargets& transparentIndexTargets() const;
+    bool drawsTransparency() const { return drawTransparent_; }
+    bool perSampleIndices() const { return options_.perSampleIndices; }
+    float volumeMeshOutsideRadius() const { return volumePass_.meshOutsideRadius(); }
     const LightTable& lightTable() const { return lightTable_; }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;
     size_t indexMemoryBytes() const { return indexTargets_.bytes(); }
-    size_t lightDataBytes() const override { return indexTargets_.bytes(); }
+    size_t lightDataBytes() const override { return indexTargets_.bytes() + transparentIndexTargets_.bytes(); }
 
     // Lights in the order the volume pass draws them: priority high to low, then index low to high.
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
@@ -59,11 +73,14 @@ private:
     GpuScene scene_;
     RenderTargets targets_;
     IndexTargets indexTargets_;
+    IndexTargets transparentIndexTargets_;  // only when transparent layers need their own front-face lists
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;
+    LightVolumePass transparentVolumePass_;
     ForwardPass forwardPass_;
     FrameTimer timer_;
+    bool drawTransparent_ = false;
 };
 
 }  // namespace lidr

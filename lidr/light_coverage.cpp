@@ -77,6 +77,38 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
     return t;
 }
 
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, float inflate) {
+    if (depth.width != camera.width || depth.height != camera.height)
+        throw Error("frontFaceCounts: depth image and camera sizes differ");
+    std::vector<int> counts(size_t(depth.width) * depth.height, 0);
+    std::vector<glm::vec3> nearPoint(counts.size()), farPoint(counts.size());
+    for (int y = 0; y < depth.height; ++y)
+        for (int x = 0; x < depth.width; ++x) {
+            const size_t p = size_t(y) * depth.width + x;
+            nearPoint[p] = unprojectPixel(camera, x, y, 0.0f);
+            farPoint[p] = unprojectPixel(camera, x, y, std::min(depth.at(x, y), 1.0f));
+        }
+    for (const PointLight& light : lights) {
+        PointLight grown = light;
+        grown.radius *= inflate;
+        const float r2 = grown.radius * grown.radius;
+        int x0, y0, x1, y1;
+        screenRect(camera, grown, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const size_t p = size_t(y) * depth.width + x;
+                // Closest point of the segment near -> surface to the centre.
+                const glm::vec3 a = nearPoint[p], ab = farPoint[p] - a;
+                const float len2 = glm::dot(ab, ab);
+                const float t = len2 > 0.0f ? std::clamp(glm::dot(grown.position - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+                const glm::vec3 d = a + t * ab - grown.position;
+                if (glm::dot(d, d) <= r2) ++counts[p];
+            }
+    }
+    return counts;
+}
+
 ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
                           const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount) {
     const int targets = scheme.targetCount();

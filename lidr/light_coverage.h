@@ -26,6 +26,12 @@ struct CoverageTruth {
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
                               const std::vector<PointLight>& lights, float band = 2e-3f);
 
+// Per pixel, the lights whose sphere scaled by `inflate` crosses the eye ray between the near plane and the
+// pixel's opaque surface (the far plane where there is none): what a front-face volume pass marks. With
+// `inflate` >= the volume mesh's outside radius it never counts fewer than the GPU marks.
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, float inflate);
+
 struct ListCheck {
     long droppedLightPixels = 0;  // (pixel, light) pairs: light touches the surface, missing from the list
     long pixelsWithDrops = 0;

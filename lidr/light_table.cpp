@@ -12,19 +12,26 @@ LightTable::LightTable(const GlInfo& info, int capacity, bool forceFixed16)
       capacity_(capacity),
       rows_((capacity + 1 + kWidth - 1) / kWidth) {
     if (capacity < 0 || capacity > 65535) throw Error("light table capacity must be 0..65535");
-    if (format_ == LightTableFormat::Float) {
-        posRadius_ = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
-        color_ = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
-    } else {
-        posRadius_ = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
-        posRadiusLow_ = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
-        color_ = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (TextureSet& set : sets_) {
+        if (format_ == LightTableFormat::Float) {
+            set.posRadius = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
+            set.color = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
+        } else {
+            set.posRadius = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.posRadiusLow = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.color = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+        }
     }
 }
 
 size_t LightTable::bytes() const {
     const size_t texels = size_t(kWidth) * rows_;
-    return format_ == LightTableFormat::Float ? texels * 32 : texels * 12;
+    return 2 * (format_ == LightTableFormat::Float ? texels * 32 : texels * 12);
+}
+
+float LightTable::reachError() const {
+    if (format_ == LightTableFormat::Float) return 0.0f;
+    return (0.5f * glm::length(boundsExtent_) + radiusScale_) / 65535.0f * 1.01f;  // 1 %: float rounding here
 }
 
 ShaderDefines LightTable::defines() const {
@@ -37,6 +44,8 @@ void LightTable::update(const std::vector<PointLight>& lights) {
         throw Error("light table holds " + std::to_string(capacity_) + " lights, scene has " +
                     std::to_string(lights.size()));
     count_ = static_cast<int>(lights.size());
+    current_ ^= 1;
+    const TextureSet& set = sets_[current_];
     const size_t texels = size_t(kWidth) * rows_;
     if (format_ == LightTableFormat::Float) {
         // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing.
@@ -49,9 +58,9 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             float* c = &col[(i + 1) * 4];
             c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = 1.0f;
         }
-        glBindTexture(GL_TEXTURE_2D, posRadius_.id());
+        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, pos.data());
-        glBindTexture(GL_TEXTURE_2D, color_.id());
+        glBindTexture(GL_TEXTURE_2D, set.color.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, col.data());
     } else {
         glm::vec3 lo(0.0f), hi(1.0f);
@@ -92,11 +101,11 @@ void LightTable::update(const std::vector<PointLight>& lights) {
                 col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
             col[t + 3] = 255;
         }
-        glBindTexture(GL_TEXTURE_2D, posRadius_.id());
+        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
-        glBindTexture(GL_TEXTURE_2D, posRadiusLow_.id());
+        glBindTexture(GL_TEXTURE_2D, set.posRadiusLow.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
-        glBindTexture(GL_TEXTURE_2D, color_.id());
+        glBindTexture(GL_TEXTURE_2D, set.color.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
     }
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -104,13 +113,14 @@ void LightTable::update(const std::vector<PointLight>& lights) {
 }
 
 void LightTable::bind(const gl::Program& program) const {
-    posRadius_.bind(kUnitPosRadius);
-    color_.bind(kUnitColor);
+    const TextureSet& set = sets_[current_];
+    set.posRadius.bind(kUnitPosRadius);
+    set.color.bind(kUnitColor);
     program.set("uLightPosRadius", kUnitPosRadius);
     program.set("uLightColor", kUnitColor);
     program.set("uLightTableRows", float(rows_));
     if (format_ == LightTableFormat::Fixed16) {
-        posRadiusLow_.bind(kUnitPosRadiusLow);
+        set.posRadiusLow.bind(kUnitPosRadiusLow);
         program.set("uLightPosRadiusLow", kUnitPosRadiusLow);
         program.set("uLightBoundsMin", boundsMin_);
         program.set("uLightBoundsExtent", boundsExtent_);

@@ -2,6 +2,8 @@
 // The light table the forward shaders read: light i (1-based; 0 is the null light) at texel
 // (i mod 256, i / 256) of 256-wide textures. Float textures where ARB_texture_float exists; otherwise a
 // documented fixed-point path (16-bit position and radius in two RGBA8 textures, colour in RGBA8).
+// Two sets of textures alternate frame by frame, so an update never waits for the GPU to finish reading
+// the previous frame's table (Trebilco's advice for dynamic light data).
 #include <vector>
 
 #include "lidr/context.h"
@@ -30,12 +32,20 @@ public:
     int rows() const { return rows_; }
     int lightCount() const { return count_; }
     int capacity() const { return capacity_; }
-    size_t bytes() const;
+    size_t bytes() const;  // both sets
+    // How much farther than the real sphere a light of the last update() may reach in the shader: 0 for the
+    // float table; for fixed16, half a 1/65535 step of the lights' box (positions round to nearest) plus a
+    // 1/65535 step of the largest radius (radii round up). Light assignment widens spheres by it.
+    float reachError() const;
 
 private:
     LightTableFormat format_ = LightTableFormat::Float;
     int capacity_ = 0, rows_ = 1, count_ = 0;
-    gl::Texture posRadius_, posRadiusLow_, color_;
+    struct TextureSet {
+        gl::Texture posRadius, posRadiusLow, color;
+    };
+    TextureSet sets_[2];
+    int current_ = 0;
     glm::vec3 boundsMin_{0.0f}, boundsExtent_{1.0f};
     float radiusScale_ = 1.0f, colorScale_ = 1.0f;
 };

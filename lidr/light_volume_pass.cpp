@@ -13,6 +13,7 @@ const char* volumeTestName(VolumeTest t) {
     switch (t) {
     case VolumeTest::BackFace: return "backface";
     case VolumeTest::ExactStencil: return "exact";
+    case VolumeTest::FrontFace: return "frontface";
     }
     return "?";
 }
@@ -20,16 +21,18 @@ const char* volumeTestName(VolumeTest t) {
 VolumeTest parseVolumeTest(const std::string& name) {
     if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
     if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact)");
+    if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
+    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface)");
 }
 
-IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil)
-    : width_(width), height_(height) {
+IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
+    : width_(width), height_(height), samples_(samples) {
     if (count < 1 || count > kMaxIndexTargets)
         throw Error("index target count must be 1.." + std::to_string(kMaxIndexTargets));
     fbo_ = gl::Framebuffer::create();
     for (int i = 0; i < count; ++i) {
-        textures_.push_back(gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
+        textures_.push_back(samples > 0 ? gl::Texture::create2DMultisample(GL_RGBA8, width, height, samples)
+                                        : gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, textures_.back());
     }
     fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
@@ -37,7 +40,7 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4; }
+size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
     : test_(test), depthClamp_(info.depthClamp), mesh_(makeLightVolumeMesh(2)) {
@@ -183,7 +186,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
     // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
     bool separateCount = false;
-    if (test_ == VolumeTest::BackFace) {
+    if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
         inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
         inside.stencil.ref = d.rankFirst;
         inside.stencil.readMask = windowMask;
@@ -235,46 +238,69 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
     // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
     // (conservative: the whole footprint is marked).
+    const float outside = mesh_.outsideRadius;
+    auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
     RenderState insideNoDepth = inside;
     insideNoDepth.depthFunc = GL_ALWAYS;
+    // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
+    // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
+    // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
+    auto reachesNear = [&](const VolumeLight& l) {
+        return depthOf(l) - l.posRadius.w * outside <= camera_.nearPlane * 1.001f;
+    };
 
-    int applied = -1;  // 0: inside, 1: insideNoDepth; re-applied only when it changes
+    enum Choice { kInside, kInsideNoDepth, kFront };
+    int applied = -1;  // re-applied only when the choice changes
+    // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
+    auto stateFor = [&](int choice, const RenderState& base) {
+        RenderState st = base;
+        if (choice == kInsideNoDepth) {
+            st.depthFunc = GL_ALWAYS;
+        } else if (choice == kFront) {
+            st.depthFunc = GL_LEQUAL;
+            st.cullFace = GL_BACK;
+        }
+        return st;
+    };
     for (const VolumeLight& l : lights) {
-        const int want = marksWholeFootprint(l) ? 1 : 0;
+        const bool clampToFar = marksWholeFootprint(l);
         if (!listSource_) {
             glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
             const IndexColors c = colors(l.index);
             glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
-            glUniform1f(clampLoc, float(want));
+            glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
         }
         if (test_ == VolumeTest::ExactStencil) {
             applyRenderState(mark);
             drawVolume(l);
-            applyRenderState(want ? insideNoDepth : inside);
+            applyRenderState(clampToFar ? insideNoDepth : inside);
             drawVolume(l);
             RenderState c2 = count;
-            if (want) c2.depthFunc = GL_ALWAYS;
+            if (clampToFar) c2.depthFunc = GL_ALWAYS;
             applyRenderState(c2);
             drawVolume(l);
             applyRenderState(unmark);
             drawVolume(l);
             applied = -1;
-        } else if (separateCount) {
+            continue;
+        }
+        int want = clampToFar ? kInsideNoDepth : kInside;
+        if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
+        if (separateCount) {
             if (d.writesColor()) {
-                applyRenderState(want ? insideNoDepth : inside);
+                applyRenderState(stateFor(want, inside));
                 drawVolume(l);
             }
-            RenderState c2 = count;
-            if (want) c2.depthFunc = GL_ALWAYS;
-            applyRenderState(c2);
+            applyRenderState(stateFor(want, count));
             drawVolume(l);
-        } else {
-            if (want != applied) {
-                applyRenderState(want ? insideNoDepth : inside);
-                applied = want;
-            }
-            drawVolume(l);
+            applied = -1;
+            continue;
         }
+        if (want != applied) {
+            applyRenderState(stateFor(want, inside));
+            applied = want;
+        }
+        drawVolume(l);
     }
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }

@@ -19,9 +19,11 @@ enum class VolumeTest {
     BackFace,      // back faces, depth GEQUAL: cheap; also marks surfaces in front of a light (wastes slots)
     ExactStencil,  // per light: front faces mark the pixels in front of the volume in stencil, then back
                    // faces GEQUAL where unmarked: exactly the surfaces inside the volume
+    FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
+                   // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
 };
 const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact"
+VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface"
 
 constexpr int kMaxIndexTargets = 8;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
@@ -36,7 +38,9 @@ struct VolumeLight {
 class IndexTargets {
 public:
     IndexTargets() = default;
-    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil);
+    // samples > 0: multisample textures (the per-sample MSAA path); depthStencil must have as many samples.
+    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples = 0);
+    int samples() const { return samples_; }
     int count() const { return static_cast<int>(textures_.size()); }
     const gl::Texture& texture(int i) const { return textures_[i]; }
     const gl::Framebuffer& framebuffer() const { return fbo_; }
@@ -47,7 +51,7 @@ public:
 private:
     std::vector<gl::Texture> textures_;
     gl::Framebuffer fbo_;
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0, samples_ = 0;
 };
 
 // One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.
@@ -103,6 +107,7 @@ public:
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
+    float meshOutsideRadius() const { return mesh_.outsideRadius; }
 
 private:
     void drawVolume(const VolumeLight& light) const;

@@ -7,11 +7,16 @@
 namespace lidr {
 
 ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
-                                     bool forceFixedLightTable)
+                                     bool forceFixedLightTable, int msaaSamples, bool transparency,
+                                     bool sampleShading)
     : scene_(scene),
-      targets_(info, width, height),
+      targets_(info, width, height, msaaSamples),
       lightTable_(info, lightCapacity, forceFixedLightTable),
-      timer_(info) {
+      timer_(info),
+      drawTransparent_(transparency && scene_.hasTransparent()),
+      sampleShading_(sampleShading) {
+    if (sampleShading && !info.sampleShading)
+        throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
     ShaderDefines defines = lightTable_.defines();
     defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
     program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
@@ -32,7 +37,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     timer_.end();
 
     timer_.begin("depth-prepass");
-    targets_.bindColor();
+    targets_.bindColor();  // the MSAA target when multisampled: the reference has no index pass to feed
     depthPrepass_.run(scene_, cam);
     timer_.end();
 
@@ -43,14 +48,28 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_EQUAL;
+    s.sampleShading = sampleShading_;
     applyRenderState(s);
     program_.use();
     setShadingUniforms(program_, cam, shading);
     program_.set("uLightCount", float(lights.size()));
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
-    applyRenderState(RenderState{});
     timer_.end();
+    if (drawTransparent_) {
+        timer_.begin("brute-force-transparent");
+        RenderState t = transparentBlendState();  // the state every mode draws its layers with
+        t.sampleShading = sampleShading_;
+        applyRenderState(t);
+        scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
+    }
+    applyRenderState(RenderState{});
+    if (targets_.samples() > 0) {
+        timer_.begin("msaa-resolve");
+        targets_.resolve();
+        timer_.end();
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();

@@ -15,8 +15,10 @@ namespace lidr {
 class ReferenceRenderer final : public Renderer {
 public:
     // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
+    // MSAA and transparency as in LidrOptions: the reference is rendered the way the mode it judges is.
     ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
-                      bool forceFixedLightTable = false);
+                      bool forceFixedLightTable = false, int msaaSamples = 0, bool transparency = true,
+                      bool sampleShading = false);
     std::string modeName() const override { return "forward-brute"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
@@ -30,6 +32,8 @@ private:
     DepthPrepass depthPrepass_;
     gl::Program program_;
     FrameTimer timer_;
+    bool drawTransparent_ = false;
+    bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does
 };
 
 }  // namespace lidr

@@ -70,8 +70,13 @@ struct Scene {
     Camera camera;
     int width = 1024, height = 768;
     float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
+    std::string renderMode = "lidr";     // the mode tools render it with (lidr/render_mode.h names them)
     glm::vec3 ambient{0.04f};
     glm::vec3 backgroundColor{0.0f};
+    // How the scene asks to be rendered (tools may override): MSAA samples (0 = off) and whether
+    // transparent materials are drawn (after the opaque geometry, back to front).
+    int msaaSamples = 0;
+    bool transparency = true;
 
     size_t triangleCount() const;
     glm::vec3 boundsMin() const;  // of the geometry

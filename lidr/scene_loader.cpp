@@ -19,6 +19,7 @@
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
 #include "lidr/primitives.h"
+#include "lidr/render_mode.h"
 
 namespace lidr {
 
@@ -475,15 +476,23 @@ public:
     Scene read(const Json& document) {
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
-                           "ambient", "background", "materials", "models", "primitives", "lights", "generate"});
+                           "ambient", "background", "materials", "models", "primitives", "lights", "generate",
+                           "msaa", "transparency", "mode"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
         if (root.has("resolution")) readResolution(root["resolution"]);
         if (root.has("time")) scene_.time = root["time"].number();
+        if (root.has("mode")) {
+            scene_.renderMode = root["mode"].text();
+            if (!isRenderModeName(scene_.renderMode))
+                root["mode"].fail("unknown render mode '" + scene_.renderMode + "' (valid: " + renderModeList() + ")");
+        }
         if (root.has("camera")) readCamera(root["camera"]);
         if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
         if (root.has("background")) scene_.backgroundColor = color(root["background"]);
+        if (root.has("msaa")) scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+        if (root.has("transparency")) scene_.transparency = root["transparency"].boolean();
         if (root.has("materials"))
             for (const Field& material : root["materials"].items()) readMaterial(material);
         if (root.has("models"))

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
 #   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
-#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, demo, package)
+#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, package)
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,11 +17,16 @@ packages=(
   build-essential cmake pkg-config
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
   libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
-  libosmesa6-dev
 )
+# Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
+optional=(libosmesa6-dev)
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  installed "$p" || missing+=("$p")
+done
+for p in "${optional[@]}"; do
+  installed "$p" || ! apt-cache show "$p" >/dev/null 2>&1 || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"

@@ -3,27 +3,27 @@
 // byte. Data movement only: no arithmetic touches the bytes. LIDR_INDEX_TARGETS: 1..8.
 #include "lidr_bytes.glsl"
 
-uniform sampler2D uIndexTex0;
+uniform LIDR_INDEX_SAMPLER uIndexTex0;
 #if LIDR_INDEX_TARGETS > 1
-uniform sampler2D uIndexTex1;
+uniform LIDR_INDEX_SAMPLER uIndexTex1;
 #endif
 #if LIDR_INDEX_TARGETS > 2
-uniform sampler2D uIndexTex2;
+uniform LIDR_INDEX_SAMPLER uIndexTex2;
 #endif
 #if LIDR_INDEX_TARGETS > 3
-uniform sampler2D uIndexTex3;
+uniform LIDR_INDEX_SAMPLER uIndexTex3;
 #endif
 #if LIDR_INDEX_TARGETS > 4
-uniform sampler2D uIndexTex4;
+uniform LIDR_INDEX_SAMPLER uIndexTex4;
 #endif
 #if LIDR_INDEX_TARGETS > 5
-uniform sampler2D uIndexTex5;
+uniform LIDR_INDEX_SAMPLER uIndexTex5;
 #endif
 #if LIDR_INDEX_TARGETS > 6
-uniform sampler2D uIndexTex6;
+uniform LIDR_INDEX_SAMPLER uIndexTex6;
 #endif
 #if LIDR_INDEX_TARGETS > 7
-uniform sampler2D uIndexTex7;
+uniform LIDR_INDEX_SAMPLER uIndexTex7;
 #endif
 
 vec4 lidrS0, lidrS1, lidrS2, lidrS3, lidrS4, lidrS5, lidrS6, lidrS7;  // targets not yet taken, S0 first
@@ -31,27 +31,27 @@ float lidrS0Left;                                                      // channe
 
 void lidrStreamBegin(vec2 uv) {
     lidrS1 = lidrS2 = lidrS3 = lidrS4 = lidrS5 = lidrS6 = lidrS7 = vec4(0.0);
-    lidrS0 = lidrBytes(texture2D(uIndexTex0, uv));
+    lidrS0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex0, uv));
 #if LIDR_INDEX_TARGETS > 1
-    lidrS1 = lidrBytes(texture2D(uIndexTex1, uv));
+    lidrS1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 2
-    lidrS2 = lidrBytes(texture2D(uIndexTex2, uv));
+    lidrS2 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 3
-    lidrS3 = lidrBytes(texture2D(uIndexTex3, uv));
+    lidrS3 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 4
-    lidrS4 = lidrBytes(texture2D(uIndexTex4, uv));
+    lidrS4 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex4, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 5
-    lidrS5 = lidrBytes(texture2D(uIndexTex5, uv));
+    lidrS5 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex5, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 6
-    lidrS6 = lidrBytes(texture2D(uIndexTex6, uv));
+    lidrS6 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex6, uv));
 #endif
 #if LIDR_INDEX_TARGETS > 7
-    lidrS7 = lidrBytes(texture2D(uIndexTex7, uv));
+    lidrS7 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex7, uv));
 #endif
     lidrS0Left = 4.0;
 }

@@ -12,19 +12,19 @@
 #define LIDR_NULL_ENDS_LIST 1
 #include "lidr_bytes.glsl"
 
-uniform sampler2D uIndexTex0;
+uniform LIDR_INDEX_SAMPLER uIndexTex0;
 #if LIDR_INDEX_TARGETS > 1
-uniform sampler2D uIndexTex1;
+uniform LIDR_INDEX_SAMPLER uIndexTex1;
 #endif
 #if LIDR_INDEX_TARGETS > 2
-uniform sampler2D uIndexTex2;
-uniform sampler2D uIndexTex3;
+uniform LIDR_INDEX_SAMPLER uIndexTex2;
+uniform LIDR_INDEX_SAMPLER uIndexTex3;
 #endif
 #if LIDR_INDEX_TARGETS > 4
-uniform sampler2D uIndexTex4;
-uniform sampler2D uIndexTex5;
-uniform sampler2D uIndexTex6;
-uniform sampler2D uIndexTex7;
+uniform LIDR_INDEX_SAMPLER uIndexTex4;
+uniform LIDR_INDEX_SAMPLER uIndexTex5;
+uniform LIDR_INDEX_SAMPLER uIndexTex6;
+uniform LIDR_INDEX_SAMPLER uIndexTex7;
 #endif
 
 vec4 lidrP0, lidrP1, lidrP2, lidrP3;  // the current window's bytes not yet unpacked, as integers
@@ -33,26 +33,26 @@ float lidrLeft;                       // slots left in the current window
 
 void lidrUnpackBegin(vec2 uv) {
     lidrP1 = lidrP2 = lidrP3 = lidrQ0 = lidrQ1 = lidrQ2 = lidrQ3 = vec4(0.0);
-    lidrP0 = lidrBytes(texture2D(uIndexTex0, uv));
+    lidrP0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex0, uv));
 #if LIDR_WINDOW_TARGETS == 1 && LIDR_WINDOWS > 1
-    lidrQ0 = lidrBytes(texture2D(uIndexTex1, uv));
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
 #endif
 #if LIDR_WINDOW_TARGETS == 2
-    lidrP1 = lidrBytes(texture2D(uIndexTex1, uv));
+    lidrP1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
 #if LIDR_WINDOWS > 1
-    lidrQ0 = lidrBytes(texture2D(uIndexTex2, uv));
-    lidrQ1 = lidrBytes(texture2D(uIndexTex3, uv));
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, uv));
+    lidrQ1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, uv));
 #endif
 #endif
 #if LIDR_WINDOW_TARGETS == 4
-    lidrP1 = lidrBytes(texture2D(uIndexTex1, uv));
-    lidrP2 = lidrBytes(texture2D(uIndexTex2, uv));
-    lidrP3 = lidrBytes(texture2D(uIndexTex3, uv));
+    lidrP1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
+    lidrP2 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, uv));
+    lidrP3 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, uv));
 #if LIDR_WINDOWS > 1
-    lidrQ0 = lidrBytes(texture2D(uIndexTex4, uv));
-    lidrQ1 = lidrBytes(texture2D(uIndexTex5, uv));
-    lidrQ2 = lidrBytes(texture2D(uIndexTex6, uv));
-    lidrQ3 = lidrBytes(texture2D(uIndexTex7, uv));
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex4, uv));
+    lidrQ1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex5, uv));
+    lidrQ2 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex6, uv));
+    lidrQ3 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex7, uv));
 #endif
 #endif
     lidrLeft = LIDR_WINDOW_SLOTS;

@@ -3,6 +3,8 @@
 // forward pass) at each pixel and writes what slots uSlotBase and uSlotBase + 1 returned, as 16-bit values
 // (low byte, high byte, low byte, high byte). Every slot is unpacked, past the first null too, so the raw
 // sequence can be compared with the CPU model.
+#define LIDR_INDEX_SAMPLER sampler2D
+#define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)
 #include "lidr_unpack.glsl"
 
 uniform vec2 uInvTargetSize;

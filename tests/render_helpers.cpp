@@ -37,9 +37,10 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     r.stats = renderer.render(scene.camera, lights, shading);
     r.lidr = renderer.targets().readColor();
-    r.indexTargets = renderer.readIndexTargets();
+    if (!options.perSampleIndices) r.indexTargets = renderer.readIndexTargets();  // multisample: not readable
     ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(std::max<size_t>(lights.size(), 1)),
-                                options.forceFixedLightTable);
+                                options.forceFixedLightTable, options.msaaSamples, options.transparency,
+                                options.perSampleIndices);
     reference.render(scene.camera, lights, shading);
     r.reference = reference.targets().readColor();
     r.evaluation = evaluateFrame(renderer, scene.camera, lights, r.lidr, r.reference);

@@ -1,4 +1,5 @@
-# Installs the lidr build into PREFIX, then configures, builds and runs tests/consumer against it.
+# Installs the lidr build into PREFIX, then configures, builds and runs tests/consumer against it (and,
+# with EXPECT_OSMESA, its lidr::lidr_osmesa program).
 file(REMOVE_RECURSE ${PREFIX} ${WORK})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} RESULT_VARIABLE r OUTPUT_QUIET)
 if(NOT r EQUAL 0)
@@ -16,4 +17,10 @@ endif()
 execute_process(COMMAND ${WORK}/consumer RESULT_VARIABLE r)
 if(NOT r EQUAL 0)
   message(FATAL_ERROR "consumer run failed (${r})")
+endif()
+if(EXPECT_OSMESA)
+  execute_process(COMMAND ${WORK}/consumer_osmesa RESULT_VARIABLE r)
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "consumer_osmesa run failed (${r})")
+  endif()
 endif()

@@ -21,6 +21,35 @@ if(NOT lights EQUAL 255 OR NOT invalid EQUAL 0 OR psnr LESS 50)
   message(FATAL_ERROR "summary out of bounds: lights ${lights}, invalid slots ${invalid}, PSNR within budget ${psnr}")
 endif()
 
+# The other render modes: their image, the reference and, for tiled, the tile heat map; tiled must miss no light.
+foreach(mode tiled forward-multipass forward-brute)
+  execute_process(COMMAND ${DEMO} --headless --mode ${mode} --width 160 --height 120 --frames 1 --out ${OUT}/${mode}
+                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "lidr-demo --mode ${mode} failed (${r})")
+  endif()
+  foreach(f ${mode}.png reference.png difference.png summary.json summary.txt)
+    if(NOT EXISTS ${OUT}/${mode}/${f})
+      message(FATAL_ERROR "lidr-demo --mode ${mode} did not write ${f}")
+    endif()
+  endforeach()
+  file(READ ${OUT}/${mode}/summary.json summary)
+  string(JSON name GET "${summary}" mode name)
+  string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+  if(NOT name STREQUAL mode OR max_error GREATER 8)
+    message(FATAL_ERROR "lidr-demo --mode ${mode}: summary says mode '${name}', max error ${max_error}")
+  endif()
+endforeach()
+if(NOT EXISTS ${OUT}/tiled/tile_heatmap.png)
+  message(FATAL_ERROR "lidr-demo --mode tiled did not write tile_heatmap.png")
+endif()
+file(READ ${OUT}/tiled/summary.json summary)
+string(JSON missing GET "${summary}" tiled missing_light_pixels)
+if(NOT missing EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --mode tiled: ${missing} light-pixels missing from tile lists")
+endif()
+
 # Each bad input: a clear message and a non-zero exit, never a crash (a crash exits with a signal).
 set(bad_runs
   "--scene|${OUT}/missing.json"
@@ -29,7 +58,11 @@ set(bad_runs
   "--width|0"
   "--width|100000"
   "--volume-test|sideways"
-  "--context|carrier-pigeon")
+  "--context|carrier-pigeon"
+  "--mode|deferred"
+  "--mode|tiled|--tile-size|0"
+  "--mode|tiled|--tile-size|5000"
+  "--mode|tiled|--dump|${OUT}/bad-dump")
 foreach(args IN LISTS bad_runs)
   string(REPLACE "|" " " shown "${args}")
   string(REPLACE "|" ";" argv "${args}")

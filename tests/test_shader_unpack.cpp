@@ -374,12 +374,14 @@ TEST_CASE("shader unpack: every order of 8 lights", "[unpack][gpu][slow]") {
 
 TEST_CASE("shader unpack: a million seeded random lists per deep configuration, overflowing ones included",
           "[unpack][gpu][slow]") {
+    const std::pair<int, int> deep[] = {{8, 8}, {8, 16}, {16, 16}, {4, 16}};  // (width, budget)
     for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {4, 8, 16}) {
+        for (auto [bits, budget] : deep) {
+            {
                 const auto scheme = createPackingScheme({name, budget, bits}, testGl());
                 runAndCheck(*scheme, VolumeTest::BackFace,
                             randomLists(*scheme, 1u << 20, budget + 4, 1000u + uint32_t(bits * 31 + budget)),
                             "1,048,576 random lists, lengths 0..budget+4");
             }
+}
 }

@@ -1,0 +1,107 @@
+#include "lidr/multipass_forward_renderer.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "lidr/error.h"
+#include "lidr/forward_pass.h"
+#include "lidr/gl_state.h"
+#include "lidr/shader_source.h"
+#include "lidr/sphere_bounds.h"
+
+namespace lidr {
+
+MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
+                                                   const MultipassOptions& options, int width, int height)
+    : options_(options),
+      scene_(scene),
+      targets_(info, width, height, options.msaaSamples),
+      lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
+      timer_(info, options.timingMethod),
+      info_(info) {
+    const ShaderDefines defines = lightTable_.defines();
+    ambient_ = gl::Program::create("forward-ambient", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("forward_ambient.frag", defines), geometryAttributes());
+    light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
+                                 buildShaderSource("forward_light.frag", defines), geometryAttributes());
+    timer_.setEnabled(options.timing);
+}
+
+const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                                   const ShadingParameters& shading) {
+    if (lights.size() > 65535)
+        throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
+    checkLightSpheres(lights, "forward-multipass");
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = static_cast<int>(lights.size());
+    meshDraws_ = 0;
+
+    timer_.begin("light-table");
+    if (static_cast<int>(lights.size()) > lightTable_.capacity())
+        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
+    lightTable_.update(lights);
+    timer_.end();
+
+    timer_.begin("depth-prepass");
+    targets_.bindColor();
+    depthPrepass_.run(scene_, cam);
+    timer_.end();
+
+    timer_.begin("ambient");
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    RenderState a;
+    a.depthTest = true;
+    a.depthFunc = GL_EQUAL;
+    applyRenderState(a);
+    ambient_.use();
+    setShadingUniforms(ambient_, cam, shading);
+    scene_.draw(ambient_, DrawFilter::Opaque, true);
+    timer_.end();
+
+    timer_.begin("light-passes");
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;
+    s.blend = true;
+    s.blendSrcRgb = s.blendDstRgb = GL_ONE;  // add this light's term
+    s.blendSrcAlpha = GL_ZERO, s.blendDstAlpha = GL_ONE;
+    s.scissor = options_.scissor;
+    s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
+    applyRenderState(s);  // the whole state once; per light only the scissor box changes below
+    light_.use();
+    setShadingUniforms(light_, cam, shading);
+    lightTable_.bind(light_);
+    const float reach = lightTable_.reachError();
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        const float radius = l.radius + reach;
+        glm::ivec4 rect;
+        if (!spherePixelRect(cam, l.position, radius, rect)) continue;  // touches no pixel
+        if (options_.scissor) glScissor(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
+        light_.set("uLightIndex", float(i + 1));
+        const float cullRadius = options_.cullMeshes ? radius : std::numeric_limits<float>::infinity();
+        const int drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, cullRadius, true);
+        if (drawn == 0) continue;
+        meshDraws_ += drawn;
+        ++stats_.drawnLights;
+    }
+    stats_.volumeDrawCalls = meshDraws_;
+    applyRenderState(RenderState{});
+    timer_.end();
+    if (targets_.samples() > 0) {
+        timer_.begin("msaa-resolve");
+        targets_.resolve();
+        timer_.end();
+    }
+
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("MultipassForwardRenderer::render");
+    stats_.passes = timer_.collect();
+    return stats_;
+}
+
+}  // namespace lidr

@@ -1,0 +1,46 @@
+#version 120
+// One step of the per-tile min/max depth reduction: each output texel reduces LIDR_REDUCE_COUNT input
+// texels along one axis (x when LIDR_REDUCE_VERTICAL is 0, then y), so two passes reduce T x T tiles for
+// any tile size T. The loop has the constant bound GLSL ES 1.00-class compilers want and breaks at the
+// input's edge (the last row and column of tiles may be partial).
+//   LIDR_INPUT_PACKED   1: input texels hold one packed depth (depth_pack.glsl); 0: float (min, max) in RG
+//   LIDR_OUTPUT_PACKED  1: write one packed depth, the max if LIDR_REDUCE_MAX else the min; 0: float RG
+#include "depth_pack.glsl"
+
+uniform sampler2D uInput;
+uniform vec2 uInputSize;
+
+void main() {
+    vec2 cell = floor(gl_FragCoord.xy);
+#if LIDR_REDUCE_VERTICAL
+    vec2 first = vec2(cell.x, cell.y * float(LIDR_REDUCE_COUNT));
+    vec2 step = vec2(0.0, 1.0);
+#else
+    vec2 first = vec2(cell.x * float(LIDR_REDUCE_COUNT), cell.y);
+    vec2 step = vec2(1.0, 0.0);
+#endif
+    vec2 range = vec2(1e30, -1e30);  // (min, max), in packed units while the input is packed
+    for (int i = 0; i < LIDR_REDUCE_COUNT; ++i) {
+        vec2 p = first + step * float(i);
+        if (p.x >= uInputSize.x || p.y >= uInputSize.y) break;
+        vec4 texel = texture2D(uInput, (p + 0.5) / uInputSize);
+#if LIDR_INPUT_PACKED
+        float v = lidrUnpackDepthUnits(texel);
+        range = vec2(min(range.x, v), max(range.y, v));
+#else
+        range = vec2(min(range.x, texel.r), max(range.y, texel.g));
+#endif
+    }
+#if LIDR_OUTPUT_PACKED
+#if LIDR_REDUCE_MAX
+    gl_FragColor = lidrPackDepthUnits(range.y);
+#else
+    gl_FragColor = lidrPackDepthUnits(range.x);
+#endif
+#else
+#if LIDR_INPUT_PACKED
+    range *= 1.0 / kLidrDepthUnits;
+#endif
+    gl_FragColor = vec4(range, 0.0, 1.0);
+#endif
+}

@@ -1,0 +1,219 @@
+// The classic forward baselines and the render-mode factory: multi-pass forward against the brute-force
+// reference within the stated bound of additive 8-bit blending, the factory's modes and errors, scene files'
+// "mode" key. Verified on Mesa llvmpipe, softpipe and the GL 2.1 override.
+#include <algorithm>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "gl_test_context.h"
+#include "lidr/default_scene.h"
+#include "lidr/error.h"
+#include "lidr/gl_resources.h"
+#include "lidr/image_compare.h"
+#include "lidr/light_coverage.h"
+#include "lidr/multipass_forward_renderer.h"
+#include "lidr/reference_renderer.h"
+#include "lidr/render_mode.h"
+#include "lidr/scene_loader.h"
+#include "render_helpers.h"
+
+using namespace lidr;
+using namespace lidr::test;
+
+namespace {
+
+PointLight light(glm::vec3 p, float r, glm::vec3 c = glm::vec3(1.0f)) {
+    PointLight l;
+    l.position = p;
+    l.radius = r;
+    l.color = c;
+    return l;
+}
+
+std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> xz(-11.0f, 11.0f), y(0.05f, 3.0f), r(rMin, rMax), c(0.1f, 0.9f);
+    std::vector<PointLight> lights;
+    for (int i = 0; i < count; ++i) lights.push_back(light({xz(rng), y(rng), xz(rng)}, r(rng), {c(rng), c(rng), c(rng)}));
+    return lights;
+}
+
+struct MultipassCheck {
+    long violations = 0;      // pixels whose error exceeds their bound
+    int maxError = 0, maxLightsAtPixel = 0, maxBound = 0;
+    ImageError error;
+};
+
+// The bound: the reference rounds its float sum once; multi-pass rounds the ambient term and each light's
+// term to 8 bits as it blends them (each by at most half a step), so with n lights at a pixel the two differ
+// by at most (n + 2) / 2 steps before rounding, i.e. floor(n / 2) + 1 whole steps. Saturation only pulls
+// both towards 255. n counts lights whose sphere holds the pixel's surface, widened by 0.2 % of the radius so
+// lights that only graze it are counted (their term can still round to one step).
+MultipassCheck checkMultipass(const Scene& scene, const MultipassOptions& options) {
+    testContext();
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    MultipassForwardRenderer mp(testGl(), scene, options, scene.width, scene.height);
+    REQUIRE(mp.modeName() == "forward-multipass");
+    mp.render(scene.camera, lights, shading);
+    const ImageRGBA8 image = mp.targets().readColor();
+    // Multi-pass forward draws opaque geometry only; so does its reference.
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
+                                options.forceFixedLightTable, options.msaaSamples, false);  // no transparency
+    reference.render(scene.camera, lights, shading);
+    const ImageRGBA8 ref = reference.targets().readColor();
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    const CoverageTruth touching = computeCoverage(mp.targets().readDepth(), cam, lights, -2e-3f);
+    MultipassCheck c;
+    c.error = compareImages(image, ref);
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const size_t p = size_t(y) * scene.width + x;
+            int e = 0;
+            for (int k = 0; k < 3; ++k) e = std::max(e, std::abs(int(image.at(x, y)[k]) - int(ref.at(x, y)[k])));
+            const int n = touching.count(p);
+            const int bound = n / 2 + 1;
+            c.maxError = std::max(c.maxError, e);
+            c.maxLightsAtPixel = std::max(c.maxLightsAtPixel, n);
+            c.maxBound = std::max(c.maxBound, bound);
+            if (e > bound) ++c.violations;
+        }
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("multi-pass forward equals the reference within the additive 8-bit blending bound", "[forward]") {
+    Scene scene = floorScene();
+    scene.lights = scatteredLights(60, 0.5f, 4.0f, 21);
+    for (bool fixedTable : {false, true}) {
+        MultipassOptions o;
+        o.forceFixedLightTable = fixedTable;
+        const MultipassCheck c = checkMultipass(scene, o);
+        INFO("fixed table " << fixedTable << ": max error " << c.maxError << ", most lights at a pixel "
+                            << c.maxLightsAtPixel << ", PSNR " << c.error.psnr);
+        REQUIRE(c.violations == 0);
+        CHECK(c.maxLightsAtPixel >= 3);
+        CHECK(c.error.psnr > 45.0);
+    }
+}
+
+TEST_CASE("multi-pass forward equals the reference on the default room", "[forward][slow]") {
+    DefaultSceneOptions o;
+    o.width = testWidth();
+    o.height = testHeight();
+    o.time = 2.0f;
+    const MultipassCheck c = checkMultipass(makeDefaultScene(o), MultipassOptions{});
+    INFO("max error " << c.maxError << ", most lights at a pixel " << c.maxLightsAtPixel << ", PSNR " << c.error.psnr);
+    REQUIRE(c.violations == 0);
+    CHECK(c.error.psnr > 45.0);
+}
+
+TEST_CASE("multi-pass forward with MSAA stays within the bound of its most lit pixel", "[forward][msaa]") {
+    const GlInfo& info = testGl();
+    if (!info.multisampleFbo || info.maxSamples < 4) {
+        WARN("no 4x multisample FBOs in this context; MSAA not tested");
+        return;
+    }
+    Scene scene = floorScene();
+    scene.lights = scatteredLights(60, 0.5f, 4.0f, 21);
+    const MultipassCheck single = checkMultipass(scene, MultipassOptions{});
+    MultipassOptions o;
+    o.msaaSamples = 4;
+    MultipassForwardRenderer mp(info, scene, o, scene.width, scene.height);
+    mp.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    ReferenceRenderer reference(info, scene, scene.width, scene.height, int(scene.lights.size()), false, 4, false);
+    reference.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    // Each sample obeys the per-pixel bound; a resolved pixel averages samples, so the largest bound holds.
+    const ImageError e = compareImages(mp.targets().readColor(), reference.targets().readColor());
+    INFO("max " << e.maxAbsError << ", bound " << single.maxBound);
+    REQUIRE(e.maxAbsError <= single.maxBound);
+}
+
+TEST_CASE("multi-pass forward: scissor and mesh culling never cut light off", "[forward]") {
+    Scene scene = floorScene();
+    scene.camera.position = glm::vec3(0.0f, 0.6f, 4.0f);  // low: lights crossing the near plane and behind
+    scene.camera.target = glm::vec3(0.0f, 0.0f, -6.0f);
+    scene.lights = scatteredLights(40, 0.3f, 3.0f, 4);
+    scene.lights.push_back(light({0.0f, 0.3f, 3.35f}, 0.65f));              // crosses the near plane
+    scene.lights.push_back(light({0.2f, 0.4f, 4.2f}, 1.5f, {0.3f, 0.5f, 0.2f}));  // contains the camera
+    scene.lights.push_back(light({0.0f, 0.5f, 8.0f}, 5.0f, {0.2f, 0.2f, 0.6f}));  // behind, reaching in
+    MultipassOptions culled, plain;
+    plain.scissor = false;
+    plain.cullMeshes = false;
+    MultipassForwardRenderer a(testGl(), scene, culled, scene.width, scene.height);
+    MultipassForwardRenderer b(testGl(), scene, plain, scene.width, scene.height);
+    a.render(scene.camera, scene.lights, {scene.ambient});
+    b.render(scene.camera, scene.lights, {scene.ambient});
+    // The same passes add the same terms wherever a light reaches: culling may only skip zeros.
+    const ImageError e = compareImages(a.targets().readColor(), b.targets().readColor());
+    INFO("max " << e.maxAbsError << ", differing " << e.differingPixels);
+    REQUIRE(e.maxAbsError == 0);
+    CHECK(a.meshDrawCalls() < b.meshDrawCalls());
+    CHECK(a.lastFrame().drawnLights < int(scene.lights.size()));
+}
+
+TEST_CASE("render-mode factory builds every mode, all close to the reference", "[forward][modes]") {
+    Scene scene = floorScene();
+    scene.lights = {light({0.0f, 1.0f, 0.0f}, 4.0f, {1.0f, 0.8f, 0.6f}), light({3.0f, 0.5f, 2.0f}, 3.0f, {0.3f, 0.5f, 1.0f})};
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 2);
+    reference.render(scene.camera, scene.lights, shading);
+    const ImageRGBA8 ref = reference.targets().readColor();
+    REQUIRE(renderModeNames() == std::vector<std::string>{"lidr", "tiled", "forward-multipass", "forward-brute"});
+    for (const std::string& mode : renderModeNames()) {
+        RenderModeOptions o;
+        o.mode = mode;
+        std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
+        REQUIRE(r->modeName() == mode);
+        r->render(scene.camera, scene.lights, shading);
+        const ImageError e = compareImages(r->targets().readColor(), ref);
+        INFO(mode << ": max " << e.maxAbsError);
+        // Two lights at most per pixel: one step for lidr and tiled, floor(2 / 2) + 1 for multi-pass.
+        REQUIRE(e.maxAbsError <= (mode == "forward-multipass" ? 2 : mode == "forward-brute" ? 0 : 1));
+        CHECK(r->lastFrame().passes.size() >= 2);
+    }
+    RenderModeOptions bad;
+    bad.mode = "deferred";
+    REQUIRE_THROWS_WITH(createRenderer(bad, testGl(), scene, scene.width, scene.height),
+                        Catch::Contains("'deferred'") && Catch::Contains("lidr, tiled, forward-multipass, forward-brute"));
+    RenderModeOptions tiled;
+    tiled.mode = "tiled";
+    tiled.tiled.tileSize = 0;
+    REQUIRE_THROWS_AS(createRenderer(tiled, testGl(), scene, scene.width, scene.height), Error);
+}
+
+TEST_CASE("scene files choose a render mode with \"mode\"", "[forward][modes][scene]") {
+    const char* base = R"({"primitives": [{"shape": "plane", "center": [0, 0, 0], "size": [4, 4]}]})";
+    CHECK(parseSceneJson(base, ".", "default.json").renderMode == "lidr");
+    for (const std::string& mode : renderModeNames()) {
+        const std::string text = std::string(R"({"mode": ")") + mode + R"(", "primitives": [{"shape": "plane", "center": [0, 0, 0], "size": [4, 4]}]})";
+        CHECK(parseSceneJson(text, ".", "mode.json").renderMode == mode);
+    }
+    REQUIRE_THROWS_WITH(parseSceneJson(R"({"mode": "deferred"})", ".", "bad.json"),
+                        Catch::Contains("bad.json") && Catch::Contains("mode") && Catch::Contains("valid: lidr, tiled"));
+    REQUIRE_THROWS_WITH(parseSceneJson(R"({"mode": 3})", ".", "bad.json"), Catch::Contains("mode"));
+}
+
+TEST_CASE("multi-pass forward: every GL object is released with its renderer", "[forward][resources]") {
+    testContext();
+    const int before = gl::liveGlObjects();
+    {
+        Scene scene = floorScene();
+        scene.lights = {light({0, 1, 0}, 3.0f)};
+        MultipassForwardRenderer r(testGl(), scene, MultipassOptions{}, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, {});
+        CHECK(gl::liveGlObjects() > before);
+    }
+    REQUIRE(gl::liveGlObjects() == before);
+}
+
+TEST_CASE("multi-pass forward: bad lights are refused before drawing", "[forward][bad-input]") {
+    Scene scene = floorScene();
+    scene.lights = {light({0, 1, 0}, 3.0f)};
+    MultipassForwardRenderer r(testGl(), scene, MultipassOptions{}, scene.width, scene.height);
+    const std::vector<PointLight> bad = {light({0, 1, 0}, 0.0f)};
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("forward-multipass: light 1"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}
