@@ -2,6 +2,7 @@
 
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
+#include "lidr/packing_scheme.h"
 #include "lidr/scene_loader.h"
 
 namespace lidr::demo {
@@ -37,7 +38,12 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
     app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
     app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
-    app.add_option("--scheme", scheme, "Packing scheme: bitshift");
+    std::string schemes;
+    for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
+    app.add_option("--scheme", scheme,
+                   "Packing scheme: " + schemes +
+                       " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
+                       "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
     app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
     app.add_option("--volume-test", volumeTest,

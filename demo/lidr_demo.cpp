@@ -208,6 +208,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexMemoryBytes()},
+                       {"stencil_use", renderer.scheme().stencilUse()},
+                       {"volume_passes", renderer.scheme().geometryPasses()},
                        {"light_table_bytes", renderer.lightTable().bytes()},
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};

@@ -65,6 +65,9 @@ void writeFrameArtefacts(const std::string& dir, const FrameArtefacts& a, const 
                {"index_bits", scheme.config().indexBits},
                {"targets", scheme.targetCount()},
                {"description", scheme.describe()},
+               {"stencil_use", scheme.stencilUse()},
+               {"volume_passes", scheme.geometryPasses()},
+               {"null_ends_list", scheme.nullEndsList()},
                {"png_rows", "top to bottom (PNG order); GL row 0 is the last PNG row"}});
 }
 

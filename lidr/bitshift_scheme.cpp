@@ -8,21 +8,20 @@
 namespace lidr {
 
 BitShiftScheme::BitShiftScheme(const PackingConfig& config, const GlInfo& info) : PackingScheme(config) {
-    (void)info;  // blend colour and stencil are GL 1.4 / 1.0: every context lidr accepts has them
+    checkPackingConfig(config);
     const int budget = config.budget, bits = config.indexBits;
-    if (bits != 4 && bits != 8 && bits != 16)
-        throw UnsupportedError("bitshift: index width must be 4, 8 or 16 bits, got " + std::to_string(bits));
-    if (budget != 1 && budget != 2 && budget != 4 && budget != 8 && budget != 16)
-        throw UnsupportedError("bitshift: budget must be 1, 2, 4, 8 or 16, got " + std::to_string(budget));
-    // The widest k-bit group that still leaves `budget` slots in a byte; groups >= 1 bit.
-    int k = std::min(8, bits);
-    while (k > 1 && 8 / k < budget) k /= 2;
-    if (8 / k < budget || (bits % k) != 0 || bits / k > 4)
-        throw UnsupportedError("bitshift: budget " + std::to_string(budget) + " with " + std::to_string(bits) +
-                               "-bit indices needs more than one RGBA8 target, not built yet (one target holds: "
-                               "4-bit budget 1/2/4/8, 8-bit budget 1/2/4, 16-bit budget 1/2)");
-    groupBits_ = k;
-    channels_ = bits / k;
+    groupBits_ = std::min(bits, 8 / std::min(budget, 8));
+    channels_ = bits / groupBits_;
+    windowSlots_ = std::min(budget, 8 / groupBits_);
+    windows_ = budget / windowSlots_;
+    windowTargets_ = (channels_ + 3) / 4;
+    // Blend colour and stencil are GL 1.4 / 1.0; draw buffers and attachments depend on the row.
+    if (info.framebufferObject) checkContextFor("bitshift " + describe(), info, targetCount(), windowTargets_);
+}
+
+std::string BitShiftScheme::stencilUse() const {
+    return windows_ > 1 ? "rank windows 0-7 and 8-15 (restarted count) + light count"
+                        : "rank window 0-" + std::to_string(windowSlots_ - 1) + " + light count";
 }
 
 IndexColors BitShiftScheme::colorsFor(uint32_t index) const {
@@ -30,64 +29,88 @@ IndexColors BitShiftScheme::colorsFor(uint32_t index) const {
     const uint32_t mask = (1u << groupBits_) - 1u;
     for (int ch = 0; ch < channels_; ++ch) {
         const uint32_t group = (index >> (ch * groupBits_)) & mask;
-        c[0][ch] = float(group << (8 - groupBits_)) / 255.0f;  // exactly the byte group << (8 - k)
+        c[ch / 4][ch % 4] = byteColor(group << (8 - groupBits_));  // exactly the byte group << (8 - k)
     }
     return c;
 }
 
-void BitShiftScheme::encode(LightVolumePass& pass, const std::vector<VolumeLight>& lights) const {
-    VolumeDraw d;
-    d.name = "bitshift";
-    d.slotLimit = config_.budget;
-    if (groupBits_ < 8) {  // with 8-bit groups there is one slot: a plain write, nothing to shift
-        d.blend = true;
-        d.blendSrc = GL_ONE;
-        d.blendDst = GL_CONSTANT_COLOR;
-        d.blendColor = glm::vec4(1.0f / float(1 << groupBits_));
+std::vector<SchemeDraw> BitShiftScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
+    std::vector<SchemeDraw> draws;
+    for (int w = 0; w < windows_; ++w) {
+        SchemeDraw sd;
+        VolumeDraw& d = sd.draw;
+        d.name = "bitshift-window-" + std::to_string(w);
+        d.firstTarget = w * windowTargets_;
+        d.targetCount = windowTargets_;
+        d.colorMask = glm::bvec4(channels_ > 0, channels_ > 1, channels_ > 2, channels_ > 3);
+        if (windowSlots_ > 1) {  // one slot per window is a plain write: nothing to shift
+            d.blend = true;
+            d.blendSrc = GL_ONE;
+            d.blendDst = GL_CONSTANT_COLOR;
+            d.blendColor = glm::vec4(1.0f / float(1 << groupBits_));
+        }
+        d.rankFirst = w * windowSlots_;
+        d.rankCount = windowSlots_;
+        d.restartCount = w > 0;
+        sd.lights = lights;
+        sd.colors = [this](uint32_t index) { return colorsFor(index); };
+        draws.push_back(std::move(sd));
     }
-    pass.draw(d, lights, [this](uint32_t index) { return colorsFor(index); });
+    return draws;
 }
+
+namespace {
+std::string glslVec4(const double v[4]) {
+    std::string s = "vec4(";
+    for (int i = 0; i < 4; ++i) s += std::to_string(static_cast<long>(v[i])) + ".0" + (i < 3 ? ", " : ")");
+    return s;
+}
+}  // namespace
 
 ShaderDefines BitShiftScheme::unpackDefines() const {
-    std::string weights = "vec4(";
-    for (int ch = 0; ch < 4; ++ch) {
-        const double w = ch < channels_ ? std::ldexp(1.0, ch * groupBits_) : 0.0;
-        weights += std::to_string(static_cast<long>(w)) + ".0" + (ch < 3 ? ", " : ")");
-    }
-    return {{"LIDR_SLOTS", std::to_string(config_.budget)},
-            {"LIDR_GROUP_SCALE", std::to_string(1 << (8 - groupBits_)) + ".0"},
-            {"LIDR_GROUP_VALUES", std::to_string(1 << groupBits_) + ".0"},
-            {"LIDR_CHANNEL_WEIGHTS", weights}};
-}
-
-std::vector<uint8_t> BitShiftScheme::encodePixel(const std::vector<uint32_t>& drawOrder) const {
-    std::vector<uint8_t> texel(4, 0);
-    const size_t kept = std::min<size_t>(drawOrder.size(), size_t(config_.budget));  // stencil cap
-    for (size_t i = 0; i < kept; ++i) {
-        const IndexColors c = colorsFor(drawOrder[i]);
+    ShaderDefines d = {{"LIDR_SLOTS", std::to_string(config_.budget)},
+                       {"LIDR_INDEX_TARGETS", std::to_string(targetCount())},
+                       {"LIDR_WINDOWS", std::to_string(windows_)},
+                       {"LIDR_WINDOW_TARGETS", std::to_string(windowTargets_)},
+                       {"LIDR_WINDOW_SLOTS", std::to_string(windowSlots_) + ".0"},
+                       {"LIDR_GROUP_SCALE", std::to_string(1 << (8 - groupBits_)) + ".0"},
+                       {"LIDR_GROUP_VALUES", std::to_string(1 << groupBits_) + ".0"}};
+    for (int t = 0; t < 4; ++t) {
+        double w[4];
         for (int ch = 0; ch < 4; ++ch) {
-            const double src = std::round(double(c[0][ch]) * 255.0);  // the byte the shader writes
-            const double dst = groupBits_ < 8 ? texel[ch] / double(1 << groupBits_) : 0.0;
-            texel[ch] = static_cast<uint8_t>(std::min(255.0, std::nearbyint(src + dst)));  // round to nearest
+            const int c = t * 4 + ch;
+            w[ch] = c < channels_ ? std::ldexp(1.0, c * groupBits_) : 0.0;
         }
+        d.push_back({"LIDR_WEIGHTS" + std::to_string(t), glslVec4(w)});
     }
-    return texel;
+    return d;
 }
 
-std::vector<uint32_t> BitShiftScheme::decodePixel(const uint8_t* texels) const {
-    // The shader's arithmetic, step for step, in float.
-    float packed[4];
-    for (int ch = 0; ch < 4; ++ch) packed[ch] = std::floor(float(texels[ch]) / 255.0f * 255.0f + 0.5f);
-    const float scale = float(1 << (8 - groupBits_)), values = float(1 << groupBits_);
+std::vector<uint32_t> BitShiftScheme::decodeBytes(const std::vector<ShaderFloat>& bytes) const {
+    // unpack_bitshift.glsl, step for step.
+    const FloatPrecision p = bytes[0].p;
+    const ShaderFloat invScale(1.0 / double(1 << (8 - groupBits_)), p), scale(double(1 << (8 - groupBits_)), p),
+        values(double(1 << groupBits_), p);
     std::vector<uint32_t> slots;
-    for (int s = 0; s < config_.budget; ++s) {
-        float index = 0.0f;
-        for (int ch = 0; ch < 4; ++ch) {
-            const float top = std::floor(packed[ch] * (1.0f / scale));
-            packed[ch] = (packed[ch] - top * scale) * values;
-            if (ch < channels_) index += top * std::ldexp(1.0f, ch * groupBits_);
+    for (int w = 0; w < windows_; ++w) {
+        std::vector<ShaderFloat> packed(bytes.begin() + w * windowTargets_ * 4,
+                                        bytes.begin() + (w + 1) * windowTargets_ * 4);
+        for (int s = 0; s < windowSlots_; ++s) {
+            ShaderFloat index(0.0, p);
+            for (int t = 0; t < windowTargets_; ++t) {
+                ShaderFloat dot(0.0, p);
+                for (int ch = 0; ch < 4; ++ch) {
+                    ShaderFloat& v = packed[t * 4 + ch];
+                    const ShaderFloat top = floorOf(v * invScale);
+                    v = (v - top * scale) * values;
+                    const int c = t * 4 + ch;
+                    const ShaderFloat weight(c < channels_ ? std::ldexp(1.0, c * groupBits_) : 0.0, p);
+                    dot = ch == 0 ? top * weight : dot + top * weight;
+                }
+                index = t == 0 ? dot : index + dot;
+            }
+            slots.push_back(std::isfinite(index.v) && index.v >= 0.0 ? static_cast<uint32_t>(index.v) : 0xFFFFFFFFu);
         }
-        slots.push_back(static_cast<uint32_t>(index));
     }
     return slots;
 }

@@ -121,6 +121,8 @@ void GlContext::initialiseGl(const std::string& backendName) {
     if (info_.multisampleTexture) glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &info_.maxColorTextureSamples);
     if (info_.drawBuffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS, &info_.maxDrawBuffers);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
+    if (info_.framebufferObject) glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &info_.maxColorAttachments);
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &info_.maxTextureUnits);
     while (glGetError() != GL_NO_ERROR) {
     }
     if (info_.major < 2 || (info_.major == 2 && info_.minor < 1))

@@ -37,6 +37,8 @@ struct GlInfo {
     bool sampleShading = false;
     int maxColorTextureSamples = 0;
     int maxDrawBuffers = 1;
+    int maxColorAttachments = 1;      // FBO colour attachments (index targets of one frame)
+    int maxTextureUnits = 2;          // fragment-shader texture image units
     int maxTextureSize = 0;
     int stencilBits = 8;
     std::string summary() const;

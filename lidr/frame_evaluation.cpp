@@ -28,9 +28,13 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.marked.assign(n, 0);
     for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
     const int budget = renderer.scheme().config().budget;
+    const bool wholeLights = !renderer.scheme().keepsFirstMarks();
     if (renderer.drawsTransparency())
         e.frontFaceMarked = frontFaceCounts(t.readDepth(), cam, lights, renderer.volumeMeshOutsideRadius());
     e.withinBudget.assign(n, 0);
+    e.droppedMarks.assign(n, 0);
+    for (size_t p = 0; p < n; ++p)
+        e.droppedMarks[p] = std::max(0, e.marked[p] - static_cast<int>(e.lists.decoded[p].size()));
     for (size_t p = 0; p < n; ++p) {
         if (!e.truth.surface[p]) {
             // Background: no opaque surface, but transparent layers in front of it read front-face lists.
@@ -38,7 +42,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
             continue;
         }
         e.maxMarked = std::max(e.maxMarked, e.marked[p]);
-        if (e.marked[p] > budget)
+        if (e.marked[p] > budget || (wholeLights && e.droppedMarks[p] > 0))
             ++e.pixelsOverBudget;
         else if (e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= budget)
             e.withinBudget[p] = 1;

@@ -15,13 +15,15 @@ struct FrameEvaluation {
     std::vector<int> marked;        // lights the volume test marked per pixel (GPU stencil count), or truth
     int maxTruthOverlap = 0;        // most lights touching one pixel's surface
     int maxMarked = 0;              // most lights marking one pixel
-    long pixelsOverBudget = 0;      // surface pixels marked by more lights than the budget
+    long pixelsOverBudget = 0;      // surface pixels where a marking light was not kept (see withinBudget)
     // Lights a front-face pass marks per pixel (CPU, conservative), when transparent layers read front-face
     // lists; else empty.
     std::vector<int> frontFaceMarked;
-    // 1 where every list the pixel reads holds <= budget lights: the main one by the GPU count, the
-    // front-face one of transparent layers by the conservative CPU count.
+    // 1 where every list the pixel reads holds all its lights: the main one by the GPU count (marked <= budget;
+    // with CPU sorting, which drops whole lights, also no dropped mark), the front-face one of transparent
+    // layers by the conservative CPU count.
     std::vector<uint8_t> withinBudget;
+    std::vector<int> droppedMarks;  // per pixel: marks the index lists do not hold (GPU count - kept slots)
     ImageError error;               // whole image against the reference
     ImageError errorWithinBudget;   // only pixels marked by <= budget lights
 };

@@ -11,7 +11,7 @@ enum class DrawFilter { Opaque, Transparent, All };
 
 class GpuScene {
 public:
-    static constexpr int kMaterialTextureUnit = 7;
+    static constexpr int kMaterialTextureUnit = 11;  // above the index targets (0-7) and the light table (8-10)
     GpuScene() = default;
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene);

@@ -27,7 +27,8 @@ VolumeTest parseVolumeTest(const std::string& name) {
 
 IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
     : width_(width), height_(height), samples_(samples) {
-    if (count < 1 || count > kMaxIndexTargets) throw Error("index target count must be 1..4");
+    if (count < 1 || count > kMaxIndexTargets)
+        throw Error("index target count must be 1.." + std::to_string(kMaxIndexTargets));
     fbo_ = gl::Framebuffer::create();
     for (int i = 0; i < count; ++i) {
         textures_.push_back(samples > 0 ? gl::Texture::create2DMultisample(GL_RGBA8, width, height, samples)
@@ -46,24 +47,31 @@ LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, mesh_.positions.data(), mesh_.positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh_.indices.data(),
                                   mesh_.indices.size() * sizeof(uint16_t));
-    for (int n = 1; n <= kMaxIndexTargets; ++n) {
-        if (n > 1 && n > info.maxDrawBuffers) break;
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(n)}};
-        programs_.push_back(gl::Program::create("light-volume-" + std::to_string(n),
-                                                buildShaderSource("light_volume.vert", defs),
-                                                buildShaderSource("light_volume.frag", defs),
-                                                {{"aPosition", gl::kPosition}}));
-    }
+    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
+    programs_.resize(kMaxIndexTargets);
+    listPrograms_.resize(kMaxIndexTargets);
 }
 
 const gl::Program& LightVolumePass::programFor(int targetCount) const {
-    if (targetCount < 1 || targetCount > static_cast<int>(programs_.size()))
+    if (targetCount < 1 || targetCount > maxDrawTargets_)
         throw UnsupportedError("writing " + std::to_string(targetCount) +
                                " index targets at once needs that many draw buffers");
-    return programs_[targetCount - 1];
+    gl::Program& p = (listSource_ ? listPrograms_ : programs_)[size_t(targetCount - 1)];
+    if (!p) {
+        const std::string base = listSource_ ? "pixel_list_volume" : "light_volume";
+        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        p = gl::Program::create(base + "-" + std::to_string(targetCount), buildShaderSource(base + ".vert", defs),
+                                buildShaderSource(base + ".frag", defs), {{"aPosition", gl::kPosition}});
+    }
+    return p;
 }
 
 void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera) {
+    if (listSource_ && !quad_) {
+        // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
+        const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
+        quad_ = gl::Buffer::create(GL_ARRAY_BUFFER, q, sizeof(q));
+    }
     targets_ = &targets;
     camera_ = camera;
     drawCalls_ = 0;
@@ -76,17 +84,46 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
     glClearColor(0, 0, 0, 0);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     checkGl("light-volume pass begin");
 }
 
+bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
+    if (depthClamp_ || listSource_) return false;
+    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * mesh_.outsideRadius >=
+           camera_.farPlane * 0.999f;
+}
+
 void LightVolumePass::drawVolume(const VolumeLight& light) const {
-    (void)light;
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_.indices.size()), GL_UNSIGNED_SHORT, nullptr);
+    if (listSource_) {
+        const size_t step = light.index - 1;
+        if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
+        listSource_->steps[step]->bind(0);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    } else {
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_.indices.size()), GL_UNSIGNED_SHORT, nullptr);
+    }
     ++drawCalls_;
+}
+
+// The test hook's colour table: row block t (rows t*R .. t*R+R-1, R = rows per target) holds target t's colour
+// of index i at texel (i mod 256, t*R + i/256), exactly the bytes the colors callback asks for.
+void LightVolumePass::uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors) {
+    const int rows = static_cast<int>(listSource_->maxIndex / 256 + 1);
+    const int height = rows * d.targetCount;
+    std::vector<uint8_t> texels(size_t(256) * height * 4, 0);
+    for (uint32_t i = 0; i <= listSource_->maxIndex; ++i) {
+        const IndexColors c = colors(i);
+        for (int t = 0; t < d.targetCount; ++t)
+            for (int ch = 0; ch < 4; ++ch) {
+                const float v = std::clamp(c[t][ch], 0.0f, 1.0f) * 255.0f;
+                texels[((size_t(t) * rows + i / 256) * 256 + i % 256) * 4 + ch] = static_cast<uint8_t>(std::lround(v));
+            }
+    }
+    colorTable_ = gl::Texture::create2D(GL_RGBA8, 256, height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
 }
 
 void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
@@ -97,12 +134,31 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     const gl::Program& program = programFor(d.targetCount);
     program.use();
     program.set("uViewProj", camera_.viewProjection);
+    if (listSource_) {
+        uploadColorTable(d, colors);
+        colorTable_.bind(1);
+        program.set("uStepIndices", 0);
+        program.set("uColorTable", 1);
+        program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
+        program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
+        program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
+    }
+    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
+        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
+        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
+    if (d.restartCount) {
+        RenderState clear;  // stencil only
+        clear.colorMask = glm::bvec4(false);
+        applyRenderState(clear);
+        glClearStencil(0);
+        glClear(GL_STENCIL_BUFFER_BIT);
+    }
     std::vector<GLenum> buffers;
     for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
     glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-    const GLint posLoc = program.uniform("uLightPosRadius");
-    const GLint colorLoc = program.uniform("uIndexColor");
-    const GLint clampLoc = program.uniform("uClampToFar");
+    const GLint posLoc = listSource_ ? -1 : program.uniform("uLightPosRadius");
+    const GLint colorLoc = listSource_ ? -1 : program.uniform("uIndexColor");
+    const GLint clampLoc = listSource_ ? -1 : program.uniform("uClampToFar");
 
     // The volume test proper: back faces (cull front) at or behind the surface.
     RenderState inside;
@@ -120,12 +176,32 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     inside.stencilTest = true;
 
     RenderState mark, count, unmark;
+    // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
+    // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
+    const bool window = d.rankCount > 0;
+    const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
+    // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
+    // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
+    // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
+    // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
+    // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
+    bool separateCount = false;
     if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
-        // Stencil counts every light that marks the pixel; with a slot limit only the first ones write.
-        inside.stencil.func = d.slotLimit > 0 ? GL_GREATER : GL_ALWAYS;  // passes while limit > count
-        inside.stencil.ref = d.slotLimit;
-        inside.stencil.stencilFail = GL_INCR;
-        inside.stencil.depthPass = GL_INCR;
+        inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
+        inside.stencil.ref = d.rankFirst;
+        inside.stencil.readMask = windowMask;
+        if (window) {
+            separateCount = true;
+            inside.stencil.writeMask = 0;
+            count = inside;
+            count.colorMask = glm::bvec4(false);
+            count.blend = false;
+            count.stencil.func = GL_ALWAYS;
+            count.stencil.depthPass = GL_INCR;  // saturates at 255
+            count.stencil.writeMask = 0xFF;
+        } else {
+            inside.stencil.depthPass = GL_INCR;
+        }
         countBits_ = 8;
     } else {
         // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
@@ -143,14 +219,17 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         mark.stencil.writeMask = 0x80;
         unmark = mark;
         unmark.stencil.ref = 0;
-        // Marked pixels hold >= 128, so "limit > stencil" and "128 > stencil" both reject them.
-        inside.stencil.func = GL_GREATER;
-        inside.stencil.ref = d.slotLimit > 0 ? d.slotLimit : 0x80;
+        // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
+        inside.stencil.func = window ? GL_EQUAL : GL_GREATER;
+        inside.stencil.ref = window ? d.rankFirst : 0x80;
+        inside.stencil.readMask = windowMask;
         inside.stencil.writeMask = 0;
         count = inside;
         count.colorMask = glm::bvec4(false);
         count.blend = false;
+        count.stencil.func = GL_GREATER;
         count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
+        count.stencil.readMask = 0xFF;
         count.stencil.depthPass = GL_INCR;
         count.stencil.writeMask = 0x7F;
         countBits_ = 7;
@@ -161,29 +240,36 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // (conservative: the whole footprint is marked).
     const float outside = mesh_.outsideRadius;
     auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
-    auto reachesFar = [&](const VolumeLight& l) {
-        return depthOf(l) + l.posRadius.w * outside >= camera_.farPlane * 0.999f;
-    };
     RenderState insideNoDepth = inside;
     insideNoDepth.depthFunc = GL_ALWAYS;
     // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
     // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
     // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
-    RenderState front = inside;
-    front.depthFunc = GL_LEQUAL;
-    front.cullFace = GL_BACK;
     auto reachesNear = [&](const VolumeLight& l) {
         return depthOf(l) - l.posRadius.w * outside <= camera_.nearPlane * 1.001f;
     };
 
     enum Choice { kInside, kInsideNoDepth, kFront };
     int applied = -1;  // re-applied only when the choice changes
+    // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
+    auto stateFor = [&](int choice, const RenderState& base) {
+        RenderState st = base;
+        if (choice == kInsideNoDepth) {
+            st.depthFunc = GL_ALWAYS;
+        } else if (choice == kFront) {
+            st.depthFunc = GL_LEQUAL;
+            st.cullFace = GL_BACK;
+        }
+        return st;
+    };
     for (const VolumeLight& l : lights) {
-        glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
-        const IndexColors c = colors(l.index);
-        glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
-        const bool clampToFar = !depthClamp_ && reachesFar(l);
-        glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+        const bool clampToFar = marksWholeFootprint(l);
+        if (!listSource_) {
+            glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
+            const IndexColors c = colors(l.index);
+            glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
+            glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+        }
         if (test_ == VolumeTest::ExactStencil) {
             applyRenderState(mark);
             drawVolume(l);
@@ -199,9 +285,19 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
             continue;
         }
         int want = clampToFar ? kInsideNoDepth : kInside;
-        if (test_ == VolumeTest::FrontFace) want = reachesNear(l) ? kInsideNoDepth : kFront;
+        if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
+        if (separateCount) {
+            if (d.writesColor()) {
+                applyRenderState(stateFor(want, inside));
+                drawVolume(l);
+            }
+            applyRenderState(stateFor(want, count));
+            drawVolume(l);
+            applied = -1;
+            continue;
+        }
         if (want != applied) {
-            applyRenderState(want == kInside ? inside : want == kFront ? front : insideNoDepth);
+            applyRenderState(stateFor(want, inside));
             applied = want;
         }
         drawVolume(l);

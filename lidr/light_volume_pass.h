@@ -25,7 +25,7 @@ enum class VolumeTest {
 const char* volumeTestName(VolumeTest t);
 VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface"
 
-constexpr int kMaxIndexTargets = 4;
+constexpr int kMaxIndexTargets = 8;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
 
 // A light as the volume pass sees it: its 1-based index and where it is.
@@ -63,9 +63,24 @@ struct VolumeDraw {
     GLenum blendEquation = GL_FUNC_ADD;
     GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
     glm::vec4 blendColor{0.0f};
-    // slotLimit > 0: a pixel takes at most slotLimit lights, the first ones in draw order; the stencil
-    // then counts every light that marks the pixel (saturating), so overflow is counted, not written.
-    int slotLimit = 0;
+    // Stencil rank window. rankCount > 0: a light writes only where it is the rankFirst-th ..
+    // (rankFirst + rankCount - 1)-th light (0-based, in draw order) to mark the pixel in this draw. rankCount is
+    // a power of two and rankFirst a multiple of it: the test is a masked GL_EQUAL on the count. rankCount 0:
+    // every marking light writes. Either way the stencil counts every light that marks the pixel (saturating),
+    // so lights past the window are counted, not written.
+    int rankFirst = 0, rankCount = 0;
+    bool restartCount = false;  // clear the count first: a further pass over the same lights ranks them anew
+    bool writesColor() const { return colorMask.r || colorMask.g || colorMask.b || colorMask.a; }
+};
+
+// Test hook: instead of light volumes, "light" j (VolumeLight::index = j + 1) is a full-target quad that marks
+// exactly the pixels whose list has a j-th entry, and writes the colours of THAT entry's index (looked up in a
+// table the pass fills from the draw's colors callback). Through it any per-pixel index lists go through the
+// real blend and stencil state of a scheme's draws. The quad is a back face; clear depth to 0.5: list entries
+// pass the depth test, "decoy" entries (B = 255: a volume in front of the surface) fail it.
+struct PixelListSource {
+    std::vector<const gl::Texture*> steps;  // RGBA8, target-sized: R, G = index low, high byte (0: none); B decoy
+    uint32_t maxIndex = 255;                // colour table covers indices 0..maxIndex
 };
 
 class LightVolumePass {
@@ -79,8 +94,16 @@ public:
     void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
               const std::function<IndexColors(uint32_t index)>& colors);
     void end();
+    // Draws the lights that follow through the pixel-list test hook (nullptr: light volumes again).
+    void setPixelListSource(const PixelListSource* source) { listSource_ = source; }
 
     VolumeTest test() const { return test_; }
+    const CameraMatrices& camera() const { return camera_; }
+    bool drawingPixelLists() const { return listSource_ != nullptr; }
+    // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
+    // plane): it then marks its whole screen footprint.
+    bool marksWholeFootprint(const VolumeLight& light) const;
+    float volumeOutsideRadius() const { return mesh_.outsideRadius; }
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
@@ -89,11 +112,17 @@ public:
 private:
     void drawVolume(const VolumeLight& light) const;
     const gl::Program& programFor(int targetCount) const;
+    void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
     VolumeTest test_ = VolumeTest::BackFace;
     bool depthClamp_ = false;
     LightVolumeMesh mesh_;
     gl::Buffer vertices_, indices_;
-    std::vector<gl::Program> programs_;  // one per target count 1..kMaxIndexTargets
+    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
+    mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's
+    int maxDrawTargets_ = 1;
+    gl::Buffer quad_;
+    gl::Texture colorTable_;
+    const PixelListSource* listSource_ = nullptr;
     const IndexTargets* targets_ = nullptr;
     CameraMatrices camera_;
     int countBits_ = 0;

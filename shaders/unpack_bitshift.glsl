@@ -1,23 +1,88 @@
-// Unpack for the CONSTANT_COLOR bit-shift scheme. Each channel of uIndexTex0 holds up to 8/k k-bit groups,
-// the most recently drawn light's group in the top bits. Channel c holds bits [c*k, c*k + k) of the index.
-// Arithmetic: bytes are rebuilt as integers with floor(x * 255 + 0.5), which is exact for any read within
-// +-0.5 of a step (the paper's ceil(x * 254.5) tolerates low reads only); after that every value is an
-// integer below 256, exact in fp16 and up. No integer or bit operations: GLSL 1.20.
-//   LIDR_SLOTS            lights per pixel (the stencil never lets more in)
-//   LIDR_GROUP_SCALE      2^(8-k): dividing by it takes the top k bits
-//   LIDR_GROUP_VALUES     2^k: multiplying by it shifts the remaining bits up by k
-//   LIDR_CHANNEL_WEIGHTS  vec4(1, 2^k, 2^2k, 2^3k), zero for unused channels
+// Unpack for the CONSTANT_COLOR bit-shift scheme (lidr/bitshift_scheme.h). A window of LIDR_WINDOW_TARGETS
+// targets holds LIDR_WINDOW_SLOTS lights; in it, channel c holds bits [c*k, c*k + k) of each index, the most
+// recently drawn light's group on top. Budget 16 has two windows (ranks 0-7, then 8-15), read in turn.
+// Bytes are rebuilt exactly by lidrBytes() (any read within +-0.45 step, fp16 and up); after that every value
+// is an integer below 256 until the channel groups are weighted into the index, which is exact where the index
+// fits the precision's significand (fp16: 11 bits, so 4- and 8-bit widths; fp24/fp32: all widths).
+// No integer or bit operations: GLSL 1.20.
+//   LIDR_SLOTS, LIDR_INDEX_TARGETS, LIDR_WINDOWS (1 or 2), LIDR_WINDOW_TARGETS (1, 2, 4), LIDR_WINDOW_SLOTS
+//   LIDR_GROUP_SCALE   2^(8-k): dividing by it takes the top k bits
+//   LIDR_GROUP_VALUES  2^k: multiplying by it shifts the remaining bits up by k
+//   LIDR_WEIGHTSt      weights 2^(c*k) of target t's channels c = 4t..4t+3 in a window, zero where unused
 #define LIDR_NULL_ENDS_LIST 1
+#include "lidr_bytes.glsl"
 
 uniform LIDR_INDEX_SAMPLER uIndexTex0;
-vec4 lidrPacked;  // bytes not yet unpacked, as integers
+#if LIDR_INDEX_TARGETS > 1
+uniform LIDR_INDEX_SAMPLER uIndexTex1;
+#endif
+#if LIDR_INDEX_TARGETS > 2
+uniform LIDR_INDEX_SAMPLER uIndexTex2;
+uniform LIDR_INDEX_SAMPLER uIndexTex3;
+#endif
+#if LIDR_INDEX_TARGETS > 4
+uniform LIDR_INDEX_SAMPLER uIndexTex4;
+uniform LIDR_INDEX_SAMPLER uIndexTex5;
+uniform LIDR_INDEX_SAMPLER uIndexTex6;
+uniform LIDR_INDEX_SAMPLER uIndexTex7;
+#endif
+
+vec4 lidrP0, lidrP1, lidrP2, lidrP3;  // the current window's bytes not yet unpacked, as integers
+vec4 lidrQ0, lidrQ1, lidrQ2, lidrQ3;  // the second window's
+float lidrLeft;                       // slots left in the current window
 
 void lidrUnpackBegin(vec2 uv) {
-    lidrPacked = floor(LIDR_FETCH_INDEX(uIndexTex0, uv) * 255.0 + 0.5);
+    lidrP1 = lidrP2 = lidrP3 = lidrQ0 = lidrQ1 = lidrQ2 = lidrQ3 = vec4(0.0);
+    lidrP0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex0, uv));
+#if LIDR_WINDOW_TARGETS == 1 && LIDR_WINDOWS > 1
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
+#endif
+#if LIDR_WINDOW_TARGETS == 2
+    lidrP1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
+#if LIDR_WINDOWS > 1
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, uv));
+    lidrQ1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, uv));
+#endif
+#endif
+#if LIDR_WINDOW_TARGETS == 4
+    lidrP1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex1, uv));
+    lidrP2 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, uv));
+    lidrP3 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, uv));
+#if LIDR_WINDOWS > 1
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex4, uv));
+    lidrQ1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex5, uv));
+    lidrQ2 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex6, uv));
+    lidrQ3 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex7, uv));
+#endif
+#endif
+    lidrLeft = LIDR_WINDOW_SLOTS;
+}
+
+// The top k bits of each channel, and the rest shifted up into their place.
+vec4 lidrTakeTop(inout vec4 bytes) {
+    vec4 top = floor(bytes * (1.0 / LIDR_GROUP_SCALE));
+    bytes = (bytes - top * LIDR_GROUP_SCALE) * LIDR_GROUP_VALUES;
+    return top;
 }
 
 float lidrUnpackNext() {
-    vec4 top = floor(lidrPacked * (1.0 / LIDR_GROUP_SCALE));
-    lidrPacked = (lidrPacked - top * LIDR_GROUP_SCALE) * LIDR_GROUP_VALUES;
-    return dot(top, LIDR_CHANNEL_WEIGHTS);
+#if LIDR_WINDOWS > 1
+    if (lidrLeft < 0.5) {
+        lidrP0 = lidrQ0;
+        lidrP1 = lidrQ1;
+        lidrP2 = lidrQ2;
+        lidrP3 = lidrQ3;
+        lidrLeft = LIDR_WINDOW_SLOTS;
+    }
+#endif
+    lidrLeft -= 1.0;
+    float index = dot(lidrTakeTop(lidrP0), LIDR_WEIGHTS0);
+#if LIDR_WINDOW_TARGETS > 1
+    index += dot(lidrTakeTop(lidrP1), LIDR_WEIGHTS1);
+#endif
+#if LIDR_WINDOW_TARGETS > 2
+    index += dot(lidrTakeTop(lidrP2), LIDR_WEIGHTS2);
+    index += dot(lidrTakeTop(lidrP3), LIDR_WEIGHTS3);
+#endif
+    return index;
 }

@@ -1,0 +1,36 @@
+#pragma once
+// CPU emulation of shader float arithmetic, so unpack code can be run "as a given kind of hardware would":
+// fp32 (IEEE single), fp24 (17-bit significand, as on R300-class hardware) and fp16 (11-bit significand,
+// half precision). Every operation rounds its exact result to nearest-even in the chosen precision; ranges
+// are not modelled except fp16's overflow past 65504 (to infinity).
+#include <string>
+
+namespace lidr {
+
+enum class FloatPrecision { Fp16, Fp24, Fp32 };
+const char* floatPrecisionName(FloatPrecision p);
+int significandBits(FloatPrecision p);  // 11, 17, 24
+double roundToPrecision(double v, FloatPrecision p);
+
+// A shader float in precision p: each operation rounds. Comparisons and floor are exact.
+struct ShaderFloat {
+    double v = 0.0;
+    FloatPrecision p = FloatPrecision::Fp32;
+    ShaderFloat() = default;
+    ShaderFloat(double value, FloatPrecision precision) : v(roundToPrecision(value, precision)), p(precision) {}
+    ShaderFloat operator+(ShaderFloat o) const { return {v + o.v, p}; }
+    ShaderFloat operator-(ShaderFloat o) const { return {v - o.v, p}; }
+    ShaderFloat operator*(ShaderFloat o) const { return {v * o.v, p}; }
+    ShaderFloat constant(double c) const { return {c, p}; }  // a literal, as the compiler would round it
+};
+ShaderFloat floorOf(ShaderFloat x);
+ShaderFloat stepOf(double edge, ShaderFloat x);  // GLSL step(edge, x): 0 if x < edge, else 1
+
+// shaders/lidr_bytes.glsl, step for step: the byte behind a texel read.
+ShaderFloat lidrBytes(ShaderFloat read);
+
+// The threshold and value constants lidr_bytes.glsl uses for bit j (for the proofs).
+double lidrBytesThreshold(int bit);
+double lidrBytesValue(int bit);
+
+}  // namespace lidr

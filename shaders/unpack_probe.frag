@@ -1,0 +1,24 @@
+#version 120
+// Shader-unpack probe (tests): runs the scheme's real unpack ("lidr_unpack.glsl" substituted exactly as in the
+// forward pass) at each pixel and writes what slots uSlotBase and uSlotBase + 1 returned, as 16-bit values
+// (low byte, high byte, low byte, high byte). Every slot is unpacked, past the first null too, so the raw
+// sequence can be compared with the CPU model.
+#define LIDR_INDEX_SAMPLER sampler2D
+#define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)
+#include "lidr_unpack.glsl"
+
+uniform vec2 uInvTargetSize;
+uniform float uSlotBase;
+
+void main() {
+    lidrUnpackBegin(gl_FragCoord.xy * uInvTargetSize);
+    vec2 got = vec2(0.0);
+    for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
+        float index = lidrUnpackNext();
+        if (abs(float(slot) - uSlotBase) < 0.5) got.x = index;
+        if (abs(float(slot) - uSlotBase - 1.0) < 0.5) got.y = index;
+    }
+    vec2 high = floor(got * (1.0 / 256.0));
+    vec2 low = got - high * 256.0;
+    gl_FragColor = vec4(low.x, high.x, low.y, high.y) * (1.0 / 255.0);
+}
