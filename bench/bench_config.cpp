@@ -12,6 +12,7 @@
 #include "lidr/primitives.h"
 #include "lidr/reference_renderer.h"
 #include "lidr/scene_loader.h"
+#include "lidr/test_scenes.h"
 
 // The render-mode factory (lidr/render_mode.h) builds every mode the library has. Until it exists, the
 // bench builds the two modes it can name itself.
@@ -61,7 +62,14 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
     if (startsWith(name, "overlap-")) {
         const int k = positiveInt(name.substr(8));
         if (k < 1) throw Error("bad scene name '" + name + "': overlap-K needs a positive K (valid: " + sceneNameHelp() + ")");
-        return makeControlledOverlapScene(k);
+        ControlledOverlapOptions o;
+        o.overlap = k;
+        o.clusters = 9;
+        o.maxLights = 9 * k <= 255 ? 255 : 65535;  // 9 clusters of k lights, within 8-bit indices up to k = 28
+        o.width = 1024;
+        o.height = 768;
+        o.seed = seed;
+        return makeControlledOverlapScene(o);
     }
     if (startsWith(name, "many-")) {
         const size_t dash = name.find('-', 5);
@@ -203,11 +211,17 @@ std::vector<SweepGroup> fullPreset() {
     room.volumeTests = {"backface", "exact", "frontface"};
     room.msaa = {0};
     room.perSample = {false};
-    // Off as well as on: forward-multipass draws no transparent meshes, so the like-for-like comparison of
-    // every mode (the targets) is the opaque one.
-    room.transparency = {false, true};
+    // Opaque first: forward-multipass draws no transparent meshes, so the like-for-like comparison of every
+    // mode (the targets) is the opaque one.
+    room.transparency = {false};
     room.tiledDepthBounds = {true, false};
     groups.push_back(room);
+
+    SweepGroup roomTransparent = room;  // transparency on: 8-bit only (the width changes no pass)
+    roomTransparent.name = "room-transparent";
+    roomTransparent.indexBits = {8};
+    roomTransparent.transparency = {true};
+    groups.push_back(roomTransparent);
 
     SweepGroup variants = room;  // MSAA 4x, one index list per pixel and per-sample lists, at budget 4
     variants.name = "room-msaa";
@@ -230,7 +244,7 @@ std::vector<SweepGroup> fullPreset() {
     overlap.modes = availableModes();
     overlap.schemes = packingSchemeNames();
     overlap.budgets = budgets;
-    overlap.indexBits = {8, 16};
+    overlap.indexBits = {4, 8};  // 4-bit holds 15 lights: overlap-1 only (16-bit: the many-light scenes)
     overlap.volumeTests = {"backface"};
     overlap.msaa = {0};
     overlap.perSample = {false};

@@ -48,7 +48,7 @@ run_bench(1 "unknown packing scheme 'nope'.*valid: .*bitshift" --schemes nope --
 run_bench(1 "unknown render mode 'warp'.*valid: .*lidr.*forward-brute" --modes warp --out ${OUT}/bad)
 run_bench(1 "unknown scene 'kitchen'.*valid: room.*overlap-K" --scenes kitchen --out ${OUT}/bad)
 run_bench(1 "unknown volume test 'sideways'.*valid: backface, exact, frontface" --volume-tests sideways --out ${OUT}/bad)
-run_bench(1 "no configuration the library can run:.*budget must be 1, 2, 4, 8 or 16, got 3" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
+run_bench(1 "no configuration the library can run:.*budget.*got 3" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
 run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
           --volume-tests backface --msaa 4 --out ${OUT}/bad)
 file(WRITE ${OUT}/a-file "not a folder")
