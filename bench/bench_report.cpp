@@ -446,10 +446,11 @@ std::string overlapPlot(const std::map<std::string, std::vector<std::pair<int, d
                         const std::string& png, const std::string& ylabel, bool logY) {
     std::ostringstream g;
     g << kPreamble << "set output " << gpString(png) << "\n";
+    g << "set terminal pngcairo size 900,520 font 'sans,8' noenhanced\n";
     g << "set title " << gpString(title) << "\nset logscale x 2\n" << (logY ? "set logscale y 2\n" : "set yrange [0:*]\n")
       << "set xtics (1,2,4,8,16)\nset xrange [0.8:20]\n"
          "set xlabel 'lights on every lit pixel (k)'\nset ylabel " << gpString(ylabel) << "\n"
-         "set key outside right top font ',8'\n";
+         "set key outside right top font ',7' spacing 0.9\n";
     int block = 0;
     for (const auto& [label, pts] : lines) {
         g << "$L" << block++ << " << EOD\n";
@@ -573,9 +574,10 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
         if (overlapScene) {
             const int k = std::atoi(rows.front()->run.scene.c_str() + 8);
             for (const Row* r : rows)
-                if (r->run.config.msaa == 0) {
-                    const std::string line = r->run.config.key() + " @" + std::to_string(r->run.width) + "x" +
-                                             std::to_string(r->run.height);
+                // One line per configuration at 8-bit indices (4-bit holds overlap-1 only, widths change no
+                // pass): about twenty lines, a legible key.
+                if (r->run.config.msaa == 0 && (r->run.config.mode != "lidr" || r->run.config.indexBits == 8)) {
+                    const std::string line = r->run.config.key();
                     overlapLines[line].push_back({k, r->frameMs.median});
                     if (r->run.config.mode != "forward-brute") overlapErrors[line].push_back({k, r->error.rmse});
                 }
