@@ -6,6 +6,15 @@
 
 namespace lidr::test {
 
+PointLight light(glm::vec3 position, float radius, glm::vec3 color, float priority) {
+    PointLight l;
+    l.position = position;
+    l.radius = radius;
+    l.color = color;
+    l.priority = priority;
+    return l;
+}
+
 Scene floorScene() {
     Scene s;
     s.name = "test-floor";

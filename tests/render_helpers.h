@@ -10,6 +10,9 @@
 
 namespace lidr::test {
 
+// A point light, for scenes built in tests.
+PointLight light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1.0f), float priority = 0.0f);
+
 // A 24 x 24 m floor (finely tessellated) with a box and a sphere on it, seen from above at an angle; the
 // size is testWidth() x testHeight(). No lights: tests add their own.
 Scene floorScene();

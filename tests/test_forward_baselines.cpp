@@ -23,14 +23,6 @@ using namespace lidr::test;
 
 namespace {
 
-PointLight light(glm::vec3 p, float r, glm::vec3 c = glm::vec3(1.0f)) {
-    PointLight l;
-    l.position = p;
-    l.radius = r;
-    l.color = c;
-    return l;
-}
-
 std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsigned seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> xz(-11.0f, 11.0f), y(0.05f, 3.0f), r(rMin, rMax), c(0.1f, 0.9f);

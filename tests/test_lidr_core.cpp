@@ -18,15 +18,6 @@ using namespace lidr;
 using namespace lidr::test;
 
 namespace {
-PointLight light(glm::vec3 p, float r, glm::vec3 c = glm::vec3(1.0f), float priority = 0.0f) {
-    PointLight l;
-    l.position = p;
-    l.radius = r;
-    l.color = c;
-    l.priority = priority;
-    return l;
-}
-
 // The stated bound for "LIDR equals the reference where the list holds every light": identical light sets,
 // summed in another order, may differ by one 8-bit step.
 void requireMatchesReference(const RenderResult& r) {

@@ -15,15 +15,6 @@ using namespace lidr;
 using namespace lidr::test;
 
 namespace {
-PointLight light(glm::vec3 p, float r, glm::vec3 c = glm::vec3(1.0f), float priority = 0.0f) {
-    PointLight l;
-    l.position = p;
-    l.radius = r;
-    l.color = c;
-    l.priority = priority;
-    return l;
-}
-
 // A lit floor with two glass panes standing over it, one behind the other, and lights around them.
 Scene glassScene() {
     Scene s = floorScene();

@@ -28,14 +28,6 @@ using namespace lidr::test;
 
 namespace {
 
-PointLight light(glm::vec3 p, float r, glm::vec3 c = glm::vec3(1.0f)) {
-    PointLight l;
-    l.position = p;
-    l.radius = r;
-    l.color = c;
-    return l;
-}
-
 Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane = 0.1f, float farPlane = 60.0f,
               float fov = 60.0f) {
     Camera c;
