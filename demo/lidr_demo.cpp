@@ -66,15 +66,21 @@ std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
 
-// Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
-int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
-                    bool withReference, const demo::RendererChoice& rc) {
+// The output folder and the GL context every headless run needs.
+std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::RendererChoice& rc) {
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
     auto context = GlContext::create(rc.contextOptions());
+    std::cout << "GL: " << context->info().summary() << "\n";
+    return context;
+}
+
+// Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
+                    bool withReference, const demo::RendererChoice& rc) {
+    auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
-    std::cout << "GL: " << info.summary() << "\n";
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
@@ -175,13 +181,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
     }
     const LidrOptions options = rc.lidrOptions(scene);
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
-
-    auto context = GlContext::create(rc.contextOptions());
+    auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
-    std::cout << "GL: " << info.summary() << "\n";
 
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
