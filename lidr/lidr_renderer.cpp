@@ -147,11 +147,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         forwardPass_.runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
         timer_.end();
     }
-    if (multisampled) {
-        timer_.begin("msaa-resolve");
-        targets_.resolve();
-        timer_.end();
-    }
+    targets_.resolve(timer_);
 
     stats_.passes = timer_.collect();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -92,11 +92,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     stats_.volumeDrawCalls = meshDraws_;
     applyRenderState(RenderState{});
     timer_.end();
-    if (targets_.samples() > 0) {
-        timer_.begin("msaa-resolve");
-        targets_.resolve();
-        timer_.end();
-    }
+    targets_.resolve(timer_);
 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MultipassForwardRenderer::render");

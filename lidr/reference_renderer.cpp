@@ -65,11 +65,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
         timer_.end();
     }
     applyRenderState(RenderState{});
-    if (targets_.samples() > 0) {
-        timer_.begin("msaa-resolve");
-        targets_.resolve();
-        timer_.end();
-    }
+    targets_.resolve(timer_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();

@@ -25,29 +25,25 @@ std::string renderModeList() {
 
 std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInfo& info, const Scene& scene,
                                          int width, int height) {
+    // The settings every mode shares come from the common fields.
+    auto shared = [&](auto modeOptions) {
+        modeOptions.forceFixedLightTable = modeOptions.forceFixedLightTable || o.forceFixedLightTable;
+        modeOptions.msaaSamples = o.msaaSamples;
+        modeOptions.timingMethod = o.timingMethod;
+        return modeOptions;
+    };
     if (o.mode == "lidr") {
-        LidrOptions lo = o.lidr;
-        lo.forceFixedLightTable = lo.forceFixedLightTable || o.forceFixedLightTable;
-        lo.msaaSamples = o.msaaSamples;
+        LidrOptions lo = shared(o.lidr);
         lo.transparency = o.transparency;
-        lo.timingMethod = o.timingMethod;
         return std::make_unique<LidrRenderer>(info, scene, lo, width, height);
     }
     if (o.mode == "tiled") {
-        TiledOptions to = o.tiled;
-        to.forceFixedLightTable = to.forceFixedLightTable || o.forceFixedLightTable;
-        to.msaaSamples = o.msaaSamples;
+        TiledOptions to = shared(o.tiled);
         to.transparency = o.transparency;
-        to.timingMethod = o.timingMethod;
         return std::make_unique<TiledRenderer>(info, scene, to, width, height);
     }
-    if (o.mode == "forward-multipass") {
-        MultipassOptions mo = o.multipass;
-        mo.forceFixedLightTable = mo.forceFixedLightTable || o.forceFixedLightTable;
-        mo.msaaSamples = o.msaaSamples;
-        mo.timingMethod = o.timingMethod;
-        return std::make_unique<MultipassForwardRenderer>(info, scene, mo, width, height);
-    }
+    if (o.mode == "forward-multipass")  // draws no transparent meshes (additive passes cannot blend a layer)
+        return std::make_unique<MultipassForwardRenderer>(info, scene, shared(o.multipass), width, height);
     if (o.mode == "forward-brute")
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable,

@@ -1,6 +1,7 @@
 #include "lidr/render_targets.h"
 
 #include "lidr/error.h"
+#include "lidr/frame_timer.h"
 
 namespace lidr {
 
@@ -75,6 +76,13 @@ void RenderTargets::resolve() const {
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MSAA resolve");
+}
+
+void RenderTargets::resolve(FrameTimer& timer) const {
+    if (samples_ == 0) return;
+    timer.begin("msaa-resolve");
+    resolve();
+    timer.end();
 }
 
 ImageRGBA8 RenderTargets::readColor() const {

@@ -18,6 +18,8 @@ public:
     void bindColor() const;         // where shading goes: the MSAA FBO when samples > 0; viewport set
     void bindSingleSample() const;  // the single-sample colour FBO with the shared depth-stencil
     void resolve() const;           // MSAA colour into color(); nothing without MSAA
+    // resolve() timed as the "msaa-resolve" pass; nothing (and no pass) without MSAA.
+    void resolve(class FrameTimer& timer) const;
     int samples() const { return samples_; }
     const gl::Renderbuffer& depthStencil() const { return depthStencil_; }
     // The MSAA depth-stencil (per-sample index targets attach it); empty without MSAA.

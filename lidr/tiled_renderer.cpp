@@ -147,12 +147,8 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         scene_.drawTransparentSorted(program_, cam.eye);
         timer_.end();
     }
-    if (targets_.samples() > 0) {
-        timer_.begin("msaa-resolve");
-        applyRenderState(RenderState{});
-        targets_.resolve();
-        timer_.end();
-    }
+    applyRenderState(RenderState{});  // no scissor or masks on the resolve blit
+    targets_.resolve(timer_);
 
     applyRenderState(RenderState{});
     for (int unit : {LightGridTextures::kUnitGrid, LightGridTextures::kUnitList}) {
