@@ -88,7 +88,8 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     glClear(GL_COLOR_BUFFER_BIT);
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LESS;  // after a pre-pass: one shaded fragment per pixel
+    // Either way the last fragment drawn at the nearest depth is the one left (lidr/gpu_scene.h: DrawOrder).
+    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LEQUAL;
     s.depthWrite = !afterPrepass;
     s.sampleShading = perSample_;
     applyRenderState(s);

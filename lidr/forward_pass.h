@@ -18,7 +18,8 @@ public:
     // ARB_sample_shading); the pass then shades every sample.
     ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false);
     // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
-    // depth there, or LESS with depth writes when that target had no pre-pass.
+    // depth there, or LEQUAL with depth writes when that target had no pre-pass (so that, as with EQUAL,
+    // the last fragment drawn at the nearest depth stays).
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
              const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
              bool afterPrepass = true) const;

@@ -18,7 +18,7 @@ struct Vertex {
 };
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
+GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.materials) {
     for (const Mesh& mesh : scene.meshes) {
         if (mesh.indices.empty()) continue;
         std::vector<Vertex> vertices(mesh.positions.size());
@@ -34,8 +34,14 @@ GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
         }
         Batch b;
         b.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(Vertex));
-        b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(),
-                                       mesh.indices.size() * sizeof(uint32_t));
+        std::vector<uint32_t> reversed;
+        if (order == DrawOrder::Reversed) {  // triangles last to first, each keeping its winding
+            reversed.reserve(mesh.indices.size());
+            for (size_t t = mesh.triangleCount(); t-- > 0;)
+                reversed.insert(reversed.end(), mesh.indices.begin() + 3 * t, mesh.indices.begin() + 3 * t + 3);
+        }
+        const std::vector<uint32_t>& indices = order == DrawOrder::Reversed ? reversed : mesh.indices;
+        b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint32_t));
         b.indexCount = static_cast<GLsizei>(mesh.indices.size());
         b.material = mesh.material;
         b.centroid = sum / float(std::max<size_t>(vertices.size(), 1));
@@ -44,6 +50,7 @@ GpuScene::GpuScene(const Scene& scene) : materials_(scene.materials) {
         triangles_ += mesh.triangleCount();
         batches_.push_back(std::move(b));
     }
+    if (order == DrawOrder::Reversed) std::reverse(batches_.begin(), batches_.end());
     for (const Material& m : materials_) {
         if (m.diffuseTexture.empty()) {
             textures_.emplace_back();

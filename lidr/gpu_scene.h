@@ -9,12 +9,18 @@ namespace lidr {
 
 enum class DrawFilter { Opaque, Transparent, All };
 
+// The order meshes and their triangles are drawn in. Where fragments tie at the pre-pass depth (a back
+// face meeting the front face at a silhouette, coplanar copies) a depth-EQUAL shading pass keeps the last
+// one drawn; a pass that keeps the first one instead (multi-pass forward, whose additive passes must add
+// one fragment per pixel) draws in Reversed order to shade the same surface.
+enum class DrawOrder { AsGiven, Reversed };
+
 class GpuScene {
 public:
     static constexpr int kMaterialTextureUnit = 11;  // above the index targets (0-7) and the light table (8-10)
     GpuScene() = default;
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
-    explicit GpuScene(const Scene& scene);
+    explicit GpuScene(const Scene& scene, DrawOrder order = DrawOrder::AsGiven);
     // Draws meshes passing `filter`, setting the shading.glsl material uniforms on `program` when
     // `setMaterials` (a depth-only pass does not need them). The program must be in use.
     void draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const;

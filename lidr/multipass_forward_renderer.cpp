@@ -11,10 +11,24 @@
 
 namespace lidr {
 
+namespace {
+// Depth EQUAL, and only where the stencil does not hold `stamp` yet; a fragment that passes writes it.
+RenderState onceAtPrepassDepth(GLint stamp) {
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;
+    s.stencilTest = true;
+    s.stencil.func = GL_NOTEQUAL;
+    s.stencil.ref = stamp;
+    s.stencil.depthPass = GL_REPLACE;
+    return s;
+}
+}  // namespace
+
 MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
                                                    const MultipassOptions& options, int width, int height)
     : options_(options),
-      scene_(scene),
+      scene_(scene, DrawOrder::Reversed),  // the stamps keep the first fragment: see render()
       targets_(info, width, height, options.msaaSamples),
       lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
       timer_(info, options.timingMethod),
@@ -53,25 +67,26 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     applyRenderState(RenderState{});
     glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    RenderState a;
-    a.depthTest = true;
-    a.depthFunc = GL_EQUAL;
-    applyRenderState(a);
+    // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
+    // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
+    // (1 for the ambient pass, then 2, 3, ... per light; cleared when they run out) lets one fragment per
+    // pixel through: the first drawn. The scene is drawn in reverse order, so that is the fragment the
+    // single-pass modes keep, the last drawn in scene order (lidr/gpu_scene.h).
+    GLint stamp = 1;
+    applyRenderState(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
     setShadingUniforms(ambient_, cam, shading);
     scene_.draw(ambient_, DrawFilter::Opaque, true);
     timer_.end();
 
     timer_.begin("light-passes");
-    RenderState s;
-    s.depthTest = true;
-    s.depthFunc = GL_EQUAL;
+    RenderState s = onceAtPrepassDepth(stamp);
     s.blend = true;
     s.blendSrcRgb = s.blendDstRgb = GL_ONE;  // add this light's term
     s.blendSrcAlpha = GL_ZERO, s.blendDstAlpha = GL_ONE;
     s.scissor = options_.scissor;
     s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
-    applyRenderState(s);  // the whole state once; per light only the scissor box changes below
+    applyRenderState(s);  // the whole state once; per light only the scissor box and the stamp change below
     light_.use();
     setShadingUniforms(light_, cam, shading);
     lightTable_.bind(light_);
@@ -82,6 +97,14 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         glm::ivec4 rect;
         if (!spherePixelRect(cam, l.position, radius, rect)) continue;  // touches no pixel
         if (options_.scissor) glScissor(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
+        if (++stamp > 255) {  // every stamp used since the last clear: start again from a clear stencil
+            glDisable(GL_SCISSOR_TEST);
+            glClearStencil(0);
+            glClear(GL_STENCIL_BUFFER_BIT);
+            if (options_.scissor) glEnable(GL_SCISSOR_TEST);
+            stamp = 1;
+        }
+        glStencilFunc(GL_NOTEQUAL, stamp, 0xFF);
         light_.set("uLightIndex", float(i + 1));
         const float cullRadius = options_.cullMeshes ? radius : std::numeric_limits<float>::infinity();
         const int drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, cullRadius, true);

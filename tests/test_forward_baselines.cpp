@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/bench_scenes.h"
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
 #include "lidr/gl_resources.h"
@@ -208,4 +209,67 @@ TEST_CASE("multi-pass forward: bad lights are refused before drawing", "[forward
     const std::vector<PointLight> bad = {light({0, 1, 0}, 0.0f)};
     REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("forward-multipass: light 1"));
     REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("multi-pass forward: many small lights seen from above stay within the bound", "[forward][slow]") {
+    // lidr-bench found this scene beyond the bound (7 steps where 3 were allowed at 320x240).
+    const Scene scene = makeManyLightScene(1024, ManyLightView::TopDown, 320, 240);
+    const MultipassCheck c = checkMultipass(scene, MultipassOptions{});
+    INFO("max error " << c.maxError << ", most lights at a pixel " << c.maxLightsAtPixel << ", violations "
+                      << c.violations << ", PSNR " << c.error.psnr);
+    REQUIRE(c.violations == 0);
+    CHECK(c.maxLightsAtPixel >= 3);
+}
+
+TEST_CASE("every mode shades the last fragment drawn at the nearest depth, once", "[forward][modes]") {
+    // A copy of the floor in the very place of the floor, another colour, drawn after it: all its fragments
+    // tie the floor's depth. Every mode must show the copy alone, as a depth-EQUAL (or LEQUAL) pass keeps the
+    // last fragment at a depth, never the floor (first drawn) nor both summed (additive passes): the image
+    // must be, bit for bit, that of the floor drawn once in the copy's colour. The same tie happens where a
+    // back face meets the front face at a silhouette, where the modes disagreed (lidr-bench, many-1024-top).
+    Scene doubled = floorScene();
+    doubled.lights = scatteredLights(30, 0.5f, 4.0f, 7);
+    doubled.materials.push_back(Material{"copy", glm::vec3(0.1f, 0.9f, 0.2f), "", glm::vec3(0.6f), 8.0f, 1.0f});
+    const int copyMaterial = int(doubled.materials.size()) - 1;
+    Mesh copy = doubled.meshes.front();
+    copy.name = "floor-copy";
+    copy.material = copyMaterial;
+    doubled.meshes.push_back(copy);
+    Scene single = doubled;
+    single.meshes.pop_back();
+    single.meshes.front().material = copyMaterial;
+    const ShadingParameters shading{doubled.ambient, doubled.backgroundColor};
+    const GlInfo& info = testGl();
+    struct Variant {
+        std::string mode;
+        int samples;
+        bool prepass;
+    };
+    std::vector<Variant> variants;
+    for (const std::string& mode : renderModeNames())
+        for (int samples : {0, 4})
+            variants.push_back({mode, samples, true});
+    variants.push_back({"lidr", 0, false});
+    variants.push_back({"tiled", 0, false});
+    for (const Variant& v : variants) {
+        if (v.samples > 0 && (!info.multisampleFbo || info.maxSamples < v.samples)) {
+            WARN("no " << v.samples << "x multisample FBOs in this context; MSAA not tested");
+            continue;
+        }
+        RenderModeOptions o;
+        o.mode = v.mode;
+        o.msaaSamples = v.samples;
+        if (v.samples > 0 || !v.prepass) o.lidr.volumeTest = VolumeTest::FrontFace;
+        o.lidr.depthPrepass = v.prepass;
+        o.tiled.preZ = v.prepass;
+        o.tiled.depthBounds = v.prepass;
+        std::unique_ptr<Renderer> once = createRenderer(o, info, single, single.width, single.height);
+        std::unique_ptr<Renderer> twice = createRenderer(o, info, doubled, doubled.width, doubled.height);
+        once->render(single.camera, single.lights, shading);
+        twice->render(doubled.camera, doubled.lights, shading);
+        const ImageError e = compareImages(twice->targets().readColor(), once->targets().readColor());
+        INFO(v.mode << ", MSAA " << v.samples << ", pre-pass " << v.prepass << ": max " << e.maxAbsError
+                    << ", differing " << e.differingPixels);
+        REQUIRE(e.differingPixels == 0);
+    }
 }
