@@ -160,6 +160,9 @@ double expectedCost(const Run& r, const Scene& scene) {
 // ---- measuring -------------------------------------------------------------------------------------------
 struct Settings {
     int warmup = 1, frames = 5;
+    // Warm-up also lasts at least this long: a GPU idle during the previous configuration's CPU-side
+    // evaluation clocks down, and frame-count warm-up alone measured the next frames at idle clocks.
+    double warmupMs = 300.0;
     double maxSeconds = 8.0;
     int interruptAfter = -1;  // testing aid: raise SIGINT after this many rows
 };
@@ -175,10 +178,15 @@ struct Measured {
     int warmupFrames = 0;
 };
 
+constexpr int kMaxWarmupFrames = 1000;
+
 Measured measure(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights, const Settings& s) {
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     Measured m;
-    for (int i = 0; i < s.warmup && !g_stop; ++i) {
+    const double warmupStart = nowMilliseconds();
+    for (int i = 0; !g_stop && i < kMaxWarmupFrames &&
+                    (i < s.warmup || (s.warmupMs > 0.0 && nowMilliseconds() - warmupStart < s.warmupMs));
+         ++i) {
         const double t0 = nowMilliseconds();
         const FrameStats& stats = renderer.render(scene.camera, lights, shading);
         glFinish();
@@ -302,7 +310,10 @@ int main(int argc, char** argv) {
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();
     app.add_option("--resolution", resolutions, "WIDTHxHEIGHT, or 'scene' for the scene's own")->capture_default_str();
-    app.add_option("--warmup", settings.warmup, "Warm-up frames per configuration")->capture_default_str()->check(CLI::Range(0, 100));
+    app.add_option("--warmup", settings.warmup, "Warm-up frames per configuration (at least)")->capture_default_str()->check(CLI::Range(0, 100));
+    app.add_option("--warmup-ms", settings.warmupMs,
+                   "Warm-up lasts at least this long per configuration, so that a GPU's clocks rise from idle (0: frames only)")
+        ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
     app.add_option("--frames", settings.frames, "Measured frames per configuration (median, min, max reported)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
     app.add_option("--max-seconds", settings.maxSeconds,
@@ -345,6 +356,7 @@ int main(int argc, char** argv) {
         if (quick) {
             groups = quickPreset();
             settings.warmup = app.count("--warmup") ? settings.warmup : 1;
+            settings.warmupMs = app.count("--warmup-ms") ? settings.warmupMs : 0.0;
             settings.frames = app.count("--frames") ? settings.frames : 1;
         } else if (full) {
             groups = fullPreset();
@@ -418,10 +430,12 @@ int main(int argc, char** argv) {
         }
         meta["commit"] = commit;
         meta["command_line"] = commandLine;
-        meta["settings"] = {{"warmup_frames", settings.warmup}, {"frames", settings.frames},
+        meta["settings"] = {{"warmup_frames", settings.warmup}, {"warmup_ms", settings.warmupMs}, {"frames", settings.frames},
                             {"max_seconds_per_config", settings.maxSeconds}, {"seed", seed},
                             {"preset", quick ? "quick" : full ? "full" : "none"}};
-        meta["frames_summary"] = std::to_string(settings.warmup) + " warm-up + up to " + std::to_string(settings.frames) +
+        meta["frames_summary"] = "warm-up of at least " + std::to_string(settings.warmup) + " frame(s) and " +
+                                 std::to_string(int(settings.warmupMs)) + " ms (the rows give the count), then up to " +
+                                 std::to_string(settings.frames) +
                                  " measured frames per configuration, measuring stops after " +
                                  std::to_string(int(settings.maxSeconds)) + " s (at least 1 frame); a warm-up "
                                  "frame longer than that is the one measured frame";

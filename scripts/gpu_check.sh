@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# lidr's checks on a machine with a real GPU (headless EGL; no X server): the whole test suite on the GPU's
+# driver, the [context] tests through the EGL device backend, the headless demo, and the full lidr-bench sweep
+# (GPU timer queries). Speed is only measured by the bench; the tests assert images, indices and counts.
+#   bash scripts/gpu_check.sh [OUT]          (default: gpu-check; extra lidr-bench arguments in BENCH_ARGS)
+# BIN: a folder holding lidr-tests, lidr-demo and lidr-bench (default: this checkout's build/). The tests read
+# media/ and doc/ under the source folder they were built from (LIDR_SOURCE_DIR): run them from that path.
+# Writes OUT/tests.log, OUT/tests-egl-device.log, OUT/demo/ (images, summary), OUT/bench/ (results.csv,
+# passes.csv, results.json, summary.md) and OUT/environment.txt; exits non-zero if anything failed.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-gpu-check}"
+if [ -n "${BIN:-}" ]; then
+  tests="$BIN/lidr-tests" demo="$BIN/lidr-demo" bench="$BIN/lidr-bench"
+else
+  tests=build/tests/lidr-tests demo=build/demo/lidr-demo bench=build/bench/lidr-bench
+fi
+for b in "$tests" "$demo" "$bench"; do
+  [ -x "$b" ] || { echo "gpu_check.sh: $b not found (build first, or set BIN)" >&2; exit 2; }
+done
+mkdir -p "$out"
+status=0
+{
+  date -u
+  uname -a
+  command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv
+  git rev-parse HEAD 2>/dev/null && git status --short 2>/dev/null | head -20
+} >"$out/environment.txt" 2>&1
+
+echo "gpu_check.sh: test suite (LIDR_CONTEXT=${LIDR_CONTEXT:-auto})"
+"$tests" --durations yes >"$out/tests.log" 2>&1 || status=1
+grep -E "GL context:" -A2 "$out/tests.log" | head -3
+tail -2 "$out/tests.log"
+
+echo "gpu_check.sh: [context] tests through the EGL device backend"
+LIDR_CONTEXT=egl-device "$tests" "[context]" >"$out/tests-egl-device.log" 2>&1 || status=1
+tail -2 "$out/tests-egl-device.log"
+
+echo "gpu_check.sh: headless demo"
+"$demo" --headless --out "$out/demo" >"$out/demo.log" 2>&1 || status=1
+mv "$out/demo.log" "$out/demo/stdout.txt" 2>/dev/null
+tail -3 "$out/demo/stdout.txt" 2>/dev/null
+
+echo "gpu_check.sh: full bench sweep"
+# shellcheck disable=SC2086
+"$bench" --full --no-progress --out "$out/bench" ${BENCH_ARGS:-} || status=1
+exit $status
