@@ -425,6 +425,9 @@ int main(int argc, char** argv) {
         if (!commit.empty()) {
             if (!commandOutput("git -C " + shellWord(LIDR_SOURCE_DIR) + " status --porcelain --untracked-files=no 2>/dev/null").empty())
                 commit += " (with uncommitted changes)";
+            // The binary may have been built from another commit than the tree holds now (or was copied).
+            if (!std::string(LIDR_CONFIGURE_COMMIT).empty() && commit.compare(0, 40, LIDR_CONFIGURE_COMMIT) != 0)
+                commit += "; this lidr-bench was configured at " + std::string(LIDR_CONFIGURE_COMMIT);
         } else {
             commit = std::string(LIDR_CONFIGURE_COMMIT).empty() ? "unknown" : std::string(LIDR_CONFIGURE_COMMIT) + " (at configure time)";
         }

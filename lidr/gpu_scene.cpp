@@ -137,13 +137,21 @@ void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3
 
 int GpuScene::drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center,
                                  float radius, bool setMaterials) const {
+    return drawSelected(program, filter, [&](const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
+        const glm::vec3 nearest = glm::clamp(center, boundsMin, boundsMax);
+        return glm::dot(nearest - center, nearest - center) <= radius * radius;
+    }, setMaterials);
+}
+
+int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
+                           const std::function<bool(const glm::vec3&, const glm::vec3&)>& select,
+                           bool setMaterials) const {
     int drawn = 0;
     for (const Batch& b : batches_) {
         const bool transparent = materials_[b.material].opacity < 1.0f;
         if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
             continue;
-        const glm::vec3 nearest = glm::clamp(center, b.boundsMin, b.boundsMax);
-        if (glm::dot(nearest - center, nearest - center) > radius * radius) continue;
+        if (!select(b.boundsMin, b.boundsMax)) continue;
         drawBatch(program, b, setMaterials);
         ++drawn;
     }

@@ -1,5 +1,6 @@
 #pragma once
 // The scene's geometry and material textures in GL buffers, drawn the same way by every pass and mode.
+#include <functional>
 #include <vector>
 
 #include "lidr/gl_resources.h"
@@ -29,6 +30,9 @@ public:
     // Draws the meshes passing `filter` whose bounding box the sphere touches; returns how many it drew.
     int drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center, float radius,
                            bool setMaterials) const;
+    // Draws the meshes passing `filter` for which select(boundsMin, boundsMax) is true; returns how many.
+    int drawSelected(const gl::Program& program, DrawFilter filter,
+                     const std::function<bool(const glm::vec3&, const glm::vec3&)>& select, bool setMaterials) const;
     bool hasTransparent() const;
     size_t triangleCount() const { return triangles_; }
 

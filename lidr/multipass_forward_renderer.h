@@ -22,6 +22,9 @@ namespace lidr {
 struct MultipassOptions {
     bool scissor = true;                // scissor each light pass to the light's screen rectangle
     bool cullMeshes = true;             // draw only the meshes whose bounds the light's sphere touches
+    // Under MSAA, cull by screen rectangles instead (exact; see render()). false: by mesh bounds as without
+    // MSAA, faster, but a sample shaded off its triangle (at the pixel centre) can miss a light.
+    bool exactMsaaCulling = true;
     bool forceFixedLightTable = false;
     int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES: shading multisampled, then resolved
     bool timing = true;

@@ -84,6 +84,29 @@ bool spherePixelRect(const CameraMatrices& m, const glm::vec3& center, float rad
     return rect.x <= rect.z && rect.y <= rect.w;
 }
 
+bool boxPixelRect(const CameraMatrices& m, const glm::vec3& boxMin, const glm::vec3& boxMax, glm::ivec4& rect,
+                  float margin) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? boxMax.x : boxMin.x, (c & 2) ? boxMax.y : boxMin.y, (c & 4) ? boxMax.z : boxMin.z);
+        const glm::dvec4 clip = glm::dvec4(m.viewProjection * glm::vec4(corner, 1.0f));
+        if (!(clip.w > double(m.nearPlane) * 0.999)) {  // at or before the near plane (or not finite): all
+            rect = glm::ivec4(0, 0, m.width - 1, m.height - 1);
+            return true;
+        }
+        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    const double x0 = (lo.x * 0.5 + 0.5) * m.width - margin - 0.5, x1 = (hi.x * 0.5 + 0.5) * m.width + margin + 0.5;
+    const double y0 = (lo.y * 0.5 + 0.5) * m.height - margin - 0.5, y1 = (hi.y * 0.5 + 0.5) * m.height + margin + 0.5;
+    rect.x = int(std::max(0.0, std::floor(x0)));
+    rect.y = int(std::max(0.0, std::floor(y0)));
+    rect.z = int(std::min(double(m.width - 1), std::ceil(x1)));
+    rect.w = int(std::min(double(m.height - 1), std::ceil(y1)));
+    return rect.x <= rect.z && rect.y <= rect.w;
+}
+
 void checkLightSpheres(const std::vector<PointLight>& lights, const char* who) {
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];

@@ -31,6 +31,12 @@ SphereBounds projectSphereBounds(const CameraMatrices& camera, const glm::vec3& 
 bool spherePixelRect(const CameraMatrices& camera, const glm::vec3& center, float radius, glm::ivec4& rect,
                      float margin = 1.0f);
 
+// Pixels (as spherePixelRect) that any fragment of geometry inside the box [boxMin, boxMax] can reach: the
+// rectangle of its projected corners widened by `margin`, the whole viewport when the box reaches the near
+// plane. Conservative for fragments covering any sample of a pixel, not only its centre. False: none.
+bool boxPixelRect(const CameraMatrices& camera, const glm::vec3& boxMin, const glm::vec3& boxMax, glm::ivec4& rect,
+                  float margin = 1.0f);
+
 // Throws lidr::Error naming the first light (1-based index) with a non-finite position or colour, or a radius
 // that is not a finite number > 0; `who` starts the message ("tiled", "forward-multipass").
 void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);

@@ -2,7 +2,8 @@
 # lidr's checks on a machine with a real GPU (headless EGL; no X server): the whole test suite on the GPU's
 # driver, the [context] tests through the EGL device backend, the headless demo, and the full lidr-bench sweep
 # (GPU timer queries). Speed is only measured by the bench; the tests assert images, indices and counts.
-#   bash scripts/gpu_check.sh [OUT]          (default: gpu-check; extra lidr-bench arguments in BENCH_ARGS)
+#   bash scripts/gpu_check.sh [OUT [PART]]   OUT default gpu-check; PART: all (default), tests (tests and demo),
+#                                            bench; extra lidr-bench arguments in BENCH_ARGS
 # BIN: a folder holding lidr-tests, lidr-demo and lidr-bench (default: this checkout's build/). The tests read
 # media/ and doc/ under the source folder they were built from (LIDR_SOURCE_DIR): run them from that path.
 # Writes OUT/tests.log, OUT/tests-egl-device.log, OUT/demo/ (images, summary), OUT/bench/ (results.csv,
@@ -10,6 +11,8 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-gpu-check}"
+part="${2:-all}"
+case "$part" in all|tests|bench) ;; *) echo "gpu_check.sh: PART is all, tests or bench, not '$part'" >&2; exit 2;; esac
 if [ -n "${BIN:-}" ]; then
   tests="$BIN/lidr-tests" demo="$BIN/lidr-demo" bench="$BIN/lidr-bench"
 else
@@ -27,21 +30,25 @@ status=0
   git rev-parse HEAD 2>/dev/null && git status --short 2>/dev/null | head -20
 } >"$out/environment.txt" 2>&1
 
-echo "gpu_check.sh: test suite (LIDR_CONTEXT=${LIDR_CONTEXT:-auto})"
-"$tests" --durations yes >"$out/tests.log" 2>&1 || status=1
-grep -E "GL context:" -A2 "$out/tests.log" | head -3
-tail -2 "$out/tests.log"
+if [ "$part" != bench ]; then
+  echo "gpu_check.sh: test suite (LIDR_CONTEXT=${LIDR_CONTEXT:-auto})"
+  "$tests" --durations yes >"$out/tests.log" 2>&1 || status=1
+  grep -E "GL context:" -A2 "$out/tests.log" | head -3
+  tail -2 "$out/tests.log"
 
-echo "gpu_check.sh: [context] tests through the EGL device backend"
-LIDR_CONTEXT=egl-device "$tests" "[context]" >"$out/tests-egl-device.log" 2>&1 || status=1
-tail -2 "$out/tests-egl-device.log"
+  echo "gpu_check.sh: [context] tests through the EGL device backend"
+  LIDR_CONTEXT=egl-device "$tests" "[context]" >"$out/tests-egl-device.log" 2>&1 || status=1
+  tail -2 "$out/tests-egl-device.log"
 
-echo "gpu_check.sh: headless demo"
-"$demo" --headless --out "$out/demo" >"$out/demo.log" 2>&1 || status=1
-mv "$out/demo.log" "$out/demo/stdout.txt" 2>/dev/null
-tail -3 "$out/demo/stdout.txt" 2>/dev/null
+  echo "gpu_check.sh: headless demo"
+  "$demo" --headless --out "$out/demo" >"$out/demo.log" 2>&1 || status=1
+  mv "$out/demo.log" "$out/demo/stdout.txt" 2>/dev/null
+  tail -3 "$out/demo/stdout.txt" 2>/dev/null
+fi
 
-echo "gpu_check.sh: full bench sweep"
-# shellcheck disable=SC2086
-"$bench" --full --no-progress --out "$out/bench" ${BENCH_ARGS:-} || status=1
+if [ "$part" != tests ]; then
+  echo "gpu_check.sh: full bench sweep"
+  # shellcheck disable=SC2086
+  "$bench" --full --no-progress --out "$out/bench" ${BENCH_ARGS:-} || status=1
+fi
 exit $status

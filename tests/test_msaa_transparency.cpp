@@ -1,5 +1,6 @@
 // Front-face light volumes, MSAA and transparency against the brute-force reference rendered the same way
-// (same MSAA, same blending). Verified on Mesa llvmpipe, softpipe and the GL 2.1 override.
+// (same MSAA, same blending). Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
+// 580.159.04 (H100, EGL).
 #include <algorithm>
 
 #include <catch2/catch.hpp>
