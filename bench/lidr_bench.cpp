@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -423,7 +424,15 @@ int main(int argc, char** argv) {
         meta["gl_summary"] = info.renderer + " (" + info.version + ")";
         std::string commit = commandOutput("git -C " + shellWord(LIDR_SOURCE_DIR) + " rev-parse HEAD 2>/dev/null");
         if (!commit.empty()) {
-            if (!commandOutput("git -C " + shellWord(LIDR_SOURCE_DIR) + " status --porcelain --untracked-files=no 2>/dev/null").empty())
+            // Changes inside the output folder (a tracked doc/bench being rewritten) are this run's own.
+            std::string outside;
+            std::error_code ec;
+            const std::filesystem::path rel =
+                std::filesystem::relative(std::filesystem::absolute(outDir, ec), std::filesystem::path(LIDR_SOURCE_DIR), ec);
+            if (!ec && !rel.empty() && rel.native().rfind("..", 0) != 0 && rel != ".")
+                outside = " -- . " + shellWord(":(exclude)" + rel.generic_string());
+            if (!commandOutput("git -C " + shellWord(LIDR_SOURCE_DIR) + " status --porcelain --untracked-files=no" +
+                               outside + " 2>/dev/null").empty())
                 commit += " (with uncommitted changes)";
             // The binary may have been built from another commit than the tree holds now (or was copied).
             if (!std::string(LIDR_CONFIGURE_COMMIT).empty() && commit.compare(0, 40, LIDR_CONFIGURE_COMMIT) != 0)
