@@ -1,8 +1,8 @@
 set terminal pngcairo size 760,460 font 'sans,8' noenhanced
-set terminal pngcairo size 900,520 font 'sans,8' noenhanced
 set grid lc rgb '#dddddd'
 set key outside right top
 set output "overlap_error.png"
+set terminal pngcairo size 900,520 font 'sans,8' noenhanced
 set title "error against overlap k (controlled-overlap scenes)"
 set logscale x 2
 set yrange [0:*]

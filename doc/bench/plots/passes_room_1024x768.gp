@@ -1,6 +1,6 @@
 set terminal pngcairo size 1400,520 font 'sans,8' noenhanced
 set output "passes_room_1024x768.png"
-set title "per-pass breakdown: room 1024x768\noff scale: forward-brute opaque 2673 ms"
+set title "per-pass breakdown: room 1024x768\noff scale: forward-brute opaque 1292 ms"
 set style data histograms
 set style histogram rowstacked
 set style fill solid 0.85 border -1
@@ -12,53 +12,53 @@ set grid ytics lc rgb '#dddddd'
 set yrange [0:*]
 set bmargin 12
 $P << EOD
-"tiled min/max opaque" 0.02722 9.15643 1.59569 0.231964 46.9914 0 0 0 0
-"tiled no-min/max opaque" 0.027892 9.7123 0 0.277892 74.6003 0 0 0 0
-"forward-multipass opaque" 0.030405 10.3753 0 0 0 13.7229 39.9022 0 0
-"lidr bitshift b1 8-bit backface opaque" 0.043345 19.9117 0 0 0 0 0 46.1797 48.0382
-"lidr bitshift b1 8-bit exact opaque" 0.043955 15.9189 0 0 0 0 0 92.017 47.8676
-"lidr bitshift b1 8-bit frontface opaque" 0.043885 12.4571 0 0 0 0 0 34.8103 42.0746
-"lidr bitshift b2 8-bit backface opaque" 0.041933 13.5486 0 0 0 0 0 44.2168 49.1015
-"lidr bitshift b2 8-bit exact opaque" 0.043635 13.2116 0 0 0 0 0 75.9581 51.2668
-"lidr bitshift b2 8-bit frontface opaque" 0.041882 12.5887 0 0 0 0 0 36.5863 50.008
-"lidr bitshift b4 8-bit backface opaque" 0.043665 13.1999 0 0 0 0 0 50.5776 76.0808
-"lidr bitshift b4 8-bit exact opaque" 0.042894 12.7257 0 0 0 0 0 70.3863 72.5394
-"lidr bitshift b4 8-bit frontface opaque" 0.045047 12.5344 0 0 0 0 0 37.8354 69.9111
-"lidr bitshift b8 8-bit backface opaque" 0.045618 12.4863 0 0 0 0 0 46.0503 70.9436
-"lidr bitshift b8 8-bit exact opaque" 0.041392 12.565 0 0 0 0 0 75.7814 61.667
-"lidr bitshift b8 8-bit frontface opaque" 0.043925 15.929 0 0 0 0 0 56.7865 96.7496
-"lidr bitshift b16 8-bit backface opaque" 0.044265 7.65107 0 0 0 0 0 47.3762 43.9237
-"lidr bitshift b16 8-bit exact opaque" 0.044907 7.90052 0 0 0 0 0 94.6904 38.9539
-"lidr bitshift b16 8-bit frontface opaque" 0.044055 7.63081 0 0 0 0 0 49.1715 53.5224
-"lidr max-stencil b1 8-bit backface opaque" 0.041602 7.62622 0 0 0 0 0 22.7881 22.5541
-"lidr max-stencil b1 8-bit exact opaque" 0.041641 7.61551 0 0 0 0 0 41.4267 23.1032
-"lidr max-stencil b1 8-bit frontface opaque" 0.042202 7.48857 0 0 0 0 0 20.9256 22.8334
-"lidr max-stencil b2 8-bit backface opaque" 0.042003 7.60087 0 0 0 0 0 22.3988 26.3235
-"lidr max-stencil b2 8-bit exact opaque" 0.041782 7.53786 0 0 0 0 0 39.7358 26.656
-"lidr max-stencil b2 8-bit frontface opaque" 0.043885 7.81985 0 0 0 0 0 21.8457 26.6374
-"lidr max-stencil b4 8-bit backface opaque" 0.046549 7.55827 0 0 0 0 0 44.457 35.0347
-"lidr max-stencil b4 8-bit exact opaque" 0.045408 7.66941 0 0 0 0 0 75.132 35.16
-"lidr max-stencil b4 8-bit frontface opaque" 0.044296 7.61605 0 0 0 0 0 41.0492 35.4738
-"lidr max-stencil b8 8-bit backface opaque" 0.043675 7.55429 0 0 0 0 0 82.6271 38.213
-"lidr max-stencil b8 8-bit exact opaque" 0.047941 7.66904 0 0 0 0 0 145.623 32.5522
-"lidr max-stencil b8 8-bit frontface opaque" 0.043354 7.49865 0 0 0 0 0 76.3129 47.4701
-"lidr max-stencil b16 8-bit backface opaque" 0.048171 7.61784 0 0 0 0 0 159.069 43.9024
-"lidr max-stencil b16 8-bit exact opaque" 0.04755 7.52495 0 0 0 0 0 282.935 37.1002
-"lidr max-stencil b16 8-bit frontface opaque" 0.045467 7.62806 0 0 0 0 0 146.479 57.0685
-"lidr cpu-sorted b1 8-bit backface opaque" 0.045637 7.56531 0 0 0 0 0 10.1957 29.5836
-"lidr cpu-sorted b1 8-bit exact opaque" 0.049293 7.9524 0 0 0 0 0 43.351 30.8026
-"lidr cpu-sorted b1 8-bit frontface opaque" 0.048041 7.93413 0 0 0 0 0 11.1429 32.052
-"lidr cpu-sorted b2 8-bit backface opaque" 0.049543 7.61865 0 0 0 0 0 10.5406 35.7106
-"lidr cpu-sorted b2 8-bit exact opaque" 0.048733 7.78198 0 0 0 0 0 42.5872 36.9786
-"lidr cpu-sorted b2 8-bit frontface opaque" 0.045037 7.68041 0 0 0 0 0 9.8065 35.7061
-"lidr cpu-sorted b4 8-bit backface opaque" 0.051326 7.86848 0 0 0 0 0 11.2244 48.4727
-"lidr cpu-sorted b4 8-bit exact opaque" 0.048572 7.72605 0 0 0 0 0 42.0504 48.4408
-"lidr cpu-sorted b4 8-bit frontface opaque" 0.045998 7.74869 0 0 0 0 0 10.3145 47.2428
-"lidr cpu-sorted b8 8-bit backface opaque" 0.04675 7.59131 0 0 0 0 0 12.4088 73.5255
-"lidr cpu-sorted b8 8-bit exact opaque" 0.053599 7.80951 0 0 0 0 0 44.9446 74.1847
-"lidr cpu-sorted b8 8-bit frontface opaque" 0.051356 7.81564 0 0 0 0 0 12.0709 73.7595
-"lidr cpu-sorted b16 8-bit backface opaque" 0.051256 7.57866 0 0 0 0 0 14.7195 133.746
-"lidr cpu-sorted b16 8-bit exact opaque" 0.05416 7.77443 0 0 0 0 0 43.4035 135.526
-"lidr cpu-sorted b16 8-bit frontface opaque" 0.052037 7.75855 0 0 0 0 0 14.8458 134.013
+"tiled min/max opaque" 0.02695 9.25448 1.75225 0.227818 47.5715 0 0 0 0
+"tiled no-min/max opaque" 0.026689 7.69409 0 0.314136 71.1863 0 0 0 0
+"forward-multipass opaque" 0.029053 7.71717 0 0 0 10.6778 36.9283 0 0
+"lidr bitshift b1 8-bit backface opaque" 0.040219 9.49459 0 0 0 0 0 26.3183 24.6724
+"lidr bitshift b1 8-bit exact opaque" 0.041401 9.51654 0 0 0 0 0 47.0076 24.7106
+"lidr bitshift b1 8-bit frontface opaque" 0.042093 9.6502 0 0 0 0 0 24.7747 24.6929
+"lidr bitshift b2 8-bit backface opaque" 0.04059 8.59559 0 0 0 0 0 26.0212 29.6896
+"lidr bitshift b2 8-bit exact opaque" 0.0405 7.68472 0 0 0 0 0 41.4212 26.8811
+"lidr bitshift b2 8-bit frontface opaque" 0.039749 7.56899 0 0 0 0 0 20.9683 26.1507
+"lidr bitshift b4 8-bit backface opaque" 0.041241 7.72619 0 0 0 0 0 22.9078 36.4059
+"lidr bitshift b4 8-bit exact opaque" 0.04093 7.54047 0 0 0 0 0 40.642 36.8548
+"lidr bitshift b4 8-bit frontface opaque" 0.037285 7.56431 0 0 0 0 0 21.9758 36.3661
+"lidr bitshift b8 8-bit backface opaque" 0.039769 7.50639 0 0 0 0 0 26.4261 36.4359
+"lidr bitshift b8 8-bit exact opaque" 0.043164 7.5882 0 0 0 0 0 44.633 31.6956
+"lidr bitshift b8 8-bit frontface opaque" 0.04034 7.68391 0 0 0 0 0 27.7986 45.7612
+"lidr bitshift b16 8-bit backface opaque" 0.038938 7.52893 0 0 0 0 0 49.4417 42.2992
+"lidr bitshift b16 8-bit exact opaque" 0.043074 7.57713 0 0 0 0 0 83.8349 37.3959
+"lidr bitshift b16 8-bit frontface opaque" 0.040991 7.53627 0 0 0 0 0 47.1938 52.8989
+"lidr max-stencil b1 8-bit backface opaque" 0.04025 7.51969 0 0 0 0 0 21.9486 22.1043
+"lidr max-stencil b1 8-bit exact opaque" 0.040039 7.62427 0 0 0 0 0 40.1743 22.7029
+"lidr max-stencil b1 8-bit frontface opaque" 0.039378 7.58147 0 0 0 0 0 20.3052 22.1798
+"lidr max-stencil b2 8-bit backface opaque" 0.040981 7.63887 0 0 0 0 0 22.4539 26.149
+"lidr max-stencil b2 8-bit exact opaque" 0.040761 7.59689 0 0 0 0 0 40.7733 26.6711
+"lidr max-stencil b2 8-bit frontface opaque" 0.042914 7.561 0 0 0 0 0 20.7739 26.0957
+"lidr max-stencil b4 8-bit backface opaque" 0.041962 7.5326 0 0 0 0 0 46.9021 35.0845
+"lidr max-stencil b4 8-bit exact opaque" 0.043544 7.5155 0 0 0 0 0 73.9578 35.239
+"lidr max-stencil b4 8-bit frontface opaque" 0.04039 7.80544 0 0 0 0 0 41.3724 35.0751
+"lidr max-stencil b8 8-bit backface opaque" 0.043054 9.24534 0 0 0 0 0 93.2789 39.6695
+"lidr max-stencil b8 8-bit exact opaque" 0.044596 9.32238 0 0 0 0 0 164.595 34.5844
+"lidr max-stencil b8 8-bit frontface opaque" 0.042363 8.00741 0 0 0 0 0 76.2589 47.5108
+"lidr max-stencil b16 8-bit backface opaque" 0.042494 7.53612 0 0 0 0 0 158.869 43.1881
+"lidr max-stencil b16 8-bit exact opaque" 0.045577 9.31189 0 0 0 0 0 284.547 38.283
+"lidr max-stencil b16 8-bit frontface opaque" 0.043704 9.34312 0 0 0 0 0 169.935 57.0681
+"lidr cpu-sorted b1 8-bit backface opaque" 0.041982 9.38795 0 0 0 0 0 13.8827 32.263
+"lidr cpu-sorted b1 8-bit exact opaque" 0.043905 9.50393 0 0 0 0 0 47.4455 32.4035
+"lidr cpu-sorted b1 8-bit frontface opaque" 0.044947 9.39778 0 0 0 0 0 12.9167 32.6511
+"lidr cpu-sorted b2 8-bit backface opaque" 0.046639 7.64341 0 0 0 0 0 10.3919 35.5767
+"lidr cpu-sorted b2 8-bit exact opaque" 0.045638 7.66083 0 0 0 0 0 40.3363 36.0983
+"lidr cpu-sorted b2 8-bit frontface opaque" 0.045767 7.67949 0 0 0 0 0 9.93892 35.7332
+"lidr cpu-sorted b4 8-bit backface opaque" 0.044887 7.83231 0 0 0 0 0 10.9033 47.4121
+"lidr cpu-sorted b4 8-bit exact opaque" 0.04717 7.68467 0 0 0 0 0 41.493 47.8028
+"lidr cpu-sorted b4 8-bit frontface opaque" 0.046158 7.7641 0 0 0 0 0 10.3414 47.2547
+"lidr cpu-sorted b8 8-bit backface opaque" 0.048081 7.76407 0 0 0 0 0 12.7374 73.7654
+"lidr cpu-sorted b8 8-bit exact opaque" 0.047811 7.71356 0 0 0 0 0 41.9412 74.2328
+"lidr cpu-sorted b8 8-bit frontface opaque" 0.046799 7.63744 0 0 0 0 0 11.9999 73.5744
+"lidr cpu-sorted b16 8-bit backface opaque" 0.049013 7.6986 0 0 0 0 0 14.6674 133.7
+"lidr cpu-sorted b16 8-bit exact opaque" 0.047931 7.60741 0 0 0 0 0 43.3682 133.538
+"lidr cpu-sorted b16 8-bit frontface opaque" 0.048872 7.76794 0 0 0 0 0 14.5327 134.231
 EOD
 plot $P using 2:xtic(1) title "light-table", $P using 3 title "depth-prepass", $P using 4 title "tile-depth-reduce", $P using 5 title "light-grid", $P using 6 title "tiled-forward", $P using 7 title "ambient", $P using 8 title "light-passes", $P using 9 title "light-volumes", $P using 10 title "forward"

@@ -8,35 +8,35 @@ set xlabel 'frame time, ms (median, log scale)'
 set ylabel 'RMSE against forward-brute (8-bit steps)'
 set yrange [0:*]
 $M0 << EOD
-3166.98 0
+1617.79 0
 EOD
 $M1 << EOD
-39.6412 0.335316
+27.6122 0.316111
 EOD
 $M2 << EOD
-48.5143 7.22086
-52.9513 1.54168
-63.6431 0
-64.1974 0
-102.724 0
-48.4551 7.22086
-81.7377 1.54168
-142.22 0
-253.542 0
-484.947 0
-37.6968 17.6398
-42.4207 12.1407
-53.6389 10.9258
-74.1122 9.10067
-114.195 3.55288
+31.8668 7.22086
+39.7429 1.54168
+40.6274 0
+39.3738 0
+63.5182 0
+37.821 7.22086
+51.6313 1.54168
+84.6569 0
+139.386 0
+259.984 0
+23.36 17.6398
+31.0512 12.1407
+30.7679 10.9258
+44.3928 9.10067
+63.7394 3.55288
 EOD
 $M3 << EOD
-50.6169 0
-60.1732 0
+29.9186 0
+34.1521 0
 EOD
 $FRONT << EOD
-37.6968 17.6398 "lidr cpu-sorted b1 16-bit backface opaque"
-39.6412 0.335316 "forward-multipass opaque"
-50.6169 0 "tiled min/max opaque"
+23.36 17.6398 "lidr cpu-sorted b1 16-bit backface opaque"
+27.6122 0.316111 "forward-multipass opaque"
+29.9186 0 "tiled min/max opaque"
 EOD
 plot $M0 using 1:2 with points pt 7 ps 1.1 title "forward-brute", $M1 using 1:2 with points pt 7 ps 1.1 title "forward-multipass", $M2 using 1:2 with points pt 7 ps 1.1 title "lidr", $M3 using 1:2 with points pt 7 ps 1.1 title "tiled", $FRONT using 1:2 with steps lw 2 lc rgb '#cc0000' title 'Pareto front', $FRONT using 1:2:3 with labels left offset 0.6,0.5 font ',7' notitle
