@@ -5,9 +5,9 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
-#include <filesystem>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -184,9 +184,9 @@ constexpr int kMaxWarmupFrames = 1000;
 Measured measure(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights, const Settings& s) {
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     Measured m;
-    const double warmupStart = nowMilliseconds();
+    double warmupStart = nowMilliseconds();  // from the end of the first frame (shader compiles, uploads)
     for (int i = 0; !g_stop && i < kMaxWarmupFrames &&
-                    (i < s.warmup || (s.warmupMs > 0.0 && nowMilliseconds() - warmupStart < s.warmupMs));
+                    (i < s.warmup || (s.warmupMs > 0.0 && (i == 0 || nowMilliseconds() - warmupStart < s.warmupMs)));
          ++i) {
         const double t0 = nowMilliseconds();
         const FrameStats& stats = renderer.render(scene.camera, lights, shading);
@@ -201,6 +201,7 @@ Measured measure(Renderer& renderer, const Scene& scene, const std::vector<Point
             return m;
         }
         ++m.warmupFrames;
+        if (i == 0) warmupStart = nowMilliseconds();
     }
     const double start = nowMilliseconds();
     for (int i = 0; i < s.frames; ++i) {
@@ -313,7 +314,8 @@ int main(int argc, char** argv) {
     app.add_option("--resolution", resolutions, "WIDTHxHEIGHT, or 'scene' for the scene's own")->capture_default_str();
     app.add_option("--warmup", settings.warmup, "Warm-up frames per configuration (at least)")->capture_default_str()->check(CLI::Range(0, 100));
     app.add_option("--warmup-ms", settings.warmupMs,
-                   "Warm-up lasts at least this long per configuration, so that a GPU's clocks rise from idle (0: frames only)")
+                   "Warm-up lasts at least this long per configuration after its first frame, so that a GPU's clocks "
+                   "rise from idle (0: frames only; at most 1000 warm-up frames)")
         ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
     app.add_option("--frames", settings.frames, "Measured frames per configuration (median, min, max reported)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
@@ -429,13 +431,14 @@ int main(int argc, char** argv) {
             std::error_code ec;
             const std::filesystem::path rel =
                 std::filesystem::relative(std::filesystem::absolute(outDir, ec), std::filesystem::path(LIDR_SOURCE_DIR), ec);
-            if (!ec && !rel.empty() && rel.native().rfind("..", 0) != 0 && rel != ".")
-                outside = " -- . " + shellWord(":(exclude)" + rel.generic_string());
+            if (!ec && !rel.empty() && *rel.begin() != ".." && rel != ".")
+                outside = " -- . " + shellWord(":(exclude,literal)" + rel.generic_string());
             if (!commandOutput("git -C " + shellWord(LIDR_SOURCE_DIR) + " status --porcelain --untracked-files=no" +
                                outside + " 2>/dev/null").empty())
                 commit += " (with uncommitted changes)";
             // The binary may have been built from another commit than the tree holds now (or was copied).
-            if (!std::string(LIDR_CONFIGURE_COMMIT).empty() && commit.compare(0, 40, LIDR_CONFIGURE_COMMIT) != 0)
+            const std::string configured = LIDR_CONFIGURE_COMMIT;
+            if (!configured.empty() && commit.compare(0, configured.size(), configured) != 0)
                 commit += "; this lidr-bench was configured at " + std::string(LIDR_CONFIGURE_COMMIT);
         } else {
             commit = std::string(LIDR_CONFIGURE_COMMIT).empty() ? "unknown" : std::string(LIDR_CONFIGURE_COMMIT) + " (at configure time)";

@@ -83,9 +83,18 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
                       bool afterPrepass) const {
     targets.bindColor();
-    applyRenderState(RenderState{});
+    RenderState clear;
+    clear.depthWrite = !afterPrepass;  // masks open for the depth clear
+    applyRenderState(clear);
     glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    if (afterPrepass) {
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else {
+        // No pre-pass depth here: the MSAA target never had one, the single-sample one holds the volume
+        // pass's cleared depth. Either way this pass writes its own.
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
     RenderState s;
     s.depthTest = true;
     // Either way the last fragment drawn at the nearest depth is the one left (lidr/gpu_scene.h: DrawOrder).

@@ -42,7 +42,7 @@ GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.mater
         }
         const std::vector<uint32_t>& indices = order == DrawOrder::Reversed ? reversed : mesh.indices;
         b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint32_t));
-        b.indexCount = static_cast<GLsizei>(mesh.indices.size());
+        b.indexCount = static_cast<GLsizei>(indices.size());
         b.material = mesh.material;
         b.centroid = sum / float(std::max<size_t>(vertices.size(), 1));
         b.boundsMin = b.boundsMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
@@ -137,21 +137,22 @@ void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3
 
 int GpuScene::drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center,
                                  float radius, bool setMaterials) const {
-    return drawSelected(program, filter, [&](const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
+    return drawSelected(program, filter, [&](size_t, const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
         const glm::vec3 nearest = glm::clamp(center, boundsMin, boundsMax);
         return glm::dot(nearest - center, nearest - center) <= radius * radius;
     }, setMaterials);
 }
 
 int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
-                           const std::function<bool(const glm::vec3&, const glm::vec3&)>& select,
+                           const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
                            bool setMaterials) const {
     int drawn = 0;
-    for (const Batch& b : batches_) {
+    for (size_t i = 0; i < batches_.size(); ++i) {
+        const Batch& b = batches_[i];
         const bool transparent = materials_[b.material].opacity < 1.0f;
         if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
             continue;
-        if (!select(b.boundsMin, b.boundsMax)) continue;
+        if (!select(i, b.boundsMin, b.boundsMax)) continue;
         drawBatch(program, b, setMaterials);
         ++drawn;
     }

@@ -30,9 +30,15 @@ public:
     // Draws the meshes passing `filter` whose bounding box the sphere touches; returns how many it drew.
     int drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center, float radius,
                            bool setMaterials) const;
-    // Draws the meshes passing `filter` for which select(boundsMin, boundsMax) is true; returns how many.
+    // Draws the meshes passing `filter` for which select(batch, boundsMin, boundsMax) is true (batch: 0 ..
+    // batchCount() - 1, in draw order); returns how many.
     int drawSelected(const gl::Program& program, DrawFilter filter,
-                     const std::function<bool(const glm::vec3&, const glm::vec3&)>& select, bool setMaterials) const;
+                     const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
+                     bool setMaterials) const;
+    size_t batchCount() const { return batches_.size(); }
+    void batchBounds(size_t batch, glm::vec3& boundsMin, glm::vec3& boundsMax) const {
+        boundsMin = batches_.at(batch).boundsMin, boundsMax = batches_.at(batch).boundsMax;
+    }
     bool hasTransparent() const;
     size_t triangleCount() const { return triangles_; }
 

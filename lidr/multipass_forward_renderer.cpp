@@ -99,6 +99,15 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     // the frame on the room at 320x240 with 4x MSAA on llvmpipe (doc/tiled.md); exactMsaaCulling = false
     // keeps the mesh bounds test.
     const bool screenCull = targets_.samples() > 0 && options_.exactMsaaCulling;
+    std::vector<glm::ivec4> meshRects;  // per batch, this frame: (0, 0, -1, -1) when off screen
+    if (screenCull) {
+        meshRects.assign(scene_.batchCount(), glm::ivec4(0, 0, -1, -1));
+        for (size_t i = 0; i < meshRects.size(); ++i) {
+            glm::vec3 bmin, bmax;
+            scene_.batchBounds(i, bmin, bmax);
+            if (!boxPixelRect(cam, bmin, bmax, meshRects[i])) meshRects[i] = glm::ivec4(0, 0, -1, -1);
+        }
+    }
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
         const float radius = l.radius + reach;
@@ -120,10 +129,9 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         } else if (!screenCull) {
             drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, radius, true);
         } else {
-            drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](const glm::vec3& bmin, const glm::vec3& bmax) {
-                glm::ivec4 box;
-                return boxPixelRect(cam, bmin, bmax, box) && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w &&
-                       rect.y <= box.w;
+            drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3&, const glm::vec3&) {
+                const glm::ivec4& box = meshRects[i];
+                return box.x <= box.z && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w && rect.y <= box.w;
             }, true);
         }
         if (drawn == 0) continue;

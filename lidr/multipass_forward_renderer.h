@@ -3,6 +3,9 @@
 // (Trebilco 2007). After a depth pre-pass, an ambient pass, then per light one additive pass (blend ONE, ONE,
 // depth EQUAL) over the meshes that light's sphere touches, scissored to the light's screen rectangle
 // (lidr/sphere_bounds.h). Same scene, camera, light table and shading function as every other mode.
+// Each pass shades one fragment per pixel (sample): stencil stamps let the first through, and the scene is
+// drawn in reverse so that it is the fragment single-pass modes keep (doc/tiled.md, "One fragment per pixel
+// and pass"). Under MSAA meshes are culled by screen rectangles (exactMsaaCulling).
 //
 // Accuracy: every pass writes the 8-bit target, so each term is rounded on its own; at a pixel lit by n
 // lights the image can differ from the single-pass reference by up to floor(n / 2) + 1 steps (doc/tiled.md).

@@ -100,6 +100,7 @@ bool boxPixelRect(const CameraMatrices& m, const glm::vec3& boxMin, const glm::v
     }
     const double x0 = (lo.x * 0.5 + 0.5) * m.width - margin - 0.5, x1 = (hi.x * 0.5 + 0.5) * m.width + margin + 0.5;
     const double y0 = (lo.y * 0.5 + 0.5) * m.height - margin - 0.5, y1 = (hi.y * 0.5 + 0.5) * m.height + margin + 0.5;
+    if (x1 < 0.0 || y1 < 0.0 || x0 > m.width - 1.0 || y0 > m.height - 1.0) return false;  // wholly off screen
     rect.x = int(std::max(0.0, std::floor(x0)));
     rect.y = int(std::max(0.0, std::floor(y0)));
     rect.z = int(std::min(double(m.width - 1), std::ceil(x1)));

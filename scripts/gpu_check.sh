@@ -9,9 +9,10 @@
 # Writes OUT/tests.log, OUT/tests-egl-device.log, OUT/demo/ (images, summary), OUT/bench/ (results.csv,
 # passes.csv, results.json, summary.md) and OUT/environment.txt; exits non-zero if anything failed.
 set -uo pipefail
-cd "$(dirname "$0")/.."
-out="${1:-gpu-check}"
+out="$(realpath -m "${1:-gpu-check}")"  # relative to where the script was called from
 part="${2:-all}"
+[ -n "${BIN:-}" ] && BIN="$(realpath -m "$BIN")"
+cd "$(dirname "$0")/.."
 case "$part" in all|tests|bench) ;; *) echo "gpu_check.sh: PART is all, tests or bench, not '$part'" >&2; exit 2;; esac
 if [ -n "${BIN:-}" ]; then
   tests="$BIN/lidr-tests" demo="$BIN/lidr-demo" bench="$BIN/lidr-bench"
@@ -41,14 +42,14 @@ if [ "$part" != bench ]; then
   tail -2 "$out/tests-egl-device.log"
 
   echo "gpu_check.sh: headless demo"
-  "$demo" --headless --out "$out/demo" >"$out/demo.log" 2>&1 || status=1
-  mv "$out/demo.log" "$out/demo/stdout.txt" 2>/dev/null
-  tail -3 "$out/demo/stdout.txt" 2>/dev/null
+  mkdir -p "$out/demo"
+  "$demo" --headless --out "$out/demo" >"$out/demo/stdout.txt" 2>&1 || status=1
+  tail -3 "$out/demo/stdout.txt"
 fi
 
 if [ "$part" != tests ]; then
   echo "gpu_check.sh: full bench sweep"
-  # shellcheck disable=SC2086
-  "$bench" --full --no-progress --out "$out/bench" ${BENCH_ARGS:-} || status=1
+  read -r -a extra <<<"${BENCH_ARGS:-}"  # words, no globbing
+  "$bench" --full --no-progress --out "$out/bench" "${extra[@]}" || status=1
 fi
 exit $status

@@ -251,6 +251,7 @@ TEST_CASE("every mode shades the last fragment drawn at the nearest depth, once"
         for (int samples : {0, 4})
             variants.push_back({mode, samples, true});
     variants.push_back({"lidr", 0, false});
+    variants.push_back({"lidr", 4, false});
     variants.push_back({"tiled", 0, false});
     for (const Variant& v : variants) {
         if (v.samples > 0 && (!info.multisampleFbo || info.maxSamples < v.samples)) {
@@ -268,10 +269,16 @@ TEST_CASE("every mode shades the last fragment drawn at the nearest depth, once"
         std::unique_ptr<Renderer> twice = createRenderer(o, info, doubled, doubled.width, doubled.height);
         once->render(single.camera, single.lights, shading);
         twice->render(doubled.camera, doubled.lights, shading);
-        const ImageError e = compareImages(twice->targets().readColor(), once->targets().readColor());
+        const ImageRGBA8 image = once->targets().readColor();
+        const ImageError e = compareImages(twice->targets().readColor(), image);
         INFO(v.mode << ", MSAA " << v.samples << ", pre-pass " << v.prepass << ": max " << e.maxAbsError
                     << ", differing " << e.differingPixels);
         REQUIRE(e.differingPixels == 0);
+        // Not two blank images: the copy's green dominates the lit floor.
+        long green = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) green += image.at(x, y)[1] > 2 * image.at(x, y)[0] + 8;
+        REQUIRE(green > long(image.width) * image.height / 10);
     }
 }
 
@@ -305,5 +312,7 @@ TEST_CASE("multi-pass forward with MSAA: samples shaded off their triangle get e
     // At most 4 lights hold one surface point of this view (lidr-bench: max overlap 4), so the bound is 3.
     INFO("screen-rectangle culling: max " << ea.maxAbsError << "; mesh-bounds culling: max " << eb.maxAbsError);
     REQUIRE(ea.maxAbsError <= 3);
-    CHECK(a.meshDrawCalls() >= b.meshDrawCalls());
+    // The case this guards: bounds culling misses light here. Should the scene change so that it no longer
+    // does, this test stops covering the fix: fail loudly then.
+    CHECK(eb.maxAbsError > 3);
 }
