@@ -94,7 +94,8 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
 
 std::string ModeConfig::label() const {
     if (mode == "lidr")
-        return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest;
+        return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
+               (volumeDetail ? " detail" : "");
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
     return mode;
 }
@@ -129,6 +130,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.packing.budget = c.budget;
     o.packing.indexBits = c.indexBits;
     o.volumeTest = parseVolumeTest(c.volumeTest);
+    o.volumeDetail = c.volumeDetail;
     o.msaaSamples = c.msaa;
     o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;
@@ -359,14 +361,16 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                 for (const auto& scheme : g.schemes)
                                     for (int budget : g.budgets)
                                         for (int bits : g.indexBits)
-                                            for (const auto& vt : g.volumeTests) {
-                                                ModeConfig c = base;
-                                                c.scheme = scheme;
-                                                c.budget = budget;
-                                                c.indexBits = bits;
-                                                c.volumeTest = volumeTestName(parseVolumeTest(vt));
-                                                configs.push_back(c);
-                                            }
+                                            for (const auto& vt : g.volumeTests)
+                                                for (bool detail : g.volumeDetail) {
+                                                    ModeConfig c = base;
+                                                    c.scheme = scheme;
+                                                    c.budget = budget;
+                                                    c.indexBits = bits;
+                                                    c.volumeTest = volumeTestName(parseVolumeTest(vt));
+                                                    c.volumeDetail = detail;
+                                                    configs.push_back(c);
+                                                }
                             } else if (mode == "tiled") {
                                 for (bool db : g.tiledDepthBounds) {
                                     ModeConfig c = base;

@@ -30,6 +30,7 @@ struct ModeConfig {
     int budget = 0;
     int indexBits = 0;
     std::string volumeTest;       // backface, exact, frontface
+    bool volumeDetail = false;    // LidrOptions::volumeDetail: coarse volumes for lights small on screen
     // mode "tiled"
     bool tiledDepthBounds = false;
     // every mode
@@ -67,6 +68,7 @@ struct SweepGroup {
     std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
+    std::vector<bool> volumeDetail{false};
     // Dimensions whose list a person typed ("mode", "scheme", "budget", "index width", "volume test",
     // "MSAA", "transparency"): a typed value that no combination can use is an error. Lists left at their
     // defaults and the presets sweep "whatever the library supports" and only list what it refused.

@@ -97,7 +97,7 @@ nlohmann::json rowJson(const Row& r) {
     j["mode"] = c.mode;
     j["config"] = c.key();
     if (c.mode == "lidr")
-        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}};
+        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
     j["msaa"] = c.msaa;
     j["per_sample"] = c.perSample;

@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, resolutions{"1024x768"};
+        volumeTests{"backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     bool quick = false, full = false, noProgress = false, noPlots = false, dryRun = false, list = false;
@@ -311,6 +311,9 @@ int main(int argc, char** argv) {
     app.add_option("--per-sample", perSample, "With MSAA: LIDR per-sample index lists (GL 3.2) off, on")->capture_default_str();
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();
+    app.add_option("--volume-detail", volumeDetail,
+                   "LIDR coarse light volumes for lights small on screen (LidrOptions::volumeDetail): off, on")
+        ->capture_default_str();
     app.add_option("--resolution", resolutions, "WIDTHxHEIGHT, or 'scene' for the scene's own")->capture_default_str();
     app.add_option("--warmup", settings.warmup, "Warm-up frames per configuration (at least)")->capture_default_str()->check(CLI::Range(0, 100));
     app.add_option("--warmup-ms", settings.warmupMs,
@@ -351,7 +354,7 @@ int main(int argc, char** argv) {
         std::vector<SweepGroup> groups;
         const bool listsGiven = app.count("--scenes") || app.count("--modes") || app.count("--schemes") ||
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
-                                app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") ||
+                                app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--volume-detail") ||
                                 app.count("--resolution");
         if ((quick || full) && listsGiven)
             throw Error(std::string("--") + (quick ? "quick" : "full") +
@@ -379,6 +382,7 @@ int main(int argc, char** argv) {
             g.perSample = onOffList(perSample, "--per-sample value");
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");
+            g.volumeDetail = onOffList(volumeDetail, "--volume-detail value");
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
             // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
             const std::pair<const char*, const char*> typed[] = {

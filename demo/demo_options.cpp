@@ -52,6 +52,8 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
     app.add_flag("--msaa-per-sample", msaaPerSample,
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
+    app.add_flag("--volume-detail", volumeDetail,
+                 "Coarser light volumes (20 / 80 faces) for lights small on screen (LidrOptions::volumeDetail)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
@@ -70,6 +72,7 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     o.packing.budget = budget;
     o.packing.indexBits = indexBits;
     o.perSampleIndices = msaaPerSample;
+    o.volumeDetail = volumeDetail;
     o.volumeTest = volumeTest == "auto"
                        ? (o.msaaSamples > 0 && !msaaPerSample ? VolumeTest::FrontFace : VolumeTest::BackFace)
                        : parseVolumeTest(volumeTest);

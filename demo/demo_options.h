@@ -34,6 +34,7 @@ struct RendererChoice {
     int msaa = -1;                     // < 0: the scene's
     std::string transparency = "scene";
     bool msaaPerSample = false;
+    bool volumeDetail = false;
     std::string context = "auto";
     bool fixedLightTable = false;
     std::string timer = "auto";

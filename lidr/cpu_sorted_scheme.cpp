@@ -36,13 +36,13 @@ CpuSortedScheme::CpuSortedScheme(const PackingConfig& config, const GlInfo& info
 
 bool CpuSortedScheme::mayShareAPixel(const VolumeLight& a, const VolumeLight& b, const LightVolumePass& pass) {
     if (pass.drawingPixelLists()) return true;  // the test hook marks every pixel of a list with every step
-    const float outside = pass.volumeOutsideRadius();
+    const float outsideA = pass.outsideRadiusFor(a), outsideB = pass.outsideRadiusFor(b);  // the volumes drawn
     const CameraMatrices& cam = pass.camera();
-    if (!screenFootprint(cam, a.posRadius, outside).overlaps(screenFootprint(cam, b.posRadius, outside))) return false;
+    if (!screenFootprint(cam, a.posRadius, outsideA).overlaps(screenFootprint(cam, b.posRadius, outsideB))) return false;
     if (pass.test() != VolumeTest::ExactStencil) return true;  // back-face and front-face tests: footprints
     if (pass.marksWholeFootprint(a) || pass.marksWholeFootprint(b)) return true;
     // Exact test: a marked surface point lies inside the volume mesh, within outside * radius of the centre.
-    const float reach = (a.posRadius.w + b.posRadius.w) * outside * 1.001f + 1e-4f;
+    const float reach = (a.posRadius.w * outsideA + b.posRadius.w * outsideB) * 1.001f + 1e-4f;
     return glm::length(glm::vec3(a.posRadius) - glm::vec3(b.posRadius)) < reach;
 }
 

@@ -30,7 +30,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     const int budget = renderer.scheme().config().budget;
     const bool wholeLights = !renderer.scheme().keepsFirstMarks();
     if (renderer.drawsTransparency())
-        e.frontFaceMarked = frontFaceCounts(t.readDepth(), cam, lights, renderer.volumeMeshOutsideRadius());
+        e.frontFaceMarked = frontFaceCounts(t.readDepth(), cam, lights, renderer.volumeOutsideRadii(lights));
     e.withinBudget.assign(n, 0);
     e.droppedMarks.assign(n, 0);
     for (size_t p = 0; p < n; ++p)

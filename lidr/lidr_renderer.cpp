@@ -49,7 +49,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
                     options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
                     options.perSampleIndices ? options.msaaSamples : 0),
       lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
-      volumePass_(info, options.volumeTest),
+      volumePass_(info, options.volumeTest, options.volumeDetail),
       forwardPass_(*scheme_, lightTable_, options.perSampleIndices),
       timer_(info, options.timingMethod) {
     timer_.setEnabled(options.timing);
@@ -59,7 +59,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             IndexTargets(scheme_->targetCount(), width, height,
                          options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
                          options.perSampleIndices ? options.msaaSamples : 0);
-        transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace);
+        transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace, options.volumeDetail);
     }
 }
 
@@ -164,6 +164,14 @@ std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return out;
+}
+
+std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight>& lights) const {
+    std::vector<float> radii;
+    radii.reserve(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i)
+        radii.push_back(volumePass_.outsideRadiusFor({uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius)}));
+    return radii;
 }
 
 std::vector<uint8_t> LidrRenderer::readLightCounts() const {

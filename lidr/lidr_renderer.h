@@ -31,6 +31,9 @@ struct LidrOptions {
     // any volume test works with MSAA. Needs msaaSamples >= 2.
     bool perSampleIndices = false;
     bool cullLights = true;           // skip lights whose volume is wholly outside the view frustum
+    // Coarser volumes (20 or 80 faces) for lights small on screen, where they reach at most a pixel past the
+    // 320-face one (LightVolumePass); false: the 320-face volume for every light.
+    bool volumeDetail = false;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     bool timing = true;
     TimingMethod timingMethod = TimingMethod::Auto;
@@ -56,6 +59,9 @@ public:
     bool drawsTransparency() const { return drawTransparent_; }
     bool perSampleIndices() const { return options_.perSampleIndices; }
     float volumeMeshOutsideRadius() const { return volumePass_.meshOutsideRadius(); }
+    // Per light of the last frame (light i has index i + 1): the relative vertex distance of the volume it
+    // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
+    std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
     const LightTable& lightTable() const { return lightTable_; }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the

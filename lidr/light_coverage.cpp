@@ -79,6 +79,12 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
 
 std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
                                  const std::vector<PointLight>& lights, float inflate) {
+    return frontFaceCounts(depth, camera, lights, std::vector<float>(lights.size(), inflate));
+}
+
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, const std::vector<float>& inflate) {
+    if (inflate.size() != lights.size()) throw Error("frontFaceCounts: one inflation factor per light");
     if (depth.width != camera.width || depth.height != camera.height)
         throw Error("frontFaceCounts: depth image and camera sizes differ");
     std::vector<int> counts(size_t(depth.width) * depth.height, 0);
@@ -89,9 +95,9 @@ std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& 
             nearPoint[p] = unprojectPixel(camera, x, y, 0.0f);
             farPoint[p] = unprojectPixel(camera, x, y, std::min(depth.at(x, y), 1.0f));
         }
-    for (const PointLight& light : lights) {
-        PointLight grown = light;
-        grown.radius *= inflate;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        PointLight grown = lights[i];
+        grown.radius *= inflate[i];
         const float r2 = grown.radius * grown.radius;
         int x0, y0, x1, y1;
         screenRect(camera, grown, x0, y0, x1, y1);

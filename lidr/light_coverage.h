@@ -31,6 +31,9 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
 // `inflate` >= the volume mesh's outside radius it never counts fewer than the GPU marks.
 std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
                                  const std::vector<PointLight>& lights, float inflate);
+// The same with one inflation factor per light (the volume each light is drawn with).
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, const std::vector<float>& inflate);
 
 struct ListCheck {
     long droppedLightPixels = 0;  // (pixel, light) pairs: light touches the surface, missing from the list

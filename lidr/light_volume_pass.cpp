@@ -42,11 +42,20 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
 
 size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
-LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test)
-    : test_(test), depthClamp_(info.depthClamp), mesh_(makeLightVolumeMesh(2)) {
-    vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, mesh_.positions.data(), mesh_.positions.size() * sizeof(glm::vec3));
-    indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh_.indices.data(),
-                                  mesh_.indices.size() * sizeof(uint16_t));
+LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail)
+    : test_(test), depthClamp_(info.depthClamp), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+    std::vector<glm::vec3> positions;
+    std::vector<uint16_t> indices;
+    for (int level = 0; level < kDetailLevels; ++level) {
+        meshes_[level] = makeLightVolumeMesh(level);
+        const auto base = static_cast<uint16_t>(positions.size());  // GL 2.1 has no base vertex: offset here
+        firstIndex_[level] = static_cast<GLsizei>(indices.size());
+        indexCount_[level] = static_cast<GLsizei>(meshes_[level].indices.size());
+        positions.insert(positions.end(), meshes_[level].positions.begin(), meshes_[level].positions.end());
+        for (uint16_t i : meshes_[level].indices) indices.push_back(static_cast<uint16_t>(base + i));
+    }
+    vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
+    indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
     maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
     programs_.resize(kMaxIndexTargets);
     listPrograms_.resize(kMaxIndexTargets);
@@ -91,9 +100,29 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
     checkGl("light-volume pass begin");
 }
 
+int LightVolumePass::detailFor(const VolumeLight& l) const {
+    const int finest = kDetailLevels - 1;
+    if (coarsest_ == finest) return finest;
+    // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
+    // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
+    // Near, behind or far off-axis: the finest volume.
+    const glm::vec3 toCentre = glm::vec3(l.posRadius) - camera_.eye;
+    const float distance = glm::length(toCentre), radius = l.posRadius.w;
+    if (!(distance - radius * meshes_[0].outsideRadius > camera_.nearPlane * 1.5f)) return finest;
+    const float cosOff = glm::dot(toCentre, camera_.forward) / distance;
+    if (!(cosOff > 0.2f)) return finest;
+    const float focal = camera_.projection[1][1] * 0.5f * float(camera_.height);
+    const float sinA = radius / distance;
+    const float pixels = focal * sinA / std::sqrt(std::max(1e-6f, 1.0f - sinA * sinA)) / (cosOff * cosOff);
+    // The coarsest volume whose reach past the finest one's stays under a pixel.
+    for (int level = coarsest_; level < finest; ++level)
+        if ((meshes_[level].outsideRadius - meshes_[finest].outsideRadius) * pixels <= 1.0f) return level;
+    return finest;
+}
+
 bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
     if (depthClamp_ || listSource_) return false;
-    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * mesh_.outsideRadius >=
+    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * outsideRadiusFor(l) >=
            camera_.farPlane * 0.999f;
 }
 
@@ -104,7 +133,9 @@ void LightVolumePass::drawVolume(const VolumeLight& light) const {
         listSource_->steps[step]->bind(0);
         glDrawArrays(GL_TRIANGLES, 0, 6);
     } else {
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(mesh_.indices.size()), GL_UNSIGNED_SHORT, nullptr);
+        const int level = detailFor(light);
+        glDrawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
+                       reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
     }
     ++drawCalls_;
 }
@@ -238,7 +269,6 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
     // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
     // (conservative: the whole footprint is marked).
-    const float outside = mesh_.outsideRadius;
     auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
     RenderState insideNoDepth = inside;
     insideNoDepth.depthFunc = GL_ALWAYS;
@@ -246,7 +276,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
     // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
     auto reachesNear = [&](const VolumeLight& l) {
-        return depthOf(l) - l.posRadius.w * outside <= camera_.nearPlane * 1.001f;
+        return depthOf(l) - l.posRadius.w * outsideRadiusFor(l) <= camera_.nearPlane * 1.001f;
     };
 
     enum Choice { kInside, kInsideNoDepth, kFront };

@@ -86,7 +86,10 @@ struct PixelListSource {
 class LightVolumePass {
 public:
     LightVolumePass() = default;
-    LightVolumePass(const GlInfo& info, VolumeTest test);
+    // volumeDetail: draw a light with the coarsest of the 20-, 80- and 320-face volumes whose extra reach past
+    // the 320-face one stays under a pixel on screen (lidr-bench: about half the volume pass on many small
+    // lights); false: always the 320-face volume.
+    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false);
 
     // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil.
     void begin(const IndexTargets& targets, const CameraMatrices& camera);
@@ -103,11 +106,16 @@ public:
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
     // plane): it then marks its whole screen footprint.
     bool marksWholeFootprint(const VolumeLight& light) const;
-    float volumeOutsideRadius() const { return mesh_.outsideRadius; }
+    // The largest relative vertex distance of the volumes this pass may draw (a bound for CPU models).
+    float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
+    // The volume mesh drawn for `light` in the current pass (0 = 20 faces, 1 = 80, 2 = 320) and its relative
+    // vertex distance: a function of the light and the camera alone, the same for every use in a frame.
+    int detailFor(const VolumeLight& light) const;
+    float outsideRadiusFor(const VolumeLight& light) const { return meshes_[size_t(detailFor(light))].outsideRadius; }
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
-    float meshOutsideRadius() const { return mesh_.outsideRadius; }
+    float meshOutsideRadius() const { return volumeOutsideRadius(); }
 
 private:
     void drawVolume(const VolumeLight& light) const;
@@ -115,7 +123,10 @@ private:
     void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
     VolumeTest test_ = VolumeTest::BackFace;
     bool depthClamp_ = false;
-    LightVolumeMesh mesh_;
+    static constexpr int kDetailLevels = 3;
+    LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
+    GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
+    int coarsest_ = kDetailLevels - 1;      // 0 with volumeDetail, else the finest only
     gl::Buffer vertices_, indices_;
     // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
     mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/bench_scenes.h"
 #include "lidr/bitshift_scheme.h"
 #include "lidr/default_scene.h"
 #include "lidr/error.h"
@@ -297,4 +298,68 @@ TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     std::vector<PointLight> tooMany(300, light(glm::vec3(0.0f), 1.0f));
     REQUIRE_THROWS_WITH(renderer.render(scene.camera, tooMany, {}), Catch::Contains("300 lights"));
     REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("volume detail: coarse volumes for lights small on screen, same results within the budget", "[lidr][detail]") {
+    testContext();
+    // The choice: a far, small light gets the 20-face volume, a near, large one the 320-face one; without
+    // the option every light gets the 320-face one.
+    const Scene floor = floorScene();
+    const CameraMatrices cam = cameraMatrices(floor.camera, floor.width, floor.height);
+    LightVolumePass detail(testGl(), VolumeTest::BackFace, true), plain(testGl(), VolumeTest::BackFace, false);
+    gl::Renderbuffer depthStencil = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, floor.width, floor.height);
+    IndexTargets targets(1, floor.width, floor.height, depthStencil);
+    const VolumeLight small{1, glm::vec4(-10.0f, 0.2f, -10.0f, 0.05f)}, large{2, glm::vec4(0.0f, 1.0f, 0.0f, 6.0f)};
+    for (LightVolumePass* pass : {&detail, &plain}) {
+        pass->begin(targets, cam);
+        pass->end();
+    }
+    CHECK(detail.detailFor(small) == 0);
+    CHECK(detail.detailFor(large) == 2);
+    CHECK(plain.detailFor(small) == 2);
+    CHECK(detail.outsideRadiusFor(small) > plain.outsideRadiusFor(small));
+    CHECK(detail.volumeOutsideRadius() == detail.outsideRadiusFor(small));  // the bound covers every volume
+}
+
+TEST_CASE("volume detail on many small lights: same results within the budget", "[lidr][detail][slow]") {
+    // Rendered: many small lights, every scheme's list check and the image within the budget as without it,
+    // and the coarse volumes really drawn (they mark more pixels than the 320-face ones).
+    const Scene many = makeManyLightScene(1024, ManyLightView::TopDown, 320, 240);
+    for (const char* scheme : {"bitshift", "cpu-sorted"}) {
+        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::FrontFace}) {
+            LidrOptions o;
+            o.packing = {scheme, 4, 16};
+            o.volumeTest = test;
+            o.transparency = false;
+            LidrOptions fine = o;
+            o.volumeDetail = true;
+            INFO(scheme << ", " << volumeTestName(test));
+            const RenderResult coarse = renderAndEvaluate(many, o);
+            const RenderResult reference = renderAndEvaluate(many, fine);
+            requireMatchesReference(coarse);
+            long coarseMarks = 0, fineMarks = 0;
+            for (size_t p = 0; p < coarse.evaluation.marked.size(); ++p) {
+                coarseMarks += coarse.evaluation.marked[p];
+                fineMarks += reference.evaluation.marked[p];
+            }
+            CHECK(coarseMarks > fineMarks);
+        }
+    }
+}
+
+TEST_CASE("volume detail with transparent layers: front-face lists from the coarse volumes", "[lidr][detail][transparency]") {
+    DefaultSceneOptions room;
+    room.width = testWidth();
+    room.height = testHeight();
+    room.time = 1.5f;
+    const Scene scene = makeDefaultScene(room);
+    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::FrontFace}) {
+        LidrOptions o;
+        o.volumeTest = test;
+        o.volumeDetail = true;
+        INFO(volumeTestName(test));
+        const RenderResult r = renderAndEvaluate(scene, o);
+        REQUIRE(r.evaluation.frontFaceMarked.size() == r.evaluation.marked.size());  // transparent lists checked
+        requireMatchesReference(r);
+    }
 }
