@@ -1,6 +1,6 @@
 // The LIDR core against ground truth: brute-force reference images, CPU truth of which lights touch each
 // pixel, and the bit-shift scheme's CPU model. Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
-// 580.159.04 (H100, EGL).
+// 580.159.04 (H100, EGL; the volume-detail tests only on Mesa).
 #include <algorithm>
 #include <set>
 
