@@ -37,9 +37,8 @@ IndexColors BitShiftScheme::colorsFor(uint32_t index) const {
 std::vector<SchemeDraw> BitShiftScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
     std::vector<SchemeDraw> draws;
     for (int w = 0; w < windows_; ++w) {
-        SchemeDraw sd;
+        SchemeDraw sd = rankWindowDraw("bitshift", w, windowSlots_, lights, [this](uint32_t i) { return colorsFor(i); });
         VolumeDraw& d = sd.draw;
-        d.name = "bitshift-window-" + std::to_string(w);
         d.firstTarget = w * windowTargets_;
         d.targetCount = windowTargets_;
         d.colorMask = glm::bvec4(channels_ > 0, channels_ > 1, channels_ > 2, channels_ > 3);
@@ -49,11 +48,6 @@ std::vector<SchemeDraw> BitShiftScheme::plan(const std::vector<VolumeLight>& lig
             d.blendDst = GL_CONSTANT_COLOR;
             d.blendColor = glm::vec4(1.0f / float(1 << groupBits_));
         }
-        d.rankFirst = w * windowSlots_;
-        d.rankCount = windowSlots_;
-        d.restartCount = w > 0;
-        sd.lights = lights;
-        sd.colors = [this](uint32_t index) { return colorsFor(index); };
         draws.push_back(std::move(sd));
     }
     return draws;

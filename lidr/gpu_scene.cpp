@@ -106,18 +106,16 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     glDrawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
-void GpuScene::draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const {
-    for (const Batch& b : batches_) {
-        const bool transparent = materials_[b.material].opacity < 1.0f;
-        if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
-            continue;
-        drawBatch(program, b, setMaterials);
-    }
+void GpuScene::unbindGeometry() const {
     glDisableVertexAttribArray(gl::kPosition);
     glDisableVertexAttribArray(gl::kNormal);
     glDisableVertexAttribArray(gl::kTexCoord);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void GpuScene::draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const {
+    drawSelected(program, filter, [](size_t, const glm::vec3&, const glm::vec3&) { return true; }, setMaterials);
 }
 
 void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const {
@@ -128,19 +126,12 @@ void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3
         return glm::length(a->centroid - eye) > glm::length(b->centroid - eye);
     });
     for (const Batch* b : order) drawBatch(program, *b, true);
-    glDisableVertexAttribArray(gl::kPosition);
-    glDisableVertexAttribArray(gl::kNormal);
-    glDisableVertexAttribArray(gl::kTexCoord);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    unbindGeometry();
 }
 
-int GpuScene::drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center,
-                                 float radius, bool setMaterials) const {
-    return drawSelected(program, filter, [&](size_t, const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
-        const glm::vec3 nearest = glm::clamp(center, boundsMin, boundsMax);
-        return glm::dot(nearest - center, nearest - center) <= radius * radius;
-    }, setMaterials);
+bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& boxMin, const glm::vec3& boxMax) {
+    const glm::vec3 nearest = glm::clamp(center, boxMin, boxMax);
+    return glm::dot(nearest - center, nearest - center) <= radius * radius;
 }
 
 int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
@@ -156,11 +147,7 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
         drawBatch(program, b, setMaterials);
         ++drawn;
     }
-    glDisableVertexAttribArray(gl::kPosition);
-    glDisableVertexAttribArray(gl::kNormal);
-    glDisableVertexAttribArray(gl::kTexCoord);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    unbindGeometry();
     return drawn;
 }
 

@@ -10,6 +10,9 @@ namespace lidr {
 
 enum class DrawFilter { Opaque, Transparent, All };
 
+// True where the sphere touches the box [boxMin, boxMax] (an infinite radius touches every box).
+bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& boxMin, const glm::vec3& boxMax);
+
 // The order meshes and their triangles are drawn in. Where fragments tie at the pre-pass depth (a back
 // face meeting the front face at a silhouette, coplanar copies) a depth-EQUAL shading pass keeps the last
 // one drawn; a pass that keeps the first one instead (multi-pass forward, whose additive passes must add
@@ -27,9 +30,6 @@ public:
     void draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const;
     // Transparent meshes sorted back to front for `eye` (by mesh centroid distance).
     void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const;
-    // Draws the meshes passing `filter` whose bounding box the sphere touches; returns how many it drew.
-    int drawTouchingSphere(const gl::Program& program, DrawFilter filter, const glm::vec3& center, float radius,
-                           bool setMaterials) const;
     // Draws the meshes passing `filter` for which select(batch, boundsMin, boundsMax) is true (batch: 0 ..
     // batchCount() - 1, in draw order); returns how many.
     int drawSelected(const gl::Program& program, DrawFilter filter,
@@ -51,6 +51,7 @@ private:
         glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     };
     void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
+    void unbindGeometry() const;
     std::vector<Batch> batches_;
     std::vector<Material> materials_;
     std::vector<gl::Texture> textures_;  // one per material; empty texture when none

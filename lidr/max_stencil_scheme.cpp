@@ -34,9 +34,8 @@ IndexColors MaxStencilScheme::colorsFor(uint32_t index) const {
 std::vector<SchemeDraw> MaxStencilScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
     std::vector<SchemeDraw> draws;
     for (int w = 0; w < windows_; ++w) {
-        SchemeDraw sd;
+        SchemeDraw sd = rankWindowDraw("max-stencil", w, windowSlots_, lights, [this](uint32_t i) { return colorsFor(i); });
         VolumeDraw& d = sd.draw;
-        d.name = "max-stencil-window-" + std::to_string(w);
         d.firstTarget = w / 2;
         d.targetCount = 1;
         d.colorMask = (w % 2 == 0) ? glm::bvec4(true, true, false, false) : glm::bvec4(false, false, true, true);
@@ -44,11 +43,6 @@ std::vector<SchemeDraw> MaxStencilScheme::plan(const std::vector<VolumeLight>& l
         d.blendEquation = GL_MAX;
         d.blendSrc = GL_ONE;
         d.blendDst = GL_ONE;
-        d.rankFirst = w * windowSlots_;
-        d.rankCount = windowSlots_;
-        d.restartCount = w > 0;
-        sd.lights = lights;
-        sd.colors = [this](uint32_t index) { return colorsFor(index); };
         draws.push_back(std::move(sd));
     }
     return draws;

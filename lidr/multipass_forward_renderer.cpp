@@ -1,7 +1,6 @@
 #include "lidr/multipass_forward_renderer.h"
 
 #include <algorithm>
-#include <limits>
 
 #include "lidr/error.h"
 #include "lidr/forward_pass.h"
@@ -123,17 +122,12 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         }
         glStencilFunc(GL_NOTEQUAL, stamp, 0xFF);
         light_.set("uLightIndex", float(i + 1));
-        int drawn = 0;
-        if (!options_.cullMeshes) {
-            drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, std::numeric_limits<float>::infinity(), true);
-        } else if (!screenCull) {
-            drawn = scene_.drawTouchingSphere(light_, DrawFilter::Opaque, l.position, radius, true);
-        } else {
-            drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3&, const glm::vec3&) {
-                const glm::ivec4& box = meshRects[i];
-                return box.x <= box.z && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w && rect.y <= box.w;
-            }, true);
-        }
+        const int drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
+            if (!options_.cullMeshes) return true;
+            if (!screenCull) return sphereTouchesBox(l.position, radius, bmin, bmax);
+            const glm::ivec4& box = meshRects[i];  // empty (z < x) when off screen
+            return box.x <= box.z && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w && rect.y <= box.w;
+        }, true);
         if (drawn == 0) continue;
         meshDraws_ += drawn;
         ++stats_.drawnLights;

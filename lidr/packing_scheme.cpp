@@ -12,6 +12,18 @@
 
 namespace lidr {
 
+SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
+                          std::function<IndexColors(uint32_t index)> colors) {
+    SchemeDraw sd;
+    sd.draw.name = scheme + "-window-" + std::to_string(window);
+    sd.draw.rankFirst = window * windowSlots;
+    sd.draw.rankCount = windowSlots;
+    sd.draw.restartCount = window > 0;
+    sd.lights = lights;
+    sd.colors = std::move(colors);
+    return sd;
+}
+
 std::string PackingScheme::describe() const {
     return name() + " budget " + std::to_string(config_.budget) + ", " + std::to_string(config_.indexBits) +
            "-bit indices, " + std::to_string(targetCount()) + " target" + (targetCount() > 1 ? "s" : "") + ", " +

@@ -38,6 +38,12 @@ struct SchemeDraw {
     std::function<IndexColors(uint32_t index)> colors;
 };
 
+// Draw `window` of a scheme that splits its budget into stencil rank windows of `windowSlots` lights: ranks
+// window * windowSlots .. + windowSlots - 1, the count restarted for every window after the first. The scheme
+// sets targets, masks and blending.
+SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
+                          std::function<IndexColors(uint32_t index)> colors);
+
 class PackingScheme {
 public:
     virtual ~PackingScheme() = default;

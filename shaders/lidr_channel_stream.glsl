@@ -2,29 +2,7 @@
 // lidrStreamBegin(uv) reads every target (exact bytes through lidrBytes); lidrTakeChannel() returns the next
 // byte. Data movement only: no arithmetic touches the bytes. LIDR_INDEX_TARGETS: 1..8.
 #include "lidr_bytes.glsl"
-
-uniform LIDR_INDEX_SAMPLER uIndexTex0;
-#if LIDR_INDEX_TARGETS > 1
-uniform LIDR_INDEX_SAMPLER uIndexTex1;
-#endif
-#if LIDR_INDEX_TARGETS > 2
-uniform LIDR_INDEX_SAMPLER uIndexTex2;
-#endif
-#if LIDR_INDEX_TARGETS > 3
-uniform LIDR_INDEX_SAMPLER uIndexTex3;
-#endif
-#if LIDR_INDEX_TARGETS > 4
-uniform LIDR_INDEX_SAMPLER uIndexTex4;
-#endif
-#if LIDR_INDEX_TARGETS > 5
-uniform LIDR_INDEX_SAMPLER uIndexTex5;
-#endif
-#if LIDR_INDEX_TARGETS > 6
-uniform LIDR_INDEX_SAMPLER uIndexTex6;
-#endif
-#if LIDR_INDEX_TARGETS > 7
-uniform LIDR_INDEX_SAMPLER uIndexTex7;
-#endif
+#include "lidr_index_samplers.glsl"
 
 vec4 lidrS0, lidrS1, lidrS2, lidrS3, lidrS4, lidrS5, lidrS6, lidrS7;  // targets not yet taken, S0 first
 float lidrS0Left;                                                      // channels left in S0

@@ -11,21 +11,7 @@
 //   LIDR_WEIGHTSt      weights 2^(c*k) of target t's channels c = 4t..4t+3 in a window, zero where unused
 #define LIDR_NULL_ENDS_LIST 1
 #include "lidr_bytes.glsl"
-
-uniform LIDR_INDEX_SAMPLER uIndexTex0;
-#if LIDR_INDEX_TARGETS > 1
-uniform LIDR_INDEX_SAMPLER uIndexTex1;
-#endif
-#if LIDR_INDEX_TARGETS > 2
-uniform LIDR_INDEX_SAMPLER uIndexTex2;
-uniform LIDR_INDEX_SAMPLER uIndexTex3;
-#endif
-#if LIDR_INDEX_TARGETS > 4
-uniform LIDR_INDEX_SAMPLER uIndexTex4;
-uniform LIDR_INDEX_SAMPLER uIndexTex5;
-uniform LIDR_INDEX_SAMPLER uIndexTex6;
-uniform LIDR_INDEX_SAMPLER uIndexTex7;
-#endif
+#include "lidr_index_samplers.glsl"
 
 vec4 lidrP0, lidrP1, lidrP2, lidrP3;  // the current window's bytes not yet unpacked, as integers
 vec4 lidrQ0, lidrQ1, lidrQ2, lidrQ3;  // the second window's
