@@ -4,20 +4,20 @@
 #include <filesystem>
 #include <set>
 
-#include "lidr/bench_scenes.h"
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/lidr_renderer.h"
-#include "lidr/packing_scheme.h"
-#include "lidr/primitives.h"
-#include "lidr/reference_renderer.h"
-#include "lidr/scene_loader.h"
-#include "lidr/test_scenes.h"
+#include "lidr/eval/bench_scenes.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/technique/lidr_renderer.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/modes/reference_renderer.h"
+#include "lidr/scene/io/scene_loader.h"
+#include "lidr/eval/controlled_scenes.h"
 
-// The render-mode factory (lidr/render_mode.h) builds every mode the library has. Until it exists, the
+// The render-mode factory (lidr/modes/render_mode.h) builds every mode the library has. Until it exists, the
 // bench builds the two modes it can name itself.
-#if __has_include("lidr/render_mode.h")
-#include "lidr/render_mode.h"
+#if __has_include("lidr/modes/render_mode.h")
+#include "lidr/modes/render_mode.h"
 #define LIDR_BENCH_HAS_MODE_FACTORY 1
 #else
 #define LIDR_BENCH_HAS_MODE_FACTORY 0

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "lidr/context.h"
-#include "lidr/renderer.h"
-#include "lidr/scene.h"
+#include "lidr/platform/context.h"
+#include "lidr/render/renderer.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr::bench {
 

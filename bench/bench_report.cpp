@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "lidr/error.h"
+#include "lidr/base/error.h"
 
 namespace lidr::bench {
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_config.h"
-#include "lidr/image_compare.h"
+#include "lidr/eval/image_compare.h"
 
 namespace lidr::bench {
 

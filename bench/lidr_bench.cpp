@@ -21,11 +21,11 @@
 
 #include "bench_config.h"
 #include "bench_report.h"
-#include "lidr/error.h"
-#include "lidr/frame_evaluation.h"
-#include "lidr/gl.h"
-#include "lidr/light_coverage.h"
-#include "lidr/packing_scheme.h"
+#include "lidr/base/error.h"
+#include "lidr/eval/frame_evaluation.h"
+#include "lidr/base/gl.h"
+#include "lidr/eval/light_coverage.h"
+#include "lidr/technique/packing_scheme.h"
 
 using namespace lidr;
 using namespace lidr::bench;

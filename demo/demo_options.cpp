@@ -1,9 +1,9 @@
 #include "demo_options.h"
 
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/packing_scheme.h"
-#include "lidr/scene_loader.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/scene/io/scene_loader.h"
 
 namespace lidr::demo {
 

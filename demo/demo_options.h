@@ -5,10 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "lidr/context.h"
-#include "lidr/lidr_renderer.h"
-#include "lidr/render_mode.h"
-#include "lidr/scene.h"
+#include "lidr/platform/context.h"
+#include "lidr/technique/lidr_renderer.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr::demo {
 

@@ -15,13 +15,13 @@
 #include <nlohmann/json.hpp>
 
 #include "demo_options.h"
-#include "lidr/artefacts.h"
-#include "lidr/error.h"
-#include "lidr/frame_evaluation.h"
-#include "lidr/light_coverage.h"
-#include "lidr/reference_renderer.h"
-#include "lidr/render_mode.h"
-#include "lidr/visualize.h"
+#include "lidr/eval/artefacts.h"
+#include "lidr/base/error.h"
+#include "lidr/eval/frame_evaluation.h"
+#include "lidr/eval/light_coverage.h"
+#include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
 #include <GLFW/glfw3.h>

@@ -6,7 +6,7 @@
 // within [Y/2, 2Y] of the value Y it loses); comparisons are exact. The decision for a read x is therefore
 // the real-number comparison of x with thresholds that all lie between (b + 0.45)/255 and (b + 0.55)/255:
 // any read within +-0.45 of a step (the worst margin is 0.046 step) gives back the exact byte. The CPU model
-// (lidr/shader_float.h) runs the same steps in emulated precision; tests prove it exhaustively.
+// (lidr/base/shader_float.h) runs the same steps in emulated precision; tests prove it exhaustively.
 //   bit 7: threshold 1/2 (= 127.5/255),   value 257/512   (~128/255)
 //   bit j: threshold ~ (2^j - 0.5)/255,   value 257/2^(16-j) (~2^j/255)
 vec4 lidrBytes(vec4 x) {

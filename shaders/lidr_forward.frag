@@ -4,7 +4,7 @@
 // LIDR_SLOTS, lidrUnpackBegin(uv) and lidrUnpackNext() (0.0 for an empty slot), and LIDR_NULL_ENDS_LIST
 // when the first empty slot means no more lights follow.
 // Index targets are read through these two, so the per-sample MSAA path can swap in sampler2DMS and
-// texelFetch(..., gl_SampleID) (lidr/forward_pass.cpp) without touching the unpack files.
+// texelFetch(..., gl_SampleID) (lidr/technique/forward_pass.cpp) without touching the unpack files.
 #ifndef LIDR_INDEX_SAMPLER
 #define LIDR_INDEX_SAMPLER sampler2D
 #define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)

@@ -1,4 +1,4 @@
-// Unpack for the CONSTANT_COLOR bit-shift scheme (lidr/bitshift_scheme.h). A window of LIDR_WINDOW_TARGETS
+// Unpack for the CONSTANT_COLOR bit-shift scheme (lidr/technique/bitshift_scheme.h). A window of LIDR_WINDOW_TARGETS
 // targets holds LIDR_WINDOW_SLOTS lights; in it, channel c holds bits [c*k, c*k + k) of each index, the most
 // recently drawn light's group on top. Budget 16 has two windows (ranks 0-7, then 8-15), read in turn.
 // Bytes are rebuilt exactly by lidrBytes() (any read within +-0.45 step, fp16 and up); after that every value

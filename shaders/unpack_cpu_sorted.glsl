@@ -1,4 +1,4 @@
-// Unpack for CPU overlap sorting (lidr/cpu_sorted_scheme.h). Slot g is light group g's channel share in the
+// Unpack for CPU overlap sorting (lidr/technique/cpu_sorted_scheme.h). Slot g is light group g's channel share in the
 // channel stream: 8-bit one channel, 16-bit two (low byte, high byte), 4-bit a nibble (even groups the low
 // nibble, odd groups the high nibble of one channel). Groups are independent, so an empty slot says nothing
 // about the next: there is no early out (LIDR_NULL_ENDS_LIST is not defined).

@@ -1,4 +1,4 @@
-// Unpack for the MAX blend + stencil scheme (lidr/max_stencil_scheme.h). Each stencil rank window owns two
+// Unpack for the MAX blend + stencil scheme (lidr/technique/max_stencil_scheme.h). Each stencil rank window owns two
 // channels of the channel stream (target 0 RG, BA, target 1 RG, ...).
 // 4/8-bit, windows of two lights: (max index, 255 - min index). An empty window reads (0, 0) and would give
 // 0 and 255; a window with one light reads (a, 255 - a) and would give a twice: both are returned as the null

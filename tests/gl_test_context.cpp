@@ -5,7 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "lidr/error.h"
+#include "lidr/base/error.h"
 
 namespace lidr::test {
 

@@ -3,7 +3,7 @@
 // Tests that need GL call testContext(); creating it fails the test with the reason if no context exists.
 #include <string>
 
-#include "lidr/context.h"
+#include "lidr/platform/context.h"
 
 namespace lidr::test {
 

@@ -1,8 +1,8 @@
 #include "render_helpers.h"
 
 #include "gl_test_context.h"
-#include "lidr/primitives.h"
-#include "lidr/reference_renderer.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/modes/reference_renderer.h"
 
 namespace lidr::test {
 

@@ -3,10 +3,10 @@
 // then evaluate" in one call.
 #include <vector>
 
-#include "lidr/context.h"
-#include "lidr/frame_evaluation.h"
-#include "lidr/lidr_renderer.h"
-#include "lidr/scene.h"
+#include "lidr/platform/context.h"
+#include "lidr/eval/frame_evaluation.h"
+#include "lidr/technique/lidr_renderer.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr::test {
 

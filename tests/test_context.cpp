@@ -8,10 +8,10 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/error.h"
-#include "lidr/gl.h"
-#include "lidr/gl_resources.h"
-#include "lidr/gl_state.h"
+#include "lidr/base/error.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
 
 using namespace lidr;
 using namespace lidr::test;

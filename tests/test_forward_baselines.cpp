@@ -8,16 +8,16 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/bench_scenes.h"
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/gl_resources.h"
-#include "lidr/image_compare.h"
-#include "lidr/light_coverage.h"
-#include "lidr/multipass_forward_renderer.h"
-#include "lidr/reference_renderer.h"
-#include "lidr/render_mode.h"
-#include "lidr/scene_loader.h"
+#include "lidr/eval/bench_scenes.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/eval/image_compare.h"
+#include "lidr/eval/light_coverage.h"
+#include "lidr/modes/multipass_forward_renderer.h"
+#include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/scene/io/scene_loader.h"
 #include "render_helpers.h"
 
 using namespace lidr;

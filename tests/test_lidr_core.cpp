@@ -8,13 +8,13 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/bench_scenes.h"
-#include "lidr/bitshift_scheme.h"
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/gl_resources.h"
-#include "lidr/light_volume_mesh.h"
-#include "lidr/reference_renderer.h"
+#include "lidr/eval/bench_scenes.h"
+#include "lidr/technique/bitshift_scheme.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/technique/light_volume_mesh.h"
+#include "lidr/modes/reference_renderer.h"
 #include "render_helpers.h"
 
 using namespace lidr;

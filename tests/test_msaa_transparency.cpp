@@ -6,10 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/primitives.h"
-#include "lidr/reference_renderer.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/modes/reference_renderer.h"
 #include "render_helpers.h"
 
 using namespace lidr;

@@ -9,12 +9,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "lidr/bitshift_scheme.h"
-#include "lidr/cpu_sorted_scheme.h"
-#include "lidr/error.h"
-#include "lidr/max_stencil_scheme.h"
-#include "lidr/packing_scheme.h"
-#include "lidr/shader_float.h"
+#include "lidr/technique/bitshift_scheme.h"
+#include "lidr/technique/cpu_sorted_scheme.h"
+#include "lidr/base/error.h"
+#include "lidr/technique/max_stencil_scheme.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/base/shader_float.h"
 
 using namespace lidr;
 

@@ -13,11 +13,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/primitives.h"
-#include "lidr/scene.h"
-#include "lidr/scene_loader.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/scene/scene.h"
+#include "lidr/scene/io/scene_loader.h"
 
 namespace fs = std::filesystem;
 using Catch::Contains;

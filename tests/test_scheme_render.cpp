@@ -7,9 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/cpu_sorted_scheme.h"
-#include "lidr/default_scene.h"
-#include "lidr/test_scenes.h"
+#include "lidr/technique/cpu_sorted_scheme.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/eval/controlled_scenes.h"
 #include "render_helpers.h"
 
 using namespace lidr;

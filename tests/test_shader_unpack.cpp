@@ -16,12 +16,12 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/error.h"
-#include "lidr/gl_resources.h"
-#include "lidr/gl_state.h"
-#include "lidr/light_volume_pass.h"
-#include "lidr/packing_scheme.h"
-#include "lidr/shader_source.h"
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/technique/light_volume_pass.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/gl/shader_source.h"
 
 using namespace lidr;
 using namespace lidr::test;

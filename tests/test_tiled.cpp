@@ -1,6 +1,6 @@
 // Tiled forward against ground truth: the clipped projected sphere bounds against brute-force sampling and
 // ray casting, the GPU tile depth reduction against the CPU, and tiled images against the brute-force
-// reference with every light that touches a pixel present in its tile list (CPU truth, lidr/light_coverage.h).
+// reference with every light that touches a pixel present in its tile list (CPU truth, lidr/eval/light_coverage.h).
 // Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
 // 580.159.04 (H100, EGL).
 #include <algorithm>
@@ -11,17 +11,17 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
-#include "lidr/default_scene.h"
-#include "lidr/error.h"
-#include "lidr/gl_resources.h"
-#include "lidr/image_compare.h"
-#include "lidr/light_coverage.h"
-#include "lidr/primitives.h"
-#include "lidr/reference_renderer.h"
-#include "lidr/render_mode.h"
-#include "lidr/sphere_bounds.h"
-#include "lidr/tiled_renderer.h"
-#include "lidr/visualize.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/eval/image_compare.h"
+#include "lidr/eval/light_coverage.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/scene/sphere_bounds.h"
+#include "lidr/modes/tiled_renderer.h"
+#include "lidr/base/visualize.h"
 #include "render_helpers.h"
 
 using namespace lidr;

@@ -2,8 +2,8 @@
 // scheme's CPU model need no GL context, so this runs anywhere.
 #include <cstdio>
 
-#include <lidr/light_volume_mesh.h>
-#include <lidr/packing_scheme.h>
+#include <lidr/technique/light_volume_mesh.h>
+#include <lidr/technique/packing_scheme.h>
 
 int main() {
     const lidr::LightVolumeMesh mesh = lidr::makeLightVolumeMesh(2);

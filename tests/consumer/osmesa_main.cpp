@@ -1,10 +1,10 @@
 // Links lidr::lidr_osmesa through find_package(lidr): an OSMesa context, an FBO cleared and read back.
 #include <cstdio>
 
-#include <lidr/context.h>
-#include <lidr/error.h>
-#include <lidr/gl.h>
-#include <lidr/gl_resources.h>
+#include <lidr/platform/context.h>
+#include <lidr/base/error.h>
+#include <lidr/base/gl.h>
+#include <lidr/gl/gl_resources.h>
 
 int main() {
     try {

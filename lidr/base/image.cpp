@@ -1,0 +1,91 @@
+#include "lidr/base/image.h"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include "lidr/base/error.h"
+#include "lidr/base/gl.h"
+
+namespace lidr {
+
+void writePng(const std::string& path, const ImageRGBA8& image) {
+    if (image.width <= 0 || image.height <= 0) throw Error("writePng: empty image for " + path);
+    if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
+        throw Error("could not write PNG '" + path + "'");
+}
+
+ImageRGBA8 readPng(const std::string& path) {
+    int w = 0, h = 0, n = 0;
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 4), stbi_image_free);
+    if (!data) throw Error("could not read image '" + path + "': " + stbi_failure_reason());
+    ImageRGBA8 img(w, h);
+    std::memcpy(img.pixels.data(), data.get(), img.pixels.size());
+    return img;
+}
+
+void writePfm(const std::string& path, const ImageFloat& image) {
+    std::ofstream f(path, std::ios::binary);
+    if (!f) throw Error("could not write PFM '" + path + "'");
+    f << "Pf\n" << image.width << " " << image.height << "\n-1.0\n";  // negative scale: little-endian
+    for (int y = image.height - 1; y >= 0; --y)
+        f.write(reinterpret_cast<const char*>(&image.pixels[static_cast<size_t>(y) * image.width]),
+                static_cast<std::streamsize>(sizeof(float)) * image.width);
+    if (!f) throw Error("could not write PFM '" + path + "'");
+}
+
+ImageFloat readPfm(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::string magic;
+    int w = 0, h = 0;
+    float scale = 0;
+    if (!(f >> magic >> w >> h >> scale) || magic != "Pf" || w <= 0 || h <= 0 || scale >= 0)
+        throw Error("'" + path + "' is not a little-endian one-channel PFM");
+    f.get();
+    ImageFloat img(w, h);
+    for (int y = h - 1; y >= 0; --y)
+        f.read(reinterpret_cast<char*>(&img.pixels[static_cast<size_t>(y) * w]),
+               static_cast<std::streamsize>(sizeof(float)) * w);
+    if (!f) throw Error("'" + path + "' is truncated");
+    return img;
+}
+
+ImageRGBA8 readPixelsRGBA8(int width, int height) {
+    ImageRGBA8 img(width, height);
+    std::vector<uint8_t> raw(img.pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+    checkGl("readPixelsRGBA8");
+    const size_t row = static_cast<size_t>(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&img.pixels[static_cast<size_t>(y) * row], &raw[static_cast<size_t>(height - 1 - y) * row], row);
+    return img;
+}
+
+ImageFloat readDepth(int width, int height) {
+    ImageFloat img(width, height);
+    std::vector<float> raw(img.pixels.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, raw.data());
+    checkGl("readDepth");
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&img.pixels[static_cast<size_t>(y) * width], &raw[static_cast<size_t>(height - 1 - y) * width],
+                    sizeof(float) * width);
+    return img;
+}
+
+std::vector<uint8_t> readStencil(int width, int height) {
+    std::vector<uint8_t> raw(static_cast<size_t>(width) * height), out(raw.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, raw.data());
+    checkGl("readStencil");
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&out[static_cast<size_t>(y) * width], &raw[static_cast<size_t>(height - 1 - y) * width], width);
+    return out;
+}
+
+}  // namespace lidr

@@ -1,0 +1,152 @@
+#include "lidr/eval/light_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lidr/base/error.h"
+
+namespace lidr {
+
+int CoverageTruth::maxOverlap() const {
+    int best = 0;
+    for (size_t p = 0; p + 1 < offsets.size(); ++p) best = std::max(best, count(p));
+    return best;
+}
+
+namespace {
+// Conservative pixel rectangle of a sphere: projected corners of its bounding box; the whole screen when
+// the box reaches behind the eye.
+void screenRect(const CameraMatrices& m, const PointLight& l, int& x0, int& y0, int& x1, int& y1) {
+    x0 = 0, y0 = 0, x1 = m.width - 1, y1 = m.height - 1;
+    float minX = 1e30f, minY = 1e30f, maxX = -1e30f, maxY = -1e30f;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner = l.position + l.radius * glm::vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+        const glm::vec4 clip = m.viewProjection * glm::vec4(corner, 1.0f);
+        if (clip.w <= 1e-6f) return;
+        const float sx = (clip.x / clip.w * 0.5f + 0.5f) * m.width;
+        const float sy = (0.5f - clip.y / clip.w * 0.5f) * m.height;  // rows top to bottom
+        minX = std::min(minX, sx), maxX = std::max(maxX, sx);
+        minY = std::min(minY, sy), maxY = std::max(maxY, sy);
+    }
+    x0 = std::max(0, int(std::floor(minX)) - 1);
+    y0 = std::max(0, int(std::floor(minY)) - 1);
+    x1 = std::min(m.width - 1, int(std::ceil(maxX)) + 1);
+    y1 = std::min(m.height - 1, int(std::ceil(maxY)) + 1);
+}
+}  // namespace
+
+CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
+                              const std::vector<PointLight>& lights, float band) {
+    if (depth.width != camera.width || depth.height != camera.height)
+        throw Error("computeCoverage: depth image and camera sizes differ");
+    CoverageTruth t;
+    t.width = depth.width;
+    t.height = depth.height;
+    const size_t n = size_t(t.width) * t.height;
+    t.surface.assign(n, 0);
+    std::vector<glm::vec3> world(n);
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x) {
+            const size_t p = size_t(y) * t.width + x;
+            const float d = depth.at(x, y);
+            if (d >= 1.0f) continue;
+            t.surface[p] = 1;
+            world[p] = unprojectPixel(camera, x, y, d);
+        }
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (pixel, light)
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        const float inner = l.radius * (1.0f - band);
+        const float inner2 = inner * inner;
+        int x0, y0, x1, y1;
+        screenRect(camera, l, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const size_t p = size_t(y) * t.width + x;
+                if (!t.surface[p]) continue;
+                const glm::vec3 d = world[p] - l.position;
+                if (glm::dot(d, d) < inner2) pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
+            }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    t.offsets.assign(n + 1, 0);
+    for (const auto& pr : pairs) ++t.offsets[pr.first + 1];
+    for (size_t p = 0; p < n; ++p) t.offsets[p + 1] += t.offsets[p];
+    t.lights.reserve(pairs.size());
+    for (const auto& pr : pairs) t.lights.push_back(pr.second);
+    return t;
+}
+
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, float inflate) {
+    return frontFaceCounts(depth, camera, lights, std::vector<float>(lights.size(), inflate));
+}
+
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, const std::vector<float>& inflate) {
+    if (inflate.size() != lights.size()) throw Error("frontFaceCounts: one inflation factor per light");
+    if (depth.width != camera.width || depth.height != camera.height)
+        throw Error("frontFaceCounts: depth image and camera sizes differ");
+    std::vector<int> counts(size_t(depth.width) * depth.height, 0);
+    std::vector<glm::vec3> nearPoint(counts.size()), farPoint(counts.size());
+    for (int y = 0; y < depth.height; ++y)
+        for (int x = 0; x < depth.width; ++x) {
+            const size_t p = size_t(y) * depth.width + x;
+            nearPoint[p] = unprojectPixel(camera, x, y, 0.0f);
+            farPoint[p] = unprojectPixel(camera, x, y, std::min(depth.at(x, y), 1.0f));
+        }
+    for (size_t i = 0; i < lights.size(); ++i) {
+        PointLight grown = lights[i];
+        grown.radius *= inflate[i];
+        const float r2 = grown.radius * grown.radius;
+        int x0, y0, x1, y1;
+        screenRect(camera, grown, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const size_t p = size_t(y) * depth.width + x;
+                // Closest point of the segment near -> surface to the centre.
+                const glm::vec3 a = nearPoint[p], ab = farPoint[p] - a;
+                const float len2 = glm::dot(ab, ab);
+                const float t = len2 > 0.0f ? std::clamp(glm::dot(grown.position - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+                const glm::vec3 d = a + t * ab - grown.position;
+                if (glm::dot(d, d) <= r2) ++counts[p];
+            }
+    }
+    return counts;
+}
+
+ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
+                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount) {
+    const int targets = scheme.targetCount();
+    if (static_cast<int>(indexTargets.size()) != targets) throw Error("checkIndexLists: wrong number of targets");
+    for (const auto& img : indexTargets)
+        if (img.width != truth.width || img.height != truth.height) throw Error("checkIndexLists: size mismatch");
+    const size_t n = size_t(truth.width) * truth.height;
+    ListCheck c;
+    c.droppedPerPixel.assign(n, 0);
+    c.decoded.resize(n);
+    std::vector<uint8_t> texels(size_t(targets) * 4);
+    for (size_t p = 0; p < n; ++p) {
+        for (int t = 0; t < targets; ++t)
+            std::copy_n(&indexTargets[t].pixels[p * 4], 4, &texels[size_t(t) * 4]);
+        std::vector<uint32_t>& list = c.decoded[p];
+        for (uint32_t idx : scheme.decodePixel(texels.data()))
+            if (idx != 0) list.push_back(idx);
+        c.slotsUsed += static_cast<long>(list.size());
+        c.maxSlotsUsed = std::max(c.maxSlotsUsed, static_cast<int>(list.size()));
+        std::vector<uint32_t> sorted = list;
+        std::sort(sorted.begin(), sorted.end());
+        for (size_t i = 0; i < sorted.size(); ++i)
+            if (sorted[i] > lightCount || (i > 0 && sorted[i] == sorted[i - 1])) ++c.invalidSlots;
+        int dropped = 0;
+        for (uint32_t k = truth.offsets[p]; k < truth.offsets[p + 1]; ++k)
+            if (!std::binary_search(sorted.begin(), sorted.end(), truth.lights[k])) ++dropped;
+        c.droppedPerPixel[p] = static_cast<uint8_t>(std::min(dropped, 255));
+        c.droppedLightPixels += dropped;
+        if (dropped) ++c.pixelsWithDrops;
+        c.maxDroppedPerPixel = std::max(c.maxDroppedPerPixel, dropped);
+    }
+    return c;
+}
+
+}  // namespace lidr

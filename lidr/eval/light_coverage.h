@@ -1,0 +1,53 @@
+#pragma once
+// CPU ground truth for light lists: which lights touch each pixel's surface (reconstructed from the depth
+// buffer), and what a decoded index list dropped or got wrong against that truth.
+#include <cstdint>
+#include <vector>
+
+#include "lidr/scene/camera.h"
+#include "lidr/base/image.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/scene/scene.h"
+
+namespace lidr {
+
+// Lights whose sphere strictly contains each pixel's surface point, as a compressed row per pixel.
+// A light within `band` (relative to its radius) of the surface is neither required nor counted: there
+// its contribution is below 2 * band of its peak, and depth-buffer precision cannot tell in or out.
+struct CoverageTruth {
+    int width = 0, height = 0;
+    std::vector<uint32_t> offsets;  // width * height + 1
+    std::vector<uint32_t> lights;   // 1-based light indices, ascending per pixel
+    std::vector<uint8_t> surface;   // 1 where the pixel has geometry (depth < 1)
+    int count(size_t pixel) const { return static_cast<int>(offsets[pixel + 1] - offsets[pixel]); }
+    int maxOverlap() const;
+};
+
+CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
+                              const std::vector<PointLight>& lights, float band = 2e-3f);
+
+// Per pixel, the lights whose sphere scaled by `inflate` crosses the eye ray between the near plane and the
+// pixel's opaque surface (the far plane where there is none): what a front-face volume pass marks. With
+// `inflate` >= the volume mesh's outside radius it never counts fewer than the GPU marks.
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, float inflate);
+// The same with one inflation factor per light (the volume each light is drawn with).
+std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
+                                 const std::vector<PointLight>& lights, const std::vector<float>& inflate);
+
+struct ListCheck {
+    long droppedLightPixels = 0;  // (pixel, light) pairs: light touches the surface, missing from the list
+    long pixelsWithDrops = 0;
+    int maxDroppedPerPixel = 0;
+    long invalidSlots = 0;        // decoded indices that name no light, or repeat one
+    long slotsUsed = 0;           // non-empty slots over all pixels
+    int maxSlotsUsed = 0;
+    std::vector<uint8_t> droppedPerPixel;
+    std::vector<std::vector<uint32_t>> decoded;  // per pixel, the non-empty slots in unpack order
+};
+
+// Decodes every pixel of the index targets with the scheme's CPU model and checks it against the truth.
+ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
+                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount);
+
+}  // namespace lidr

@@ -1,0 +1,203 @@
+#include "lidr/gl/gl_resources.h"
+
+#include <atomic>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "lidr/base/error.h"
+
+namespace lidr::gl {
+
+static std::atomic<int> gLive{0};
+int liveGlObjects() { return gLive.load(); }
+
+Object::Object(Kind kind) : kind_(kind) {
+    switch (kind) {
+    case Kind::Texture: glGenTextures(1, &id_); break;
+    case Kind::Renderbuffer: glGenRenderbuffers(1, &id_); break;
+    case Kind::Framebuffer: glGenFramebuffers(1, &id_); break;
+    case Kind::Buffer: glGenBuffers(1, &id_); break;
+    case Kind::Program: id_ = glCreateProgram(); break;
+    case Kind::Query: glGenQueries(1, &id_); break;
+    }
+    if (id_ == 0) throw GlError("could not create a GL object");
+    ++gLive;
+}
+
+void Object::reset() {
+    if (id_ == 0) return;
+    switch (kind_) {
+    case Kind::Texture: glDeleteTextures(1, &id_); break;
+    case Kind::Renderbuffer: glDeleteRenderbuffers(1, &id_); break;
+    case Kind::Framebuffer: glDeleteFramebuffers(1, &id_); break;
+    case Kind::Buffer: glDeleteBuffers(1, &id_); break;
+    case Kind::Program: glDeleteProgram(id_); break;
+    case Kind::Query: glDeleteQueries(1, &id_); break;
+    }
+    id_ = 0;
+    --gLive;
+}
+
+Texture Texture::create2D(GLint internalFormat, int width, int height, GLenum format, GLenum type,
+                          const void* data, GLint filter) {
+    Texture t;
+    static_cast<Object&>(t) = Object(Kind::Texture);
+    t.width_ = width;
+    t.height_ = height;
+    glBindTexture(GL_TEXTURE_2D, t.id_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter == GL_LINEAR_MIPMAP_LINEAR ? GL_LINEAR : filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, data);
+    if (filter == GL_LINEAR_MIPMAP_LINEAR) {
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glGenerateMipmap(GL_TEXTURE_2D);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    checkGl("Texture::create2D");
+    return t;
+}
+
+Texture Texture::create2DMultisample(GLint internalFormat, int width, int height, int samples) {
+    Texture t;
+    static_cast<Object&>(t) = Object(Kind::Texture);
+    t.width_ = width;
+    t.height_ = height;
+    t.samples_ = samples;
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.id_);
+    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internalFormat, width, height, GL_TRUE);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    checkGl("Texture::create2DMultisample");
+    return t;
+}
+
+void Texture::bind(int unit) const {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, id_);
+}
+
+Renderbuffer Renderbuffer::create(GLenum internalFormat, int width, int height, int samples) {
+    Renderbuffer r;
+    static_cast<Object&>(r) = Object(Kind::Renderbuffer);
+    glBindRenderbuffer(GL_RENDERBUFFER, r.id_);
+    if (samples > 0)
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, internalFormat, width, height);
+    else
+        glRenderbufferStorage(GL_RENDERBUFFER, internalFormat, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    checkGl("Renderbuffer::create");
+    return r;
+}
+
+Framebuffer Framebuffer::create() {
+    Framebuffer f;
+    static_cast<Object&>(f) = Object(Kind::Framebuffer);
+    return f;
+}
+
+void Framebuffer::attachTexture(GLenum attachment, const Texture& t) {
+    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, t.samples() > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D,
+                           t.id(), 0);
+}
+
+void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) {
+    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb.id());
+}
+
+void Framebuffer::checkComplete(const char* name) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "framebuffer '%s' is incomplete (status 0x%04x)", name, status);
+        throw GlError(buf);
+    }
+}
+
+Buffer Buffer::create(GLenum target, const void* data, size_t bytes, GLenum usage) {
+    Buffer b;
+    static_cast<Object&>(b) = Object(Kind::Buffer);
+    b.bytes_ = bytes;
+    glBindBuffer(target, b.id_);
+    glBufferData(target, static_cast<GLsizeiptr>(bytes), data, usage);
+    glBindBuffer(target, 0);
+    checkGl("Buffer::create");
+    return b;
+}
+
+static GLuint compileShader(GLenum type, const std::string& source, const std::string& name) {
+    GLuint s = glCreateShader(type);
+    const char* src = source.c_str();
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint len = 0;
+        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+        std::string log(static_cast<size_t>(len > 1 ? len : 1), '\0');
+        glGetShaderInfoLog(s, len, nullptr, log.data());
+        glDeleteShader(s);
+        throw GlError("shader '" + name + "' (" + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                      ") failed to compile:\n" + log);
+    }
+    return s;
+}
+
+Program Program::create(const std::string& name, const std::string& vs, const std::string& fs,
+                        const std::vector<std::pair<std::string, GLuint>>& attributes) {
+    Program p;
+    static_cast<Object&>(p) = Object(Kind::Program);
+    p.name_ = name;
+    GLuint v = compileShader(GL_VERTEX_SHADER, vs, name);
+    GLuint f = 0;
+    try {
+        f = compileShader(GL_FRAGMENT_SHADER, fs, name);
+    } catch (...) {
+        glDeleteShader(v);
+        throw;
+    }
+    glAttachShader(p.id_, v);
+    glAttachShader(p.id_, f);
+    for (const auto& [attr, slot] : attributes) glBindAttribLocation(p.id_, slot, attr.c_str());
+    glLinkProgram(p.id_);
+    glDetachShader(p.id_, v);
+    glDetachShader(p.id_, f);
+    glDeleteShader(v);
+    glDeleteShader(f);
+    GLint ok = 0;
+    glGetProgramiv(p.id_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint len = 0;
+        glGetProgramiv(p.id_, GL_INFO_LOG_LENGTH, &len);
+        std::string log(static_cast<size_t>(len > 1 ? len : 1), '\0');
+        glGetProgramInfoLog(p.id_, len, nullptr, log.data());
+        throw GlError("program '" + name + "' failed to link:\n" + log);
+    }
+    checkGl(("Program::create " + name).c_str());
+    return p;
+}
+
+GLint Program::uniform(const char* n) const {
+    auto it = uniforms_.find(n);
+    if (it != uniforms_.end()) return it->second;
+    GLint loc = glGetUniformLocation(id_, n);
+    uniforms_.emplace(n, loc);
+    return loc;
+}
+
+void Program::set(const char* n, int v) const { glUniform1i(uniform(n), v); }
+void Program::set(const char* n, float v) const { glUniform1f(uniform(n), v); }
+void Program::set(const char* n, const glm::vec2& v) const { glUniform2fv(uniform(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec3& v) const { glUniform3fv(uniform(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec4& v) const { glUniform4fv(uniform(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::mat4& v) const {
+    glUniformMatrix4fv(uniform(n), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace lidr::gl

@@ -1,0 +1,114 @@
+#pragma once
+// Thin RAII owners of GL objects. Each one deletes its object in the destructor, so a renderer that is
+// destroyed leaves nothing behind; liveGlObjects() counts what is alive (tests check it returns to zero).
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lidr/base/gl.h"
+
+namespace lidr::gl {
+
+int liveGlObjects();  // objects created through these wrappers and not yet deleted, all kinds together
+
+enum class Kind { Texture, Renderbuffer, Framebuffer, Buffer, Program, Query };
+
+// One GL name of one kind; moves, never copies.
+class Object {
+public:
+    Object() = default;
+    explicit Object(Kind kind);
+    ~Object() { reset(); }
+    Object(Object&& o) noexcept : kind_(o.kind_), id_(std::exchange(o.id_, 0u)) {}
+    Object& operator=(Object&& o) noexcept {
+        if (this != &o) {
+            reset();
+            kind_ = o.kind_;
+            id_ = std::exchange(o.id_, 0u);
+        }
+        return *this;
+    }
+    Object(const Object&) = delete;
+    Object& operator=(const Object&) = delete;
+    GLuint id() const { return id_; }
+    explicit operator bool() const { return id_ != 0; }
+    void reset();
+
+protected:
+    Kind kind_ = Kind::Texture;
+    GLuint id_ = 0;
+};
+
+class Texture : public Object {
+public:
+    Texture() = default;
+    // A 2D texture with NEAREST filtering and clamped edges (index and light-table textures are looked up at
+    // texel centres; no filtering may mix neighbouring texels).
+    static Texture create2D(GLint internalFormat, int width, int height, GLenum format, GLenum type,
+                            const void* data = nullptr, GLint filter = GL_NEAREST);
+    // A multisample 2D texture (GL 3.2 / ARB_texture_multisample), read with texelFetch per sample.
+    static Texture create2DMultisample(GLint internalFormat, int width, int height, int samples);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int samples() const { return samples_; }
+    void bind(int unit) const;
+
+private:
+    int width_ = 0, height_ = 0, samples_ = 0;
+};
+
+class Renderbuffer : public Object {
+public:
+    Renderbuffer() = default;
+    static Renderbuffer create(GLenum internalFormat, int width, int height, int samples = 0);
+};
+
+class Framebuffer : public Object {
+public:
+    Framebuffer() = default;
+    static Framebuffer create();
+    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+    void attachTexture(GLenum attachment, const Texture& t);
+    void attachRenderbuffer(GLenum attachment, const Renderbuffer& rb);
+    void checkComplete(const char* name) const;  // throws GlError naming the status
+};
+
+class Buffer : public Object {
+public:
+    Buffer() = default;
+    static Buffer create(GLenum target, const void* data, size_t bytes, GLenum usage = GL_STATIC_DRAW);
+    size_t bytes() const { return bytes_; }
+
+private:
+    size_t bytes_ = 0;
+};
+
+class Program : public Object {
+public:
+    Program() = default;
+    // Compiles and links; throws GlError with the info log and the name on failure.
+    static Program create(const std::string& name, const std::string& vertexSource,
+                          const std::string& fragmentSource,
+                          const std::vector<std::pair<std::string, GLuint>>& attributes);
+    void use() const { glUseProgram(id_); }
+    GLint uniform(const char* name) const;  // -1 when the compiler removed it; cached
+    void set(const char* name, int v) const;
+    void set(const char* name, float v) const;
+    void set(const char* name, const glm::vec2& v) const;
+    void set(const char* name, const glm::vec3& v) const;
+    void set(const char* name, const glm::vec4& v) const;
+    void set(const char* name, const glm::mat4& v) const;
+    const std::string& name() const { return name_; }
+
+private:
+    std::string name_;
+    mutable std::unordered_map<std::string, GLint> uniforms_;
+};
+
+// Vertex attribute slots shared by every lidr program (bound before linking, so no queries are needed).
+enum Attribute : GLuint { kPosition = 0, kNormal = 1, kTexCoord = 2 };
+
+}  // namespace lidr::gl

@@ -1,0 +1,104 @@
+#include "lidr/gl/render_targets.h"
+
+#include "lidr/base/error.h"
+#include "lidr/gl/frame_timer.h"
+
+namespace lidr {
+
+void checkResolution(const GlInfo& info, int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw Error("resolution must be positive, got " + std::to_string(width) + "x" + std::to_string(height));
+    GLint maxRb = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRb);
+    const int limit = std::min(info.maxTextureSize, int(maxRb));
+    if (width > limit || height > limit)
+        throw Error("resolution " + std::to_string(width) + "x" + std::to_string(height) +
+                    " exceeds this driver's limit of " + std::to_string(limit) + " pixels per side");
+}
+
+void checkSamples(const GlInfo& info, int samples) {
+    if (samples == 0) return;
+    if (samples < 0 || samples == 1)
+        throw Error("MSAA samples must be 0 (off) or at least 2, got " + std::to_string(samples));
+    if (!info.multisampleFbo)
+        throw UnsupportedError("MSAA needs multisample framebuffers (GL 3.0, ARB_framebuffer_object or "
+                               "EXT_framebuffer_multisample); this context has none");
+    if (samples > info.maxSamples)
+        throw UnsupportedError("MSAA " + std::to_string(samples) + "x asked for, this driver allows at most " +
+                               std::to_string(info.maxSamples) + "x (GL_MAX_SAMPLES)");
+}
+
+RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samples)
+    : width_(width), height_(height), samples_(samples) {
+    if (!info.framebufferObject)
+        throw UnsupportedError("this context has no framebuffer objects (GL 3.0 or ARB_framebuffer_object); "
+                               "lidr needs GL 2.1 + FBOs");
+    checkResolution(info, width, height);
+    checkSamples(info, samples);
+    depthStencil_ = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, width, height);
+    color_ = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
+    colorFbo_ = gl::Framebuffer::create();
+    colorFbo_.attachTexture(GL_COLOR_ATTACHMENT0, color_);
+    colorFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_);
+    colorFbo_.checkComplete("scene colour");
+    if (samples > 0) {
+        msaaColor_ = gl::Renderbuffer::create(GL_RGBA8, width, height, samples);
+        msaaDepthStencil_ = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, width, height, samples);
+        msaaFbo_ = gl::Framebuffer::create();
+        msaaFbo_.attachRenderbuffer(GL_COLOR_ATTACHMENT0, msaaColor_);
+        msaaFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, msaaDepthStencil_);
+        msaaFbo_.checkComplete("scene colour MSAA");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void RenderTargets::bindColor() const {
+    if (samples_ > 0)
+        msaaFbo_.bind();
+    else
+        colorFbo_.bind();
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, width_, height_);
+}
+
+void RenderTargets::bindSingleSample() const {
+    colorFbo_.bind();
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glViewport(0, 0, width_, height_);
+}
+
+void RenderTargets::resolve() const {
+    if (samples_ == 0) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, colorFbo_.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("MSAA resolve");
+}
+
+void RenderTargets::resolve(FrameTimer& timer) const {
+    if (samples_ == 0) return;
+    timer.begin("msaa-resolve");
+    resolve();
+    timer.end();
+}
+
+ImageRGBA8 RenderTargets::readColor() const {
+    colorFbo_.bind();
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    return readPixelsRGBA8(width_, height_);
+}
+
+ImageFloat RenderTargets::readDepth() const {
+    colorFbo_.bind();
+    return lidr::readDepth(width_, height_);
+}
+
+std::vector<uint8_t> RenderTargets::readStencil() const {
+    colorFbo_.bind();
+    return lidr::readStencil(width_, height_);
+}
+
+}  // namespace lidr

@@ -1,0 +1,49 @@
+#pragma once
+// The targets a frame renders into. A single-sample colour texture plus one packed DEPTH24_STENCIL8
+// renderbuffer that the LIDR index targets attach too, so the pre-pass depth is shared. With MSAA, shading
+// goes to multisampled colour and depth-stencil renderbuffers and is resolved into the colour texture; the
+// single-sample depth-stencil still serves the light-volume pass (LIDR's index texture is single-sample).
+#include "lidr/platform/context.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/base/image.h"
+
+namespace lidr {
+
+class RenderTargets {
+public:
+    RenderTargets() = default;
+    // Throws UnsupportedError for a context without FBOs or without the samples asked for, lidr::Error for
+    // a size the driver cannot hold. samples: 0 (no MSAA) or 2..info.maxSamples.
+    RenderTargets(const GlInfo& info, int width, int height, int samples = 0);
+    void bindColor() const;         // where shading goes: the MSAA FBO when samples > 0; viewport set
+    void bindSingleSample() const;  // the single-sample colour FBO with the shared depth-stencil
+    void resolve() const;           // MSAA colour into color(); nothing without MSAA
+    // resolve() timed as the "msaa-resolve" pass; nothing (and no pass) without MSAA.
+    void resolve(class FrameTimer& timer) const;
+    int samples() const { return samples_; }
+    const gl::Renderbuffer& depthStencil() const { return depthStencil_; }
+    // The MSAA depth-stencil (per-sample index targets attach it); empty without MSAA.
+    const gl::Renderbuffer& multisampleDepthStencil() const { return msaaDepthStencil_; }
+    const gl::Texture& color() const { return color_; }
+    const gl::Framebuffer& colorFramebuffer() const { return colorFbo_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    ImageRGBA8 readColor() const;             // the (resolved) image
+    ImageFloat readDepth() const;             // single-sample depth
+    std::vector<uint8_t> readStencil() const; // single-sample stencil
+
+private:
+    int width_ = 0, height_ = 0, samples_ = 0;
+    gl::Renderbuffer depthStencil_;
+    gl::Texture color_;
+    gl::Framebuffer colorFbo_;
+    gl::Renderbuffer msaaColor_, msaaDepthStencil_;
+    gl::Framebuffer msaaFbo_;
+};
+
+// Checks a resolution against the context before anything is allocated.
+void checkResolution(const GlInfo& info, int width, int height);
+// Checks an MSAA sample count against the context: 0, or 2..maxSamples with multisample FBOs.
+void checkSamples(const GlInfo& info, int samples);
+
+}  // namespace lidr

@@ -1,0 +1,75 @@
+#include "lidr/modes/reference_renderer.h"
+
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
+                                     bool forceFixedLightTable, int msaaSamples, bool transparency,
+                                     bool sampleShading)
+    : scene_(scene),
+      targets_(info, width, height, msaaSamples),
+      lightTable_(info, lightCapacity, forceFixedLightTable),
+      timer_(info),
+      drawTransparent_(transparency && scene_.hasTransparent()),
+      sampleShading_(sampleShading) {
+    if (sampleShading && !info.sampleShading)
+        throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
+    ShaderDefines defines = lightTable_.defines();
+    defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
+    program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("reference_forward.frag", defines), geometryAttributes());
+}
+
+const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                            const ShadingParameters& shading) {
+    if (static_cast<int>(lights.size()) > lightTable_.capacity())
+        throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
+                    std::to_string(lights.size()));
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = stats_.drawnLights = static_cast<int>(lights.size());
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    timer_.begin("light-table");
+    lightTable_.update(lights);
+    timer_.end();
+
+    timer_.begin("depth-prepass");
+    targets_.bindColor();  // the MSAA target when multisampled: the reference has no index pass to feed
+    depthPrepass_.run(scene_, cam);
+    timer_.end();
+
+    timer_.begin("brute-force");
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;
+    s.sampleShading = sampleShading_;
+    applyRenderState(s);
+    program_.use();
+    setShadingUniforms(program_, cam, shading);
+    program_.set("uLightCount", float(lights.size()));
+    lightTable_.bind(program_);
+    scene_.draw(program_, DrawFilter::Opaque, true);
+    timer_.end();
+    if (drawTransparent_) {
+        timer_.begin("brute-force-transparent");
+        RenderState t = transparentBlendState();  // the state every mode draws its layers with
+        t.sampleShading = sampleShading_;
+        applyRenderState(t);
+        scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
+    }
+    applyRenderState(RenderState{});
+    targets_.resolve(timer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("reference render");
+    stats_.passes = timer_.collect();
+    return stats_;
+}
+
+}  // namespace lidr

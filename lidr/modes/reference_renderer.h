@@ -1,0 +1,39 @@
+#pragma once
+// The brute-force reference: every light evaluated at every pixel with lidr's one shading function, after
+// the same depth pre-pass. It is the accuracy reference for every other mode, and the "forward-brute"
+// baseline.
+#include "lidr/render/depth_prepass.h"
+#include "lidr/technique/forward_pass.h"
+#include "lidr/gl/frame_timer.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/render/light_table.h"
+#include "lidr/gl/render_targets.h"
+#include "lidr/render/renderer.h"
+
+namespace lidr {
+
+class ReferenceRenderer final : public Renderer {
+public:
+    // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
+    // MSAA and transparency as in LidrOptions: the reference is rendered the way the mode it judges is.
+    ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
+                      bool forceFixedLightTable = false, int msaaSamples = 0, bool transparency = true,
+                      bool sampleShading = false);
+    std::string modeName() const override { return "forward-brute"; }
+    const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading) override;
+    const RenderTargets& targets() const override { return targets_; }
+    const char* timingMethod() const { return timer_.method(); }
+
+private:
+    GpuScene scene_;
+    RenderTargets targets_;
+    LightTable lightTable_;
+    DepthPrepass depthPrepass_;
+    gl::Program program_;
+    FrameTimer timer_;
+    bool drawTransparent_ = false;
+    bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does
+};
+
+}  // namespace lidr

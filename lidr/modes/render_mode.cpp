@@ -1,0 +1,54 @@
+#include "lidr/modes/render_mode.h"
+
+#include <algorithm>
+
+#include "lidr/base/error.h"
+#include "lidr/modes/reference_renderer.h"
+
+namespace lidr {
+
+const std::vector<std::string>& renderModeNames() {
+    static const std::vector<std::string> names = {"lidr", "tiled", "forward-multipass", "forward-brute"};
+    return names;
+}
+
+bool isRenderModeName(const std::string& name) {
+    const auto& n = renderModeNames();
+    return std::find(n.begin(), n.end(), name) != n.end();
+}
+
+std::string renderModeList() {
+    std::string s;
+    for (const std::string& n : renderModeNames()) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInfo& info, const Scene& scene,
+                                         int width, int height) {
+    // The settings every mode shares come from the common fields.
+    auto shared = [&](auto modeOptions) {
+        modeOptions.forceFixedLightTable = modeOptions.forceFixedLightTable || o.forceFixedLightTable;
+        modeOptions.msaaSamples = o.msaaSamples;
+        modeOptions.timingMethod = o.timingMethod;
+        return modeOptions;
+    };
+    if (o.mode == "lidr") {
+        LidrOptions lo = shared(o.lidr);
+        lo.transparency = o.transparency;
+        return std::make_unique<LidrRenderer>(info, scene, lo, width, height);
+    }
+    if (o.mode == "tiled") {
+        TiledOptions to = shared(o.tiled);
+        to.transparency = o.transparency;
+        return std::make_unique<TiledRenderer>(info, scene, to, width, height);
+    }
+    if (o.mode == "forward-multipass")  // draws no transparent meshes (additive passes cannot blend a layer)
+        return std::make_unique<MultipassForwardRenderer>(info, scene, shared(o.multipass), width, height);
+    if (o.mode == "forward-brute")
+        return std::make_unique<ReferenceRenderer>(info, scene, width, height,
+                                                   std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable,
+                                                   o.msaaSamples, o.transparency);
+    throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
+}
+
+}  // namespace lidr

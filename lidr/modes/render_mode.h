@@ -1,0 +1,40 @@
+#pragma once
+// Choosing a render mode by name: "lidr", "tiled", "forward-multipass", "forward-brute". lidr-demo's --mode
+// and a scene file's "mode" key both come through here, so every mode is built the same way everywhere.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lidr/platform/context.h"
+#include "lidr/technique/lidr_renderer.h"
+#include "lidr/modes/multipass_forward_renderer.h"
+#include "lidr/render/renderer.h"
+#include "lidr/scene/scene.h"
+#include "lidr/modes/tiled_renderer.h"
+
+namespace lidr {
+
+struct RenderModeOptions {
+    std::string mode = "lidr";
+    LidrOptions lidr;            // mode "lidr"
+    TiledOptions tiled;          // mode "tiled"
+    MultipassOptions multipass;  // mode "forward-multipass"
+    // These apply to every mode and replace the per-mode fields of the same name.
+    bool forceFixedLightTable = false;  // the RGBA8 fixed-point light table
+    int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES
+    bool transparency = true;           // draw transparent materials (forward-multipass never does)
+    TimingMethod timingMethod = TimingMethod::Auto;
+};
+
+// The valid mode names, in the order above.
+const std::vector<std::string>& renderModeNames();
+bool isRenderModeName(const std::string& name);
+// "lidr, tiled, forward-multipass, forward-brute": for error messages and help texts.
+std::string renderModeList();
+
+// Builds the renderer for options.mode at width x height. Throws lidr::Error naming the valid modes for an
+// unknown name, and whatever the mode's constructor throws for bad settings (before any drawing).
+std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& options, const GlInfo& info, const Scene& scene,
+                                         int width, int height);
+
+}  // namespace lidr

@@ -1,0 +1,180 @@
+#include "lidr/modes/tiled_renderer.h"
+
+#include <algorithm>
+
+#include "lidr/base/error.h"
+#include "lidr/technique/forward_pass.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/scene/sphere_bounds.h"
+#include "lidr/base/visualize.h"
+
+namespace lidr {
+
+namespace {
+const TiledOptions& checkedOptions(const TiledOptions& o) {
+    if (o.depthBounds && !o.preZ)
+        throw Error("tiled: per-tile depth bounds need the pre-Z pass (depthBounds without preZ)");
+    if (o.halfZ && !o.depthBounds)
+        throw Error("tiled: half-Z splits the per-tile depth bounds (halfZ without depthBounds)");
+    if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
+        throw Error("tiled: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
+    return o;
+}
+
+int lightCapacity(const Scene& scene) { return std::max<int>(1, int(scene.lights.size())); }
+
+}  // namespace
+
+TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const TiledOptions& options, int width,
+                             int height)
+    : options_(checkedOptions(options)),
+      scene_(scene),
+      targets_(info, width, height, options.msaaSamples),
+      grid_(width, height, options.tileSize),
+      gridTextures_(info, grid_.tilesX(), grid_.tilesY()),
+      lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),
+      timer_(info, options.timingMethod),
+      info_(info) {
+    if (options_.depthBounds && options_.msaaSamples == 0)
+        depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
+                                                         targets_.depthStencil(), options_.forcePackedDepth,
+                                                         options_.halfZ);
+    buildProgram(options_.initialLoopBound);
+    frameInfo_.shaderRebuilds = 0;
+    timer_.setEnabled(options_.timing);
+}
+
+DepthReductionFormat TiledRenderer::depthFormat() const {
+    return depthBounds_ ? depthBounds_->format() : DepthReductionFormat::Float32;
+}
+
+size_t TiledRenderer::lightDataBytes() const {
+    return gridTextures_.bytes() + depthReductionBytes();
+}
+
+void TiledRenderer::buildProgram(int loopBound) {
+    ShaderDefines defines = lightTable_.defines();
+    defines.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
+    defines.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
+    defines.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
+    program_ = gl::Program::create("tiled-forward-" + std::to_string(loopBound), buildShaderSource("geometry.vert"),
+                                   buildShaderSource("tiled_forward.frag", defines), geometryAttributes());
+    frameInfo_.loopBound = loopBound;
+    ++frameInfo_.shaderRebuilds;
+}
+
+const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                        const ShadingParameters& shading) {
+    if (lights.size() > 65535)
+        throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
+    checkLightSpheres(lights, "tiled");
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = static_cast<int>(lights.size());
+    const bool transparent = options_.transparency && scene_.hasTransparent();
+
+    timer_.begin("light-table");
+    if (static_cast<int>(lights.size()) > lightTable_.capacity()) {  // grow rather than refuse
+        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
+    }
+    lightTable_.update(lights);
+    timer_.end();
+
+    timer_.begin("depth-prepass");
+    if (depthBounds_) {
+        depthBounds_->prepass(scene_, cam);
+    } else if (options_.preZ) {
+        targets_.bindColor();
+        depthPrepass_.run(scene_, cam);
+    }
+    timer_.end();
+
+    tileDepth_.clear();
+    if (depthBounds_) {
+        timer_.begin("tile-depth-reduce");
+        tileDepth_ = depthBounds_->reduce();
+        timer_.end();
+    }
+
+    timer_.begin("light-grid");
+    const double assignStart = nowMilliseconds();
+    const float reach = lightTable_.reachError();
+    grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
+    gridTextures_.upload(grid_);
+    const LightGridStats& gs = grid_.stats();
+    const int longest = std::max(gs.maxOpaqueLights, transparent ? gs.maxTransparentLights : 0);
+    if (longest > frameInfo_.loopBound) {  // a list outgrew the loop: recompile with room for it
+        int bound = frameInfo_.loopBound;
+        while (bound < longest) bound *= 2;
+        buildProgram(std::min(bound, 65535));
+    }
+    stats_.drawnLights = gs.assignedLights;
+    const double assignMs = nowMilliseconds() - assignStart;
+    timer_.end();
+
+    timer_.begin("tiled-forward");
+    targets_.bindColor();
+    applyRenderState(RenderState{});
+    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    RenderState s;
+    s.depthTest = true;
+    if (options_.preZ) {
+        glClear(GL_COLOR_BUFFER_BIT);
+        s.depthFunc = GL_EQUAL;  // the pre-Z depth: one shaded fragment per pixel
+        s.depthWrite = false;
+    } else {
+        s.depthWrite = true;  // masks open for the clear
+        applyRenderState(s);
+        glClearDepth(1.0);
+        glClearStencil(0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        s.depthFunc = GL_LEQUAL;  // the last fragment at the nearest depth stays, as with the pre-Z and EQUAL
+    }
+    applyRenderState(s);
+    program_.use();
+    setShadingUniforms(program_, cam, shading);
+    lightTable_.bind(program_);
+    gridTextures_.bind(program_, false);
+    scene_.draw(program_, DrawFilter::Opaque, true);
+    timer_.end();
+
+    if (transparent) {
+        timer_.begin("tiled-transparent");
+        applyRenderState(transparentBlendState());  // back to front over the opaque depth, no depth writes
+        gridTextures_.bind(program_, true);
+        scene_.drawTransparentSorted(program_, cam.eye);
+        timer_.end();
+    }
+    applyRenderState(RenderState{});  // no scissor or masks on the resolve blit
+    targets_.resolve(timer_);
+
+    applyRenderState(RenderState{});
+    for (int unit : {LightGridTextures::kUnitGrid, LightGridTextures::kUnitList}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("TiledRenderer::render");
+    stats_.passes = timer_.collect();
+
+    frameInfo_.grid = gs;
+    frameInfo_.assignMilliseconds = assignMs;
+    frameInfo_.listTextureRows = gridTextures_.listRows();
+    frameInfo_.depthBoundsUsed = depthBounds_ != nullptr;
+    return stats_;
+}
+
+ImageRGBA8 TiledRenderer::tileHeatMap(int budget, bool transparent) const {
+    const int w = targets_.width(), h = targets_.height();
+    const std::vector<int>& counts = transparent ? grid_.transparentCounts() : grid_.opaqueCounts();
+    std::vector<int> perPixel(size_t(w) * h, 0);
+    if (!counts.empty())
+        for (int y = 0; y < h; ++y)  // image rows top to bottom, tiles counted from the bottom
+            for (int x = 0; x < w; ++x) perPixel[size_t(y) * w + x] = counts[grid_.tileOf(x, h - 1 - y)];
+    return overlapHeatMap(w, h, perPixel, budget);
+}
+
+}  // namespace lidr

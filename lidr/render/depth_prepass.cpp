@@ -1,0 +1,38 @@
+#include "lidr/render/depth_prepass.h"
+
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+const std::vector<std::pair<std::string, GLuint>>& geometryAttributes() {
+    static const std::vector<std::pair<std::string, GLuint>> attributes = {
+        {"aPosition", gl::kPosition}, {"aNormal", gl::kNormal}, {"aTexCoord", gl::kTexCoord}};
+    return attributes;
+}
+
+DepthPrepass::DepthPrepass()
+    : program_(gl::Program::create("depth-prepass", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("depth_only.frag"), geometryAttributes())) {}
+
+void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) const {
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_LESS;
+    s.depthWrite = true;
+    s.stencil.writeMask = 0xFF;
+    applyRenderState(s);  // masks open for the clear
+    glClearDepth(1.0);
+    glClearStencil(0);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    s.colorMask = glm::bvec4(false);
+    applyRenderState(s);
+    program_.use();
+    program_.set("uViewProj", camera.viewProjection);
+    scene.draw(program_, DrawFilter::Opaque, false);
+    applyRenderState(RenderState{});
+    checkGl("depth pre-pass");
+}
+
+}  // namespace lidr

@@ -1,0 +1,133 @@
+#include "lidr/render/light_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lidr/base/error.h"
+
+namespace lidr {
+
+LightTable::LightTable(const GlInfo& info, int capacity, bool forceFixed16)
+    : format_(info.textureFloat && !forceFixed16 ? LightTableFormat::Float : LightTableFormat::Fixed16),
+      capacity_(capacity),
+      rows_((capacity + 1 + kWidth - 1) / kWidth) {
+    if (capacity < 0 || capacity > 65535) throw Error("light table capacity must be 0..65535");
+    for (TextureSet& set : sets_) {
+        if (format_ == LightTableFormat::Float) {
+            set.posRadius = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
+            set.color = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
+        } else {
+            set.posRadius = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.posRadiusLow = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.color = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+        }
+    }
+}
+
+size_t LightTable::bytes() const {
+    const size_t texels = size_t(kWidth) * rows_;
+    return 2 * (format_ == LightTableFormat::Float ? texels * 32 : texels * 12);
+}
+
+float LightTable::reachError() const {
+    if (format_ == LightTableFormat::Float) return 0.0f;
+    return (0.5f * glm::length(boundsExtent_) + radiusScale_) / 65535.0f * 1.01f;  // 1 %: float rounding here
+}
+
+ShaderDefines LightTable::defines() const {
+    if (format_ == LightTableFormat::Fixed16) return {{"LIDR_LIGHT_TABLE_FIXED16", "1"}};
+    return {};
+}
+
+void LightTable::update(const std::vector<PointLight>& lights) {
+    if (static_cast<int>(lights.size()) > capacity_)
+        throw Error("light table holds " + std::to_string(capacity_) + " lights, scene has " +
+                    std::to_string(lights.size()));
+    count_ = static_cast<int>(lights.size());
+    current_ ^= 1;
+    const TextureSet& set = sets_[current_];
+    const size_t texels = size_t(kWidth) * rows_;
+    if (format_ == LightTableFormat::Float) {
+        // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing.
+        std::vector<float> pos(texels * 4, 0.0f), col(texels * 4, 0.0f);
+        for (size_t i = 0; i < texels; ++i) pos[i * 4 + 3] = 1.0f;
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const PointLight& l = lights[i];
+            float* p = &pos[(i + 1) * 4];
+            p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z, p[3] = l.radius;
+            float* c = &col[(i + 1) * 4];
+            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = 1.0f;
+        }
+        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, pos.data());
+        glBindTexture(GL_TEXTURE_2D, set.color.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, col.data());
+    } else {
+        glm::vec3 lo(0.0f), hi(1.0f);
+        float maxRadius = 1.0f, maxColor = 1.0f;
+        if (!lights.empty()) {
+            lo = hi = lights[0].position;
+            maxRadius = maxColor = 0.0f;
+            for (const PointLight& l : lights) {
+                lo = glm::min(lo, l.position);
+                hi = glm::max(hi, l.position);
+                maxRadius = std::max(maxRadius, l.radius);
+                maxColor = std::max({maxColor, l.color.r, l.color.g, l.color.b});
+            }
+        }
+        boundsMin_ = lo;
+        boundsExtent_ = glm::max(hi - lo, glm::vec3(1e-6f));
+        radiusScale_ = std::max(maxRadius, 1e-6f);
+        colorScale_ = std::max(maxColor, 1e-6f);
+        std::vector<uint8_t> high(texels * 4, 0), low(texels * 4, 0), col(texels * 4, 0);
+        auto put16 = [&](size_t at, float unit) {
+            const int v = static_cast<int>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
+            high[at] = static_cast<uint8_t>(v >> 8);
+            low[at] = static_cast<uint8_t>(v & 0xFF);
+        };
+        put16(3, 1.0f);  // null light: radius = the scale, black
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const PointLight& l = lights[i];
+            const glm::vec3 unit = (l.position - boundsMin_) / boundsExtent_;
+            const size_t t = (i + 1) * 4;
+            put16(t + 0, unit.x);
+            put16(t + 1, unit.y);
+            put16(t + 2, unit.z);
+            // Round the radius up so the fixed-point light never reaches less far than the real one.
+            const int r = static_cast<int>(std::ceil(l.radius / radiusScale_ * 65535.0f));
+            high[t + 3] = static_cast<uint8_t>(std::min(r, 65535) >> 8);
+            low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
+            for (int c = 0; c < 3; ++c)
+                col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
+            col[t + 3] = 255;
+        }
+        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
+        glBindTexture(GL_TEXTURE_2D, set.posRadiusLow.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
+        glBindTexture(GL_TEXTURE_2D, set.color.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    checkGl("LightTable::update");
+}
+
+void LightTable::bind(const gl::Program& program) const {
+    const TextureSet& set = sets_[current_];
+    set.posRadius.bind(kUnitPosRadius);
+    set.color.bind(kUnitColor);
+    program.set("uLightPosRadius", kUnitPosRadius);
+    program.set("uLightColor", kUnitColor);
+    program.set("uLightTableRows", float(rows_));
+    if (format_ == LightTableFormat::Fixed16) {
+        set.posRadiusLow.bind(kUnitPosRadiusLow);
+        program.set("uLightPosRadiusLow", kUnitPosRadiusLow);
+        program.set("uLightBoundsMin", boundsMin_);
+        program.set("uLightBoundsExtent", boundsExtent_);
+        program.set("uLightRadiusScale", radiusScale_);
+        program.set("uLightColorScale", colorScale_);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace lidr

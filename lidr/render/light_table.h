@@ -1,0 +1,53 @@
+#pragma once
+// The light table the forward shaders read: light i (1-based; 0 is the null light) at texel
+// (i mod 256, i / 256) of 256-wide textures. Float textures where ARB_texture_float exists; otherwise a
+// documented fixed-point path (16-bit position and radius in two RGBA8 textures, colour in RGBA8).
+// Two sets of textures alternate frame by frame, so an update never waits for the GPU to finish reading
+// the previous frame's table (Trebilco's advice for dynamic light data).
+#include <vector>
+
+#include "lidr/platform/context.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/scene/scene.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+enum class LightTableFormat { Float, Fixed16 };
+
+class LightTable {
+public:
+    static constexpr int kWidth = 256;
+    // Units above the (up to 8) light-index textures, which take units 0..7.
+    static constexpr int kUnitPosRadius = 8, kUnitColor = 9, kUnitPosRadiusLow = 10;
+
+    LightTable() = default;
+    // Room for `capacity` lights (plus the null light). Fixed16 is chosen when the context has no float
+    // textures or when `forceFixed16`.
+    LightTable(const GlInfo& info, int capacity, bool forceFixed16 = false);
+    void update(const std::vector<PointLight>& lights);  // throws if more lights than capacity
+    void bind(const gl::Program& program) const;          // textures to their units and the uniforms
+    LightTableFormat format() const { return format_; }
+    ShaderDefines defines() const;                         // LIDR_LIGHT_TABLE_FIXED16 when fixed
+    int rows() const { return rows_; }
+    int lightCount() const { return count_; }
+    int capacity() const { return capacity_; }
+    size_t bytes() const;  // both sets
+    // How much farther than the real sphere a light of the last update() may reach in the shader: 0 for the
+    // float table; for fixed16, half a 1/65535 step of the lights' box (positions round to nearest) plus a
+    // 1/65535 step of the largest radius (radii round up). Light assignment widens spheres by it.
+    float reachError() const;
+
+private:
+    LightTableFormat format_ = LightTableFormat::Float;
+    int capacity_ = 0, rows_ = 1, count_ = 0;
+    struct TextureSet {
+        gl::Texture posRadius, posRadiusLow, color;
+    };
+    TextureSet sets_[2];
+    int current_ = 0;
+    glm::vec3 boundsMin_{0.0f}, boundsExtent_{1.0f};
+    float radiusScale_ = 1.0f, colorScale_ = 1.0f;
+};
+
+}  // namespace lidr

@@ -1,0 +1,44 @@
+#pragma once
+// What every render mode is: LIDR ("lidr"), tiled forward ("tiled"), multi-pass forward
+// ("forward-multipass") and the brute-force single-pass forward reference ("forward-brute"). All share the
+// scene, camera, light table layout and shading function, so their images and times compare like for like.
+#include <string>
+#include <vector>
+
+#include "lidr/gl/frame_timer.h"
+#include "lidr/gl/render_targets.h"
+#include "lidr/scene/scene.h"
+
+namespace lidr {
+
+struct ShadingParameters {
+    glm::vec3 ambient{0.04f};
+    glm::vec3 background{0.0f};
+};
+
+struct FrameStats {
+    std::vector<PassTime> passes;  // in order; frame time is their sum
+    const char* timingMethod = "";
+    int sceneLights = 0;
+    int drawnLights = 0;  // lights the frame used after culling
+    long volumeDrawCalls = 0;
+    double frameMilliseconds() const;
+};
+
+class Renderer {
+public:
+    virtual ~Renderer() = default;
+    virtual std::string modeName() const = 0;
+    // Renders one frame (light i has index i + 1); the result stays in targets() until the next call.
+    virtual const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                                     const ShadingParameters& shading) = 0;
+    virtual const RenderTargets& targets() const = 0;
+    // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
+    virtual size_t lightDataBytes() const { return 0; }
+    const FrameStats& lastFrame() const { return stats_; }
+
+protected:
+    FrameStats stats_;
+};
+
+}  // namespace lidr

@@ -1,0 +1,204 @@
+#include "lidr/scene/scene.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "lidr/base/error.h"
+
+namespace lidr {
+
+namespace {
+
+// The light index texture stores at most 16 bits per light index; 0 is the null light.
+constexpr size_t maxLights = 65535;
+
+std::string str(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+std::string str(const glm::vec3& v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ")"; }
+
+bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+[[noreturn]] void fail(const std::string& item, const std::string& problem) { throw Error(item + ": " + problem); }
+
+void requireFinite(const std::string& item, const char* field, const glm::vec3& v) {
+    if (!isFinite(v)) fail(item, std::string(field) + " must be finite, got " + str(v));
+}
+
+void requireFinite(const std::string& item, const char* field, float v) {
+    if (!std::isfinite(v)) fail(item, std::string(field) + " must be finite, got " + str(v));
+}
+
+void requireColor(const std::string& item, const char* field, const glm::vec3& c) {
+    if (!isFinite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+        fail(item, std::string(field) + " must be finite and >= 0, got " + str(c));
+}
+
+void requirePositive(const std::string& item, const char* field, float v) {
+    if (!std::isfinite(v) || v <= 0.0f) fail(item, std::string(field) + " must be finite and > 0, got " + str(v));
+}
+
+// Position of one axis moving at `speed` from `start`, reflected at lo and hi: a triangle wave with period
+// 2 (hi - lo). Computed in double so long times keep their precision.
+float bounceAxis(float start, float speed, float lo, float hi, float t) {
+    const double length = double(hi) - double(lo);
+    if (length <= 0.0) return lo;
+    double unfolded = std::fmod(double(start) - lo + double(speed) * t, 2.0 * length);
+    if (unfolded < 0.0) unfolded += 2.0 * length;
+    return float(lo + (unfolded <= length ? unfolded : 2.0 * length - unfolded));
+}
+
+void validateMaterial(const Material& material, size_t index) {
+    const std::string item = "material " + std::to_string(index) + " '" + material.name + "'";
+    requireColor(item, "diffuse", material.diffuse);
+    requireColor(item, "specular", material.specular);
+    requirePositive(item, "shininess", material.shininess);
+    if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+        fail(item, "opacity must be in [0, 1], got " + str(material.opacity));
+}
+
+void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
+    const std::string item = "mesh " + std::to_string(index) + " '" + mesh.name + "'";
+    if (mesh.material < 0 || size_t(mesh.material) >= materialCount)
+        fail(item, "material " + std::to_string(mesh.material) + " out of range (the scene has " +
+                       std::to_string(materialCount) + " materials)");
+    if (mesh.normals.size() != mesh.positions.size())
+        fail(item, std::to_string(mesh.normals.size()) + " normals for " + std::to_string(mesh.positions.size()) +
+                       " positions; need one per position");
+    if (!mesh.texCoords.empty() && mesh.texCoords.size() != mesh.positions.size())
+        fail(item, std::to_string(mesh.texCoords.size()) + " texCoords for " +
+                       std::to_string(mesh.positions.size()) + " positions; need none or one per position");
+    if (mesh.indices.size() % 3 != 0)
+        fail(item, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        if (!isFinite(mesh.positions[i])) fail(item, "position " + std::to_string(i) + " is not finite: " + str(mesh.positions[i]));
+        if (!isFinite(mesh.normals[i])) fail(item, "normal " + std::to_string(i) + " is not finite: " + str(mesh.normals[i]));
+    }
+    for (size_t i = 0; i < mesh.texCoords.size(); ++i)
+        if (!std::isfinite(mesh.texCoords[i].x) || !std::isfinite(mesh.texCoords[i].y))
+            fail(item, "texCoord " + std::to_string(i) + " is not finite");
+    for (size_t i = 0; i < mesh.indices.size(); ++i)
+        if (mesh.indices[i] >= mesh.positions.size())
+            fail(item, "index " + std::to_string(i) + " is " + std::to_string(mesh.indices[i]) + ", out of range (" +
+                           std::to_string(mesh.positions.size()) + " positions)");
+}
+
+void validateLight(const PointLight& light, size_t index) {
+    const std::string item = "light " + std::to_string(index);
+    requireFinite(item, "position", light.position);
+    requirePositive(item, "radius", light.radius);
+    requireColor(item, "color", light.color);
+    requireFinite(item, "priority", light.priority);
+}
+
+void validatePath(const LightPath& path, size_t index) {
+    const std::string item = "light path " + std::to_string(index);
+    requireFinite(item, "center", path.center);
+    requireFinite(item, "orbitRadius", path.orbitRadius);
+    requireFinite(item, "angularSpeed", path.angularSpeed);
+    requireFinite(item, "phase", path.phase);
+    requireFinite(item, "bobAmplitude", path.bobAmplitude);
+    requireFinite(item, "velocity", path.velocity);
+    requireFinite(item, "boxMin", path.boxMin);
+    requireFinite(item, "boxMax", path.boxMax);
+    if (path.kind == LightPath::Kind::Bounce &&
+        (path.boxMin.x > path.boxMax.x || path.boxMin.y > path.boxMax.y || path.boxMin.z > path.boxMax.z))
+        fail(item, "bounce box min " + str(path.boxMin) + " exceeds max " + str(path.boxMax));
+}
+
+void validateCamera(const Camera& camera) {
+    const std::string item = "camera";
+    requireFinite(item, "position", camera.position);
+    requireFinite(item, "target", camera.target);
+    requireFinite(item, "up", camera.up);
+    requireFinite(item, "fov", camera.fovYDegrees);
+    requireFinite(item, "near", camera.nearPlane);
+    requireFinite(item, "far", camera.farPlane);
+    if (!(camera.fovYDegrees > 0.0f && camera.fovYDegrees < 180.0f))
+        fail(item, "fov must be in (0, 180) degrees, got " + str(camera.fovYDegrees));
+    if (!(camera.nearPlane > 0.0f)) fail(item, "near must be > 0, got " + str(camera.nearPlane));
+    if (!(camera.farPlane > camera.nearPlane))
+        fail(item, "far (" + str(camera.farPlane) + ") must be > near (" + str(camera.nearPlane) + ")");
+    const glm::vec3 view = camera.target - camera.position;
+    if (glm::length(view) == 0.0f) fail(item, "position and target are the same point " + str(camera.position));
+    if (glm::length(glm::cross(glm::normalize(view), camera.up)) < 1e-6f)
+        fail(item, "up " + str(camera.up) + " is zero or parallel to the view direction");
+}
+
+}  // namespace
+
+size_t Scene::triangleCount() const {
+    size_t count = 0;
+    for (const Mesh& mesh : meshes) count += mesh.triangleCount();
+    return count;
+}
+
+// Both bounds are (0, 0, 0) for a scene without geometry.
+glm::vec3 Scene::boundsMin() const {
+    if (triangleCount() == 0) return glm::vec3(0.0f);
+    glm::vec3 result(std::numeric_limits<float>::max());
+    for (const Mesh& mesh : meshes)
+        for (const glm::vec3& p : mesh.positions) result = glm::min(result, p);
+    return result;
+}
+
+glm::vec3 Scene::boundsMax() const {
+    if (triangleCount() == 0) return glm::vec3(0.0f);
+    glm::vec3 result(std::numeric_limits<float>::lowest());
+    for (const Mesh& mesh : meshes)
+        for (const glm::vec3& p : mesh.positions) result = glm::max(result, p);
+    return result;
+}
+
+std::vector<PointLight> Scene::lightsAt(float t) const {
+    std::vector<PointLight> result = lights;
+    if (lightPaths.empty()) return result;
+    if (lightPaths.size() != lights.size())
+        throw Error("Scene::lightsAt: " + std::to_string(lightPaths.size()) + " light paths for " +
+                    std::to_string(lights.size()) + " lights");
+    for (size_t i = 0; i < result.size(); ++i) result[i].position = evaluatePath(lightPaths[i], lights[i].position, t);
+    return result;
+}
+
+glm::vec3 evaluatePath(const LightPath& path, const glm::vec3& restPosition, float t) {
+    switch (path.kind) {
+    case LightPath::Kind::Static:
+        return restPosition;
+    case LightPath::Kind::Orbit: {
+        const float angle = path.phase + path.angularSpeed * t;
+        return path.center + glm::vec3(path.orbitRadius * std::cos(angle), path.bobAmplitude * std::sin(0.7f * angle),
+                                       path.orbitRadius * std::sin(angle));
+    }
+    case LightPath::Kind::Bounce:
+        return {bounceAxis(restPosition.x, path.velocity.x, path.boxMin.x, path.boxMax.x, t),
+                bounceAxis(restPosition.y, path.velocity.y, path.boxMin.y, path.boxMax.y, t),
+                bounceAxis(restPosition.z, path.velocity.z, path.boxMin.z, path.boxMax.z, t)};
+    }
+    return restPosition;
+}
+
+void Scene::validate(int maxResolution) const {
+    if (width <= 0 || height <= 0 || width > maxResolution || height > maxResolution)
+        fail("resolution", std::to_string(width) + "x" + std::to_string(height) + " must be within 1.." +
+                               std::to_string(maxResolution) + " per side");
+    validateCamera(camera);
+    requireFinite("scene", "time", time);
+    requireColor("scene", "ambient", ambient);
+    requireColor("scene", "background", backgroundColor);
+    for (size_t i = 0; i < materials.size(); ++i) validateMaterial(materials[i], i);
+    for (size_t i = 0; i < meshes.size(); ++i) validateMesh(meshes[i], i, materials.size());
+    if (lights.size() > maxLights)
+        fail("lights", std::to_string(lights.size()) + " lights; at most " + std::to_string(maxLights) +
+                           " are supported (16-bit light indices)");
+    for (size_t i = 0; i < lights.size(); ++i) validateLight(lights[i], i);
+    if (!lightPaths.empty() && lightPaths.size() != lights.size())
+        fail("lightPaths", std::to_string(lightPaths.size()) + " paths for " + std::to_string(lights.size()) +
+                               " lights; need none or one per light");
+    for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
+}
+
+}  // namespace lidr

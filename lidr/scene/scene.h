@@ -1,0 +1,93 @@
+#pragma once
+// Scene data: what every render mode (LIDR, tiled, forward) draws. Geometry is stored in world space (model
+// transforms are applied when a scene is built), lights are evaluated for a time with Scene::lightsAt().
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lidr {
+
+struct Material {
+    std::string name;
+    glm::vec3 diffuse{0.8f};
+    std::string diffuseTexture;  // path (resolved against the scene file's folder); empty: none
+    glm::vec3 specular{0.25f};
+    float shininess = 32.0f;
+    float opacity = 1.0f;        // < 1: transparent, drawn after opaque geometry
+};
+
+// One draw batch: triangles of one material, world space.
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> texCoords;  // empty or one per position
+    std::vector<uint32_t> indices;     // triangles
+    int material = 0;
+    size_t triangleCount() const { return indices.size() / 3; }
+};
+
+struct PointLight {
+    glm::vec3 position{0.0f};
+    float radius = 1.0f;
+    glm::vec3 color{1.0f};
+    float priority = 0.0f;  // higher is kept first when a pixel has more lights than the budget
+};
+
+// How a light moves. Closed-form in time, so a frame is the same for the same (seed, time).
+struct LightPath {
+    enum class Kind { Static, Orbit, Bounce };
+    Kind kind = Kind::Static;
+    // Static: the rest position.
+    // Orbit: position = center + orbitRadius * (cos, 0, sin)(a) + (0, bobAmplitude * sin(0.7 a), 0) with
+    // a = phase + angularSpeed * t; the rest position is not used (the light is there at t = 0).
+    glm::vec3 center{0.0f};
+    float orbitRadius = 0.0f, angularSpeed = 0.0f, phase = 0.0f, bobAmplitude = 0.0f;
+    // Bounce: starts at the rest position, moves with velocity, reflected by the box [boxMin, boxMax]
+    // (a triangle wave per axis; an axis where boxMin == boxMax stays at boxMin).
+    glm::vec3 velocity{0.0f}, boxMin{0.0f}, boxMax{0.0f};
+};
+
+struct Camera {
+    glm::vec3 position{0.0f, 2.0f, 8.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovYDegrees = 60.0f;
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+};
+
+struct Scene {
+    std::string name = "unnamed";
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    // Light i has index i + 1 in the index texture; 0 is the null light. Positions are REST positions
+    // (t = 0): paths start from them, so draw lightsAt(time), not `lights`, for the current frame.
+    std::vector<PointLight> lights;
+    std::vector<LightPath> lightPaths;   // empty (all static), or one per light
+    Camera camera;
+    int width = 1024, height = 768;
+    float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
+    std::string renderMode = "lidr";     // the mode tools render it with (lidr/modes/render_mode.h names them)
+    glm::vec3 ambient{0.04f};
+    glm::vec3 backgroundColor{0.0f};
+    // How the scene asks to be rendered (tools may override): MSAA samples (0 = off) and whether
+    // transparent materials are drawn (after the opaque geometry, back to front).
+    int msaaSamples = 0;
+    bool transparency = true;
+
+    size_t triangleCount() const;
+    glm::vec3 boundsMin() const;  // of the geometry
+    glm::vec3 boundsMax() const;
+    // The lights at time t (paths applied). Same t, same result.
+    std::vector<PointLight> lightsAt(float t) const;
+    // Throws lidr::Error describing the first problem: non-finite or negative values, bad indices,
+    // zero or oversized resolution, bad camera, more than 65535 lights (the widest light index).
+    void validate(int maxResolution = 16384) const;
+};
+
+glm::vec3 evaluatePath(const LightPath& path, const glm::vec3& restPosition, float t);
+
+}  // namespace lidr

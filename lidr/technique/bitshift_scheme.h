@@ -1,0 +1,43 @@
+#pragma once
+// CONSTANT_COLOR bit-shift packing (Trebilco 2007): blend ONE, CONSTANT_COLOR(2^-k) shifts each channel's
+// old bits down by k and adds the new light's k-bit group on top. The index is split into k-bit groups, one
+// per channel (C = width / k channels, over ceil(C / 4) targets written together through draw buffers); a
+// channel of 8 bits holds 8 / k lights. k is the widest group that still gives the budget its slots:
+// k = min(width, 8 / min(budget, 8)), which reproduces every row of the paper's table.
+//
+// Overflow: one light past 8/k would shift the oldest group out through round-to-nearest blending, which
+// carries into the kept bits. A stencil rank window therefore lets exactly the first W = min(budget, 8/k)
+// lights (in draw order, i.e. highest priority) write, and counts every light, so drops are known. Budget 16
+// needs two windows of 8 (ranks 0..7, then 8..15 after a stencil restart) in two passes of the light volumes,
+// each into its own set of targets: the paper's "use the stencil buffer when 8 overlaps have been reached".
+#include "lidr/technique/packing_scheme.h"
+
+namespace lidr {
+
+class BitShiftScheme final : public PackingScheme {
+public:
+    BitShiftScheme(const PackingConfig& config, const GlInfo& info);
+    std::string name() const override { return "bitshift"; }
+    int targetCount() const override { return windows_ * windowTargets_; }
+    std::string stencilUse() const override;
+    int geometryPasses() const override { return windows_; }
+    std::vector<SchemeDraw> plan(const std::vector<VolumeLight>& lights, const LightVolumePass* pass) const override;
+    std::string unpackShaderFile() const override { return "unpack_bitshift.glsl"; }
+    ShaderDefines unpackDefines() const override;
+    bool nullEndsList() const override { return true; }
+
+    int groupBits() const { return groupBits_; }        // k
+    int channels() const { return channels_; }          // C = width / k
+    int windowSlots() const { return windowSlots_; }    // W: lights one window holds
+    int windows() const { return windows_; }
+    int windowTargets() const { return windowTargets_; }
+    IndexColors colorsFor(uint32_t index) const;        // target-relative within a window
+
+protected:
+    std::vector<uint32_t> decodeBytes(const std::vector<ShaderFloat>& bytes) const override;
+
+private:
+    int groupBits_ = 2, channels_ = 4, windowSlots_ = 4, windows_ = 1, windowTargets_ = 1;
+};
+
+}  // namespace lidr

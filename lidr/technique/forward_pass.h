@@ -1,0 +1,46 @@
+#pragma once
+// Pass 3 of LIDR: the ordinary forward pass. Each fragment unpacks its light indices from the index
+// targets (the scheme's unpack shader) and shades with those lights from the light table.
+#include "lidr/scene/camera.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/render/light_table.h"
+#include "lidr/technique/light_volume_pass.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/gl/render_targets.h"
+#include "lidr/render/renderer.h"
+
+namespace lidr {
+
+class ForwardPass {
+public:
+    // perSample: the index targets are multisample textures read per sample (GLSL 1.50 compatibility +
+    // ARB_sample_shading); the pass then shades every sample.
+    ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false);
+    // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
+    // depth there, or LEQUAL with depth writes when that target had no pre-pass (so that, as with EQUAL,
+    // the last fragment drawn at the nearest depth stays).
+    void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+             const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
+             bool afterPrepass = true) const;
+    // Transparent geometry over the opaque image, back to front, alpha blended, depth-tested against the
+    // opaque depth without writing it; `indices` must come from a front-face volume pass.
+    void runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
+                        const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading) const;
+
+private:
+    void bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
+                    const CameraMatrices& camera, const ShadingParameters& shading) const;
+    void unbindInputs(const IndexTargets& indices) const;
+    gl::Program program_;
+    bool perSample_ = false;
+};
+
+// The state transparent layers are drawn with, in every mode: over the opaque depth, no depth writes,
+// source-alpha blending, destination alpha kept.
+RenderState transparentBlendState();
+
+// Sets the per-frame uniforms of shading.glsl (eye, ambient).
+void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
+
+}  // namespace lidr

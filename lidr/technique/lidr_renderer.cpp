@@ -1,0 +1,187 @@
+#include "lidr/technique/lidr_renderer.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+
+namespace lidr {
+
+namespace {
+std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+    if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
+        throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
+                    " volume test needs the depth pre-pass; only frontface may skip it");
+    if (o.perSampleIndices) {
+        if (o.msaaSamples < 2) throw Error("per-sample index targets need MSAA (2 or more samples)");
+        if (!info.multisampleTexture || !info.sampleShading)
+            throw UnsupportedError("per-sample index targets need multisample textures (GL 3.2 / "
+                                   "ARB_texture_multisample) and sample shading (GL 4.0 / ARB_sample_shading); this "
+                                   "context (GL " + info.version + ") lacks them: use the single-sample front-face "
+                                   "index texture instead");
+        if (o.msaaSamples > info.maxColorTextureSamples)
+            throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
+                                   " samples asked for, multisample textures allow at most " +
+                                   std::to_string(info.maxColorTextureSamples));
+    } else if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace) {
+        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the frontface "
+                    "volume test with MSAA (or per-sample index targets where the context has them)");
+    }
+    if (o.perSampleIndices && !o.depthPrepass)
+        throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
+    checkSamples(info, o.msaaSamples);
+    auto scheme = createPackingScheme(o.packing, info);
+    if (scene.lights.size() > scheme->maxLights())
+        throw Error("scene has " + std::to_string(scene.lights.size()) + " lights but " +
+                    std::to_string(o.packing.indexBits) + "-bit indices hold at most " +
+                    std::to_string(scheme->maxLights()) + " (choose a wider index)");
+    return scheme;
+}
+}  // namespace
+
+LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height)
+    : options_(options),
+      scheme_(checkedScheme(info, scene, options)),
+      scene_(scene),
+      targets_(info, width, height, options.msaaSamples),
+      indexTargets_(scheme_->targetCount(), width, height,
+                    options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+                    options.perSampleIndices ? options.msaaSamples : 0),
+      lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
+      volumePass_(info, options.volumeTest, options.volumeDetail),
+      forwardPass_(*scheme_, lightTable_, options.perSampleIndices),
+      timer_(info, options.timingMethod) {
+    timer_.setEnabled(options.timing);
+    drawTransparent_ = options.transparency && scene_.hasTransparent();
+    if (drawTransparent_ && options.volumeTest != VolumeTest::FrontFace) {
+        transparentIndexTargets_ =
+            IndexTargets(scheme_->targetCount(), width, height,
+                         options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+                         options.perSampleIndices ? options.msaaSamples : 0);
+        transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace, options.volumeDetail);
+    }
+}
+
+const IndexTargets& LidrRenderer::transparentIndexTargets() const {
+    return transparentIndexTargets_.count() > 0 ? transparentIndexTargets_ : indexTargets_;
+}
+
+std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lights) {
+    std::vector<uint32_t> order(lights.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](uint32_t a, uint32_t b) { return lights[a].priority > lights[b].priority; });
+    for (uint32_t& i : order) ++i;  // 1-based light indices
+    return order;
+}
+
+const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                       const ShadingParameters& shading) {
+    if (lights.size() > scheme_->maxLights())
+        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string(scheme_->maxLights()) +
+                    " that " + std::to_string(options_.packing.indexBits) + "-bit indices hold");
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    stats_ = FrameStats{};
+    stats_.timingMethod = timer_.method();
+    stats_.sceneLights = static_cast<int>(lights.size());
+
+    timer_.begin("light-table");
+    lightTable_.update(lights);
+    std::vector<VolumeLight> volumes;
+    for (uint32_t index : drawOrder(lights)) {
+        const PointLight& l = lights[index - 1];
+        if (options_.cullLights && !sphereMayBeVisible(cam, l.position, l.radius)) continue;
+        volumes.push_back({index, glm::vec4(l.position, l.radius)});
+    }
+    stats_.drawnLights = static_cast<int>(volumes.size());
+    timer_.end();
+
+    // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
+    if (options_.perSampleIndices)
+        targets_.bindColor();
+    else
+        targets_.bindSingleSample();
+    if (options_.depthPrepass) {
+        timer_.begin("depth-prepass");
+        depthPrepass_.run(scene_, cam);
+        timer_.end();
+    } else {
+        RenderState clearable;
+        clearable.depthWrite = true;
+        applyRenderState(clearable);
+        glClearDepth(1.0);
+        glClear(GL_DEPTH_BUFFER_BIT);
+    }
+
+    if (transparentIndexTargets_.count() > 0) {
+        // First, so that the main pass's per-pixel light counts stay in the shared stencil.
+        timer_.begin("light-volumes-transparent");
+        transparentVolumePass_.begin(transparentIndexTargets_, cam);
+        scheme_->encode(transparentVolumePass_, volumes);
+        transparentVolumePass_.end();
+        timer_.end();
+    }
+
+    timer_.begin("light-volumes");
+    volumePass_.begin(indexTargets_, cam);
+    scheme_->encode(volumePass_, volumes);
+    volumePass_.end();
+    stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
+    timer_.end();
+
+    const bool multisampled = targets_.samples() > 0;
+    if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
+        timer_.begin("msaa-depth-prepass");
+        targets_.bindColor();
+        depthPrepass_.run(scene_, cam);
+        timer_.end();
+    }
+
+    timer_.begin("forward");
+    forwardPass_.run(targets_, indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass);
+    timer_.end();
+
+    if (drawTransparent_) {
+        timer_.begin("forward-transparent");
+        forwardPass_.runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
+        timer_.end();
+    }
+    targets_.resolve(timer_);
+
+    stats_.passes = timer_.collect();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("LidrRenderer::render");
+    return stats_;
+}
+
+std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
+    std::vector<ImageRGBA8> out;
+    indexTargets_.framebuffer().bind();
+    for (int i = 0; i < indexTargets_.count(); ++i) {
+        glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+        out.push_back(readPixelsRGBA8(indexTargets_.width(), indexTargets_.height()));
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return out;
+}
+
+std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight>& lights) const {
+    std::vector<float> radii;
+    radii.reserve(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i)
+        radii.push_back(volumePass_.outsideRadiusFor({uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius)}));
+    return radii;
+}
+
+std::vector<uint8_t> LidrRenderer::readLightCounts() const {
+    const int bits = volumePass_.stencilCountBits();
+    if (bits == 0) return {};
+    std::vector<uint8_t> s = targets_.readStencil();
+    const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
+    for (uint8_t& v : s) v &= mask;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return s;
+}
+
+}  // namespace lidr

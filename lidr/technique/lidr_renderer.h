@@ -1,0 +1,92 @@
+#pragma once
+// Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
+// (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file;
+// this class owns the frame: targets, light ordering, culling, timing, readback.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lidr/render/depth_prepass.h"
+#include "lidr/technique/forward_pass.h"
+#include "lidr/gl/frame_timer.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/render/light_table.h"
+#include "lidr/technique/light_volume_pass.h"
+#include "lidr/technique/packing_scheme.h"
+#include "lidr/gl/render_targets.h"
+#include "lidr/render/renderer.h"
+
+namespace lidr {
+
+struct LidrOptions {
+    PackingConfig packing;
+    VolumeTest volumeTest = VolumeTest::BackFace;
+    bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
+    int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
+    // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
+    // a front-face index texture: the main one in front-face mode, else one more volume pass for it alone.
+    bool transparency = true;
+    // Trebilco's MSAA technique 1, optional (GL 3.2 multisample textures + ARB_sample_shading): pre-pass,
+    // light volumes and index targets are all multisampled and every sample reads its own index list, so
+    // any volume test works with MSAA. Needs msaaSamples >= 2.
+    bool perSampleIndices = false;
+    bool cullLights = true;           // skip lights whose volume is wholly outside the view frustum
+    // Coarser volumes (20 or 80 faces) for lights small on screen, where they reach at most a pixel past the
+    // 320-face one (LightVolumePass); false: the 320-face volume for every light.
+    bool volumeDetail = false;
+    bool forceFixedLightTable = false;  // test the no-float-texture light table path
+    bool timing = true;
+    TimingMethod timingMethod = TimingMethod::Auto;
+};
+
+class LidrRenderer final : public Renderer {
+public:
+    // Checks everything before any drawing: FBO support, resolution, scheme x budget x width; throws
+    // UnsupportedError / lidr::Error with the reason.
+    LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height);
+
+    // Renders one frame. `lights` (light i has index i + 1) must fit the index width.
+    std::string modeName() const override { return "lidr"; }
+    const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading) override;
+
+    const PackingScheme& scheme() const { return *scheme_; }
+    const LidrOptions& options() const { return options_; }
+    const RenderTargets& targets() const override { return targets_; }
+    const IndexTargets& indexTargets() const { return indexTargets_; }
+    // The index targets transparent layers read: the main ones in front-face mode.
+    const IndexTargets& transparentIndexTargets() const;
+    bool drawsTransparency() const { return drawTransparent_; }
+    bool perSampleIndices() const { return options_.perSampleIndices; }
+    float volumeMeshOutsideRadius() const { return volumePass_.meshOutsideRadius(); }
+    // Per light of the last frame (light i has index i + 1): the relative vertex distance of the volume it
+    // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
+    std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
+    const LightTable& lightTable() const { return lightTable_; }
+    std::vector<ImageRGBA8> readIndexTargets() const;
+    // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
+    // stencil did not keep a count.
+    std::vector<uint8_t> readLightCounts() const;
+    size_t indexMemoryBytes() const { return indexTargets_.bytes(); }
+    size_t lightDataBytes() const override { return indexTargets_.bytes() + transparentIndexTargets_.bytes(); }
+
+    // Lights in the order the volume pass draws them: priority high to low, then index low to high.
+    static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
+
+private:
+    LidrOptions options_;
+    std::unique_ptr<PackingScheme> scheme_;
+    GpuScene scene_;
+    RenderTargets targets_;
+    IndexTargets indexTargets_;
+    IndexTargets transparentIndexTargets_;  // only when transparent layers need their own front-face lists
+    LightTable lightTable_;
+    DepthPrepass depthPrepass_;
+    LightVolumePass volumePass_;
+    LightVolumePass transparentVolumePass_;
+    ForwardPass forwardPass_;
+    FrameTimer timer_;
+    bool drawTransparent_ = false;
+};
+
+}  // namespace lidr

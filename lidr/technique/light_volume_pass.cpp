@@ -1,0 +1,347 @@
+#include "lidr/technique/light_volume_pass.h"
+
+#include <algorithm>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+const char* volumeTestName(VolumeTest t) {
+    switch (t) {
+    case VolumeTest::BackFace: return "backface";
+    case VolumeTest::ExactStencil: return "exact";
+    case VolumeTest::FrontFace: return "frontface";
+    }
+    return "?";
+}
+
+VolumeTest parseVolumeTest(const std::string& name) {
+    if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
+    if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
+    if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
+    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface)");
+}
+
+IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
+    : width_(width), height_(height), samples_(samples) {
+    if (count < 1 || count > kMaxIndexTargets)
+        throw Error("index target count must be 1.." + std::to_string(kMaxIndexTargets));
+    fbo_ = gl::Framebuffer::create();
+    for (int i = 0; i < count; ++i) {
+        textures_.push_back(samples > 0 ? gl::Texture::create2DMultisample(GL_RGBA8, width, height, samples)
+                                        : gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
+        fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, textures_.back());
+    }
+    fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
+    fbo_.checkComplete("light-index targets");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
+
+LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail)
+    : test_(test), depthClamp_(info.depthClamp), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+    std::vector<glm::vec3> positions;
+    std::vector<uint16_t> indices;
+    for (int level = 0; level < kDetailLevels; ++level) {
+        meshes_[level] = makeLightVolumeMesh(level);
+        const auto base = static_cast<uint16_t>(positions.size());  // GL 2.1 has no base vertex: offset here
+        firstIndex_[level] = static_cast<GLsizei>(indices.size());
+        indexCount_[level] = static_cast<GLsizei>(meshes_[level].indices.size());
+        positions.insert(positions.end(), meshes_[level].positions.begin(), meshes_[level].positions.end());
+        for (uint16_t i : meshes_[level].indices) indices.push_back(static_cast<uint16_t>(base + i));
+    }
+    vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
+    indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
+    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
+    programs_.resize(kMaxIndexTargets);
+    listPrograms_.resize(kMaxIndexTargets);
+}
+
+const gl::Program& LightVolumePass::programFor(int targetCount) const {
+    if (targetCount < 1 || targetCount > maxDrawTargets_)
+        throw UnsupportedError("writing " + std::to_string(targetCount) +
+                               " index targets at once needs that many draw buffers");
+    gl::Program& p = (listSource_ ? listPrograms_ : programs_)[size_t(targetCount - 1)];
+    if (!p) {
+        const std::string base = listSource_ ? "pixel_list_volume" : "light_volume";
+        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        p = gl::Program::create(base + "-" + std::to_string(targetCount), buildShaderSource(base + ".vert", defs),
+                                buildShaderSource(base + ".frag", defs), {{"aPosition", gl::kPosition}});
+    }
+    return p;
+}
+
+void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera) {
+    if (listSource_ && !quad_) {
+        // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
+        const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
+        quad_ = gl::Buffer::create(GL_ARRAY_BUFFER, q, sizeof(q));
+    }
+    targets_ = &targets;
+    camera_ = camera;
+    drawCalls_ = 0;
+    targets.framebuffer().bind();
+    std::vector<GLenum> all;
+    for (int i = 0; i < targets.count(); ++i) all.push_back(GL_COLOR_ATTACHMENT0 + i);
+    glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
+    glViewport(0, 0, targets.width(), targets.height());
+    applyRenderState(RenderState{});  // all masks open for the clear
+    glClearColor(0, 0, 0, 0);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+    glEnableVertexAttribArray(gl::kPosition);
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    checkGl("light-volume pass begin");
+}
+
+int LightVolumePass::detailFor(const VolumeLight& l) const {
+    const int finest = kDetailLevels - 1;
+    if (coarsest_ == finest) return finest;
+    // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
+    // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
+    // Near, behind or far off-axis: the finest volume.
+    const glm::vec3 toCentre = glm::vec3(l.posRadius) - camera_.eye;
+    const float distance = glm::length(toCentre), radius = l.posRadius.w;
+    if (!(distance - radius * meshes_[0].outsideRadius > camera_.nearPlane * 1.5f)) return finest;
+    const float cosOff = glm::dot(toCentre, camera_.forward) / distance;
+    if (!(cosOff > 0.2f)) return finest;
+    const float focal = camera_.projection[1][1] * 0.5f * float(camera_.height);
+    const float sinA = radius / distance;
+    const float pixels = focal * sinA / std::sqrt(std::max(1e-6f, 1.0f - sinA * sinA)) / (cosOff * cosOff);
+    // The coarsest volume whose reach past the finest one's stays under a pixel.
+    for (int level = coarsest_; level < finest; ++level)
+        if ((meshes_[level].outsideRadius - meshes_[finest].outsideRadius) * pixels <= 1.0f) return level;
+    return finest;
+}
+
+bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
+    if (depthClamp_ || listSource_) return false;
+    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * outsideRadiusFor(l) >=
+           camera_.farPlane * 0.999f;
+}
+
+void LightVolumePass::drawVolume(const VolumeLight& light) const {
+    if (listSource_) {
+        const size_t step = light.index - 1;
+        if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
+        listSource_->steps[step]->bind(0);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    } else {
+        const int level = detailFor(light);
+        glDrawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
+                       reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
+    }
+    ++drawCalls_;
+}
+
+// The test hook's colour table: row block t (rows t*R .. t*R+R-1, R = rows per target) holds target t's colour
+// of index i at texel (i mod 256, t*R + i/256), exactly the bytes the colors callback asks for.
+void LightVolumePass::uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors) {
+    const int rows = static_cast<int>(listSource_->maxIndex / 256 + 1);
+    const int height = rows * d.targetCount;
+    std::vector<uint8_t> texels(size_t(256) * height * 4, 0);
+    for (uint32_t i = 0; i <= listSource_->maxIndex; ++i) {
+        const IndexColors c = colors(i);
+        for (int t = 0; t < d.targetCount; ++t)
+            for (int ch = 0; ch < 4; ++ch) {
+                const float v = std::clamp(c[t][ch], 0.0f, 1.0f) * 255.0f;
+                texels[((size_t(t) * rows + i / 256) * 256 + i % 256) * 4 + ch] = static_cast<uint8_t>(std::lround(v));
+            }
+    }
+    colorTable_ = gl::Texture::create2D(GL_RGBA8, 256, height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+}
+
+void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
+                           const std::function<IndexColors(uint32_t)>& colors) {
+    if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
+    if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
+        throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
+    const gl::Program& program = programFor(d.targetCount);
+    program.use();
+    program.set("uViewProj", camera_.viewProjection);
+    if (listSource_) {
+        uploadColorTable(d, colors);
+        colorTable_.bind(1);
+        program.set("uStepIndices", 0);
+        program.set("uColorTable", 1);
+        program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
+        program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
+        program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
+    }
+    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
+        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
+        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
+    if (d.restartCount) {
+        RenderState clear;  // stencil only
+        clear.colorMask = glm::bvec4(false);
+        applyRenderState(clear);
+        glClearStencil(0);
+        glClear(GL_STENCIL_BUFFER_BIT);
+    }
+    std::vector<GLenum> buffers;
+    for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
+    glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+    const GLint posLoc = listSource_ ? -1 : program.uniform("uLightPosRadius");
+    const GLint colorLoc = listSource_ ? -1 : program.uniform("uIndexColor");
+    const GLint clampLoc = listSource_ ? -1 : program.uniform("uClampToFar");
+
+    // The volume test proper: back faces (cull front) at or behind the surface.
+    RenderState inside;
+    inside.depthTest = true;
+    inside.depthFunc = GL_GEQUAL;
+    inside.depthClamp = depthClamp_;  // back faces past the far plane still mark the pixels in front of them
+    inside.cull = true;
+    inside.cullFace = GL_FRONT;
+    inside.colorMask = d.colorMask;
+    inside.blend = d.blend;
+    inside.blendEquation = d.blendEquation;
+    inside.blendSrcRgb = inside.blendSrcAlpha = d.blendSrc;
+    inside.blendDstRgb = inside.blendDstAlpha = d.blendDst;
+    inside.blendColor = d.blendColor;
+    inside.stencilTest = true;
+
+    RenderState mark, count, unmark;
+    // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
+    // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
+    const bool window = d.rankCount > 0;
+    const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
+    // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
+    // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
+    // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
+    // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
+    // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
+    bool separateCount = false;
+    if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
+        inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
+        inside.stencil.ref = d.rankFirst;
+        inside.stencil.readMask = windowMask;
+        if (window) {
+            separateCount = true;
+            inside.stencil.writeMask = 0;
+            count = inside;
+            count.colorMask = glm::bvec4(false);
+            count.blend = false;
+            count.stencil.func = GL_ALWAYS;
+            count.stencil.depthPass = GL_INCR;  // saturates at 255
+            count.stencil.writeMask = 0xFF;
+        } else {
+            inside.stencil.depthPass = GL_INCR;
+        }
+        countBits_ = 8;
+    } else {
+        // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
+        // bits 0..6 count the lights that really contain the surface.
+        mark.depthTest = true;
+        mark.depthFunc = GL_GREATER;  // front face behind the surface: surface in front of the light
+        mark.depthClamp = depthClamp_;
+        mark.cull = true;
+        mark.cullFace = GL_BACK;
+        mark.colorMask = glm::bvec4(false);
+        mark.stencilTest = true;
+        mark.stencil.func = GL_ALWAYS;
+        mark.stencil.ref = 0x80;
+        mark.stencil.depthPass = GL_REPLACE;
+        mark.stencil.writeMask = 0x80;
+        unmark = mark;
+        unmark.stencil.ref = 0;
+        // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
+        inside.stencil.func = window ? GL_EQUAL : GL_GREATER;
+        inside.stencil.ref = window ? d.rankFirst : 0x80;
+        inside.stencil.readMask = windowMask;
+        inside.stencil.writeMask = 0;
+        count = inside;
+        count.colorMask = glm::bvec4(false);
+        count.blend = false;
+        count.stencil.func = GL_GREATER;
+        count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
+        count.stencil.readMask = 0xFF;
+        count.stencil.depthPass = GL_INCR;
+        count.stencil.writeMask = 0x7F;
+        countBits_ = 7;
+    }
+
+    // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
+    // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
+    // (conservative: the whole footprint is marked).
+    auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
+    RenderState insideNoDepth = inside;
+    insideNoDepth.depthFunc = GL_ALWAYS;
+    // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
+    // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
+    // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
+    auto reachesNear = [&](const VolumeLight& l) {
+        return depthOf(l) - l.posRadius.w * outsideRadiusFor(l) <= camera_.nearPlane * 1.001f;
+    };
+
+    enum Choice { kInside, kInsideNoDepth, kFront };
+    int applied = -1;  // re-applied only when the choice changes
+    // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
+    auto stateFor = [&](int choice, const RenderState& base) {
+        RenderState st = base;
+        if (choice == kInsideNoDepth) {
+            st.depthFunc = GL_ALWAYS;
+        } else if (choice == kFront) {
+            st.depthFunc = GL_LEQUAL;
+            st.cullFace = GL_BACK;
+        }
+        return st;
+    };
+    for (const VolumeLight& l : lights) {
+        const bool clampToFar = marksWholeFootprint(l);
+        if (!listSource_) {
+            glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
+            const IndexColors c = colors(l.index);
+            glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
+            glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+        }
+        if (test_ == VolumeTest::ExactStencil) {
+            applyRenderState(mark);
+            drawVolume(l);
+            applyRenderState(clampToFar ? insideNoDepth : inside);
+            drawVolume(l);
+            RenderState c2 = count;
+            if (clampToFar) c2.depthFunc = GL_ALWAYS;
+            applyRenderState(c2);
+            drawVolume(l);
+            applyRenderState(unmark);
+            drawVolume(l);
+            applied = -1;
+            continue;
+        }
+        int want = clampToFar ? kInsideNoDepth : kInside;
+        if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
+        if (separateCount) {
+            if (d.writesColor()) {
+                applyRenderState(stateFor(want, inside));
+                drawVolume(l);
+            }
+            applyRenderState(stateFor(want, count));
+            drawVolume(l);
+            applied = -1;
+            continue;
+        }
+        if (want != applied) {
+            applyRenderState(stateFor(want, inside));
+            applied = want;
+        }
+        drawVolume(l);
+    }
+    checkGl(("light-volume draw '" + d.name + "'").c_str());
+}
+
+void LightVolumePass::end() {
+    glDisableVertexAttribArray(gl::kPosition);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    applyRenderState(RenderState{});
+    targets_ = nullptr;
+    checkGl("light-volume pass end");
+}
+
+}  // namespace lidr

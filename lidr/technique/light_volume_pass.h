@@ -1,0 +1,143 @@
+#pragma once
+// Pass 2 of LIDR: light volumes rasterised into the RGBA8 light-index targets. The pass owns the volume test
+// (which pixels a light marks) and the stencil bookkeeping; the packing scheme owns what is written there
+// (colour, blend state, slot limits) and calls draw() once per sub-pass.
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lidr/scene/camera.h"
+#include "lidr/platform/context.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/technique/light_volume_mesh.h"
+
+namespace lidr {
+
+enum class VolumeTest {
+    BackFace,      // back faces, depth GEQUAL: cheap; also marks surfaces in front of a light (wastes slots)
+    ExactStencil,  // per light: front faces mark the pixels in front of the volume in stencil, then back
+                   // faces GEQUAL where unmarked: exactly the surfaces inside the volume
+    FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
+                   // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
+};
+const char* volumeTestName(VolumeTest t);
+VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface"
+
+constexpr int kMaxIndexTargets = 8;
+using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
+
+// A light as the volume pass sees it: its 1-based index and where it is.
+struct VolumeLight {
+    uint32_t index = 0;
+    glm::vec4 posRadius{0.0f};
+};
+
+// The index textures of one frame plus the FBO that renders into them (depth-stencil shared with the scene).
+class IndexTargets {
+public:
+    IndexTargets() = default;
+    // samples > 0: multisample textures (the per-sample MSAA path); depthStencil must have as many samples.
+    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples = 0);
+    int samples() const { return samples_; }
+    int count() const { return static_cast<int>(textures_.size()); }
+    const gl::Texture& texture(int i) const { return textures_[i]; }
+    const gl::Framebuffer& framebuffer() const { return fbo_; }
+    size_t bytes() const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    std::vector<gl::Texture> textures_;
+    gl::Framebuffer fbo_;
+    int width_ = 0, height_ = 0, samples_ = 0;
+};
+
+// One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.
+struct VolumeDraw {
+    std::string name = "light-volumes";
+    int firstTarget = 0, targetCount = 1;  // written together (draw buffers) when targetCount > 1
+    glm::bvec4 colorMask{true, true, true, true};
+    bool blend = false;
+    GLenum blendEquation = GL_FUNC_ADD;
+    GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
+    glm::vec4 blendColor{0.0f};
+    // Stencil rank window. rankCount > 0: a light writes only where it is the rankFirst-th ..
+    // (rankFirst + rankCount - 1)-th light (0-based, in draw order) to mark the pixel in this draw. rankCount is
+    // a power of two and rankFirst a multiple of it: the test is a masked GL_EQUAL on the count. rankCount 0:
+    // every marking light writes. Either way the stencil counts every light that marks the pixel (saturating),
+    // so lights past the window are counted, not written.
+    int rankFirst = 0, rankCount = 0;
+    bool restartCount = false;  // clear the count first: a further pass over the same lights ranks them anew
+    bool writesColor() const { return colorMask.r || colorMask.g || colorMask.b || colorMask.a; }
+};
+
+// Test hook: instead of light volumes, "light" j (VolumeLight::index = j + 1) is a full-target quad that marks
+// exactly the pixels whose list has a j-th entry, and writes the colours of THAT entry's index (looked up in a
+// table the pass fills from the draw's colors callback). Through it any per-pixel index lists go through the
+// real blend and stencil state of a scheme's draws. The quad is a back face; clear depth to 0.5: list entries
+// pass the depth test, "decoy" entries (B = 255: a volume in front of the surface) fail it.
+struct PixelListSource {
+    std::vector<const gl::Texture*> steps;  // RGBA8, target-sized: R, G = index low, high byte (0: none); B decoy
+    uint32_t maxIndex = 255;                // colour table covers indices 0..maxIndex
+};
+
+class LightVolumePass {
+public:
+    LightVolumePass() = default;
+    // volumeDetail: draw a light with the coarsest of the 20-, 80- and 320-face volumes whose extra reach past
+    // the 320-face one stays under a pixel on screen (lidr-bench: about half the volume pass on many small
+    // lights); false: always the 320-face volume.
+    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false);
+
+    // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil.
+    void begin(const IndexTargets& targets, const CameraMatrices& camera);
+    // Draws each light's volume with the sub-pass's state; colors(index) gives the value per target.
+    void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
+              const std::function<IndexColors(uint32_t index)>& colors);
+    void end();
+    // Draws the lights that follow through the pixel-list test hook (nullptr: light volumes again).
+    void setPixelListSource(const PixelListSource* source) { listSource_ = source; }
+
+    VolumeTest test() const { return test_; }
+    const CameraMatrices& camera() const { return camera_; }
+    bool drawingPixelLists() const { return listSource_ != nullptr; }
+    // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
+    // plane): it then marks its whole screen footprint.
+    bool marksWholeFootprint(const VolumeLight& light) const;
+    // The largest relative vertex distance of the volumes this pass may draw (a bound for CPU models).
+    float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
+    // The volume mesh drawn for `light` in the current pass (0 = 20 faces, 1 = 80, 2 = 320) and its relative
+    // vertex distance: a function of the light and the camera alone, the same for every use in a frame.
+    int detailFor(const VolumeLight& light) const;
+    float outsideRadiusFor(const VolumeLight& light) const { return meshes_[size_t(detailFor(light))].outsideRadius; }
+    // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
+    int stencilCountBits() const { return countBits_; }
+    long drawCalls() const { return drawCalls_; }
+    float meshOutsideRadius() const { return volumeOutsideRadius(); }
+
+private:
+    void drawVolume(const VolumeLight& light) const;
+    const gl::Program& programFor(int targetCount) const;
+    void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
+    VolumeTest test_ = VolumeTest::BackFace;
+    bool depthClamp_ = false;
+    static constexpr int kDetailLevels = 3;
+    LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
+    GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
+    int coarsest_ = kDetailLevels - 1;      // 0 with volumeDetail, else the finest only
+    gl::Buffer vertices_, indices_;
+    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
+    mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's
+    int maxDrawTargets_ = 1;
+    gl::Buffer quad_;
+    gl::Texture colorTable_;
+    const PixelListSource* listSource_ = nullptr;
+    const IndexTargets* targets_ = nullptr;
+    CameraMatrices camera_;
+    int countBits_ = 0;
+    mutable long drawCalls_ = 0;
+};
+
+}  // namespace lidr

@@ -1,0 +1,144 @@
+#include "lidr/technique/packing_scheme.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lidr/technique/bitshift_scheme.h"
+#include "lidr/technique/cpu_sorted_scheme.h"
+#include "lidr/base/error.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/render/light_table.h"
+#include "lidr/technique/max_stencil_scheme.h"
+
+namespace lidr {
+
+SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
+                          std::function<IndexColors(uint32_t index)> colors) {
+    SchemeDraw sd;
+    sd.draw.name = scheme + "-window-" + std::to_string(window);
+    sd.draw.rankFirst = window * windowSlots;
+    sd.draw.rankCount = windowSlots;
+    sd.draw.restartCount = window > 0;
+    sd.lights = lights;
+    sd.colors = std::move(colors);
+    return sd;
+}
+
+std::string PackingScheme::describe() const {
+    return name() + " budget " + std::to_string(config_.budget) + ", " + std::to_string(config_.indexBits) +
+           "-bit indices, " + std::to_string(targetCount()) + " target" + (targetCount() > 1 ? "s" : "") + ", " +
+           std::to_string(geometryPasses()) + " volume pass" + (geometryPasses() > 1 ? "es" : "") + ", stencil: " +
+           stencilUse();
+}
+
+std::vector<std::string> packingSchemeNames() { return {"bitshift", "max-stencil", "cpu-sorted"}; }
+
+std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info) {
+    if (config.scheme == "bitshift") return std::make_unique<BitShiftScheme>(config, info);
+    if (config.scheme == "max-stencil" || config.scheme == "max") return std::make_unique<MaxStencilScheme>(config, info);
+    if (config.scheme == "cpu-sorted" || config.scheme == "sorted") return std::make_unique<CpuSortedScheme>(config, info);
+    std::string valid;
+    for (const auto& n : packingSchemeNames()) valid += (valid.empty() ? "" : ", ") + n;
+    throw UnsupportedError("unknown packing scheme '" + config.scheme + "' (valid: " + valid + ")");
+}
+
+void checkPackingConfig(const PackingConfig& c) {
+    const int b = c.budget, w = c.indexBits;
+    if (w != 4 && w != 8 && w != 16)
+        throw UnsupportedError(c.scheme + ": index width must be 4, 8 or 16 bits, got " + std::to_string(w));
+    if (b != 1 && b != 2 && b != 4 && b != 8 && b != 16)
+        throw UnsupportedError(c.scheme + ": budget must be 1, 2, 4, 8 or 16 lights per pixel, got " + std::to_string(b));
+}
+
+void checkContextFor(const std::string& what, const GlInfo& info, int targets, int drawTargets) {
+    if (targets > kMaxIndexTargets)
+        throw UnsupportedError(what + " needs " + std::to_string(targets) + " index targets; lidr binds at most " +
+                               std::to_string(kMaxIndexTargets));
+    if (info.framebufferObject && targets > info.maxColorAttachments)
+        throw UnsupportedError(what + " needs " + std::to_string(targets) + " FBO colour attachments; this context has " +
+                               std::to_string(info.maxColorAttachments) + " (choose a smaller budget or width)");
+    if (drawTargets > 1 && (!info.drawBuffers || drawTargets > info.maxDrawBuffers))
+        throw UnsupportedError(what + " writes " + std::to_string(drawTargets) + " targets at once; this context has " +
+                               std::to_string(info.drawBuffers ? info.maxDrawBuffers : 1) +
+                               " draw buffers (choose a smaller budget or width)");
+    const int units = std::max(LightTable::kUnitPosRadiusLow, GpuScene::kMaterialTextureUnit) + 1;
+    if (info.maxTextureUnits < units)
+        throw UnsupportedError(what + ": the forward pass binds index textures and the light table on " +
+                               std::to_string(units) + " texture units; this context has " +
+                               std::to_string(info.maxTextureUnits));
+}
+
+void PackingScheme::encode(LightVolumePass& pass, const std::vector<VolumeLight>& lights) const {
+    for (const SchemeDraw& d : plan(lights, &pass)) pass.draw(d.draw, d.lights, d.colors);
+}
+
+namespace {
+double blendFactor(GLenum f, float constant, const BlendModel& m) {
+    switch (f) {
+    case GL_ONE: return 1.0;
+    case GL_ZERO: return 0.0;
+    case GL_CONSTANT_COLOR:
+        return m.quantisedConstant ? std::nearbyint(double(constant) * 255.0) / 255.0 : double(constant);
+    default: throw Error("CPU blend model: unsupported blend factor");
+    }
+}
+}  // namespace
+
+std::vector<uint8_t> PackingScheme::encodePixel(const std::vector<uint32_t>& drawOrder, const BlendModel& model,
+                                                int* stencilCount) const {
+    std::vector<VolumeLight> lights;
+    for (uint32_t index : drawOrder) lights.push_back({index, glm::vec4(0.0f, 0.0f, -10.0f, 1.0f)});
+    std::vector<uint8_t> bytes(size_t(targetCount()) * 4, 0);
+    int count = 0;  // the stencil's light count (saturating INCR)
+    for (const SchemeDraw& sd : plan(lights, nullptr)) {
+        const VolumeDraw& d = sd.draw;
+        if (d.restartCount) count = 0;
+        const int mask = d.rankCount > 0 ? (~(d.rankCount - 1)) & 0xFF : 0;
+        for (const VolumeLight& l : sd.lights) {
+            const bool passes = d.rankCount == 0 || (count & mask) == d.rankFirst;
+            if (passes && d.writesColor()) {
+                const IndexColors c = sd.colors(l.index);
+                for (int t = 0; t < d.targetCount; ++t)
+                    for (int ch = 0; ch < 4; ++ch) {
+                        if (!d.colorMask[ch]) continue;
+                        uint8_t& dst = bytes[size_t(d.firstTarget + t) * 4 + ch];
+                        const double src = std::nearbyint(std::clamp(double(c[t][ch]), 0.0, 1.0) * 255.0);
+                        double v = src;
+                        if (d.blend && d.blendEquation == GL_MAX) {
+                            v = std::max(src, double(dst));
+                        } else if (d.blend) {
+                            if (d.blendEquation != GL_FUNC_ADD) throw Error("CPU blend model: unsupported equation");
+                            v = src * blendFactor(d.blendSrc, d.blendColor[ch], model) +
+                                double(dst) * blendFactor(d.blendDst, d.blendColor[ch], model);
+                            v = model.truncate ? std::floor(v + 1e-9) : std::nearbyint(v);
+                        }
+                        dst = static_cast<uint8_t>(std::clamp(v, 0.0, 255.0));
+                    }
+            }
+            count = std::min(count + 1, 255);
+        }
+    }
+    if (stencilCount) *stencilCount = count;
+    return bytes;
+}
+
+std::vector<uint32_t> PackingScheme::decodeReads(const float* reads, FloatPrecision p) const {
+    std::vector<ShaderFloat> bytes;
+    for (int i = 0; i < targetCount() * 4; ++i) bytes.push_back(lidrBytes(ShaderFloat(reads[i], p)));
+    return decodeBytes(bytes);
+}
+
+std::vector<uint32_t> PackingScheme::decodePixel(const uint8_t* texels) const {
+    // lidrBytes(byte / 255) == byte in every precision (proven in tests), so the exact bytes go straight in.
+    std::vector<ShaderFloat> bytes;
+    for (int i = 0; i < targetCount() * 4; ++i) bytes.emplace_back(double(texels[i]), FloatPrecision::Fp32);
+    return decodeBytes(bytes);
+}
+
+std::vector<uint32_t> PackingScheme::keptLights(const std::vector<uint32_t>& drawOrder) const {
+    std::vector<uint32_t> kept(drawOrder.begin(), drawOrder.begin() + std::min<size_t>(drawOrder.size(), config_.budget));
+    std::sort(kept.begin(), kept.end());
+    return kept;
+}
+
+}  // namespace lidr
