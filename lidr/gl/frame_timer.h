@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 
 namespace lidr {

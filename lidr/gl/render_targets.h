@@ -3,7 +3,7 @@
 // renderbuffer that the LIDR index targets attach too, so the pre-pass depth is shared. With MSAA, shading
 // goes to multisampled colour and depth-stencil renderbuffers and is resolved into the colour texture; the
 // single-sample depth-stencil still serves the light-volume pass (LIDR's index texture is single-sample).
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/base/image.h"
 

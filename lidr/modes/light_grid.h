@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "lidr/scene/camera.h"
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/scene/scene.h"
 

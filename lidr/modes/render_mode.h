@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/multipass_forward_renderer.h"
 #include "lidr/render/renderer.h"

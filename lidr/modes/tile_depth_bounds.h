@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "lidr/scene/camera.h"
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/modes/light_grid.h"

@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 
 #include "lidr/base/error.h"
 #include "lidr/base/gl.h"
@@ -127,14 +126,6 @@ void GlContext::initialiseGl(const std::string& backendName) {
     }
     if (info_.major < 2 || (info_.major == 2 && info_.minor < 1))
         throw UnsupportedError(backendName + ": GL " + info_.version + " is below the GL 2.1 lidr needs");
-}
-
-std::string GlInfo::summary() const {
-    std::ostringstream s;
-    s << "backend " << backend << ", GL " << version << ", renderer " << renderer << ", GLSL " << glslVersion
-      << ", FBO " << (framebufferObject ? "yes" : "no") << ", float textures " << (textureFloat ? "yes" : "no")
-      << ", timer queries " << (timerQuery ? "yes" : "no") << ", max samples " << maxSamples;
-    return s.str();
 }
 
 std::vector<ContextBackend> availableContextBackends() {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "lidr/gl/gl_info.h"
+
 namespace lidr {
 
 enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa };
@@ -16,32 +18,6 @@ struct ContextOptions {
     int windowWidth = 1024, windowHeight = 768;     // GLFW only
     bool visibleWindow = false;                      // GLFW only
     std::string windowTitle = "lidr";
-};
-
-// What the context turned out to be, and what the renderer may use. Filled after GLEW is initialised.
-struct GlInfo {
-    std::string backend;
-    std::string version, renderer, vendor, glslVersion;
-    int major = 0, minor = 0;
-    int glsl = 0;  // GLSL version as a number: 120, 150, 450...
-    bool framebufferObject = false;   // ARB_framebuffer_object or EXT_framebuffer_object + packed depth-stencil
-    bool textureFloat = false;        // ARB_texture_float (light table in float textures)
-    bool timerQuery = false;          // ARB_timer_query or EXT_timer_query
-    bool depthClamp = false;          // ARB_depth_clamp or NV_depth_clamp
-    bool drawBuffers = false;         // GL 2.0 glDrawBuffers
-    bool multisampleFbo = false;      // EXT_framebuffer_multisample (or GL 3.0)
-    int maxSamples = 0;
-    // The optional per-sample MSAA index path (Trebilco's MSAA technique 1): multisample textures
-    // (GL 3.2 / ARB_texture_multisample) read per sample (GL 4.0 / ARB_sample_shading).
-    bool multisampleTexture = false;
-    bool sampleShading = false;
-    int maxColorTextureSamples = 0;
-    int maxDrawBuffers = 1;
-    int maxColorAttachments = 1;      // FBO colour attachments (index targets of one frame)
-    int maxTextureUnits = 2;          // fragment-shader texture image units
-    int maxTextureSize = 0;
-    int stencilBits = 8;
-    std::string summary() const;
 };
 
 class GlContext {

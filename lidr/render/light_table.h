@@ -6,7 +6,7 @@
 // the previous frame's table (Trebilco's advice for dynamic light data).
 #include <vector>
 
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/scene/scene.h"
 #include "lidr/gl/shader_source.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lidr/scene/camera.h"
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/technique/light_volume_mesh.h"

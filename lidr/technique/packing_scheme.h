@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "lidr/platform/context.h"
+#include "lidr/gl/gl_info.h"
 #include "lidr/technique/light_volume_pass.h"
 #include "lidr/base/shader_float.h"
 #include "lidr/gl/shader_source.h"
