@@ -26,7 +26,7 @@ struct ShaderFloat {
 ShaderFloat floorOf(ShaderFloat x);
 ShaderFloat stepOf(double edge, ShaderFloat x);  // GLSL step(edge, x): 0 if x < edge, else 1
 
-// shaders/lidr_bytes.glsl, step for step: the byte behind a texel read.
+// shaders/technique/lidr_bytes.glsl, step for step: the byte behind a texel read.
 ShaderFloat lidrBytes(ShaderFloat read);
 
 // The threshold and value constants lidr_bytes.glsl uses for bit j (for the proofs).

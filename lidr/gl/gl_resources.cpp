@@ -5,6 +5,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/shader_source.h"
 
 namespace lidr::gl {
 
@@ -143,8 +144,9 @@ static GLuint compileShader(GLenum type, const std::string& source, const std::s
         std::string log(static_cast<size_t>(len > 1 ? len : 1), '\0');
         glGetShaderInfoLog(s, len, nullptr, log.data());
         glDeleteShader(s);
+        const std::string strings = shaderSourceStrings(source);
         throw GlError("shader '" + name + "' (" + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                      ") failed to compile:\n" + log);
+                      ") failed to compile" + (strings.empty() ? "" : " (" + strings + ")") + ":\n" + log);
     }
     return s;
 }

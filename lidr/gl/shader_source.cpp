@@ -1,5 +1,6 @@
 #include "lidr/gl/shader_source.h"
 
+#include <algorithm>
 #include <cstring>
 #include <sstream>
 
@@ -13,8 +14,27 @@ std::string shaderFile(const std::string& name) {
     throw Error("no shader file named '" + name + "' in shaders/");
 }
 
-static std::string expandIncludes(const std::string& name, const ShaderIncludes& subs, int depth) {
+static const char kSourceStrings[] = "// lidr source strings:";
+
+// The source-string number of `file` in one expanded source: 0 for the file asked for, then one per file
+// in the order its first #include is met.
+static int sourceNumber(std::vector<std::string>& files, const std::string& file) {
+    const auto it = std::find(files.begin(), files.end(), file);
+    if (it != files.end()) return static_cast<int>(it - files.begin());
+    files.push_back(file);
+    return static_cast<int>(files.size()) - 1;
+}
+
+// A `#line` after which the compiler counts `nextLine` of source string `number`. Before GLSL 3.30 (lidr's
+// shaders are 1.20, the per-sample path 1.50) the line after `#line L` is line L + 1; Mesa follows that.
+static std::string lineDirective(int nextLine, int number) {
+    return "#line " + std::to_string(nextLine - 1) + " " + std::to_string(number) + "\n";
+}
+
+static std::string expandIncludes(const std::string& name, const ShaderIncludes& subs, int depth,
+                                  std::vector<std::string>& files) {
     if (depth > 8) throw Error("shader include nesting too deep at '" + name + "'");
+    const int self = sourceNumber(files, name);
     std::istringstream in(shaderFile(name));
     std::string out, line;
     int lineNo = 0;
@@ -28,7 +48,9 @@ static std::string expandIncludes(const std::string& name, const ShaderIncludes&
             std::string file = line.substr(a + 1, b - a - 1);
             for (const auto& [from, to] : subs)
                 if (file == from) file = to;
-            out += expandIncludes(file, subs, depth + 1);
+            out += lineDirective(1, sourceNumber(files, file));
+            out += expandIncludes(file, subs, depth + 1, files);
+            out += lineDirective(lineNo + 1, self);
             continue;
         }
         out += line;
@@ -38,13 +60,26 @@ static std::string expandIncludes(const std::string& name, const ShaderIncludes&
 }
 
 std::string buildShaderSource(const std::string& name, const ShaderDefines& defines, const ShaderIncludes& subs) {
-    std::string src = expandIncludes(name, subs, 0);
+    std::vector<std::string> files;
+    std::string src = expandIncludes(name, subs, 0, files);
     std::string defs;
     for (const auto& [k, v] : defines) defs += "#define " + k + " " + v + "\n";
+    defs += kSourceStrings;
+    for (size_t i = 0; i < files.size(); ++i) defs += (i ? ", " : " ") + std::to_string(i) + " " + files[i];
+    defs += '\n';
     const size_t v = src.find("#version");
-    if (v == std::string::npos) return "#version 120\n" + defs + src;
+    if (v == std::string::npos) return "#version 120\n" + defs + lineDirective(1, 0) + src;
     const size_t eol = src.find('\n', v);
-    return src.substr(0, eol + 1) + defs + src.substr(eol + 1);
+    const int versionLine = 1 + static_cast<int>(std::count(src.begin(), src.begin() + static_cast<long>(v), '\n'));
+    return src.substr(0, eol + 1) + defs + lineDirective(versionLine + 1, 0) + src.substr(eol + 1);
+}
+
+std::string shaderSourceStrings(const std::string& source) {
+    const size_t a = source.find(kSourceStrings);
+    if (a == std::string::npos) return {};
+    const size_t from = a + std::strlen(kSourceStrings);
+    const size_t b = source.find('\n', from);
+    return "source strings:" + source.substr(from, b == std::string::npos ? b : b - from);
 }
 
 }  // namespace lidr

@@ -1,6 +1,7 @@
 #pragma once
 // GLSL sources come from the files in shaders/, embedded at build time (cmake/EmbedShaders.cmake).
-// A source may say `#include "file.glsl"`; defines are inserted right after its `#version` line.
+// A source may say `#include "file.glsl"`; defines are inserted right after its `#version` line. Files are named
+// by file name alone (shaders/common/, technique/, modes/ are for people; names are unique across them).
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,8 +23,14 @@ using ShaderIncludes = std::vector<std::pair<std::string, std::string>>;
 // The raw text of shaders/<name>; throws lidr::Error if there is no such file.
 std::string shaderFile(const std::string& name);
 
-// The file with includes expanded and `#define NAME VALUE` lines added after `#version`.
+// The file with includes expanded and `#define NAME VALUE` lines added after `#version`. Each file is a GLSL
+// source string (0: `name`, then each included file in first-include order) and `#line` directives keep the
+// compiler's line numbers those of the files, so a log line "2:7(15): error" is line 7 of source string 2;
+// a comment line "// lidr source strings: 0 a.frag, 1 b.glsl" after the defines names the numbers.
 std::string buildShaderSource(const std::string& name, const ShaderDefines& defines = {},
                               const ShaderIncludes& substitutions = {});
+
+// "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.
+std::string shaderSourceStrings(const std::string& source);
 
 }  // namespace lidr

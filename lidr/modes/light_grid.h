@@ -2,7 +2,7 @@
 // The tiled-forward light grid (Olsson & Assarsson 2011, section 6.2; Billeter et al. 2013, section 4.4):
 // the screen in fixed T x T pixel tiles, each with a list of the lights whose sphere may touch a pixel of it.
 // LightGrid builds the lists on the CPU; LightGridTextures holds them in GL 2.1-class textures for the
-// fragment shader (shaders/tiled_grid.glsl reads them; doc/tiled.md has the layout).
+// fragment shader (shaders/modes/tiled_grid.glsl reads them; doc/tiled.md has the layout).
 //
 // Layout: one flat index list, entry 0 is the null light 0 (the shared empty list). Every non-empty tile
 // list is its light indices (ascending) followed by a 0 terminator, so the shader needs only the list's

@@ -11,7 +11,7 @@
 // Formats: the full-size depth copy is always RGBA8 with depth packed as a 24-bit integer in RGB (4 bytes a
 // pixel, exact). The reduced textures are RGBA32F (R = min, G = max) where ARB_texture_float exists and the
 // driver renders to it; otherwise packed RGBA8 too, with the min and the max reduced in two chains (no float
-// render targets and no multiple render targets needed). shaders/depth_pack.glsl has the encoding.
+// render targets and no multiple render targets needed). shaders/modes/depth_pack.glsl has the encoding.
 #include <vector>
 
 #include "lidr/scene/camera.h"
