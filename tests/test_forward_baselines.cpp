@@ -178,7 +178,7 @@ TEST_CASE("render-mode factory builds every mode, all close to the reference", "
     REQUIRE_THROWS_AS(createRenderer(tiled, testGl(), scene, scene.width, scene.height), Error);
 }
 
-TEST_CASE("scene files choose a render mode with \"mode\"", "[forward][modes][scene]") {
+TEST_CASE("scene files choose a render mode with \"mode\"", "[forward][modes][scene][cpu]") {
     const char* base = R"({"primitives": [{"shape": "plane", "center": [0, 0, 0], "size": [4, 4]}]})";
     CHECK(parseSceneJson(base, ".", "default.json").renderMode == "lidr");
     for (const std::string& mode : renderModeNames()) {

@@ -47,7 +47,7 @@ TEST_CASE("the GL context is GL 2.1+ with framebuffer objects", "[context]") {
     CHECK(info.stencilBits == 8);
 }
 
-TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh]") {
+TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh][cpu]") {
     for (int subdivisions : {0, 1, 2}) {
         const LightVolumeMesh m = makeLightVolumeMesh(subdivisions);
         REQUIRE(m.insideRadius >= 1.0f);

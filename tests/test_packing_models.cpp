@@ -60,7 +60,7 @@ std::vector<uint32_t> sortedNonNull(const std::vector<uint32_t>& slots) {
 }  // namespace
 
 TEST_CASE("lidrBytes constants are exact in fp16 and every decision threshold lies within (b+0.45, b+0.55) steps",
-          "[packing][precision][fp16][fp24][fp32]") {
+          "[packing][precision][fp16][fp24][fp32][cpu]") {
     for (int j = 0; j < 8; ++j) {
         REQUIRE(roundToPrecision(lidrBytesThreshold(j), FloatPrecision::Fp16) == lidrBytesThreshold(j));
         REQUIRE(roundToPrecision(lidrBytesValue(j), FloatPrecision::Fp16) == lidrBytesValue(j));
@@ -91,7 +91,7 @@ TEST_CASE("lidrBytes constants are exact in fp16 and every decision threshold li
 }
 
 TEST_CASE("lidrBytes: every fp16 and every fp24 read within +-0.45 step gives the exact byte (exhaustive)",
-          "[packing][precision][fp16][fp24]") {
+          "[packing][precision][fp16][fp24][cpu]") {
     for (FloatPrecision p : {FloatPrecision::Fp16, FloatPrecision::Fp24}) {
         long reads = 0;
         for (int b = 0; b < 256; ++b) {
@@ -110,7 +110,7 @@ TEST_CASE("lidrBytes: every fp16 and every fp24 read within +-0.45 step gives th
 }
 
 TEST_CASE("lidrBytes: fp32 reads within +-0.45 step give the exact byte (interval ends, every breakpoint's "
-          "neighbours, 4,000 reads per byte)", "[packing][precision][fp32]") {
+          "neighbours, 4,000 reads per byte)", "[packing][precision][fp32][cpu]") {
     const FloatPrecision p = FloatPrecision::Fp32;
     for (int b = 0; b < 256; ++b) {
         std::vector<float> reads = {float((b - 0.45) / 255.0), float((b + 0.45) / 255.0), float(b / 255.0)};
@@ -125,7 +125,7 @@ TEST_CASE("lidrBytes: fp32 reads within +-0.45 step give the exact byte (interva
 }
 
 TEST_CASE("the naive floor(x * 255 + 0.5) is not exact in fp16 for reads within +-0.45 step (why lidrBytes exists)",
-          "[packing][precision][fp16]") {
+          "[packing][precision][fp16][cpu]") {
     const FloatPrecision p = FloatPrecision::Fp16;
     int wrong = 0;
     for (int b = 0; b < 256; ++b)
@@ -178,7 +178,7 @@ TEST_CASE("every scheme x budget x width: the CPU model round-trips every index 
 }
 
 TEST_CASE("decoding is exact for reads perturbed within +-0.45 step: fp16 for 4- and 8-bit indices, fp24 and "
-          "fp32 for all widths", "[packing][precision][fp16][fp24][fp32]") {
+          "fp32 for all widths", "[packing][precision][fp16][fp24][fp32][cpu]") {
     for (const char* name : kSchemes)
         for (int bits : {4, 8, 16})
             for (int budget : {1, 2, 4, 8, 16}) {
@@ -208,7 +208,7 @@ TEST_CASE("decoding is exact for reads perturbed within +-0.45 step: fp16 for 4-
 }
 
 TEST_CASE("fp16 cannot hold a 16-bit index in one float: 16-bit widths are proven for fp24 and fp32 only",
-          "[packing][precision][fp16]") {
+          "[packing][precision][fp16][cpu]") {
     // Bytes are still exact in fp16; the index low + 256 * high is not representable past 2048.
     for (const char* name : kSchemes) {
         const auto s = createPackingScheme({name, 1, 16}, fullContext());
@@ -274,7 +274,7 @@ TEST_CASE("MAX scheme: an unlit pixel and a one-light window decode to null slot
 }
 
 TEST_CASE("configurations: targets, passes, memory per pixel, and refusal of what cannot be done",
-          "[packing][bad-input]") {
+          "[packing][bad-input][cpu]") {
     const GlInfo full = fullContext();
     // Paper's bit-shift table: targets per (width, budget).
     const std::map<std::pair<int, int>, int> bitshiftTargets = {

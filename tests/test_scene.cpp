@@ -127,7 +127,7 @@ lidr::PointLight lightAt(const glm::vec3& position, float radius = 1.0f) {
 
 }  // namespace
 
-TEST_CASE("default scene: about 40k triangles of valid geometry", "[scene]") {
+TEST_CASE("default scene: about 40k triangles of valid geometry", "[scene][cpu]") {
     const lidr::Scene scene = lidr::makeDefaultScene();
     CHECK(scene.triangleCount() >= 38000);
     CHECK(scene.triangleCount() <= 45000);
@@ -142,7 +142,7 @@ TEST_CASE("default scene: about 40k triangles of valid geometry", "[scene]") {
     CHECK(scene.height == 768);
 }
 
-TEST_CASE("default scene: 3 large slow movers and 252 small particle lights", "[scene]") {
+TEST_CASE("default scene: 3 large slow movers and 252 small particle lights", "[scene][cpu]") {
     const lidr::Scene scene = lidr::makeDefaultScene();
     REQUIRE(scene.lights.size() == 255);
     REQUIRE(scene.lightPaths.size() == 255);
@@ -182,7 +182,7 @@ TEST_CASE("default scene: 3 large slow movers and 252 small particle lights", "[
     }
 }
 
-TEST_CASE("default scene: deterministic for a seed and time", "[scene]") {
+TEST_CASE("default scene: deterministic for a seed and time", "[scene][cpu]") {
     lidr::DefaultSceneOptions options;
     options.seed = 42;
     options.time = 3.5f;
@@ -208,7 +208,7 @@ TEST_CASE("default scene: deterministic for a seed and time", "[scene]") {
     CHECK(now[100].position != first.lights[100].position);
 }
 
-TEST_CASE("default scene: light count option", "[scene]") {
+TEST_CASE("default scene: light count option", "[scene][cpu]") {
     lidr::DefaultSceneOptions options;
     options.lightCount = 2;
     CHECK(lidr::makeDefaultScene(options).lights.size() == 2);
@@ -220,7 +220,7 @@ TEST_CASE("default scene: light count option", "[scene]") {
     REQUIRE_THROWS_WITH(lidr::makeDefaultScene(options), Contains("lightCount") && Contains("70000"));
 }
 
-TEST_CASE("primitives: counts, outward normals, counter-clockwise winding", "[scene]") {
+TEST_CASE("primitives: counts, outward normals, counter-clockwise winding", "[scene][cpu]") {
     lidr::Scene scene;
     scene.materials.resize(1);
     lidr::addBox(scene, {-1, 0, -2}, {1, 3, 2}, 0, 2);
@@ -259,7 +259,7 @@ TEST_CASE("primitives: counts, outward normals, counter-clockwise winding", "[sc
     REQUIRE_THROWS_WITH(lidr::addBox(scene, {0, 0, 0}, {1, 0, 1}, 0), Contains("size y"));
 }
 
-TEST_CASE("light paths: orbit closed form", "[scene]") {
+TEST_CASE("light paths: orbit closed form", "[scene][cpu]") {
     lidr::LightPath orbit;
     orbit.kind = lidr::LightPath::Kind::Orbit;
     orbit.center = {1, 2, 3};
@@ -275,7 +275,7 @@ TEST_CASE("light paths: orbit closed form", "[scene]") {
     CHECK(lidr::evaluatePath(lidr::LightPath{}, glm::vec3(7, 8, 9), 5.0f) == glm::vec3(7, 8, 9));
 }
 
-TEST_CASE("light paths: bounce is a triangle wave inside its box", "[scene]") {
+TEST_CASE("light paths: bounce is a triangle wave inside its box", "[scene][cpu]") {
     lidr::LightPath bounce;
     bounce.kind = lidr::LightPath::Kind::Bounce;
     bounce.velocity = {3, 0, -1};
@@ -313,7 +313,7 @@ TEST_CASE("light paths: bounce is a triangle wave inside its box", "[scene]") {
     CHECK(scene.lightsAt(1.0f)[0].position == lights[0].position);
 }
 
-TEST_CASE("generateLights: ranges, paths and determinism", "[scene]") {
+TEST_CASE("generateLights: ranges, paths and determinism", "[scene][cpu]") {
     lidr::Scene scene;
     scene.lights.push_back(lightAt({0, 0, 0}));
     lidr::LightGeneratorOptions options;
@@ -367,7 +367,7 @@ TEST_CASE("generateLights: ranges, paths and determinism", "[scene]") {
     REQUIRE_THROWS_WITH(lidr::generateLights(again, options), Contains("radii"));
 }
 
-TEST_CASE("Scene::validate names the offending item", "[scene]") {
+TEST_CASE("Scene::validate names the offending item", "[scene][cpu]") {
     lidr::Scene scene;
     scene.materials.resize(1);
     lidr::addBox(scene, {0, 0, 0}, {1, 1, 1}, 0);
@@ -438,7 +438,7 @@ TEST_CASE("Scene::validate names the offending item", "[scene]") {
     }
 }
 
-TEST_CASE("scene files: every file in media/scenes loads", "[scene]") {
+TEST_CASE("scene files: every file in media/scenes loads", "[scene][cpu]") {
     int count = 0;
     for (const auto& entry : fs::directory_iterator(mediaPath("scenes"))) {
         if (entry.path().extension() != ".json") continue;
@@ -453,7 +453,7 @@ TEST_CASE("scene files: every file in media/scenes loads", "[scene]") {
     CHECK(count >= 3);
 }
 
-TEST_CASE("scene files: the full example in doc/scene-format.md loads", "[scene]") {
+TEST_CASE("scene files: the full example in doc/scene-format.md loads", "[scene][cpu]") {
     std::ifstream in(std::string(LIDR_SOURCE_DIR) + "/doc/scene-format.md");
     std::stringstream doc;
     doc << in.rdbuf();
@@ -472,14 +472,14 @@ TEST_CASE("scene files: the full example in doc/scene-format.md loads", "[scene]
     checkMeshes(scene);
 }
 
-TEST_CASE("scene files: room-default matches makeDefaultScene", "[scene]") {
+TEST_CASE("scene files: room-default matches makeDefaultScene", "[scene][cpu]") {
     const lidr::Scene fromFile = lidr::loadSceneFile(mediaPath("scenes/room-default.json"));
     lidr::Scene built = lidr::makeDefaultScene();
     built.name = fromFile.name;
     CHECK(sceneBytes(fromFile) == sceneBytes(built));
 }
 
-TEST_CASE("scene files: simple-floor", "[scene]") {
+TEST_CASE("scene files: simple-floor", "[scene][cpu]") {
     const lidr::Scene scene = lidr::loadSceneFile(mediaPath("scenes/simple-floor.json"));
     CHECK(scene.name == "simple-floor");
     CHECK(scene.width == 800);
@@ -503,7 +503,7 @@ TEST_CASE("scene files: simple-floor", "[scene]") {
     CHECK(scene.lights[1].position.z == Approx(0.0f).margin(1e-6));
 }
 
-TEST_CASE("scene files: obj-demo with OBJ, MTL and texture", "[scene]") {
+TEST_CASE("scene files: obj-demo with OBJ, MTL and texture", "[scene][cpu]") {
     const lidr::Scene scene = lidr::loadSceneFile(mediaPath("scenes/obj-demo.json"));
     REQUIRE(scene.lights.size() == 25);
     REQUIRE(scene.lightPaths.size() == 25);
@@ -529,7 +529,7 @@ TEST_CASE("scene files: obj-demo with OBJ, MTL and texture", "[scene]") {
     CHECK(crateMeshes == 2);  // the third crate uses the "painted" override
 }
 
-TEST_CASE("OBJ: triangulation, normals, transforms", "[scene]") {
+TEST_CASE("OBJ: triangulation, normals, transforms", "[scene][cpu]") {
     TempDir dir;
     lidr::Scene scene;
     // A unit quad in the xz plane facing +y, and a tetrahedron-like fan with a smoothing group.
@@ -568,7 +568,7 @@ TEST_CASE("OBJ: triangulation, normals, transforms", "[scene]") {
     checkMeshes(scene);
 }
 
-TEST_CASE("scene files: bad input is an lidr::Error naming the problem", "[scene]") {
+TEST_CASE("scene files: bad input is an lidr::Error naming the problem", "[scene][cpu]") {
     TempDir dir;
     const auto load = [&](const std::string& json) { return lidr::loadSceneFile(dir.write("scene.json", json)); };
 
