@@ -74,7 +74,7 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
     o.volumeTest = volumeTest == "auto"
-                       ? (o.msaaSamples > 0 && !msaaPerSample ? VolumeTest::FrontFace : VolumeTest::BackFace)
+                       ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereRay : VolumeTest::Sphere)
                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
     o.timingMethod = parseTimingMethod(timer);

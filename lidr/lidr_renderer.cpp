@@ -24,10 +24,13 @@ std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& sc
             throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
                                    " samples asked for, multisample textures allow at most " +
                                    std::to_string(info.maxColorTextureSamples));
-    } else if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace) {
-        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the frontface "
-                    "volume test with MSAA (or per-sample index targets where the context has them)");
+    } else if (o.msaaSamples > 0 && !isFrontFaceVolumeTest(o.volumeTest)) {
+        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the sphere-ray or "
+                    "frontface volume test with MSAA (or per-sample index targets where the context has them)");
     }
+    if (o.perSampleIndices && isShaderVolumeTest(o.volumeTest))
+        throw Error(std::string("the ") + volumeTestName(o.volumeTest) + " volume test reads single-sample depth; "
+                    "per-sample index targets take backface, exact or frontface");
     if (o.perSampleIndices && !o.depthPrepass)
         throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
     checkSamples(info, o.msaaSamples);
@@ -54,13 +57,19 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       timer_(info, options.timingMethod) {
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
-    if (drawTransparent_ && options.volumeTest != VolumeTest::FrontFace) {
+    bool needsDepthTexture = isShaderVolumeTest(options.volumeTest);
+    if (drawTransparent_ && !isFrontFaceVolumeTest(options.volumeTest)) {
         transparentIndexTargets_ =
             IndexTargets(scheme_->targetCount(), width, height,
                          options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
                          options.perSampleIndices ? options.msaaSamples : 0);
-        transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace, options.volumeDetail);
+        // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
+        const VolumeTest front = options.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
+        transparentVolumePass_ = LightVolumePass(info, front, options.volumeDetail);
+        needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
+    if (needsDepthTexture)
+        depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
 }
 
 const IndexTargets& LidrRenderer::transparentIndexTargets() const {
@@ -105,6 +114,13 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     if (options_.depthPrepass) {
         timer_.begin("depth-prepass");
         depthPrepass_.run(scene_, cam);
+        if (depthTexture_) {
+            // The shader volume tests read the pre-pass depth from a texture that is not attached to the
+            // framebuffer they draw into (reading an attached one is a feedback loop).
+            depthTexture_.bind(0);
+            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
+            checkGl("depth copy for the volume tests");
+        }
         timer_.end();
     } else {
         RenderState clearable;
@@ -117,14 +133,14 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     if (transparentIndexTargets_.count() > 0) {
         // First, so that the main pass's per-pixel light counts stay in the shared stencil.
         timer_.begin("light-volumes-transparent");
-        transparentVolumePass_.begin(transparentIndexTargets_, cam);
+        transparentVolumePass_.begin(transparentIndexTargets_, cam, &depthTexture_);
         scheme_->encode(transparentVolumePass_, volumes);
         transparentVolumePass_.end();
         timer_.end();
     }
 
     timer_.begin("light-volumes");
-    volumePass_.begin(indexTargets_, cam);
+    volumePass_.begin(indexTargets_, cam, &depthTexture_);
     scheme_->encode(volumePass_, volumes);
     volumePass_.end();
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
