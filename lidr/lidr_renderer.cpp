@@ -5,6 +5,7 @@
 
 #include "lidr/error.h"
 #include "lidr/gl_state.h"
+#include "lidr/sphere_bounds.h"
 
 namespace lidr {
 
@@ -131,10 +132,23 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     }
 
     if (transparentIndexTargets_.count() > 0) {
-        // First, so that the main pass's per-pixel light counts stay in the shared stencil.
+        // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
+        // transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds: the
+        // lists outside stay empty, and no transparent surface reads them.
+        glm::ivec4 area(0);
+        std::vector<VolumeLight> reaching;
+        if (transparentScreenArea(cam, area))
+            for (const VolumeLight& v : volumes)
+                if (reachesTransparentMesh(v)) reaching.push_back(v);
+        stats_.transparentVolumeLights = static_cast<int>(reaching.size());
         timer_.begin("light-volumes-transparent");
         transparentVolumePass_.begin(transparentIndexTargets_, cam, &depthTexture_);
-        scheme_->encode(transparentVolumePass_, volumes);
+        if (!reaching.empty()) {
+            const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
+            transparentVolumePass_.setScissor(&box);
+            scheme_->encode(transparentVolumePass_, reaching);
+            transparentVolumePass_.setScissor(nullptr);
+        }
         transparentVolumePass_.end();
         timer_.end();
     }
@@ -169,6 +183,31 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("LidrRenderer::render");
     return stats_;
+}
+
+bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
+    bool any = false;
+    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+        if (!scene_.batchTransparent(b)) continue;
+        glm::vec3 lo, hi;
+        scene_.batchBounds(b, lo, hi);
+        glm::ivec4 r;
+        if (!boxPixelRect(cam, lo, hi, r)) continue;
+        area = any ? glm::ivec4(glm::min(glm::ivec2(area), glm::ivec2(r)), glm::max(glm::ivec2(area.z, area.w), glm::ivec2(r.z, r.w)))
+                   : r;
+        any = true;
+    }
+    return any;
+}
+
+bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
+    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+        if (!scene_.batchTransparent(b)) continue;
+        glm::vec3 lo, hi;
+        scene_.batchBounds(b, lo, hi);
+        if (sphereTouchesBox(glm::vec3(light.posRadius), light.posRadius.w, lo, hi)) return true;
+    }
+    return false;
 }
 
 std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {

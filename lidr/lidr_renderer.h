@@ -74,6 +74,10 @@ public:
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
 
 private:
+    // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
+    // seen; false when none can.
+    bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
+    bool reachesTransparentMesh(const VolumeLight& light) const;  // touches a transparent mesh's bounds
     LidrOptions options_;
     std::unique_ptr<PackingScheme> scheme_;
     GpuScene scene_;

@@ -268,6 +268,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     inside.blendDstRgb = inside.blendDstAlpha = d.blendDst;
     inside.blendColor = d.blendColor;
     inside.stencilTest = true;
+    applyScissor(inside);
 
     RenderState mark, count, unmark;
     // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
@@ -311,6 +312,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         mark.stencil.ref = 0x80;
         mark.stencil.depthPass = GL_REPLACE;
         mark.stencil.writeMask = 0x80;
+        applyScissor(mark);
         unmark = mark;
         unmark.stencil.ref = 0;
         // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
@@ -459,6 +461,7 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
     st.stencil.writeMask = 0xFF;
     countBits_ = 8;
+    applyScissor(st);
     RenderState noPreTest = st;
     noPreTest.depthTest = false;
 

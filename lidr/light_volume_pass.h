@@ -107,6 +107,9 @@ public:
     void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
               const std::function<IndexColors(uint32_t index)>& colors);
     void end();
+    // Limits the following draws to a pixel rectangle (x, y, width, height; GL window coordinates), e.g. where
+    // transparent geometry can be; nullptr: the whole target.
+    void setScissor(const glm::ivec4* box) { scissor_ = box ? *box : glm::ivec4(-1); }
     // Draws the lights that follow through the pixel-list test hook (nullptr: light volumes again).
     void setPixelListSource(const PixelListSource* source) { listSource_ = source; }
 
@@ -160,6 +163,11 @@ private:
     gl::Buffer batchVertices_, batchIndices_;
     mutable std::vector<gl::Program> batchPrograms_;
     const gl::Texture* depth_ = nullptr;
+    glm::ivec4 scissor_{-1};  // z < 0: none
+    void applyScissor(RenderState& s) const {
+        s.scissor = scissor_.z >= 0;
+        s.scissorBox = scissor_;
+    }
     int maxDrawTargets_ = 1;
     gl::Buffer quad_;
     gl::Texture colorTable_;
