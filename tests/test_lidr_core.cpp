@@ -178,7 +178,11 @@ TEST_CASE("the index texture holds exactly the CPU model's bytes", "[lidr][bitsh
     scene.lights = {light(glm::vec3(0.0f, 0.5f, 0.0f), 5.0f, glm::vec3(1.0f), 1.0f),
                     light(glm::vec3(0.5f, 0.5f, 0.5f), 5.0f, glm::vec3(1.0f), 3.0f),
                     light(glm::vec3(-0.5f, 0.5f, 0.0f), 5.0f, glm::vec3(1.0f), 2.0f)};
-    const RenderResult r = renderAndEvaluate(scene, LidrOptions{});
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
+    LidrOptions options;
+    options.packing = {"bitshift", 4, 8};
+    options.volumeTest = test;
+    const RenderResult r = renderAndEvaluate(scene, options);
     BitShiftScheme model({"bitshift", 4, 8}, testGl());
     const std::vector<uint8_t> expected = model.encodePixel({2, 3, 1});  // priority order 3.0, 2.0, 1.0
     long checked = 0;
@@ -197,7 +201,11 @@ TEST_CASE("overflow keeps the highest-priority lights intact and counts the rest
     for (int i = 0; i < 7; ++i)
         scene.lights.push_back(light(glm::vec3(0.3f * float(i % 3) - 0.3f, 0.5f, 0.2f * float(i) - 0.6f), 4.0f,
                                      glm::vec3(0.2f), float(i)));
-    const RenderResult r = renderAndEvaluate(scene, LidrOptions{});
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
+    LidrOptions options;
+    options.packing = {"bitshift", 4, 8};
+    options.volumeTest = test;
+    const RenderResult r = renderAndEvaluate(scene, options);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);
     long fullPixels = 0;
     for (size_t p = 0; p < r.evaluation.marked.size(); ++p) {
