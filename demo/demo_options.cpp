@@ -44,10 +44,11 @@ void RendererChoice::addOptions(CLI::App& app) {
                    "Packing scheme: " + schemes +
                        " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
                        "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
-    app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)");
+    app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)")->capture_default_str();
     app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
     app.add_option("--volume-test", volumeTest,
-                   "Light volume test: auto (backface; frontface with MSAA), backface, exact (stencil), frontface");
+                   "Light volume test: auto (sphere; sphere-ray with MSAA; backface with --msaa-per-sample), sphere "
+                   "(exact, in the shader, batched), sphere-ray, backface, exact (stencil), frontface");
     app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
     app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
     app.add_flag("--msaa-per-sample", msaaPerSample,
@@ -74,7 +75,7 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
     o.volumeTest = volumeTest == "auto"
-                       ? (o.msaaSamples > 0 && !msaaPerSample ? VolumeTest::FrontFace : VolumeTest::BackFace)
+                       ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereRay : VolumeTest::Sphere)
                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
     o.timingMethod = parseTimingMethod(timer);

@@ -28,9 +28,9 @@ struct RendererChoice {
     bool packedDepth = false;
     bool halfZ = false;
     std::string scheme = "bitshift";
-    int budget = 4;
+    int budget = 8;
     int indexBits = 8;
-    std::string volumeTest = "auto";  // backface, or frontface with MSAA
+    std::string volumeTest = "auto";  // sphere, or sphere-ray with MSAA (backface with per-sample lists)
     int msaa = -1;                     // < 0: the scene's
     std::string transparency = "scene";
     bool msaaPerSample = false;

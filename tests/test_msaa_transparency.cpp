@@ -57,7 +57,8 @@ void requireNeverBrighter(const RenderResult& r) {
 
 TEST_CASE("transparent panes over a lit floor match the reference with the same blending", "[transparency]") {
     const Scene scene = glassScene();
-    for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::BackFace, VolumeTest::ExactStencil}) {
+    for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere,
+                            VolumeTest::SphereRay}) {
         INFO("volume test " << volumeTestName(test));
         const RenderResult r = renderWith(scene, test);
         requireWithinBudgetExact(r);
@@ -73,19 +74,23 @@ TEST_CASE("transparent panes over a lit floor match the reference with the same 
 
 TEST_CASE("front-face mode: GPU marks equal the lights crossing each eye ray before the surface", "[frontface]") {
     const Scene scene = glassScene();
-    const RenderResult r = renderWith(scene, VolumeTest::FrontFace);
+    const VolumeTest test = GENERATE(VolumeTest::FrontFace, VolumeTest::SphereRay);
+    INFO("volume test " << volumeTestName(test));
+    const RenderResult r = renderWith(scene, test);
     const RenderTargets* none = nullptr;
     (void)none;
     const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
     // Rebuild the depth from a renderer of the same scene (the evaluation read it already).
     LidrOptions o;
-    o.volumeTest = VolumeTest::FrontFace;
+    o.volumeTest = test;
     LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
     renderer.render(scene.camera, scene.lights, {});
     const ImageFloat depth = renderer.targets().readDepth();
     const std::vector<uint8_t> gpu = renderer.readLightCounts();
     const std::vector<int> exact = frontFaceCounts(depth, cam, scene.lights, 0.995f);
-    const std::vector<int> outer = frontFaceCounts(depth, cam, scene.lights, renderer.volumeMeshOutsideRadius() * 1.005f);
+    // The stencil test marks up to its volume mesh; the sphere-ray test up to a hair over the radius.
+    const float reach = test == VolumeTest::SphereRay ? LightVolumePass::kSphereRadiusScale : renderer.volumeMeshOutsideRadius();
+    const std::vector<int> outer = frontFaceCounts(depth, cam, scene.lights, reach * 1.005f);
     long equalToExact = 0;
     for (size_t p = 0; p < gpu.size(); ++p) {
         REQUIRE(int(gpu[p]) >= exact[p]);  // never misses a light that crosses the ray
@@ -122,19 +127,22 @@ TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa]") {
     for (int samples : {2, 4}) {
         if (samples > info.maxSamples) continue;
         INFO(samples << "x MSAA");
-        const RenderResult r = renderWith(scene, VolumeTest::FrontFace, samples);
-        const FrameEvaluation& e = r.evaluation;
-        REQUIRE(e.lists.invalidSlots == 0);
-        requireNeverBrighter(r);
-        // Stated bound: the index list is built at pixel centres, so an edge sample whose surface differs
-        // from the centre's may miss a light whose volume boundary passes between them. Within budget:
-        // PSNR >= 50 dB and at most 0.5% of pixels more than one step off.
-        INFO("PSNR " << e.errorWithinBudget.psnr << ", over 1: " << e.errorWithinBudget.pixelsOverThreshold);
-        REQUIRE(e.errorWithinBudget.psnr >= 50.0);
-        REQUIRE(e.errorWithinBudget.pixelsOverThreshold * 200 <= e.errorWithinBudget.comparedPixels);
-        // MSAA really happened: edges differ from the single-sample image.
-        const RenderResult single = renderWith(scene, VolumeTest::FrontFace, 0);
-        CHECK(compareImages(r.lidr, single.lidr).differingPixels > 50);
+        for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::SphereRay}) {
+            INFO("volume test " << volumeTestName(test));
+            const RenderResult r = renderWith(scene, test, samples);
+            const FrameEvaluation& e = r.evaluation;
+            REQUIRE(e.lists.invalidSlots == 0);
+            requireNeverBrighter(r);
+            // Stated bound: the index list is built at pixel centres, so an edge sample whose surface differs
+            // from the centre's may miss a light whose volume boundary passes between them. Within budget:
+            // PSNR >= 50 dB and at most 0.5% of pixels more than one step off.
+            INFO("PSNR " << e.errorWithinBudget.psnr << ", over 1: " << e.errorWithinBudget.pixelsOverThreshold);
+            REQUIRE(e.errorWithinBudget.psnr >= 50.0);
+            REQUIRE(e.errorWithinBudget.pixelsOverThreshold * 200 <= e.errorWithinBudget.comparedPixels);
+            // MSAA really happened: edges differ from the single-sample image.
+            const RenderResult single = renderWith(scene, test, 0);
+            CHECK(compareImages(r.lidr, single.lidr).differingPixels > 50);
+        }
     }
 }
 
@@ -153,8 +161,12 @@ TEST_CASE("MSAA and pre-pass requests the context or the mode cannot honour are 
                         Catch::Contains("multisample framebuffers"));
     o.volumeTest = VolumeTest::BackFace;
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("frontface"));
+    o.volumeTest = VolumeTest::Sphere;
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("sphere-ray"));
     o.msaaSamples = 0;
     o.depthPrepass = false;
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("pre-pass"));
+    o.volumeTest = VolumeTest::SphereRay;  // the shader tests read the pre-pass depth
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("pre-pass"));
     REQUIRE(glGetError() == GL_NO_ERROR);
 }
@@ -196,6 +208,9 @@ TEST_CASE("optional per-sample MSAA index targets (Trebilco's technique 1) match
         REQUIRE(r.evaluation.error.maxAbsError <= 1);
         requireNeverBrighter(r);
     }
+    o.volumeTest = VolumeTest::Sphere;  // reads single-sample depth: refused, naming the tests that work
+    REQUIRE_THROWS_WITH(LidrRenderer(info, scene, o, scene.width, scene.height), Catch::Contains("per-sample"));
+    o.volumeTest = VolumeTest::FrontFace;
     o.depthPrepass = false;
     REQUIRE_THROWS_WITH(LidrRenderer(info, scene, o, scene.width, scene.height), Catch::Contains("pre-pass"));
     o.depthPrepass = true;

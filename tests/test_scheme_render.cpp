@@ -41,6 +41,7 @@ int controlledSize(bool width) { return isSoftpipe() ? (width ? 96 : 72) : (widt
 
 TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width keeps the top-priority lights, "
           "counts the rest exactly, corrupts nothing", "[render][schemes]") {
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
     for (const char* name : kSchemes)
         for (int bits : {4, 8, 16})
             for (int budget : {1, 2, 4, 8, 16})
@@ -55,8 +56,9 @@ TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width 
                     const int kk = int(scene.lights.size()) / std::max(1, int(scene.lights.size()) / std::min(k, o.maxLights));
                     LidrOptions options;
                     options.packing = {name, budget, bits};
+                    options.volumeTest = test;
                     const RenderResult r = renderAndEvaluate(scene, options);
-                    const std::string what = r.stats.drawnLights >= 0 ? std::string(name) + " budget " + std::to_string(budget) +
+                    const std::string what = r.stats.drawnLights >= 0 ? std::string(volumeTestName(test)) + " " + name + " budget " + std::to_string(budget) +
                                                                             " " + std::to_string(bits) + "-bit, k " + std::to_string(kk)
                                                                       : "";
                     requireCorrectFrame(r, what);
@@ -81,8 +83,9 @@ TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width 
                 }
 }
 
-TEST_CASE("controlled overlap under the exact stencil test: every scheme x width at budgets 2, 8, 16",
+TEST_CASE("controlled overlap under the exact tests (stencil and sphere): every scheme x width at budgets 2, 8, 16",
           "[render][schemes][exact]") {
+    const VolumeTest test = GENERATE(VolumeTest::ExactStencil, VolumeTest::Sphere);
     for (const char* name : kSchemes)
         for (int bits : {4, 8, 16})
             for (int budget : {2, 8, 16}) {
@@ -95,9 +98,9 @@ TEST_CASE("controlled overlap under the exact stencil test: every scheme x width
                 const Scene scene = makeControlledOverlapScene(o);
                 LidrOptions options;
                 options.packing = {name, budget, bits};
-                options.volumeTest = VolumeTest::ExactStencil;
+                options.volumeTest = test;
                 const RenderResult r = renderAndEvaluate(scene, options);
-                requireCorrectFrame(r, std::string(name) + " exact budget " + std::to_string(budget) + " " +
+                requireCorrectFrame(r, std::string(name) + " " + volumeTestName(test) + " budget " + std::to_string(budget) + " " +
                                            std::to_string(bits) + "-bit");
                 long pixels = 0;
                 for (size_t p = 0; p < r.evaluation.marked.size(); ++p)
@@ -116,7 +119,7 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
     o.height = testHeight();
     const Scene scene = makeDefaultScene(o);
     for (const char* name : kSchemes)
-        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil}) {
+        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
             LidrOptions options;
             options.packing = {name, 4, 8};
             options.volumeTest = test;
@@ -165,6 +168,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
     // What the back-face test does: light 2, behind the wall, marks the wall where light 1 lights it.
     LidrOptions backface;
     backface.packing = {"bitshift", 4, 8};
+    backface.volumeTest = VolumeTest::BackFace;
     const RenderResult rb = renderAndEvaluate(scene, backface);
     long doubleMarkedOneTouching = 0;
     for (size_t p = 0; p < rb.evaluation.marked.size(); ++p)
@@ -173,7 +177,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
 
     // CPU sorting, one group: under back-face the pair conflicts (light 2 dropped and counted); under the
     // exact test it does not (both in group 0, nothing dropped).
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil}) {
+    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
         LidrOptions sorted;
         sorted.packing = {"cpu-sorted", 1, 8};
         sorted.volumeTest = test;

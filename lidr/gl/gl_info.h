@@ -26,6 +26,7 @@ struct GlInfo {
     int maxDrawBuffers = 1;
     int maxColorAttachments = 1;      // FBO colour attachments (index targets of one frame)
     int maxTextureUnits = 2;          // fragment-shader texture image units
+    int maxVertexUniformVectors = 128;  // GL_MAX_VERTEX_UNIFORM_COMPONENTS / 4 (GL 2.1 guarantees 128)
     int maxTextureSize = 0;
     int stencilBits = 8;
     std::string summary() const;

@@ -122,6 +122,9 @@ void GlContext::initialiseGl(const std::string& backendName) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
     if (info_.framebufferObject) glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &info_.maxColorAttachments);
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &info_.maxTextureUnits);
+    GLint vertexUniformComponents = 0;
+    glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &vertexUniformComponents);
+    if (vertexUniformComponents >= 512) info_.maxVertexUniformVectors = vertexUniformComponents / 4;
     while (glGetError() != GL_NO_ERROR) {
     }
     if (info_.major < 2 || (info_.major == 2 && info_.minor < 1))

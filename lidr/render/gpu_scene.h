@@ -40,6 +40,7 @@ public:
         boundsMin = batches_.at(batch).boundsMin, boundsMax = batches_.at(batch).boundsMax;
     }
     bool hasTransparent() const;
+    bool batchTransparent(size_t batch) const { return materials_[size_t(batches_.at(batch).material)].opacity < 1.0f; }
     size_t triangleCount() const { return triangles_; }
 
 private:

@@ -22,6 +22,7 @@ struct FrameStats {
     int sceneLights = 0;
     int drawnLights = 0;  // lights the frame used after culling
     long volumeDrawCalls = 0;
+    int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
     double frameMilliseconds() const;
 };
 

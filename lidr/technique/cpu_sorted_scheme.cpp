@@ -39,7 +39,8 @@ bool CpuSortedScheme::mayShareAPixel(const VolumeLight& a, const VolumeLight& b,
     const float outsideA = pass.outsideRadiusFor(a), outsideB = pass.outsideRadiusFor(b);  // the volumes drawn
     const CameraMatrices& cam = pass.camera();
     if (!screenFootprint(cam, a.posRadius, outsideA).overlaps(screenFootprint(cam, b.posRadius, outsideB))) return false;
-    if (pass.test() != VolumeTest::ExactStencil) return true;  // back-face and front-face tests: footprints
+    // Back-face and front-face tests: footprints. The exact tests mark surface points within outside * radius.
+    if (pass.test() != VolumeTest::ExactStencil && pass.test() != VolumeTest::Sphere) return true;
     if (pass.marksWholeFootprint(a) || pass.marksWholeFootprint(b)) return true;
     // Exact test: a marked surface point lies inside the volume mesh, within outside * radius of the centre.
     const float reach = (a.posRadius.w * outsideA + b.posRadius.w * outsideB) * 1.001f + 1e-4f;

@@ -5,6 +5,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
 
@@ -24,10 +25,13 @@ std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& sc
             throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
                                    " samples asked for, multisample textures allow at most " +
                                    std::to_string(info.maxColorTextureSamples));
-    } else if (o.msaaSamples > 0 && o.volumeTest != VolumeTest::FrontFace) {
-        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the frontface "
-                    "volume test with MSAA (or per-sample index targets where the context has them)");
+    } else if (o.msaaSamples > 0 && !isFrontFaceVolumeTest(o.volumeTest)) {
+        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the sphere-ray or "
+                    "frontface volume test with MSAA (or per-sample index targets where the context has them)");
     }
+    if (o.perSampleIndices && isShaderVolumeTest(o.volumeTest))
+        throw Error(std::string("the ") + volumeTestName(o.volumeTest) + " volume test reads single-sample depth; "
+                    "per-sample index targets take backface, exact or frontface");
     if (o.perSampleIndices && !o.depthPrepass)
         throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
     checkSamples(info, o.msaaSamples);
@@ -54,13 +58,19 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       timer_(info, options.timingMethod) {
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
-    if (drawTransparent_ && options.volumeTest != VolumeTest::FrontFace) {
+    bool needsDepthTexture = isShaderVolumeTest(options.volumeTest);
+    if (drawTransparent_ && !isFrontFaceVolumeTest(options.volumeTest)) {
         transparentIndexTargets_ =
             IndexTargets(scheme_->targetCount(), width, height,
                          options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
                          options.perSampleIndices ? options.msaaSamples : 0);
-        transparentVolumePass_ = LightVolumePass(info, VolumeTest::FrontFace, options.volumeDetail);
+        // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
+        const VolumeTest front = options.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
+        transparentVolumePass_ = LightVolumePass(info, front, options.volumeDetail);
+        needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
+    if (needsDepthTexture)
+        depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
 }
 
 const IndexTargets& LidrRenderer::transparentIndexTargets() const {
@@ -105,6 +115,13 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     if (options_.depthPrepass) {
         timer_.begin("depth-prepass");
         depthPrepass_.run(scene_, cam);
+        if (depthTexture_) {
+            // The shader volume tests read the pre-pass depth from a texture that is not attached to the
+            // framebuffer they draw into (reading an attached one is a feedback loop).
+            depthTexture_.bind(0);
+            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
+            checkGl("depth copy for the volume tests");
+        }
         timer_.end();
     } else {
         RenderState clearable;
@@ -115,16 +132,29 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     }
 
     if (transparentIndexTargets_.count() > 0) {
-        // First, so that the main pass's per-pixel light counts stay in the shared stencil.
+        // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
+        // transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds: the
+        // lists outside stay empty, and no transparent surface reads them.
+        glm::ivec4 area(0);
+        std::vector<VolumeLight> reaching;
+        if (transparentScreenArea(cam, area))
+            for (const VolumeLight& v : volumes)
+                if (reachesTransparentMesh(v)) reaching.push_back(v);
+        stats_.transparentVolumeLights = static_cast<int>(reaching.size());
         timer_.begin("light-volumes-transparent");
-        transparentVolumePass_.begin(transparentIndexTargets_, cam);
-        scheme_->encode(transparentVolumePass_, volumes);
+        transparentVolumePass_.begin(transparentIndexTargets_, cam, &depthTexture_);
+        if (!reaching.empty()) {
+            const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
+            transparentVolumePass_.setScissor(&box);
+            scheme_->encode(transparentVolumePass_, reaching);
+            transparentVolumePass_.setScissor(nullptr);
+        }
         transparentVolumePass_.end();
         timer_.end();
     }
 
     timer_.begin("light-volumes");
-    volumePass_.begin(indexTargets_, cam);
+    volumePass_.begin(indexTargets_, cam, &depthTexture_);
     scheme_->encode(volumePass_, volumes);
     volumePass_.end();
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
@@ -153,6 +183,31 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("LidrRenderer::render");
     return stats_;
+}
+
+bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
+    bool any = false;
+    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+        if (!scene_.batchTransparent(b)) continue;
+        glm::vec3 lo, hi;
+        scene_.batchBounds(b, lo, hi);
+        glm::ivec4 r;
+        if (!boxPixelRect(cam, lo, hi, r)) continue;
+        area = any ? glm::ivec4(glm::min(glm::ivec2(area), glm::ivec2(r)), glm::max(glm::ivec2(area.z, area.w), glm::ivec2(r.z, r.w)))
+                   : r;
+        any = true;
+    }
+    return any;
+}
+
+bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
+    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+        if (!scene_.batchTransparent(b)) continue;
+        glm::vec3 lo, hi;
+        scene_.batchBounds(b, lo, hi);
+        if (sphereTouchesBox(glm::vec3(light.posRadius), light.posRadius.w, lo, hi)) return true;
+    }
+    return false;
 }
 
 std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {

@@ -20,7 +20,7 @@ namespace lidr {
 
 struct LidrOptions {
     PackingConfig packing;
-    VolumeTest volumeTest = VolumeTest::BackFace;
+    VolumeTest volumeTest = VolumeTest::Sphere;  // exact, batched (LightVolumePass)
     bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
     int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
     // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
@@ -74,12 +74,17 @@ public:
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
 
 private:
+    // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
+    // seen; false when none can.
+    bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
+    bool reachesTransparentMesh(const VolumeLight& light) const;  // touches a transparent mesh's bounds
     LidrOptions options_;
     std::unique_ptr<PackingScheme> scheme_;
     GpuScene scene_;
     RenderTargets targets_;
     IndexTargets indexTargets_;
     IndexTargets transparentIndexTargets_;  // only when transparent layers need their own front-face lists
+    gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;

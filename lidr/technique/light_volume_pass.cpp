@@ -14,6 +14,8 @@ const char* volumeTestName(VolumeTest t) {
     case VolumeTest::BackFace: return "backface";
     case VolumeTest::ExactStencil: return "exact";
     case VolumeTest::FrontFace: return "frontface";
+    case VolumeTest::Sphere: return "sphere";
+    case VolumeTest::SphereRay: return "sphere-ray";
     }
     return "?";
 }
@@ -22,7 +24,9 @@ VolumeTest parseVolumeTest(const std::string& name) {
     if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
     if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
     if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface)");
+    if (name == "sphere") return VolumeTest::Sphere;
+    if (name == "sphere-ray") return VolumeTest::SphereRay;
+    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface, sphere, sphere-ray)");
 }
 
 IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
@@ -59,6 +63,51 @@ LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volum
     maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
     programs_.resize(kMaxIndexTargets);
     listPrograms_.resize(kMaxIndexTargets);
+    batchPrograms_.resize(kMaxIndexTargets);
+    if (isShaderVolumeTest(test)) {
+        // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
+        // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
+        // its extra fill costs less than their vertices (doc/benchmarks.md).
+        const LightVolumeMesh& mesh = meshes_[batchLevel_];
+        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 2;  // one target
+        batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
+        std::vector<glm::vec4> copies;
+        std::vector<uint16_t> copyIndices;
+        copies.reserve(mesh.positions.size() * size_t(batch_));
+        copyIndices.reserve(mesh.indices.size() * size_t(batch_));
+        for (int slot = 0; slot < batch_; ++slot) {
+            const auto base = static_cast<uint16_t>(copies.size());
+            for (const glm::vec3& p : mesh.positions) copies.emplace_back(p, float(slot));
+            for (uint16_t i : mesh.indices) copyIndices.push_back(static_cast<uint16_t>(base + i));
+        }
+        batchCopyIndices_ = static_cast<GLsizei>(mesh.indices.size());
+        batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
+        batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
+        maxVertexUniformVectors_ = info.maxVertexUniformVectors;
+    }
+}
+
+int LightVolumePass::batchFor(int targetCount) const {
+    return std::max(1, std::min(batch_, (maxVertexUniformVectors_ - kReservedVertexUniforms) / (1 + targetCount)));
+}
+
+const gl::Program& LightVolumePass::batchProgramFor(int targetCount) const {
+    if (targetCount != 1 && targetCount != 2 && targetCount != 4)
+        throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " + std::to_string(targetCount));
+    if (targetCount > maxDrawTargets_)
+        throw UnsupportedError("writing " + std::to_string(targetCount) +
+                               " index targets at once needs that many draw buffers");
+    gl::Program& p = batchPrograms_[size_t(targetCount - 1)];
+    if (!p) {
+        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
+                              {"LIDR_BATCH", std::to_string(batchFor(targetCount))}};
+        if (test_ == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+        p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
+                                buildShaderSource("light_volume_batch.vert", defs),
+                                buildShaderSource("light_volume_sphere.frag", defs),
+                                {{"aPosition", gl::kPosition}, {"aSlot", kSlotAttribute}});
+    }
+    return p;
 }
 
 const gl::Program& LightVolumePass::programFor(int targetCount) const {
@@ -75,7 +124,10 @@ const gl::Program& LightVolumePass::programFor(int targetCount) const {
     return p;
 }
 
-void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera) {
+void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera, const gl::Texture* depth) {
+    if (isShaderVolumeTest(test_) && !listSource_ && !(depth && *depth))
+        throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the pre-pass depth as a texture");
+    depth_ = depth;
     if (listSource_ && !quad_) {
         // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
         const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
@@ -93,15 +145,26 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
     glClearColor(0, 0, 0, 0);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    if (isShaderVolumeTest(test_) && !listSource_) {
+        glBindBuffer(GL_ARRAY_BUFFER, batchVertices_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
+        glEnableVertexAttribArray(gl::kPosition);
+        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+        glEnableVertexAttribArray(kSlotAttribute);
+        glVertexAttribPointer(kSlotAttribute, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+                              reinterpret_cast<const void*>(3 * sizeof(float)));
+    } else {
+        glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+        glEnableVertexAttribArray(gl::kPosition);
+        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    }
     checkGl("light-volume pass begin");
 }
 
 int LightVolumePass::detailFor(const VolumeLight& l) const {
     const int finest = kDetailLevels - 1;
+    if (isShaderVolumeTest(test_)) return batchLevel_;
     if (coarsest_ == finest) return finest;
     // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
     // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
@@ -120,10 +183,21 @@ int LightVolumePass::detailFor(const VolumeLight& l) const {
     return finest;
 }
 
-bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
-    if (depthClamp_ || listSource_) return false;
-    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) + l.posRadius.w * outsideRadiusFor(l) >=
+float LightVolumePass::outsideRadiusFor(const VolumeLight& light) const {
+    // The shader tests mark exactly what the sphere (times kSphereRadiusScale) reaches, whatever mesh is drawn.
+    if (isShaderVolumeTest(test_) && !listSource_) return kSphereRadiusScale;
+    return meshes_[size_t(detailFor(light))].outsideRadius;
+}
+
+bool LightVolumePass::reachesFarPlane(const VolumeLight& l) const {
+    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) +
+               l.posRadius.w * meshes_[size_t(detailFor(l))].outsideRadius >=
            camera_.farPlane * 0.999f;
+}
+
+bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
+    if (depthClamp_ || listSource_ || isShaderVolumeTest(test_)) return false;
+    return reachesFarPlane(l);
 }
 
 void LightVolumePass::drawVolume(const VolumeLight& light) const {
@@ -162,6 +236,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
     if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
         throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
+    if (isShaderVolumeTest(test_) && !listSource_) return drawBatched(d, lights, colors);
     const gl::Program& program = programFor(d.targetCount);
     program.use();
     program.set("uViewProj", camera_.viewProjection);
@@ -174,19 +249,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
         program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
     }
-    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
-        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
-        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
-    if (d.restartCount) {
-        RenderState clear;  // stencil only
-        clear.colorMask = glm::bvec4(false);
-        applyRenderState(clear);
-        glClearStencil(0);
-        glClear(GL_STENCIL_BUFFER_BIT);
-    }
-    std::vector<GLenum> buffers;
-    for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
-    glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+    beginDraw(d);
     const GLint posLoc = listSource_ ? -1 : program.uniform("uLightPosRadius");
     const GLint colorLoc = listSource_ ? -1 : program.uniform("uIndexColor");
     const GLint clampLoc = listSource_ ? -1 : program.uniform("uClampToFar");
@@ -205,6 +268,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     inside.blendDstRgb = inside.blendDstAlpha = d.blendDst;
     inside.blendColor = d.blendColor;
     inside.stencilTest = true;
+    applyScissor(inside);
 
     RenderState mark, count, unmark;
     // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
@@ -248,6 +312,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         mark.stencil.ref = 0x80;
         mark.stencil.depthPass = GL_REPLACE;
         mark.stencil.writeMask = 0x80;
+        applyScissor(mark);
         unmark = mark;
         unmark.stencil.ref = 0;
         // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
@@ -335,7 +400,103 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }
 
+void LightVolumePass::beginDraw(const VolumeDraw& d) {
+    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
+        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
+        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
+    if (d.restartCount) {
+        RenderState clear;  // stencil only
+        clear.colorMask = glm::bvec4(false);
+        applyRenderState(clear);
+        glClearStencil(0);
+        glClear(GL_STENCIL_BUFFER_BIT);
+    }
+    std::vector<GLenum> buffers;
+    for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
+    glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+}
+
+void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
+                                  const std::function<IndexColors(uint32_t)>& colors) {
+    const gl::Program& program = batchProgramFor(d.targetCount);
+    program.use();
+    program.set("uViewProj", camera_.viewProjection);
+    program.set("uView", camera_.view);
+    // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
+    // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
+    const glm::mat4& P = camera_.projection;
+    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the sphere volume tests need a perspective projection");
+    program.set("uDepthToDistance", glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)));
+    program.set("uNearPlane", camera_.nearPlane);
+    program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
+    program.set("uRadiusScale", kSphereRadiusScale);
+    program.set("uDepth", 0);
+    depth_->bind(0);
+    beginDraw(d);
+
+    // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
+    // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
+    // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
+    // one draw does what the stencil tests need a count draw for.
+    RenderState st;
+    st.cull = true;
+    st.cullFace = GL_FRONT;
+    st.depthClamp = depthClamp_;
+    // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
+    // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
+    const bool preTest = test_ == VolumeTest::Sphere;
+    st.depthTest = preTest;
+    st.depthFunc = GL_GEQUAL;
+    st.colorMask = d.colorMask;
+    st.blend = d.blend;
+    st.blendEquation = d.blendEquation;
+    st.blendSrcRgb = st.blendSrcAlpha = d.blendSrc;
+    st.blendDstRgb = st.blendDstAlpha = d.blendDst;
+    st.blendColor = d.blendColor;
+    st.stencilTest = true;
+    const bool window = d.rankCount > 0;
+    st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
+    st.stencil.ref = d.rankFirst;
+    st.stencil.readMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
+    st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
+    st.stencil.writeMask = 0xFF;
+    countBits_ = 8;
+    applyScissor(st);
+    RenderState noPreTest = st;
+    noPreTest.depthTest = false;
+
+    const int batch = batchFor(d.targetCount);
+    const GLint lightsLoc = program.uniform("uLights"), colorsLoc = program.uniform("uIndexColors"),
+                clampLoc = program.uniform("uClampToFar");
+    std::vector<glm::vec4> lightData(static_cast<size_t>(batch)), colorData(static_cast<size_t>(batch) * d.targetCount);
+    int applied = -1;
+    for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
+        const size_t n = std::min(lights.size() - first, size_t(batch));
+        bool clampToFar = false;
+        for (size_t i = 0; i < n; ++i) {
+            const VolumeLight& l = lights[first + i];
+            lightData[i] = l.posRadius;
+            const IndexColors c = colors(l.index);
+            for (int t = 0; t < d.targetCount; ++t) colorData[i * size_t(d.targetCount) + size_t(t)] = c[size_t(t)];
+            clampToFar = clampToFar || (!depthClamp_ && reachesFarPlane(l));
+        }
+        glUniform4fv(lightsLoc, GLsizei(n), glm::value_ptr(lightData[0]));
+        glUniform4fv(colorsLoc, GLsizei(n) * d.targetCount, glm::value_ptr(colorData[0]));
+        glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+        // Without depth clamp, vertices pulled onto the far plane break the pre-test (never the shader's).
+        const int want = preTest && !clampToFar ? 1 : 0;
+        if (want != applied) {
+            applyRenderState(want ? st : noPreTest);
+            applied = want;
+        }
+        glDrawElements(GL_TRIANGLES, GLsizei(n) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+        ++drawCalls_;
+    }
+    checkGl(("light-volume draw '" + d.name + "'").c_str());
+}
+
 void LightVolumePass::end() {
+    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(kSlotAttribute);
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

@@ -21,9 +21,18 @@ enum class VolumeTest {
                    // faces GEQUAL where unmarked: exactly the surfaces inside the volume
     FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
                    // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
+    // The shader tests: the fragment shader reads a copy of the pre-pass depth and discards what the light's
+    // true sphere does not reach, so the stencil sees real marks only; lights go in batches of many per draw.
+    Sphere,        // the surface point lies inside the sphere: exactly the lights that shade the pixel
+    SphereRay,     // the eye ray between the near plane and the surface meets the sphere: the front-face lists
+                   // of transparent layers and MSAA edge samples, exactly
 };
+// True for the tests decided in the fragment shader (they need the pre-pass depth as a texture).
+inline bool isShaderVolumeTest(VolumeTest t) { return t == VolumeTest::Sphere || t == VolumeTest::SphereRay; }
+// True for the tests that mark every light crossing the eye ray before the surface (front-face lists).
+inline bool isFrontFaceVolumeTest(VolumeTest t) { return t == VolumeTest::FrontFace || t == VolumeTest::SphereRay; }
 const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface"
+VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface", "sphere", "sphere-ray"
 
 constexpr int kMaxIndexTargets = 8;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
@@ -91,12 +100,16 @@ public:
     // lights); false: always the 320-face volume.
     LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false);
 
-    // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil.
-    void begin(const IndexTargets& targets, const CameraMatrices& camera);
+    // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil. The shader tests
+    // read `depth`, a single-sample depth texture of the pre-pass (not attached to the targets).
+    void begin(const IndexTargets& targets, const CameraMatrices& camera, const gl::Texture* depth = nullptr);
     // Draws each light's volume with the sub-pass's state; colors(index) gives the value per target.
     void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
               const std::function<IndexColors(uint32_t index)>& colors);
     void end();
+    // Limits the following draws to a pixel rectangle (x, y, width, height; GL window coordinates), e.g. where
+    // transparent geometry can be; nullptr: the whole target.
+    void setScissor(const glm::ivec4* box) { scissor_ = box ? *box : glm::ivec4(-1); }
     // Draws the lights that follow through the pixel-list test hook (nullptr: light volumes again).
     void setPixelListSource(const PixelListSource* source) { listSource_ = source; }
 
@@ -111,13 +124,27 @@ public:
     // The volume mesh drawn for `light` in the current pass (0 = 20 faces, 1 = 80, 2 = 320) and its relative
     // vertex distance: a function of the light and the camera alone, the same for every use in a frame.
     int detailFor(const VolumeLight& light) const;
-    float outsideRadiusFor(const VolumeLight& light) const { return meshes_[size_t(detailFor(light))].outsideRadius; }
+    // The shader tests: kSphereRadiusScale, what they mark, whatever mesh they draw.
+    float outsideRadiusFor(const VolumeLight& light) const;
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
     float meshOutsideRadius() const { return volumeOutsideRadius(); }
+    // Lights per draw of the shader tests (from the vertex uniform limit); 1 for the stencil tests.
+    int batchSize() const { return batch_; }
+    // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
+    // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
+    static constexpr float kSphereRadiusScale = 1.0005f;
 
 private:
+    void beginDraw(const VolumeDraw& d);  // checks the rank window, restarts the count, selects draw buffers
+    bool reachesFarPlane(const VolumeLight& light) const;  // the drawn mesh reaches the far plane
+    int batchFor(int targetCount) const;  // lights per draw for this many targets
+    static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
+    static constexpr GLuint kSlotAttribute = 3;
+    void drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
+                     const std::function<IndexColors(uint32_t)>& colors);
+    const gl::Program& batchProgramFor(int targetCount) const;
     void drawVolume(const VolumeLight& light) const;
     const gl::Program& programFor(int targetCount) const;
     void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
@@ -130,6 +157,17 @@ private:
     gl::Buffer vertices_, indices_;
     // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
     mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's
+    // Shader tests: batch_ copies of the batchLevel_ volume mesh, each vertex (x, y, z, slot).
+    int batch_ = 1, batchLevel_ = 0, maxVertexUniformVectors_ = 128;
+    GLsizei batchCopyIndices_ = 0;
+    gl::Buffer batchVertices_, batchIndices_;
+    mutable std::vector<gl::Program> batchPrograms_;
+    const gl::Texture* depth_ = nullptr;
+    glm::ivec4 scissor_{-1};  // z < 0: none
+    void applyScissor(RenderState& s) const {
+        s.scissor = scissor_.z >= 0;
+        s.scissorBox = scissor_;
+    }
     int maxDrawTargets_ = 1;
     gl::Buffer quad_;
     gl::Texture colorTable_;

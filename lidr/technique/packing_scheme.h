@@ -21,7 +21,7 @@ namespace lidr {
 
 struct PackingConfig {
     std::string scheme = "bitshift";
-    int budget = 4;      // light slots per pixel: 1, 2, 4, 8, 16
+    int budget = 8;      // light slots per pixel: 1, 2, 4, 8, 16 (8: the default room, 5 at most, loses none)
     int indexBits = 8;   // 4 (15 lights), 8 (255), 16 (65,535)
 };
 
