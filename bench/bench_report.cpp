@@ -69,7 +69,11 @@ double pairRatio(const Row& a, const Row& b, bool* inRounds, Stat* range) {
             return s.median;
         }
     }
-    const double ratio = b.frameMs.median > 0 ? a.frameMs.median / b.frameMs.median : 0.0;
+    // Parts of one set (--max-live) share the baseline: divide the ratios. Else the medians.
+    const bool sameBaseline = a.run.scene == b.run.scene && a.run.width == b.run.width && a.run.height == b.run.height &&
+                              !a.baseline.empty() && a.baseline == b.baseline && a.ratio.median > 0 && b.ratio.median > 0;
+    const double ratio = sameBaseline ? a.ratio.median / b.ratio.median
+                                      : b.frameMs.median > 0 ? a.frameMs.median / b.frameMs.median : 0.0;
     if (range) *range = Stat{ratio, ratio, ratio};
     return ratio;
 }

@@ -79,7 +79,8 @@ struct Steadiness {
 };
 Steadiness steadiness(const std::vector<Row>& rows);
 // Ratio of A's to B's frame time: the median over their common rounds when both were measured in the same
-// rounds (`inRounds` true, min/max over rounds in `range`), else the ratio of their medians.
+// rounds (`inRounds` true, min/max over rounds in `range`); else, in two parts of one scene set (same
+// baseline), the ratio of their ratio medians; else the ratio of their frame-time medians.
 double pairRatio(const Row& a, const Row& b, bool* inRounds = nullptr, Stat* range = nullptr);
 
 // PSNR of identical images is infinite; the files write 999 for it (as lidr-demo does).

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -170,6 +171,7 @@ struct Settings {
     // evaluation clocks down, and frame-count warm-up alone measured the next frames at idle clocks.
     double warmupMs = 300.0;
     double maxSeconds = 60.0;  // per scene set: no round starts after the rounds took this long (>= 1 round)
+    int maxLive = 64;  // renderers alive at once: a larger scene set is measured in parts
     int interruptAfter = -1;        // testing aid: raise SIGINT after this many rows
     int interruptAfterRounds = -1;  // testing aid: raise SIGINT at the end of this round (of any set)
 };
@@ -342,6 +344,10 @@ int main(int argc, char** argv) {
                    "least one round); a configuration whose first frame takes over MAX-SECONDS / FRAMES is measured "
                    "once, outside the rounds")
         ->capture_default_str()->check(CLI::Range(0.001, 36000.0));
+    app.add_option("--max-live", settings.maxLive,
+                   "Renderers alive at once: a scene set with more configurations is measured in parts of this many, "
+                   "the baseline in each (memory: ~30 MB a renderer at 1024x768 on llvmpipe)")
+        ->capture_default_str()->check(CLI::Range(2, 100000));
     app.add_option("--out", outDir, "Output folder: results.csv, passes.csv, results.json, summary.md, plots/")->capture_default_str();
     app.add_option("--seed", seed, "Seed of the room's and many-light scenes' lights")->capture_default_str();
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
@@ -484,7 +490,7 @@ int main(int argc, char** argv) {
         meta["settings"] = {{"warmup_frames", settings.warmup}, {"warmup_ms", settings.warmupMs}, {"frames", settings.frames},
                             {"max_seconds_per_scene_set", settings.maxSeconds}, {"seed", seed},
                             {"preset", quick ? "quick" : full ? "full" : "none"}, {"sweeps", splitList(sweeps)},
-                            {"interleaved_rounds", true}};
+                            {"interleaved_rounds", true}, {"max_live", settings.maxLive}};
         {
             std::ostringstream cap;
             cap << settings.maxSeconds;
@@ -546,13 +552,34 @@ int main(int argc, char** argv) {
         int nextId = 1;
         size_t runsDone = 0;
         int roundsDone = 0;
-        for (const std::vector<const Run*>& set : sets) {
+        for (const std::vector<const Run*>& wholeSet : sets) {
             if (g_stop) break;
-            const Run& first = *set.front();
+            const Run& first = *wholeSet.front();
             const Scene& scene = sceneCache.at(first.scene);
             const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-            const std::string setKey = first.scene + " " + std::to_string(first.width) + "x" + std::to_string(first.height);
             const double onceMs = 1000.0 * settings.maxSeconds / settings.frames;
+            // The baseline: forward-multipass where the set has it, else its first configuration.
+            const Run* baselineRun = wholeSet.front();
+            for (const Run* r : wholeSet)
+                if (r->config.mode == "forward-multipass") {
+                    baselineRun = r;
+                    break;
+                }
+            // A set with more configurations than --max-live is measured in parts, the baseline in each (its
+            // row comes from the first part; in the others it only divides).
+            std::vector<std::vector<const Run*>> parts;
+            for (const Run* r : wholeSet) {
+                if (r == baselineRun) continue;
+                if (parts.empty() || int(parts.back().size()) + 1 >= settings.maxLive) parts.push_back({baselineRun});
+                parts.back().push_back(r);
+            }
+            if (parts.empty()) parts.push_back({baselineRun});
+            std::map<std::string, Reference> references;  // per set, shared by its parts
+            std::set<const Run*> written;
+            for (size_t part = 0; part < parts.size() && !g_stop; ++part) {
+            const std::vector<const Run*>& set = parts[part];
+            const std::string setKey = first.scene + " " + std::to_string(first.width) + "x" + std::to_string(first.height) +
+                                       (parts.size() > 1 ? " part " + std::to_string(part + 1) + "/" + std::to_string(parts.size()) : "");
 
             // Every renderer of the set, built once.
             std::vector<Slot> slots(set.size());
@@ -564,7 +591,6 @@ int main(int argc, char** argv) {
 
             // References (forward-brute with the same MSAA and transparency), rendered once: by the set's own
             // forward-brute configuration where it has one (that frame is then its first warm-up frame).
-            std::map<std::string, Reference> references;
             std::vector<double> firstWall(slots.size(), -1.0);
             for (size_t i = 0; i < slots.size() && !g_stop; ++i) {
                 const Run& run = *slots[i].run;
@@ -603,10 +629,7 @@ int main(int argc, char** argv) {
                 if (!slots[i].once) active.push_back(i);
             size_t baseline = active.empty() ? 0 : active.front();
             for (size_t i : active)
-                if (slots[i].run->config.mode == "forward-multipass") {
-                    baseline = i;
-                    break;
-                }
+                if (slots[i].run == baselineRun) baseline = i;
 
             // The rounds.
             int rounds = 0;
@@ -640,7 +663,7 @@ int main(int argc, char** argv) {
 
             // Rows, in plan order, each judged against its reference.
             for (Slot& slot : slots) {
-                if (slot.m.frames.empty()) continue;
+                if (slot.m.frames.empty() || !written.insert(slot.run).second) continue;
                 const Run& run = *slot.run;
                 progress.show(runsDone, setKey + ": evaluating " + run.config.key());
                 Row row;
@@ -682,6 +705,7 @@ int main(int argc, char** argv) {
                 ++runsDone;
             }
             if (settings.interruptAfter >= 0 && nextId - 1 >= settings.interruptAfter) std::raise(SIGINT);
+            }  // parts
         }
         progress.finish();
         runInfo.interrupted = g_stop != 0;
