@@ -49,8 +49,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 
 std::string sceneNameHelp() {
     return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
-           "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), file:PATH or a path ending in "
-           ".json";
+           "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), heavy-T (the room with about T "
+           "triangles, e.g. heavy-250k, heavy-1m), file:PATH or a path ending in .json";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed) {
@@ -79,6 +79,19 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
             throw Error("bad scene name '" + name + "': use many-N-top or many-N-fp (valid: " + sceneNameHelp() + ")");
         return makeManyLightScene(n, view == "top" ? ManyLightView::TopDown : ManyLightView::FirstPerson, 1024, 768,
                                   seed);
+    }
+    if (startsWith(name, "heavy-")) {
+        std::string t = name.substr(6);
+        long scale = 1;
+        if (!t.empty() && (t.back() == 'k' || t.back() == 'm')) {
+            scale = t.back() == 'k' ? 1000 : 1000000;
+            t.pop_back();
+        }
+        const int n = positiveInt(t);
+        if (n < 1 || long(n) * scale > 20000000)
+            throw Error("bad scene name '" + name + "': use heavy-T with T triangles, 1..20m, e.g. heavy-250k (valid: " +
+                        sceneNameHelp() + ")");
+        return makeHeavyScene(long(n) * scale, 1024, 768, seed);
     }
     std::string path;
     if (startsWith(name, "file:"))
@@ -260,7 +273,65 @@ std::vector<SweepGroup> fullPreset() {
     many.indexBits = {16};
     many.transparency = {false};  // the room's glass: opaque, so forward-multipass is measured too
     groups.push_back(many);
+    for (const std::string& sweep : sweepNames())
+        for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;
+}
+
+std::vector<std::string> sweepNames() { return {"lights", "triangles"}; }
+
+std::vector<std::string> sweepVolumeTests() {
+    std::vector<std::string> tests{"backface"};
+    try {
+        parseVolumeTest("sphere");  // a library without the sphere test throws here: the sweeps skip it
+        tests.push_back("sphere");
+    } catch (const Error&) {
+    }
+    return tests;
+}
+
+std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
+    SweepGroup base;
+    base.modes.clear();
+    for (const char* m : {"lidr", "tiled", "forward-multipass"})  // those the library has, in this order
+        for (const std::string& have : availableModes())
+            if (have == m) base.modes.push_back(have);
+    base.schemes = {"bitshift"};
+    base.budgets = {4, 8};
+    base.volumeTests = sweepVolumeTests();
+    base.msaa = {0};
+    base.perSample = {false};
+    base.transparency = {false};  // forward-multipass draws no transparent meshes: all modes draw the same
+    base.tiledDepthBounds = {true};
+    std::vector<SweepGroup> groups;
+    if (name == "lights") {
+        // One group per light count: 8-bit indices hold 255 lights, past that 16-bit. Timing only: brute
+        // force over 16,384 lights takes minutes a frame on llvmpipe.
+        const std::vector<int> counts = quick ? std::vector<int>{64, 1024} : std::vector<int>{64, 256, 1024, 4096, 16384};
+        for (int n : counts) {
+            SweepGroup g = base;
+            g.name = "lights";
+            g.scenes = {"many-" + std::to_string(n) + "-fp"};
+            g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
+            g.indexBits = {n > 255 ? 16 : 8};
+            g.reference = false;
+            groups.push_back(g);
+        }
+        return groups;
+    }
+    if (name == "triangles") {
+        // The room (about 40 k triangles) and heavy-T: the same 255 lights, camera and draw calls as the
+        // room plus a fixed set of spheres tessellated ever finer.
+        SweepGroup g = base;
+        g.name = "triangles";
+        g.scenes = quick ? std::vector<std::string>{"room", "heavy-100k"}
+                         : std::vector<std::string>{"room", "heavy-100k", "heavy-250k", "heavy-500k", "heavy-1m"};
+        g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
+        g.indexBits = {8};
+        groups.push_back(g);
+        return groups;
+    }
+    throw Error("unknown sweep '" + name + "' (valid: " + joinNames(sweepNames()) + ")");
 }
 
 namespace {
@@ -412,7 +483,7 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                         continue;
                     }
                     ++groupRuns;
-                    Run run{g.name, sceneName, w, h, c};
+                    Run run{g.name, sceneName, w, h, c, g.reference};
                     if (seen.insert(sceneName + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + c.key()).second)
                         plan.runs.push_back(run);
                 }

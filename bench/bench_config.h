@@ -16,8 +16,9 @@ namespace lidr::bench {
 
 // ---- scenes ---------------------------------------------------------------------------------------------
 // "room" (default room, 255 lights), "overlap-K" (controlled overlap, K lights on every lit pixel),
-// "many-N-top" / "many-N-fp" (N lights, top-down / first-person), or a scene file ("file:PATH", or a path
-// ending in .json).
+// "many-N-top" / "many-N-fp" (N lights, top-down / first-person), "heavy-T" (the room with about T
+// triangles, T a number with an optional k or m suffix: heavy-250k, heavy-1m), or a scene file ("file:PATH",
+// or a path ending in .json).
 std::string sceneNameHelp();
 // Throws lidr::Error naming the valid forms for an unknown name or a file that does not load.
 Scene loadBenchScene(const std::string& name, uint32_t seed);
@@ -73,6 +74,9 @@ struct SweepGroup {
     // "MSAA", "transparency"): a typed value that no combination can use is an error. Lists left at their
     // defaults and the presets sweep "whatever the library supports" and only list what it refused.
     std::set<std::string> strictDimensions;
+    // false: timing only, no forward-brute reference (the light-count sweep: brute force over 16,384 lights
+    // takes minutes a frame on llvmpipe); the rows have no error columns.
+    bool reference = true;
 };
 
 struct Run {
@@ -80,6 +84,7 @@ struct Run {
     std::string scene;
     int width = 0, height = 0;
     ModeConfig config;
+    bool reference = true;  // SweepGroup::reference of its group: judged against forward-brute
 };
 
 struct Skipped {
@@ -95,7 +100,18 @@ struct Plan {
 
 // The presets: a seconds-long smoke run, and the documented full run (doc/benchmarks.md).
 std::vector<SweepGroup> quickPreset();
+// fullPreset() includes the scaling sweeps (sweepPreset("lights"), sweepPreset("triangles")).
 std::vector<SweepGroup> fullPreset();
+
+// The scaling sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N =
+// 64 .. 16384) and "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), each
+// over LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled
+// min/max and forward-multipass. `quick`: a seconds-long version (tiny resolution, fewer points) for tests.
+std::vector<std::string> sweepNames();
+// Throws lidr::Error naming the valid sweeps.
+std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick = false);
+// The volume tests the scaling sweeps use: backface, and sphere when parseVolumeTest knows it.
+std::vector<std::string> sweepVolumeTests();
 
 // Checks every name (scenes, modes, schemes, volume tests) and every combination against the library, on
 // the live context, before anything is measured. A combination the library refuses is skipped and listed;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <set>
@@ -27,6 +28,56 @@ Stat Stat::of(std::vector<double> v) {
 
 double finitePsnr(double psnr) { return std::isfinite(psnr) ? psnr : 999.0; }
 
+Steadiness steadiness(const std::vector<Row>& rows) {
+    Steadiness s;
+    std::vector<double> frame, ratio;
+    for (const Row& r : rows) {
+        if (s.roundsMin == 0 || r.rounds < s.roundsMin) s.roundsMin = r.rounds;
+        s.roundsMax = std::max(s.roundsMax, r.rounds);
+        if (r.roundMs.size() < 2) continue;
+        ++s.configurations;
+        frame.push_back(r.frameSpread());
+        if (r.run.config.key() != r.baseline && r.ratio.median > 0) {
+            ratio.push_back((r.ratio.max - r.ratio.min) / r.ratio.median);
+            s.worstRatioSpread = std::max(s.worstRatioSpread, ratio.back());
+        }
+    }
+    s.frameSpread = Stat::of(frame).median;
+    s.ratioSpread = Stat::of(ratio).median;
+    if (s.configurations == 0) {
+        s.verdict = "unknown: no configuration was measured in two or more rounds (--frames 3 or more)";
+        return s;
+    }
+    const double spread = ratio.empty() ? s.frameSpread : s.ratioSpread;
+    std::ostringstream pct;  // one decimal below 10%, whole percents above
+    pct << std::fixed << std::setprecision(100.0 * spread < 10.0 ? 1 : 0) << 100.0 * spread;
+    const std::string within = std::string(ratio.empty() ? "frame times" : "ratios") + " within " + pct.str() + "%";
+    s.verdict = spread <= 0.05 ? "steady (" + within + ")" : "noisy: " + within;
+    return s;
+}
+
+double pairRatio(const Row& a, const Row& b, bool* inRounds, Stat* range) {
+    if (inRounds) *inRounds = false;
+    if (a.setKey == b.setKey && !a.setKey.empty() && a.roundMs.size() == b.roundMs.size() && !a.roundMs.empty()) {
+        std::vector<double> r;
+        for (size_t i = 0; i < a.roundMs.size(); ++i)
+            if (b.roundMs[i] > 0) r.push_back(a.roundMs[i] / b.roundMs[i]);
+        if (!r.empty()) {
+            if (inRounds) *inRounds = true;
+            const Stat s = Stat::of(r);
+            if (range) *range = s;
+            return s.median;
+        }
+    }
+    // Parts of one set (--max-live) share the baseline: divide the ratios. Else the medians.
+    const bool sameBaseline = a.run.scene == b.run.scene && a.run.width == b.run.width && a.run.height == b.run.height &&
+                              !a.baseline.empty() && a.baseline == b.baseline && a.ratio.median > 0 && b.ratio.median > 0;
+    const double ratio = sameBaseline ? a.ratio.median / b.ratio.median
+                                      : b.frameMs.median > 0 ? a.frameMs.median / b.frameMs.median : 0.0;
+    if (range) *range = Stat{ratio, ratio, ratio};
+    return ratio;
+}
+
 const std::vector<std::string>& resultColumns() {
     static const std::vector<std::string> c{
         "id", "group", "scene", "width", "height", "scene_lights", "max_overlap", "mode", "config", "scheme",
@@ -34,7 +85,8 @@ const std::vector<std::string>& resultColumns() {
         "warmup_frames", "frames", "frame_ms_median", "frame_ms_min", "frame_ms_max", "wall_ms_median",
         "light_volume_ms_median", "light_volume_share", "light_data_bytes", "drawn_lights", "rmse", "psnr_db",
         "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
-        "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db"};
+        "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "scene_triangles", "rounds",
+        "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max"};
     return c;
 }
 
@@ -68,6 +120,7 @@ std::vector<std::string> csvCells(const Row& r) {
     const ModeConfig& c = r.run.config;
     const bool lidr = c.mode == "lidr";
     auto lists = [&](auto v) { return r.hasLists ? std::to_string(v) : std::string(); };
+    auto err = [&](const std::string& v) { return r.hasError ? v : std::string(); };
     return {std::to_string(r.id), r.run.group, r.run.scene, std::to_string(r.run.width), std::to_string(r.run.height),
             std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
             lidr ? std::to_string(c.budget) : "", lidr ? std::to_string(c.indexBits) : "", lidr ? c.volumeTest : "",
@@ -75,11 +128,12 @@ std::vector<std::string> csvCells(const Row& r) {
             c.perSample ? "1" : "0", c.transparency ? "1" : "0", r.timingMethod, std::to_string(r.warmupFrames), std::to_string(r.frames),
             num(r.frameMs.median), num(r.frameMs.min), num(r.frameMs.max), num(r.wallMs.median),
             lidr ? num(r.lightVolumeMs) : "", lidr ? num(r.lightVolumeShare()) : "", std::to_string(r.lightDataBytes),
-            std::to_string(r.drawnLights), num(r.error.rmse, 5), num(finitePsnr(r.error.psnr), 3),
-            std::to_string(r.error.maxAbsError), std::to_string(r.error.differingPixels),
-            std::to_string(r.error.comparedPixels), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
+            std::to_string(r.drawnLights), err(num(r.error.rmse, 5)), err(num(finitePsnr(r.error.psnr), 3)),
+            err(std::to_string(r.error.maxAbsError)), err(std::to_string(r.error.differingPixels)),
+            err(std::to_string(r.error.comparedPixels)), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
             lists(r.pixelsOverBudget), lists(r.maxMarked), lists(r.invalidSlots),
-            r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : ""};
+            r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : "", std::to_string(r.sceneTriangles),
+            std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max)};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -107,9 +161,17 @@ nlohmann::json rowJson(const Row& r) {
     nlohmann::json passes = nlohmann::json::array();
     for (const PassStat& p : r.passes) passes.push_back({{"pass", p.pass}, {"ms", statJson(p.ms)}});
     j["timing"]["passes"] = passes;
+    j["timing"]["rounds"] = r.rounds;
+    j["timing"]["round_frame_ms"] = r.roundMs;
+    j["timing"]["baseline"] = r.baseline;
+    j["timing"]["ratio_to_baseline"] = statJson(r.ratio);
+    j["scene_triangles"] = r.sceneTriangles;
     if (c.mode == "lidr") j["timing"]["light_volume_share"] = r.lightVolumeShare();
     j["light_data_bytes"] = r.lightDataBytes;
     j["drawn_lights"] = r.drawnLights;
+    if (!r.hasError)
+        j["error"] = nullptr;  // a timing-only sweep: no reference rendered
+    else
     j["error"] = {{"rmse", r.error.rmse}, {"psnr_db", finitePsnr(r.error.psnr)}, {"max_abs_error", r.error.maxAbsError},
                   {"differing_pixels", r.error.differingPixels}, {"compared_pixels", r.error.comparedPixels}};
     if (r.hasLists)
@@ -170,6 +232,13 @@ void ReportWriter::writeJson(const RunInfo& info) const {
     j["meta"] = info.meta;
     j["status"] = {{"complete", info.complete}, {"interrupted", info.interrupted}, {"planned_runs", info.planned},
                    {"measured_runs", rows_.size()}};
+    const Steadiness st = steadiness(rows_);
+    j["steadiness"] = {{"verdict", st.verdict}, {"configurations", st.configurations},
+                       {"frame_spread_median", st.frameSpread}, {"ratio_spread_median", st.ratioSpread},
+                       {"ratio_spread_max", st.worstRatioSpread}, {"rounds_min", st.roundsMin},
+                       {"rounds_max", st.roundsMax},
+                       {"definition", "spread = (max - min) / median over the rounds; the medians over configurations "
+                                      "measured in >= 2 rounds (ratios: baselines excluded); steady when <= 5%"}};
     j["rows"] = nlohmann::json::array();
     for (const Row& r : rows_) j["rows"].push_back(rowJson(r));
     j["skipped"] = nlohmann::json::array();
@@ -232,10 +301,16 @@ void targetsSection(std::ostream& o, const std::vector<Row>& rows, bool transpar
             o << "not measured (a configuration is missing from this run) | - |\n";
             return;
         }
-        const double ratio = num_->frameMs.median / den->frameMs.median;
+        bool inRounds = false;
+        Stat range;
+        const double ratio = pairRatio(*num_, *den, &inRounds, &range);
         const bool met = atLeast ? ratio >= goal : ratio <= goal;
-        o << num(ratio, 2) << "x (" << ms(num_->frameMs.median) << " ms / " << ms(den->frameMs.median) << " ms) | "
-          << (met ? "met" : "**missed**") << " |\n";
+        o << num(ratio, 2) << "x (";
+        if (inRounds)
+            o << "median over " << num_->roundMs.size() << " rounds, " << num(range.min, 2) << "-" << num(range.max, 2)
+              << "; ";
+        o << ms(num_->frameMs.median) << " ms / " << ms(den->frameMs.median) << " ms) | " << (met ? "met" : "**missed**")
+          << " |\n";
     };
     if (!transparency) {
         ratioLine("forward-multipass / LIDR budget 4 >= 6", multipass, b4, 6.0, true);
@@ -314,6 +389,17 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
     o << "(cpu-glfinish: CPU time around glFinish per pass; gpu-timer-query: GL timer queries)\n";
     o << "- PSNR 999 means identical to the reference; error is against forward-brute with the same MSAA and "
          "transparency; \"dropped\" counts (pixel, light) pairs a LIDR list missed against the CPU truth.\n\n";
+    const Steadiness st = steadiness(rows_);
+    o << "## Steadiness\n\n";
+    o << "- verdict: **" << st.verdict << "**\n";
+    if (st.configurations > 0)
+        o << "- over " << st.configurations << " configurations measured in " << st.roundsMin << "-" << st.roundsMax
+          << " interleaved rounds: frame times vary by a median " << num(100.0 * st.frameSpread, 1)
+          << "% across rounds ((max - min) / median); ratios to the baseline by a median " << num(100.0 * st.ratioSpread, 1)
+          << "% (worst " << num(100.0 * st.worstRatioSpread, 1) << "%)\n";
+    o << "- every configuration of a scene and size renders one frame per round, in turn; a ratio divides its frame "
+         "time by the baseline's in the same round (forward-multipass where measured), so drift of the machine "
+         "cancels out of it\n\n";
     o << "## Targets (issue 6)\n\n";
     const bool roomMeasured = std::any_of(rows_.begin(), rows_.end(), [](const Row& r) {
         return r.run.scene == "room" && r.run.width == 1024 && r.run.height == 768;
@@ -331,21 +417,33 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
     for (const Row& r : rows_)
         if (std::find(order.begin(), order.end(), sceneKey(r)) == order.end()) order.push_back(sceneKey(r));
     o << "## Results per scene\n\nTimes are the median of the measured frames (min-max in brackets), in ms. "
-         "\"vol %\" is the light-volume passes' share of the LIDR frame; memory is the index targets / light grid.\n";
+         "\"ratio\" is the frame time over the baseline's in the same round, median (min-max) over the rounds; "
+         "\"once\": a configuration whose first frame took longer than --max-seconds / --frames, measured once "
+         "outside the rounds and divided by the baseline's median. \"vol %\" is the light-volume passes' share of "
+         "the LIDR frame; memory is the index targets / light grid; \"-\" in the error columns: a timing-only sweep "
+         "(no reference).\n";
     for (const std::string& key : order) {
         const Row* first = nullptr;
         for (const Row& r : rows_)
             if (sceneKey(r) == key) { first = &r; break; }
-        o << "\n### " << key << " (" << first->sceneLights << " lights, max overlap " << first->maxOverlap << ")\n\n";
-        o << "| config | frame ms | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px |\n"
-             "|---|---|---|---|---|---|---|---|---|\n";
+        o << "\n### " << key << " (" << first->sceneLights << " lights, " << first->sceneTriangles << " triangles, max overlap "
+          << first->maxOverlap << "; " << first->rounds << " rounds, ratios to " << first->baseline << ")\n\n";
+        o << "| config | frame ms | ratio | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px |\n"
+             "|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : rows_) {
             if (sceneKey(r) != key) continue;
             o << "| " << r.run.config.key() << " | " << ms(r.frameMs.median) << " (" << ms(r.frameMs.min) << "-"
-              << ms(r.frameMs.max) << ") | " << (r.run.config.mode == "lidr" ? num(100.0 * r.lightVolumeShare(), 1) : "-")
-              << " | " << num(double(r.lightDataBytes) / 1024.0, 0) << " | " << num(r.error.rmse, 3) << " | "
-              << num(finitePsnr(r.error.psnr), 1) << " | " << r.error.maxAbsError << " | " << r.error.differingPixels
-              << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
+              << ms(r.frameMs.max) << ") | " << num(r.ratio.median, 2);
+            if (r.ratio.max > r.ratio.min) o << " (" << num(r.ratio.min, 2) << "-" << num(r.ratio.max, 2) << ")";
+            if (r.roundMs.empty()) o << " once";
+            o << " | " << (r.run.config.mode == "lidr" ? num(100.0 * r.lightVolumeShare(), 1) : "-")
+              << " | " << num(double(r.lightDataBytes) / 1024.0, 0) << " | ";
+            if (r.hasError)
+                o << num(r.error.rmse, 3) << " | " << num(finitePsnr(r.error.psnr), 1) << " | " << r.error.maxAbsError
+                  << " | " << r.error.differingPixels;
+            else
+                o << "- | - | - | -";
+            o << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
         }
     }
     o << "\n## Plots\n\n";
@@ -538,6 +636,66 @@ std::string passesPlot(const std::vector<const Row*>& allRows, const std::string
     return g.str();
 }
 
+// Frame time against a scene size (light count, triangles), one line per configuration, log x.
+std::string scalingPlot(const std::map<std::string, std::vector<std::pair<double, double>>>& lines,
+                        const std::string& title, const std::string& xlabel, bool logY) {
+    std::ostringstream g;
+    g << kPreamble << "set output \"\"\n";
+    g << "set terminal pngcairo size 900,520 font 'sans,8' noenhanced\n";
+    g << "set title " << gpString(title) << "\nset logscale x 2\n" << (logY ? "set logscale y\n" : "set yrange [0:*]\n")
+      << "set xlabel " << gpString(xlabel) << "\nset ylabel "
+      << gpString(std::string("frame time, ms (median over rounds") + (logY ? ", log scale)" : ")")) << "\n"
+      << "set key outside right top font ',7' spacing 0.9\n";
+    int block = 0;
+    for (const auto& [label, pts] : lines) {
+        g << "$S" << block++ << " << EOD\n";
+        for (const auto& [x, t] : pts) g << x << " " << t << "\n";
+        g << "EOD\n";
+    }
+    g << "plot ";
+    block = 0;
+    for (const auto& [label, pts] : lines) {
+        g << (block ? ", " : "") << "$S" << block << " using 1:2 with linespoints pt 7 ps 0.7 title " << gpString(label);
+        ++block;
+    }
+    g << "\n";
+    return g.str();
+}
+
+// The configurations of the scaling sweeps (sweepPreset): LIDR bitshift at budgets 4 and 8 with any volume
+// test, tiled min/max, forward-multipass; no MSAA, opaque. The line's name leaves out the index width (8-bit
+// up to 255 lights, 16-bit past that).
+std::string sweepLine(const Row& r) {
+    const ModeConfig& c = r.run.config;
+    if (c.msaa != 0 || c.transparency || c.volumeDetail) return "";
+    if (c.mode == "lidr" && c.scheme == "bitshift" && (c.budget == 4 || c.budget == 8))
+        return "lidr bitshift b" + std::to_string(c.budget) + " " + c.volumeTest;
+    if (c.mode == "tiled" && c.tiledDepthBounds) return c.label();
+    if (c.mode == "forward-multipass") return c.mode;
+    return "";
+}
+
+// Lines of frame time against x (x(row) <= 0: not in this plot), suffixed with the size where the rows
+// have several; lines with one point dropped.
+std::map<std::string, std::vector<std::pair<double, double>>> sweepLines(const std::vector<Row>& rows,
+                                                                         const std::function<double(const Row&)>& x) {
+    std::set<std::string> sizes;
+    for (const Row& r : rows)
+        if (x(r) > 0 && !sweepLine(r).empty()) sizes.insert(std::to_string(r.run.width) + "x" + std::to_string(r.run.height));
+    std::map<std::string, std::vector<std::pair<double, double>>> lines;
+    for (const Row& r : rows) {
+        const std::string line = sweepLine(r);
+        if (x(r) <= 0 || line.empty()) continue;
+        const std::string size = std::to_string(r.run.width) + "x" + std::to_string(r.run.height);
+        lines[line + (sizes.size() > 1 ? " " + size : "")].push_back({x(r), r.frameMs.median});
+    }
+    for (auto it = lines.begin(); it != lines.end();) {
+        std::sort(it->second.begin(), it->second.end());
+        it = it->second.size() < 2 ? lines.erase(it) : std::next(it);
+    }
+    return lines;
+}
+
 }  // namespace
 
 std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
@@ -565,10 +723,15 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
             if (sceneKey(r) == key) rows.push_back(&r);
         const std::string base = fileSafe(key);
         const bool overlapScene = rows.front()->run.scene.rfind("overlap-", 0) == 0;
-        if (!overlapScene || rows.front()->run.scene == "overlap-16") {
+        std::vector<const Row*> judged;
+        for (const Row* r : rows)
+            if (r->hasError) judged.push_back(r);
+        if ((!overlapScene || rows.front()->run.scene == "overlap-16") && !judged.empty()) {
             jobs.push_back({"time_vs_error_" + base + ".png",
-                            timeVsError(rows, "time against error: " + key + " (" +
+                            timeVsError(judged, "time against error: " + key + " (" +
                                                   std::to_string(rows.front()->sceneLights) + " lights)", "")});
+        }
+        if (!overlapScene || rows.front()->run.scene == "overlap-16") {
             jobs.push_back({"passes_" + base + ".png", passesPlot(rows, "per-pass breakdown: " + key, "")});
         }
         if (overlapScene) {
@@ -579,10 +742,25 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
                 if (r->run.config.msaa == 0 && (r->run.config.mode != "lidr" || r->run.config.indexBits == 8)) {
                     const std::string line = r->run.config.key();
                     overlapLines[line].push_back({k, r->frameMs.median});
-                    if (r->run.config.mode != "forward-brute") overlapErrors[line].push_back({k, r->error.rmse});
+                    if (r->run.config.mode != "forward-brute" && r->hasError) overlapErrors[line].push_back({k, r->error.rmse});
                 }
         }
     }
+    // The scaling sweeps: many-N-fp scenes against N, the room and heavy-T scenes against their triangles.
+    const auto lightLines = sweepLines(rows_, [](const Row& r) {
+        const std::string& s = r.run.scene;
+        return s.rfind("many-", 0) == 0 && s.size() > 3 && s.substr(s.size() - 3) == "-fp" ? double(r.sceneLights) : 0.0;
+    });
+    if (!lightLines.empty())
+        jobs.push_back({"lights_time.png", scalingPlot(lightLines, "frame time against light count (many-N-fp scenes)",
+                                                       "lights in the scene (log scale)", true)});
+    const auto triangleLines = sweepLines(rows_, [](const Row& r) {
+        return r.run.scene == "room" || r.run.scene.rfind("heavy-", 0) == 0 ? double(r.sceneTriangles) : 0.0;
+    });
+    if (!triangleLines.empty())
+        jobs.push_back({"triangles_time.png",
+                        scalingPlot(triangleLines, "frame time against scene triangles (room, heavy-T scenes; 255 lights)",
+                                    "triangles in the scene (log scale)", false)});
     if (!overlapLines.empty()) {
         jobs.push_back({"overlap_time.png", overlapPlot(overlapLines, "frame time against overlap k (controlled-overlap scenes)",
                                                         "", "frame time, ms (median, log scale)", true)});

@@ -36,12 +36,25 @@ struct Row {
     double lightVolumeMs = 0.0;        // median of the light-volume passes' sum (LIDR), else 0
     size_t lightDataBytes = 0;
     int drawnLights = 0;
+    bool hasError = true;              // false: a timing-only sweep (SweepGroup::reference), no error columns
     ImageError error;                  // against forward-brute with the same MSAA and transparency
     // LIDR only: the decoded index lists against the CPU truth.
     bool hasLists = false;
     long droppedLightPixels = 0, pixelsWithDrops = 0, pixelsOverBudget = 0, invalidSlots = 0;
     int maxMarked = 0;
     double psnrWithinBudget = 0.0;
+    long sceneTriangles = 0;
+    // Interleaved rounds (doc/benchmarks.md): every configuration of one scene and size renders one measured
+    // frame per round, in turn. `rounds`: the rounds its scene set ran; roundMs[r]: this configuration's frame
+    // time in round r (empty when it was measured once, outside the rounds: a first frame over the cap).
+    int rounds = 0;
+    std::vector<double> roundMs;
+    std::string setKey;                // "scene WxH": rows with the same key were measured in the same rounds
+    std::string baseline;              // the configuration (key) the ratios divide by
+    Stat ratio;                        // frame time / baseline's frame time in the same round, over rounds
+    double frameSpread() const {       // (max - min) / median of its frame times over the rounds
+        return frameMs.median > 0 ? (frameMs.max - frameMs.min) / frameMs.median : 0.0;
+    }
     double lightVolumeShare() const { return frameMs.median > 0 ? lightVolumeMs / frameMs.median : 0.0; }
 };
 
@@ -52,6 +65,23 @@ struct RunInfo {
     bool complete = false;
     size_t planned = 0;
 };
+
+// How steady the machine was over the run: the median over configurations (measured in >= 2 rounds) of
+// (max - min) / median of their frame times across rounds, and the same for their ratios to the baseline
+// (baselines themselves excluded). verdict: "steady", "noisy: ratios within X%", or why it is unknown.
+struct Steadiness {
+    int configurations = 0;            // rows that had >= 2 rounds
+    double frameSpread = 0.0;          // median relative spread of frame times
+    double ratioSpread = 0.0;          // median relative spread of the ratios
+    double worstRatioSpread = 0.0;
+    int roundsMin = 0, roundsMax = 0;
+    std::string verdict;
+};
+Steadiness steadiness(const std::vector<Row>& rows);
+// Ratio of A's to B's frame time: the median over their common rounds when both were measured in the same
+// rounds (`inRounds` true, min/max over rounds in `range`); else, in two parts of one scene set (same
+// baseline), the ratio of their ratio medians; else the ratio of their frame-time medians.
+double pairRatio(const Row& a, const Row& b, bool* inRounds = nullptr, Stat* range = nullptr);
 
 // PSNR of identical images is infinite; the files write 999 for it (as lidr-demo does).
 double finitePsnr(double psnr);

@@ -1,8 +1,11 @@
-// lidr-bench-check DIR [--expect-plots] [--expect-interrupted] [--min-rows N]
+// lidr-bench-check DIR [--expect-plots] [--expect-sweep-plots] [--expect-interrupted] [--min-rows N]
 // Checks a lidr-bench output folder is well formed: results.csv has the documented columns and every
 // numeric cell is a finite number >= 0; passes.csv belongs to those rows; results.json parses, records the
-// machine, GL renderer, commit and command line, and agrees with the CSV; summary.md exists; with
-// --expect-plots the PNGs are there and are PNGs. Prints each problem and exits 1 if there is any.
+// machine, GL renderer, commit and command line, and the run's steadiness, and agrees with the CSV; the
+// interleaved rounds' columns hold (rounds >= 1, a baseline measured in the same scene and size, ratios
+// positive and finite with min <= median <= max, 1 for the baseline itself); summary.md exists; with
+// --expect-plots the PNGs are there and are PNGs (--expect-sweep-plots: the light-count and triangle plots). Prints each problem and exits 1 if there is any.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -78,20 +81,30 @@ bool isPng(const fs::path& p) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::cerr << "usage: lidr-bench-check DIR [--expect-plots] [--expect-interrupted] [--min-rows N]\n";
+        std::cerr << "usage: lidr-bench-check DIR [--expect-plots] [--expect-sweep-plots] [--expect-interrupted] [--min-rows N]\n";
         return 2;
     }
     const fs::path dir = argv[1];
-    bool expectPlots = false, expectInterrupted = false;
+    bool expectPlots = false, expectSweepPlots = false, expectInterrupted = false;
     size_t minRows = 1;
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--expect-plots") expectPlots = true;
+        else if (a == "--expect-sweep-plots") expectSweepPlots = true;
         else if (a == "--expect-interrupted") expectInterrupted = true;
         else if (a == "--min-rows" && i + 1 < argc) minRows = std::stoul(argv[++i]);
         else { std::cerr << "unknown argument " << a << "\n"; return 2; }
     }
-    const std::set<std::string> textColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method"};
+    const std::set<std::string> textColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method",
+                                            "baseline"};
+    // Empty in a timing-only sweep (no reference): all of them or none.
+    const std::set<std::string> errorColumns{"rmse", "psnr_db", "max_abs_error", "differing_pixels", "compared_pixels"};
+    auto col = [&](const std::string& name) {
+        const auto& cs = lidr::bench::resultColumns();
+        return size_t(std::find(cs.begin(), cs.end(), name) - cs.begin());
+    };
+    std::set<std::string> configsBySet;                       // "scene|WxH|config"
+    std::vector<std::pair<std::string, std::string>> baselines;  // (row id, "scene|WxH|baseline")
 
     // results.csv
     const auto csv = readCsv(dir / "results.csv");
@@ -106,9 +119,14 @@ int main(int argc, char** argv) {
         }
         ids.insert(row[0]);
         double frames = 0, median = 0, lo = 0, hi = 0;
+        size_t emptyErrors = 0;
         for (size_t c = 0; c < columns.size(); ++c) {
             if (textColumns.count(columns[c])) continue;
             double v = 0;
+            if (row[c].empty() && errorColumns.count(columns[c])) {
+                ++emptyErrors;
+                continue;
+            }
             if (row[c].empty()) {  // not applicable to the mode: allowed only in the mode-specific columns
                 static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
                     "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
@@ -126,7 +144,30 @@ int main(int argc, char** argv) {
         if (frames < 1) problem("results.csv row " + row[0] + ": no measured frames");
         if (!(lo <= median && median <= hi)) problem("results.csv row " + row[0] + ": frame median outside [min, max]");
         if (row[7] == "lidr" && row[10].empty()) problem("results.csv row " + row[0] + ": a lidr row without a budget");
+        if (emptyErrors != 0 && emptyErrors != errorColumns.size())
+            problem("results.csv row " + row[0] + ": some error columns empty, others not");
+        // The interleaved rounds.
+        const std::string set = row[col("scene")] + "|" + row[col("width")] + "x" + row[col("height")] + "|";
+        configsBySet.insert(set + row[col("config")]);
+        const std::string& baseline = row[col("baseline")];
+        if (baseline.empty()) problem("results.csv row " + row[0] + ": no baseline named");
+        else baselines.push_back({row[0], set + baseline});
+        double rounds = 0, rMedian = 0, rMin = 0, rMax = 0;
+        const bool ok = finiteNonNegative(row[col("rounds")], rounds) &&
+                        finiteNonNegative(row[col("ratio_to_baseline_median")], rMedian) &&
+                        finiteNonNegative(row[col("ratio_to_baseline_min")], rMin) &&
+                        finiteNonNegative(row[col("ratio_to_baseline_max")], rMax);
+        if (ok) {
+            if (rounds < 1 || rounds != std::floor(rounds)) problem("results.csv row " + row[0] + ": rounds must be a whole number >= 1");
+            if (frames > rounds) problem("results.csv row " + row[0] + ": more measured frames than rounds");
+            if (!(rMin > 0 && rMedian > 0 && rMax > 0)) problem("results.csv row " + row[0] + ": a ratio to the baseline is not positive");
+            if (!(rMin <= rMedian && rMedian <= rMax)) problem("results.csv row " + row[0] + ": ratio median outside [min, max]");
+            if (row[col("config")] == baseline && std::fabs(rMedian - 1.0) > 1e-6)
+                problem("results.csv row " + row[0] + ": the baseline's ratio to itself is not 1");
+        }
     }
+    for (const auto& [id, key] : baselines)
+        if (!configsBySet.count(key)) problem("results.csv row " + id + ": baseline " + key + " was not measured with it");
     if (csv.size() < minRows + 1) problem("results.csv has " + std::to_string(csv.size() - (csv.empty() ? 0 : 1)) + " rows, expected at least " + std::to_string(minRows));
 
     // passes.csv
@@ -161,6 +202,10 @@ int main(int argc, char** argv) {
             if (meta.at("gl").at("renderer").get<std::string>().empty()) problem("no GL renderer");
             if (meta.at("commit").get<std::string>().empty()) problem("no commit");
             if (meta.at("command_line").get<std::string>().find("lidr-bench") == std::string::npos) problem("no command line");
+            const auto& st = j.at("steadiness");
+            if (st.at("verdict").get<std::string>().empty()) problem("no steadiness verdict");
+            for (const char* k : {"frame_spread_median", "ratio_spread_median"})
+                if (!std::isfinite(st.at(k).get<double>()) || st.at(k).get<double>() < 0) problem(std::string("bad steadiness ") + k);
             const auto& rows = j.at("rows");
             if (rows.size() + 1 != csv.size()) problem("results.json and results.csv disagree on the row count");
             for (const auto& row : rows) {
@@ -168,6 +213,10 @@ int main(int argc, char** argv) {
                 if (t.at("method").get<std::string>().empty()) problem("a row without its timing method");
                 if (!(t.at("frame_ms").at("median").get<double>() >= 0.0)) problem("a negative frame time in JSON");
                 if (row.at("width").get<int>() < 1 || row.at("height").get<int>() < 1) problem("a row without a resolution");
+                if (t.at("rounds").get<int>() < 1) problem("a row without rounds in JSON");
+                if (t.at("baseline").get<std::string>().empty()) problem("a row without a baseline in JSON");
+                const double ratio = t.at("ratio_to_baseline").at("median").get<double>();
+                if (!std::isfinite(ratio) || ratio <= 0) problem("a non-positive ratio in JSON");
             }
             const auto& status = j.at("status");
             if (expectInterrupted) {
@@ -197,6 +246,9 @@ int main(int argc, char** argv) {
         if (passPlots == 0) problem("no per-pass breakdown plot");
         if (!fs::exists(dir / "plots" / "overlap_time.png")) problem("no overlap plot");
     }
+    if (expectSweepPlots)
+        for (const char* png : {"lights_time.png", "triangles_time.png"})
+            if (!fs::exists(dir / "plots" / png) || !isPng(dir / "plots" / png)) problem(std::string("no sweep plot ") + png);
     if (problems) {
         std::cerr << problems << " problem(s) in " << dir << "\n";
         return 1;

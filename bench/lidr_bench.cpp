@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -26,6 +27,7 @@
 #include "lidr/base/gl.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/technique/packing_scheme.h"
+#include "lidr/eval/bench_scenes.h"
 
 using namespace lidr;
 using namespace lidr::bench;
@@ -159,13 +161,19 @@ double expectedCost(const Run& r, const Scene& scene) {
 }
 
 // ---- measuring -------------------------------------------------------------------------------------------
+// The configurations of one scene and size are measured together, in interleaved rounds: every renderer is
+// built and warmed up, then each round renders one measured frame of every configuration in turn (the
+// starting one rotating from round to round), so a machine that speeds up or slows down during the set
+// shifts every configuration of a round alike and their ratios to the round's baseline stay put.
 struct Settings {
-    int warmup = 1, frames = 5;
+    int warmup = 1, frames = 5;  // frames: the rounds, i.e. measured frames per configuration
     // Warm-up also lasts at least this long: a GPU idle during the previous configuration's CPU-side
     // evaluation clocks down, and frame-count warm-up alone measured the next frames at idle clocks.
     double warmupMs = 300.0;
-    double maxSeconds = 8.0;
-    int interruptAfter = -1;  // testing aid: raise SIGINT after this many rows
+    double maxSeconds = 60.0;  // per scene set: no round starts after the rounds took this long (>= 1 round)
+    int maxLive = 64;  // renderers alive at once: a larger scene set is measured in parts
+    int interruptAfter = -1;        // testing aid: raise SIGINT after this many rows
+    int interruptAfterRounds = -1;  // testing aid: raise SIGINT at the end of this round (of any set)
 };
 
 struct Reference {
@@ -181,38 +189,44 @@ struct Measured {
 
 constexpr int kMaxWarmupFrames = 1000;
 
-Measured measure(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights, const Settings& s) {
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+// One configuration of a scene set.
+struct Slot {
+    const Run* run = nullptr;
+    std::unique_ptr<Renderer> renderer;
     Measured m;
-    double warmupStart = nowMilliseconds();  // from the end of the first frame (shader compiles, uploads)
+    std::vector<double> roundMs;  // frame time per round (empty for `once`)
+    std::vector<double> ratios;   // over the baseline's frame time in the same round
+    bool once = false;  // its first frame took longer than maxSeconds / frames: that frame is its one measurement
+};
+
+// Renders one frame and waits for it; returns the wall time in ms.
+double renderFrame(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights) {
+    const double t0 = nowMilliseconds();
+    renderer.render(scene.camera, lights, ShadingParameters{scene.ambient, scene.backgroundColor});
+    glFinish();
+    return nowMilliseconds() - t0;
+}
+
+// Warm-up of one configuration: at least s.warmup frames and s.warmupMs after the first frame (which compiles
+// shaders and uploads). `firstWallMs` >= 0: the first frame was already rendered (the reference image) and
+// took that long. A first frame over `onceMs` is the configuration's one measured frame: it sits out the
+// rounds (brute force over thousands of lights: shader compiles are a rounding error of such a frame).
+void warmUp(Slot& slot, const Scene& scene, const std::vector<PointLight>& lights, const Settings& s, double onceMs,
+            double firstWallMs) {
+    double warmupStart = nowMilliseconds();
     for (int i = 0; !g_stop && i < kMaxWarmupFrames &&
                     (i < s.warmup || (s.warmupMs > 0.0 && (i == 0 || nowMilliseconds() - warmupStart < s.warmupMs)));
          ++i) {
-        const double t0 = nowMilliseconds();
-        const FrameStats& stats = renderer.render(scene.camera, lights, shading);
-        glFinish();
-        const double wall = nowMilliseconds() - t0;
-        if (i == 0 && wall / 1000.0 > s.maxSeconds) {
-            // A frame longer than the per-configuration cap (brute force over thousands of lights): shader
-            // compiles and first uploads are a rounding error of it, so it is the one measured frame, and the
-            // row says there was no warm-up.
-            m.frames.push_back(stats);
-            m.wallMs.push_back(wall);
-            return m;
+        const double wall = i == 0 && firstWallMs >= 0.0 ? firstWallMs : renderFrame(*slot.renderer, scene, lights);
+        if (i == 0 && wall > onceMs) {
+            slot.once = true;
+            slot.m.frames.push_back(slot.renderer->lastFrame());
+            slot.m.wallMs.push_back(wall);
+            return;
         }
-        ++m.warmupFrames;
+        ++slot.m.warmupFrames;
         if (i == 0) warmupStart = nowMilliseconds();
     }
-    const double start = nowMilliseconds();
-    for (int i = 0; i < s.frames; ++i) {
-        const double t0 = nowMilliseconds();
-        m.frames.push_back(renderer.render(scene.camera, lights, shading));
-        glFinish();
-        m.wallMs.push_back(nowMilliseconds() - t0);
-        // At least one frame; then stop early on a signal or past the per-configuration time cap.
-        if (g_stop || (nowMilliseconds() - start) / 1000.0 > s.maxSeconds) break;
-    }
-    return m;
 }
 
 void fillTiming(Row& row, const Measured& m) {
@@ -299,6 +313,7 @@ int main(int argc, char** argv) {
         volumeTests{"backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
+    std::vector<std::string> sweeps;
     bool quick = false, full = false, noProgress = false, noPlots = false, dryRun = false, list = false;
     unsigned seed = 1;
     app.add_option("--scenes", scenes, "Scenes: " + sceneNameHelp())->capture_default_str();
@@ -320,21 +335,36 @@ int main(int argc, char** argv) {
                    "Warm-up lasts at least this long per configuration after its first frame, so that a GPU's clocks "
                    "rise from idle (0: frames only; at most 1000 warm-up frames)")
         ->capture_default_str()->check(CLI::Range(0.0, 60000.0));
-    app.add_option("--frames", settings.frames, "Measured frames per configuration (median, min, max reported)")
+    app.add_option("--frames", settings.frames,
+                   "Interleaved rounds per scene set = measured frames per configuration (median, min, max and the "
+                   "ratio to the baseline reported)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
     app.add_option("--max-seconds", settings.maxSeconds,
-                   "Stop measuring a configuration after this many seconds (at least one frame is measured)")
-        ->capture_default_str()->check(CLI::Range(0.0, 3600.0));
+                   "Per scene set (one scene and size): start no round after the rounds took this many seconds (at "
+                   "least one round); a configuration whose first frame takes over MAX-SECONDS / FRAMES is measured "
+                   "once, outside the rounds")
+        ->capture_default_str()->check(CLI::Range(0.001, 36000.0));
+    app.add_option("--max-live", settings.maxLive,
+                   "Renderers alive at once: a scene set with more configurations is measured in parts of this many, "
+                   "the baseline in each (memory: ~30 MB a renderer at 1024x768 on llvmpipe)")
+        ->capture_default_str()->check(CLI::Range(2, 100000));
     app.add_option("--out", outDir, "Output folder: results.csv, passes.csv, results.json, summary.md, plots/")->capture_default_str();
     app.add_option("--seed", seed, "Seed of the room's and many-light scenes' lights")->capture_default_str();
     app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
     auto* quickFlag = app.add_flag("--quick", quick, "Seconds-long smoke run: tiny resolution, few configurations, one frame");
-    app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md (takes minutes)")->excludes(quickFlag);
+    auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
+    app.add_option("--sweep", sweeps,
+                   "Scaling sweeps instead of the lists: " + joinNames(sweepNames()) +
+                       " (frame time against light count / scene triangles); with --quick, their seconds-long versions")
+        ->excludes(fullFlag);
     app.add_flag("--no-progress", noProgress, "No progress bar (it is also off when stderr is not a terminal)");
     app.add_flag("--no-plots", noPlots, "Do not run gnuplot");
     app.add_flag("--dry-run", dryRun, "Check everything, print the configurations that would run and the skipped ones, measure nothing");
     app.add_flag("--list", list, "Print the valid mode, scheme, volume-test and scene names and exit");
     app.add_option("--interrupt-after", settings.interruptAfter, "Testing aid: act as if interrupted after this many rows")
+        ->group("");
+    app.add_option("--interrupt-after-rounds", settings.interruptAfterRounds,
+                   "Testing aid: act as if interrupted at the end of this many rounds")
         ->group("");
     try {
         app.parse(argc, argv);
@@ -356,10 +386,18 @@ int main(int argc, char** argv) {
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
                                 app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--volume-detail") ||
                                 app.count("--resolution");
-        if ((quick || full) && listsGiven)
-            throw Error(std::string("--") + (quick ? "quick" : "full") +
+        if ((quick || full || !sweeps.empty()) && listsGiven)
+            throw Error(std::string("--") + (!sweeps.empty() ? "sweep" : quick ? "quick" : "full") +
                         " is a fixed sweep; drop the --scenes/--modes/... lists, or drop the preset");
-        if (quick) {
+        if (!sweeps.empty()) {
+            for (const std::string& name : splitList(sweeps))
+                for (const SweepGroup& g : sweepPreset(name, quick)) groups.push_back(g);  // throws on a bad name
+            if (groups.empty()) throw Error("--sweep needs a name (valid: " + joinNames(sweepNames()) + ")");
+            settings.warmup = app.count("--warmup") ? settings.warmup : 1;
+            settings.warmupMs = app.count("--warmup-ms") || !quick ? settings.warmupMs : 0.0;
+            settings.frames = app.count("--frames") ? settings.frames : quick ? 1 : 5;
+            settings.maxSeconds = app.count("--max-seconds") ? settings.maxSeconds : 120.0;
+        } else if (quick) {
             groups = quickPreset();
             settings.warmup = app.count("--warmup") ? settings.warmup : 1;
             settings.warmupMs = app.count("--warmup-ms") ? settings.warmupMs : 0.0;
@@ -368,7 +406,7 @@ int main(int argc, char** argv) {
             groups = fullPreset();
             settings.warmup = app.count("--warmup") ? settings.warmup : 1;
             settings.frames = app.count("--frames") ? settings.frames : 5;
-            settings.maxSeconds = app.count("--max-seconds") ? settings.maxSeconds : 3.0;
+            settings.maxSeconds = app.count("--max-seconds") ? settings.maxSeconds : 120.0;
         } else {
             SweepGroup g;
             g.name = "command-line";
@@ -450,107 +488,224 @@ int main(int argc, char** argv) {
         meta["commit"] = commit;
         meta["command_line"] = commandLine;
         meta["settings"] = {{"warmup_frames", settings.warmup}, {"warmup_ms", settings.warmupMs}, {"frames", settings.frames},
-                            {"max_seconds_per_config", settings.maxSeconds}, {"seed", seed},
-                            {"preset", quick ? "quick" : full ? "full" : "none"}};
-        meta["frames_summary"] = "warm-up of at least " + std::to_string(settings.warmup) + " frame(s) and " +
-                                 std::to_string(int(settings.warmupMs)) + " ms (the rows give the count), then up to " +
-                                 std::to_string(settings.frames) +
-                                 " measured frames per configuration, measuring stops after " +
-                                 std::to_string(int(settings.maxSeconds)) + " s (at least 1 frame); a warm-up "
-                                 "frame longer than that is the one measured frame";
+                            {"max_seconds_per_scene_set", settings.maxSeconds}, {"seed", seed},
+                            {"preset", quick ? "quick" : full ? "full" : "none"}, {"sweeps", splitList(sweeps)},
+                            {"interleaved_rounds", true}, {"max_live", settings.maxLive}};
+        {
+            std::ostringstream cap;
+            cap << settings.maxSeconds;
+            meta["frames_summary"] =
+                "interleaved rounds: per scene and size every configuration is built and warmed up (at least " +
+                std::to_string(settings.warmup) + " frame(s) and " + std::to_string(int(settings.warmupMs)) +
+                " ms, the rows give the count), then up to " + std::to_string(settings.frames) +
+                " rounds render one measured frame of each configuration in turn (the first one rotating); no "
+                "round starts after the rounds took " + cap.str() + " s (at least 1 round); a configuration whose "
+                "first frame takes over " + cap.str() + " s / " + std::to_string(settings.frames) +
+                " is measured once, outside the rounds";
+        }
         const std::string loadBefore = readLoadAverage();
         meta["load_average_before"] = loadBefore;
         meta["load_summary"] = loadBefore + " / (running)";
         meta["cpu_cores_note"] = "load averages are over 1, 5 and 15 minutes";
 
         installSignalHandlers();
-        std::vector<double> weights;
-        for (const Run& r : plan.runs) weights.push_back(expectedCost(r, sceneCache.at(r.scene)));
+        // Scene sets: the runs of one scene and size, measured together in interleaved rounds (in the order
+        // of the plan, which keeps each reference's runs together).
+        std::vector<std::vector<const Run*>> sets;
+        {
+            std::map<std::string, size_t> setIndex;
+            for (const Run& r : plan.runs) {
+                const std::string k = r.scene + " " + std::to_string(r.width) + "x" + std::to_string(r.height);
+                auto [it, added] = setIndex.emplace(k, sets.size());
+                if (added) sets.emplace_back();
+                sets[it->second].push_back(&r);
+            }
+        }
+        std::vector<double> weights;  // in the order the rows come: set by set
+        for (const auto& set : sets)
+            for (const Run* r : set) weights.push_back(expectedCost(*r, sceneCache.at(r->scene)));
         Progress progress(!noProgress && isatty(STDERR_FILENO), weights);
 
-        std::map<std::string, Reference> references;
         std::map<std::string, int> maxOverlaps;  // scene|size -> most lights touching one surface pixel
-        std::map<std::string, std::vector<PointLight>> lightCache;
-        int nextId = 1;
-        for (size_t i = 0; i < plan.runs.size() && !g_stop; ++i) {
-            const Run& run = plan.runs[i];
-            const Scene& scene = sceneCache.at(run.scene);
-            if (!lightCache.count(run.scene)) lightCache[run.scene] = scene.lightsAt(scene.time);
-            const std::vector<PointLight>& lights = lightCache.at(run.scene);
-            progress.show(i, run.scene + " " + run.config.key());
+        // The scene's maximum overlap at this size, from single-sample depth: from `depthSource` when it has
+        // no MSAA, else from a plain forward-brute frame rendered for it once.
+        auto maxOverlapFor = [&](const Run& run, const Scene& scene, const std::vector<PointLight>& lights,
+                                 const Renderer* depthSource) {
+            const std::string overlapKey = run.scene + "|" + std::to_string(run.width) + "x" + std::to_string(run.height);
+            if (!maxOverlaps.count(overlapKey)) {
+                std::unique_ptr<Renderer> plain;
+                if (!depthSource || run.config.msaa > 0) {
+                    ModeConfig plainConfig = referenceConfigFor(run.config);
+                    plainConfig.msaa = 0;
+                    plainConfig.perSample = false;
+                    plain = createBenchRenderer(plainConfig, info, scene, run.width, run.height);
+                    renderFrame(*plain, scene, lights);
+                    depthSource = plain.get();
+                }
+                maxOverlaps[overlapKey] = computeCoverage(depthSource->targets().readDepth(),
+                                                          cameraMatrices(scene.camera, run.width, run.height), lights)
+                                              .maxOverlap();
+            }
+            return maxOverlaps.at(overlapKey);
+        };
 
-            Row row;
-            row.id = nextId;
-            row.run = run;
-            row.sceneLights = int(lights.size());
-            const std::string key = refKey(run);
-            const bool isBrute = run.config.mode == "forward-brute";
-            if (!references.count(key)) {
-                // The reference for this scene, size, MSAA and transparency: rendered once, reused by every row.
-                auto ref = createBenchRenderer(referenceConfigFor(run.config), info, scene, run.width, run.height);
-                Settings refSettings = settings;
-                if (!isBrute) refSettings.warmup = 0, refSettings.frames = 1;
-                const Measured m = measure(*ref, scene, lights, refSettings);
+        int nextId = 1;
+        size_t runsDone = 0;
+        int roundsDone = 0;
+        for (const std::vector<const Run*>& wholeSet : sets) {
+            if (g_stop) break;
+            const Run& first = *wholeSet.front();
+            const Scene& scene = sceneCache.at(first.scene);
+            const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+            const double onceMs = 1000.0 * settings.maxSeconds / settings.frames;
+            // The baseline: forward-multipass where the set has it, else its first configuration.
+            const Run* baselineRun = wholeSet.front();
+            for (const Run* r : wholeSet)
+                if (r->config.mode == "forward-multipass") {
+                    baselineRun = r;
+                    break;
+                }
+            // A set with more configurations than --max-live is measured in parts, the baseline in each (its
+            // row comes from the first part; in the others it only divides).
+            std::vector<std::vector<const Run*>> parts;
+            for (const Run* r : wholeSet) {
+                if (r == baselineRun) continue;
+                if (parts.empty() || int(parts.back().size()) + 1 >= settings.maxLive) parts.push_back({baselineRun});
+                parts.back().push_back(r);
+            }
+            if (parts.empty()) parts.push_back({baselineRun});
+            std::map<std::string, Reference> references;  // per set, shared by its parts
+            std::set<const Run*> written;
+            for (size_t part = 0; part < parts.size() && !g_stop; ++part) {
+            const std::vector<const Run*>& set = parts[part];
+            const std::string setKey = first.scene + " " + std::to_string(first.width) + "x" + std::to_string(first.height) +
+                                       (parts.size() > 1 ? " part " + std::to_string(part + 1) + "/" + std::to_string(parts.size()) : "");
+
+            // Every renderer of the set, built once.
+            std::vector<Slot> slots(set.size());
+            for (size_t i = 0; i < set.size(); ++i) {
+                progress.show(runsDone, setKey + ": building " + set[i]->config.key());
+                slots[i].run = set[i];
+                slots[i].renderer = createBenchRenderer(set[i]->config, info, scene, first.width, first.height);
+            }
+
+            // References (forward-brute with the same MSAA and transparency), rendered once: by the set's own
+            // forward-brute configuration where it has one (that frame is then its first warm-up frame).
+            std::vector<double> firstWall(slots.size(), -1.0);
+            for (size_t i = 0; i < slots.size() && !g_stop; ++i) {
+                const Run& run = *slots[i].run;
+                if (!run.reference || references.count(refKey(run))) continue;
+                progress.show(runsDone, setKey + ": reference for " + run.config.key());
+                const ModeConfig refConfig = referenceConfigFor(run.config);
+                size_t own = slots.size();
+                for (size_t k = 0; k < slots.size(); ++k)
+                    if (slots[k].run->config.key() == refConfig.key()) own = k;
+                std::unique_ptr<Renderer> separate;
+                Renderer* ref = nullptr;
+                if (own < slots.size()) {
+                    ref = slots[own].renderer.get();
+                    firstWall[own] = renderFrame(*ref, scene, lights);
+                } else {
+                    separate = createBenchRenderer(refConfig, info, scene, first.width, first.height);
+                    ref = separate.get();
+                    renderFrame(*ref, scene, lights);
+                }
                 Reference r;
                 r.image = ref->targets().readColor();
-                // The scene's maximum overlap at this size, from single-sample depth: an MSAA reference has
-                // none, so a plain reference frame is rendered for it once.
-                const std::string overlapKey = run.scene + "|" + std::to_string(run.width) + "x" + std::to_string(run.height);
-                if (!maxOverlaps.count(overlapKey)) {
-                    std::unique_ptr<Renderer> plain;
-                    const Renderer* depthSource = ref.get();
-                    if (run.config.msaa > 0) {
-                        ModeConfig plainConfig = referenceConfigFor(run.config);
-                        plainConfig.msaa = 0;
-                        plainConfig.perSample = false;
-                        plain = createBenchRenderer(plainConfig, info, scene, run.width, run.height);
-                        plain->render(scene.camera, lights, ShadingParameters{scene.ambient, scene.backgroundColor});
-                        depthSource = plain.get();
-                    }
-                    maxOverlaps[overlapKey] =
-                        computeCoverage(depthSource->targets().readDepth(),
-                                        cameraMatrices(scene.camera, run.width, run.height), lights)
-                            .maxOverlap();
-                }
-                r.maxOverlap = maxOverlaps.at(overlapKey);
-                references.emplace(key, std::move(r));
-                if (isBrute) {
-                    fillTiming(row, m);
-                    row.lightDataBytes = ref->lightDataBytes();
-                }
+                r.maxOverlap = maxOverlapFor(run, scene, lights, ref);
+                references.emplace(refKey(run), std::move(r));
             }
-            const Reference& reference = references.at(key);
-            row.maxOverlap = reference.maxOverlap;
-            if (isBrute && row.frames == 0) {  // its reference came from an earlier row (not in the usual order)
-                auto r = createBenchRenderer(run.config, info, scene, run.width, run.height);
-                fillTiming(row, measure(*r, scene, lights, settings));
+
+            // Warm-up, one configuration after the other.
+            for (size_t i = 0; i < slots.size() && !g_stop; ++i) {
+                progress.show(runsDone, setKey + ": warming up " + slots[i].run->config.key());
+                warmUp(slots[i], scene, lights, settings, onceMs, firstWall[i]);
             }
-            if (isBrute) {
-                row.error = compareImages(reference.image, reference.image);
-            } else {
-                auto renderer = createBenchRenderer(run.config, info, scene, run.width, run.height);
-                const Measured m = measure(*renderer, scene, lights, settings);
-                fillTiming(row, m);
-                row.lightDataBytes = renderer->lightDataBytes();
-                const ImageRGBA8 image = renderer->targets().readColor();
-                if (auto* lidrRenderer = dynamic_cast<LidrRenderer*>(renderer.get())) {
-                    const FrameEvaluation ev = evaluateFrame(*lidrRenderer, scene.camera, lights, image, reference.image);
-                    row.error = ev.error;
-                    // Per-sample index targets are multisample textures: evaluateFrame judges only the image.
-                    row.hasLists = !lidrRenderer->perSampleIndices();
-                    row.droppedLightPixels = ev.lists.droppedLightPixels;
-                    row.pixelsWithDrops = ev.lists.pixelsWithDrops;
-                    row.pixelsOverBudget = ev.pixelsOverBudget;
-                    row.invalidSlots = ev.lists.invalidSlots;
-                    row.maxMarked = ev.maxMarked;
-                    row.psnrWithinBudget = ev.errorWithinBudget.psnr;
+
+            // The baseline: forward-multipass where the set has it (and it takes part in the rounds), else the
+            // first configuration that does.
+            std::vector<size_t> active;
+            for (size_t i = 0; i < slots.size(); ++i)
+                if (!slots[i].once) active.push_back(i);
+            size_t baseline = active.empty() ? 0 : active.front();
+            for (size_t i : active)
+                if (slots[i].run == baselineRun) baseline = i;
+
+            // The rounds.
+            int rounds = 0;
+            const double roundsStart = nowMilliseconds();
+            for (int r = 0; r < settings.frames && !g_stop && !active.empty(); ++r) {
+                progress.show(runsDone, setKey + ": round " + std::to_string(r + 1) + "/" + std::to_string(settings.frames) +
+                                            " of " + std::to_string(active.size()) + " configurations");
+                for (size_t k = 0; k < active.size(); ++k) {
+                    Slot& slot = slots[active[(k + size_t(r)) % active.size()]];  // the start rotates each round
+                    const double wall = renderFrame(*slot.renderer, scene, lights);
+                    slot.m.frames.push_back(slot.renderer->lastFrame());
+                    slot.m.wallMs.push_back(wall);
+                    slot.roundMs.push_back(slot.m.frames.back().frameMilliseconds());
+                }
+                ++rounds;
+                const double base = slots[baseline].roundMs.back();
+                for (size_t i : active)
+                    if (base > 0) slots[i].ratios.push_back(slots[i].roundMs.back() / base);
+                ++roundsDone;
+                if (settings.interruptAfterRounds >= 0 && roundsDone >= settings.interruptAfterRounds) std::raise(SIGINT);
+                // At least one round; then stop on a signal (after the round) or past the set's time cap.
+                if ((nowMilliseconds() - roundsStart) / 1000.0 > settings.maxSeconds) break;
+            }
+            if (rounds == 0 && !active.empty()) break;  // interrupted before any round: nothing of this set to write
+            // Configurations measured once divide by the baseline's median (or its one frame).
+            std::vector<double> baseFrames;
+            for (const FrameStats& f : slots[baseline].m.frames) baseFrames.push_back(f.frameMilliseconds());
+            const double baseMedian = Stat::of(baseFrames).median;
+            for (Slot& s : slots)
+                if (s.once && baseMedian > 0) s.ratios.push_back(s.m.frames.front().frameMilliseconds() / baseMedian);
+
+            // Rows, in plan order, each judged against its reference.
+            for (Slot& slot : slots) {
+                if (slot.m.frames.empty() || !written.insert(slot.run).second) continue;
+                const Run& run = *slot.run;
+                progress.show(runsDone, setKey + ": evaluating " + run.config.key());
+                Row row;
+                row.id = nextId++;
+                row.run = run;
+                row.sceneLights = int(lights.size());
+                row.sceneTriangles = sceneTriangleCount(scene);
+                fillTiming(row, slot.m);
+                row.rounds = slot.once ? 1 : rounds;
+                row.roundMs = slot.roundMs;
+                row.setKey = setKey;
+                row.baseline = slots[baseline].run->config.key();
+                row.ratio = Stat::of(slot.ratios);
+                row.lightDataBytes = slot.renderer->lightDataBytes();
+                const ImageRGBA8 image = slot.renderer->targets().readColor();
+                if (!run.reference) {
+                    row.hasError = false;
+                    row.maxOverlap = maxOverlapFor(run, scene, lights, slots[baseline].renderer.get());
                 } else {
-                    row.error = compareImages(image, reference.image);
+                    const Reference& reference = references.at(refKey(run));
+                    row.maxOverlap = reference.maxOverlap;
+                    auto* lidrRenderer = dynamic_cast<LidrRenderer*>(slot.renderer.get());
+                    if (lidrRenderer) {
+                        const FrameEvaluation ev = evaluateFrame(*lidrRenderer, scene.camera, lights, image, reference.image);
+                        row.error = ev.error;
+                        // Per-sample index targets are multisample textures: evaluateFrame judges only the image.
+                        row.hasLists = !lidrRenderer->perSampleIndices();
+                        row.droppedLightPixels = ev.lists.droppedLightPixels;
+                        row.pixelsWithDrops = ev.lists.pixelsWithDrops;
+                        row.pixelsOverBudget = ev.pixelsOverBudget;
+                        row.invalidSlots = ev.lists.invalidSlots;
+                        row.maxMarked = ev.maxMarked;
+                        row.psnrWithinBudget = ev.errorWithinBudget.psnr;
+                    } else {
+                        row.error = compareImages(image, reference.image);
+                    }
                 }
+                writer->add(row, runInfo);
+                ++runsDone;
             }
-            writer->add(row, runInfo);
-            ++nextId;
             if (settings.interruptAfter >= 0 && nextId - 1 >= settings.interruptAfter) std::raise(SIGINT);
+            }  // parts
         }
         progress.finish();
         runInfo.interrupted = g_stop != 0;

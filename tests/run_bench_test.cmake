@@ -1,7 +1,9 @@
 # lidr-bench tests (no timing is asserted anywhere):
 #  - --quick writes well-formed outputs (lidr-bench-check parses CSV/JSON, checks columns and numbers, and the
 #    plots when gnuplot is installed);
-#  - an interrupted sweep keeps the rows it measured and says it was interrupted;
+#  - an interrupted sweep keeps the rows it measured and says it was interrupted (between scene sets, and in
+#    the middle of a set's interleaved rounds: the set's rows keep the rounds measured);
+#  - the scaling sweeps' seconds-long versions (--quick --sweep lights,triangles) write their rows and plots;
 #  - bad input fails before the sweep with the list of valid names.
 # Inputs: BENCH, CHECK (executables), OUT (scratch folder).
 file(REMOVE_RECURSE ${OUT})
@@ -43,6 +45,34 @@ endforeach()
 run_bench(130 "INTERRUPTED" --quick --no-progress --no-plots --interrupt-after 2 --out ${OUT}/interrupted)
 check_output(${OUT}/interrupted --expect-interrupted --min-rows 2)
 
+# Interrupted at the end of round 2 of the first scene set (3 asked): that set's rows, with 2 rounds each.
+run_bench(130 "INTERRUPTED" --quick --frames 3 --no-progress --no-plots --interrupt-after-rounds 2 --out ${OUT}/mid-round)
+check_output(${OUT}/mid-round --expect-interrupted --min-rows 2)
+file(READ ${OUT}/mid-round/results.json json)
+string(JSON nrows LENGTH "${json}" rows)
+math(EXPR last "${nrows} - 1")
+foreach(i RANGE ${last})
+  string(JSON rounds GET "${json}" rows ${i} timing rounds)
+  string(JSON scene GET "${json}" rows ${i} scene)
+  if(NOT rounds EQUAL 2 OR NOT scene STREQUAL "overlap-2")
+    message(FATAL_ERROR "mid-round interrupt: row ${i} is ${scene} with ${rounds} rounds, expected overlap-2 with 2")
+  endif()
+endforeach()
+
+# The scaling sweeps, seconds-long: light counts (timing only, no error columns) and triangles.
+run_bench(0 "rows in" --quick --sweep lights,triangles --frames 2 --no-progress --out ${OUT}/sweeps)
+if(GNUPLOT)
+  check_output(${OUT}/sweeps --expect-sweep-plots --min-rows 8)
+else()
+  check_output(${OUT}/sweeps --min-rows 8)
+endif()
+file(READ ${OUT}/sweeps/results.csv csv)
+foreach(scene many-64-fp many-1024-fp room heavy-100k)
+  if(NOT csv MATCHES ",${scene},")
+    message(FATAL_ERROR "quick sweeps have no row for scene ${scene}")
+  endif()
+endforeach()
+
 # Bad input: clear error before any measuring, naming what is valid.
 run_bench(1 "unknown packing scheme 'nope'.*valid: .*bitshift" --schemes nope --out ${OUT}/bad)
 run_bench(1 "unknown render mode 'warp'.*valid: .*lidr.*forward-brute" --modes warp --out ${OUT}/bad)
@@ -51,6 +81,9 @@ run_bench(1 "unknown volume test 'sideways'.*valid: backface, exact, frontface" 
 run_bench(1 "no configuration the library can run:.*budget.*got 3" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
 run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
           --volume-tests backface --msaa 4 --out ${OUT}/bad)
+run_bench(1 "unknown sweep 'nope'.*valid: lights, triangles" --sweep nope --out ${OUT}/bad)
+run_bench(1 "--sweep is a fixed sweep" --sweep lights --scenes room --out ${OUT}/bad)
+run_bench(1 "bad scene name 'heavy-0'.*heavy-T" --scenes heavy-0 --out ${OUT}/bad)
 file(WRITE ${OUT}/a-file "not a folder")
 run_bench(1 "cannot create output folder" --quick --out ${OUT}/a-file/sub)
 if(EXISTS ${OUT}/bad/results.csv)

@@ -14,4 +14,15 @@ enum class ManyLightView { TopDown, FirstPerson };
 Scene makeManyLightScene(int lightCount, ManyLightView view, int width = 1024, int height = 768, uint32_t seed = 1);
 const char* manyLightViewName(ManyLightView view);  // "top", "fp"
 
+// The default room (255 lights, its camera) with extra finely tessellated geometry, for frame time against
+// scene triangles: a fixed lattice of `heavyMeshCount` spheres (3 layers between the floor and 4 m, over the
+// whole floor) whose tessellation grows with `totalTriangles`, so the draw-call count stays the same and
+// forward-multipass can still cull per mesh. The result has about `totalTriangles` triangles (at least the
+// room's own plus one 8-segment sphere each); Scene::meshes gives the exact count. totalTriangles in
+// [1, 20,000,000].
+constexpr int heavyMeshCount = 192;
+Scene makeHeavyScene(long totalTriangles, int width = 1024, int height = 768, uint32_t seed = 1);
+// Triangles of every mesh in the scene.
+long sceneTriangleCount(const Scene& scene);
+
 }  // namespace lidr
