@@ -212,7 +212,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"stencil_use", renderer.scheme().stencilUse()},
                        {"volume_passes", renderer.scheme().geometryPasses()},
                        {"light_table_bytes", renderer.lightTable().bytes()},
-                       {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls}};
+                       {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls},
+                       {"transparent_volume_lights", stats.transparentVolumeLights}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
 
     if (renderer.perSampleIndices() && !dumpDir.empty())
@@ -273,7 +274,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
       << " triangles, " << lights.size() << " lights\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
-      << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off") << "\n";
+      << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
+      << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";

@@ -124,6 +124,29 @@ TEST_CASE("lidrBytes: fp32 reads within +-0.45 step give the exact byte (interva
     }
 }
 
+TEST_CASE("lidrBytes, rounded path: every fp24 read within +-0.45 step gives the exact byte (exhaustive), fp32 "
+          "at interval ends and 4,000 reads per byte", "[packing][precision][fp24][fp32][cpu]") {
+    long reads = 0;
+    const FloatPrecision p24 = FloatPrecision::Fp24;
+    for (int b = 0; b < 256; ++b) {
+        const double lo = (b - 0.45) / 255.0, hi = (b + 0.45) / 255.0;
+        double x = std::max(roundToPrecision(lo, p24), 0.0);
+        if (x < lo) x = nextUp(x, p24);
+        for (; x <= hi; x = nextUp(x, p24), ++reads) {
+            const ShaderFloat got = lidrBytesRounded(ShaderFloat(x, p24));
+            if (got.v != b) FAIL("fp24 read " << x * 255.0 << " steps gave " << got.v << ", not " << b);
+        }
+        for (int i = 0; i <= 4000; ++i) {
+            float r = float((b - 0.45 + 0.9 * i / 4000.0) / 255.0);
+            if (r * 255.0 < b - 0.45 || r * 255.0 > b + 0.45) continue;
+            REQUIRE(lidrBytesRounded(ShaderFloat(r, FloatPrecision::Fp32)).v == b);
+        }
+    }
+    CHECK(reads > 256 * 200);
+    // And the shader takes it only where it holds: fp16 reads go bit by bit.
+    CHECK(lidrBytesFor(ShaderFloat(0.5, FloatPrecision::Fp16)).v == lidrBytes(ShaderFloat(0.5, FloatPrecision::Fp16)).v);
+}
+
 TEST_CASE("the naive floor(x * 255 + 0.5) is not exact in fp16 for reads within +-0.45 step (why lidrBytes exists)",
           "[packing][precision][fp16][cpu]") {
     const FloatPrecision p = FloatPrecision::Fp16;

@@ -46,6 +46,8 @@ constexpr double kThreshold[8] = {0.00196075439453125, 0.00588226318359375, 0.01
 double lidrBytesThreshold(int bit) { return kThreshold[bit]; }
 double lidrBytesValue(int bit) { return std::ldexp(257.0, bit - 16); }
 
+ShaderFloat lidrBytesRounded(ShaderFloat x) { return floorOf(x * x.constant(255.0) + x.constant(0.5)); }
+
 ShaderFloat lidrBytes(ShaderFloat x) {
     ShaderFloat b = x.constant(0.0);
     for (int j = 7; j >= 0; --j) {

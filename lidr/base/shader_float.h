@@ -26,8 +26,14 @@ struct ShaderFloat {
 ShaderFloat floorOf(ShaderFloat x);
 ShaderFloat stepOf(double edge, ShaderFloat x);  // GLSL step(edge, x): 0 if x < edge, else 1
 
-// shaders/technique/lidr_bytes.glsl, step for step: the byte behind a texel read.
+// shaders/technique/lidr_bytes.glsl, step for step: the byte behind a texel read. lidrBytes is the bit-by-bit
+// path the shader takes for fp16 fragments (LIDR_FRAGMENT_FP16); lidrBytesRounded, floor(x * 255 + 0.5), the
+// path for fp24 and fp32; lidrBytesFor(read) the one the shader takes for the read's precision.
 ShaderFloat lidrBytes(ShaderFloat read);
+ShaderFloat lidrBytesRounded(ShaderFloat read);
+inline ShaderFloat lidrBytesFor(ShaderFloat read) {
+    return read.p == FloatPrecision::Fp16 ? lidrBytes(read) : lidrBytesRounded(read);
+}
 
 // The threshold and value constants lidr_bytes.glsl uses for bit j (for the proofs).
 double lidrBytesThreshold(int bit);

@@ -124,7 +124,7 @@ std::vector<uint8_t> PackingScheme::encodePixel(const std::vector<uint32_t>& dra
 
 std::vector<uint32_t> PackingScheme::decodeReads(const float* reads, FloatPrecision p) const {
     std::vector<ShaderFloat> bytes;
-    for (int i = 0; i < targetCount() * 4; ++i) bytes.push_back(lidrBytes(ShaderFloat(reads[i], p)));
+    for (int i = 0; i < targetCount() * 4; ++i) bytes.push_back(lidrBytesFor(ShaderFloat(reads[i], p)));
     return decodeBytes(bytes);
 }
 

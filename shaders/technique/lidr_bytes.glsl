@@ -9,6 +9,15 @@
 // (lidr/base/shader_float.h) runs the same steps in emulated precision; tests prove it exhaustively.
 //   bit 7: threshold 1/2 (= 127.5/255),   value 257/512   (~128/255)
 //   bit j: threshold ~ (2^j - 0.5)/255,   value 257/2^(16-j) (~2^j/255)
+// That is for fp16 fragments (OpenGL ES mediump: LIDR_FRAGMENT_FP16). With at least fp24 (every desktop GL 2.x
+// part: fp24 on ATI R300-R500, fp32 elsewhere) the plain rounding is exact for the same reads and costs two
+// operations instead of 24: x * 255 errs by under 2^-9 of a step in fp24 and +0.5 adds no rounding that could
+// cross an integer (tests: "lidrBytes, rounded path").
+#ifndef LIDR_FRAGMENT_FP16
+vec4 lidrBytes(vec4 x) {
+    return floor(x * 255.0 + 0.5);
+}
+#else
 vec4 lidrBytes(vec4 x) {
     vec4 b = vec4(0.0), bit;
     bit = step(vec4(0.5), x);                  x -= bit * 0.501953125;           b += bit * 128.0;
@@ -21,3 +30,4 @@ vec4 lidrBytes(vec4 x) {
     bit = step(vec4(0.00196075439453125), x);                                    b += bit;
     return b;
 }
+#endif
