@@ -255,20 +255,8 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     const GLint clampLoc = listSource_ ? -1 : program.uniform("uClampToFar");
 
     // The volume test proper: back faces (cull front) at or behind the surface.
-    RenderState inside;
+    RenderState inside = backFaceState(d);
     inside.depthTest = true;
-    inside.depthFunc = GL_GEQUAL;
-    inside.depthClamp = depthClamp_;  // back faces past the far plane still mark the pixels in front of them
-    inside.cull = true;
-    inside.cullFace = GL_FRONT;
-    inside.colorMask = d.colorMask;
-    inside.blend = d.blend;
-    inside.blendEquation = d.blendEquation;
-    inside.blendSrcRgb = inside.blendSrcAlpha = d.blendSrc;
-    inside.blendDstRgb = inside.blendDstAlpha = d.blendDst;
-    inside.blendColor = d.blendColor;
-    inside.stencilTest = true;
-    applyScissor(inside);
 
     RenderState mark, count, unmark;
     // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
@@ -400,6 +388,23 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }
 
+RenderState LightVolumePass::backFaceState(const VolumeDraw& d) const {
+    RenderState s;
+    s.depthFunc = GL_GEQUAL;
+    s.depthClamp = depthClamp_;  // back faces past the far plane still mark the pixels in front of them
+    s.cull = true;
+    s.cullFace = GL_FRONT;
+    s.colorMask = d.colorMask;
+    s.blend = d.blend;
+    s.blendEquation = d.blendEquation;
+    s.blendSrcRgb = s.blendSrcAlpha = d.blendSrc;
+    s.blendDstRgb = s.blendDstAlpha = d.blendDst;
+    s.blendColor = d.blendColor;
+    s.stencilTest = true;
+    applyScissor(s);
+    return s;
+}
+
 void LightVolumePass::beginDraw(const VolumeDraw& d) {
     if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
         (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
@@ -438,22 +443,11 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
     // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
     // one draw does what the stencil tests need a count draw for.
-    RenderState st;
-    st.cull = true;
-    st.cullFace = GL_FRONT;
-    st.depthClamp = depthClamp_;
+    RenderState st = backFaceState(d);
     // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
     // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
     const bool preTest = test_ == VolumeTest::Sphere;
     st.depthTest = preTest;
-    st.depthFunc = GL_GEQUAL;
-    st.colorMask = d.colorMask;
-    st.blend = d.blend;
-    st.blendEquation = d.blendEquation;
-    st.blendSrcRgb = st.blendSrcAlpha = d.blendSrc;
-    st.blendDstRgb = st.blendDstAlpha = d.blendDst;
-    st.blendColor = d.blendColor;
-    st.stencilTest = true;
     const bool window = d.rankCount > 0;
     st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
     st.stencil.ref = d.rankFirst;
@@ -461,7 +455,6 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
     st.stencil.writeMask = 0xFF;
     countBits_ = 8;
-    applyScissor(st);
     RenderState noPreTest = st;
     noPreTest.depthTest = false;
 

@@ -137,7 +137,9 @@ public:
     static constexpr float kSphereRadiusScale = 1.0005f;
 
 private:
-    void beginDraw(const VolumeDraw& d);  // checks the rank window, restarts the count, selects draw buffers
+    void beginDraw(const VolumeDraw& d);
+    // Back faces, depth GEQUAL (test off), the draw's colour and blend state, stencil on, the scissor.
+    RenderState backFaceState(const VolumeDraw& d) const;  // checks the rank window, restarts the count, selects draw buffers
     bool reachesFarPlane(const VolumeLight& light) const;  // the drawn mesh reaches the far plane
     int batchFor(int targetCount) const;  // lights per draw for this many targets
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
