@@ -578,7 +578,12 @@ public:
         if (root.has("camera")) readCamera(root["camera"]);
         if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
         if (root.has("background")) scene_.backgroundColor = color(root["background"]);
-        if (root.has("msaa")) scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+        if (root.has("msaa")) {
+            scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+            if (scene_.msaaSamples != 0 && (scene_.msaaSamples < 2 || (scene_.msaaSamples & (scene_.msaaSamples - 1)) != 0))
+                root["msaa"].fail("must be 0 (off) or a power of two 2, 4, 8, ... 64, got " +
+                                  std::to_string(scene_.msaaSamples));
+        }
         if (root.has("transparency")) scene_.transparency = root["transparency"].boolean();
         if (root.has("materials"))
             for (const Field& material : root["materials"].items()) readMaterial(material);
