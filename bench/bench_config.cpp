@@ -7,6 +7,7 @@
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
+#include "lidr/gl/render_targets.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/primitives.h"
@@ -456,6 +457,10 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                 for (const ModeConfig& c : configs) {
                     const std::string probeKey = sceneName + "|" + std::to_string(w) + "x" + std::to_string(h) + "|" + c.key();
                     if (!probeResults.count(probeKey)) {
+                        // Before the probe allocates anything: an oversized configuration is an error, not a skip.
+                        const bool lidr = c.mode == "lidr";
+                        checkRenderTargetMemory(w, h, c.msaa, lidr ? indexBytesPerPixel(c.budget, c.indexBits) : 0,
+                                                lidr && c.perSample);
                         std::string reason;
                         try {
                             createBenchRenderer(c, info, probes.at(sceneName), w, h);

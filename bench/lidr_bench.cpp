@@ -3,6 +3,7 @@
 // passes.csv, results.json, summary.md and gnuplot plots into --out. See doc/benchmarks.md.
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -23,6 +24,7 @@
 #include "bench_config.h"
 #include "bench_report.h"
 #include "lidr/base/error.h"
+#include "lidr/gl/render_targets.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/base/gl.h"
 #include "lidr/eval/light_coverage.h"
@@ -380,6 +382,16 @@ int main(int argc, char** argv) {
     for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + shellWord(argv[i]);
 
     try {
+        // CLI::Range lets NaN through (every comparison with it is false): numbers are checked here.
+        const auto finiteIn = [](const char* option, double value, double lo, double hi) {
+            if (!(std::isfinite(value) && value >= lo && value <= hi)) {
+                std::ostringstream text;
+                text << option << " must be a finite number in [" << lo << ", " << hi << "], got " << value;
+                throw Error(text.str());
+            }
+        };
+        finiteIn("--max-seconds", settings.maxSeconds, 0.0, 3600.0);
+        finiteIn("--warmup-ms", settings.warmupMs, 0.0, 60000.0);
         // ---- the sweep, from a preset or the lists -------------------------------------------------------
         std::vector<SweepGroup> groups;
         const bool listsGiven = app.count("--scenes") || app.count("--modes") || app.count("--schemes") ||
@@ -417,6 +429,7 @@ int main(int argc, char** argv) {
             g.indexBits = intList(indexBits, "index width");
             g.volumeTests = splitList(volumeTests);
             g.msaa = intList(msaa, "MSAA sample count");
+            for (int samples : g.msaa) checkSampleCount(samples, "--msaa");
             g.perSample = onOffList(perSample, "--per-sample value");
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");

@@ -2,6 +2,11 @@
 
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
+#include "lidr/gl/render_targets.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/scene_loader.h"
 
@@ -11,20 +16,27 @@ void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--scene", sceneFile, "Scene file (JSON, see doc/scene-format.md); default: the built-in room");
     app.add_option("--width", width, "Override the scene's width in pixels");
     app.add_option("--height", height, "Override the scene's height in pixels");
-    app.add_option("--time", time, "Animation time in seconds (default: the scene's)");
+    app.add_option("--time", time, "Animation time in seconds, a finite number >= 0 (default: the scene's)");
     app.add_option("--seed", seed, "Seed of the built-in room's lights");
 }
 
 Scene SceneChoice::load() const {
+    // Checked first, before the scene is built; float(time) must also stay finite.
+    if (time && !(std::isfinite(*time) && *time >= 0.0 && *time <= double(std::numeric_limits<float>::max()))) {
+        std::ostringstream value;
+        value << *time;
+        throw Error("--time must be a finite number of seconds >= 0 (leave it out for the scene's own time), got " +
+                    value.str());
+    }
     Scene scene;
     if (sceneFile.empty()) {
         DefaultSceneOptions o;
         o.seed = seed;
-        if (time >= 0.0) o.time = float(time);
+        if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
     } else {
         scene = loadSceneFile(sceneFile);
-        if (time >= 0.0) scene.time = float(time);
+        if (time) scene.time = float(*time);
     }
     if (width) scene.width = *width;
     if (height) scene.height = *height;
@@ -62,7 +74,8 @@ void RendererChoice::addOptions(CLI::App& app) {
 
 LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     LidrOptions o;
-    o.msaaSamples = msaa >= 0 ? msaa : scene.msaaSamples;
+    if (msaa) checkSampleCount(*msaa, "--msaa");
+    o.msaaSamples = msaa.value_or(scene.msaaSamples);
     if (transparency == "on" || transparency == "scene")
         o.transparency = transparency == "on" || scene.transparency;
     else if (transparency == "off")
@@ -97,6 +110,13 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.halfZ = halfZ;
     o.forceFixedLightTable = fixedLightTable;
     return o;
+}
+
+void checkTargetMemory(const Scene& scene, const RenderModeOptions& options) {
+    const bool lidr = options.mode == "lidr";
+    checkRenderTargetMemory(scene.width, scene.height, options.msaaSamples,
+                            lidr ? indexBytesPerPixel(options.lidr.packing.budget, options.lidr.packing.indexBits) : 0,
+                            lidr && options.lidr.perSampleIndices);
 }
 
 ContextOptions RendererChoice::contextOptions() const {

@@ -15,7 +15,7 @@ namespace lidr::demo {
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
     std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
-    double time = -1.0;         // < 0: the scene's
+    std::optional<double> time;  // unset: the scene's; set: a finite number of seconds >= 0
     unsigned seed = 1;
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
@@ -31,7 +31,7 @@ struct RendererChoice {
     int budget = 8;
     int indexBits = 8;
     std::string volumeTest = "auto";  // sphere, or sphere-ray with MSAA (backface with per-sample lists)
-    int msaa = -1;                     // < 0: the scene's
+    std::optional<int> msaa;           // unset: the scene's; set: 0 or a power of two (checked)
     std::string transparency = "scene";
     bool msaaPerSample = false;
     bool volumeDetail = false;
@@ -44,5 +44,9 @@ struct RendererChoice {
     RenderModeOptions renderModeOptions(const Scene& scene) const;
     ContextOptions contextOptions() const;
 };
+
+// Throws lidr::Error when the render targets the options ask for would need more than maxRenderTargetBytes
+// (lidr/gl/render_targets.h); called after the scene is loaded and before any context is created.
+void checkTargetMemory(const Scene& scene, const RenderModeOptions& options);
 
 }  // namespace lidr::demo

@@ -176,6 +176,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                 const std::string& dumpDir, int frames, bool withReference) {
     const Scene scene = sceneChoice.load();
     const RenderModeOptions modeOptions = rc.renderModeOptions(scene);
+    demo::checkTargetMemory(scene, modeOptions);  // before the context: an oversized request fails at once
     if (modeOptions.mode != "lidr") {
         if (!dumpDir.empty()) throw Error("--dump writes LIDR index targets; it needs --mode lidr");
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
@@ -302,6 +303,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
 int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
 #if LIDR_HAVE_GLFW
     Scene scene = sceneChoice.load();
+    demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
     ContextOptions co = rc.contextOptions();
     co.backend = ContextBackend::Glfw;
     co.visibleWindow = true;

@@ -75,3 +75,31 @@ foreach(args IN LISTS bad_runs)
     message(FATAL_ERROR "lidr-demo ${shown}: no error message on stderr\n${err}")
   endif()
 endforeach()
+
+# Issue 13: values that were accepted silently; each exits non-zero before rendering, with this message.
+set(bad_values
+  "--time|nan@--time must be a finite number of seconds >= 0.*got nan"
+  "--time|-1@--time must be a finite number of seconds >= 0.*got -1"
+  "--msaa|3@--msaa must be 0 \\(off\\) or a power of two 2, 4, 8.*got 3"
+  "--msaa|-1@--msaa must be 0 \\(off\\) or a power of two.*got -1"
+  "--width|16384|--height|16384|--msaa|8@need about [0-9]+ MiB.*the limit is 2048 MiB"
+  "--scene|/dev/null@/dev/null: scene file is not a regular file"
+  "--scene|${OUT}@scene file is a directory")
+foreach(entry IN LISTS bad_values)
+  string(REPLACE "@" ";" parts "${entry}")
+  list(GET parts 0 args)
+  list(GET parts 1 expected)
+  string(REPLACE "|" " " shown "${args}")
+  string(REPLACE "|" ";" argv "${args}")
+  execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/bad ${argv}
+                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(r EQUAL 0 OR NOT r MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "lidr-demo ${shown}: expected a clean non-zero exit, got '${r}'\n${out}${err}")
+  endif()
+  if(NOT err MATCHES "${expected}")
+    message(FATAL_ERROR "lidr-demo ${shown}: stderr lacks '${expected}'\n${err}")
+  endif()
+  if(out MATCHES "GL: ")
+    message(FATAL_ERROR "lidr-demo ${shown}: a context was created before the error\n${out}")
+  endif()
+endforeach()

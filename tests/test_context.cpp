@@ -12,6 +12,7 @@
 #include "lidr/base/gl.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/gl/render_targets.h"
 
 using namespace lidr;
 using namespace lidr::test;
@@ -100,4 +101,24 @@ TEST_CASE("the context renders: a cleared and a scissor-cleared FBO read back ex
                 REQUIRE((p[0] == 51 && p[1] == 102 && p[2] == 153 && p[3] == 255));
             }
         }
+}
+
+TEST_CASE("render-target memory and MSAA sample counts are checked without a context (issue 13)", "[context][cpu]") {
+    using Catch::Contains;
+    // 1024 x 768, no MSAA, 8 index bytes: colour 4 + depth 4 + index 8 bytes per pixel.
+    CHECK(lidr::estimateRenderTargetBytes(1024, 768, 0, 8) == 1024ull * 768 * 16);
+    CHECK(lidr::estimateRenderTargetBytes(1024, 768, 4, 8) == 1024ull * 768 * (16 + 32));
+    CHECK(lidr::estimateRenderTargetBytes(1024, 768, 4, 8, true) == 1024ull * 768 * (16 + 32 + 32));
+    CHECK(lidr::indexBytesPerPixel(8, 8) == 8);
+    CHECK(lidr::indexBytesPerPixel(1, 4) == 4);
+    CHECK(lidr::indexBytesPerPixel(16, 16) == 32);
+    REQUIRE_NOTHROW(lidr::checkRenderTargetMemory(4096, 4096, 8, 16));  // 1.5 GiB
+    REQUIRE_THROWS_WITH(lidr::checkRenderTargetMemory(16384, 16384, 8, 8),
+                        Contains("16384x16384 with MSAA 8x") && Contains("need about 20480 MiB") &&
+                            Contains("the limit is 2048 MiB"));
+    for (int ok : {0, 2, 4, 8, 16, 32, 64}) REQUIRE_NOTHROW(lidr::checkSampleCount(ok, "--msaa"));
+    for (int bad : {-1, 1, 3, 6, 12, 128})
+        REQUIRE_THROWS_WITH(lidr::checkSampleCount(bad, "--msaa"),
+                            Contains("--msaa must be 0 (off) or a power of two 2, 4, 8") &&
+                                Contains("got " + std::to_string(bad)));
 }

@@ -45,6 +45,8 @@ public:
         return file;
     }
 
+    const fs::path& path() const { return path_; }
+
 private:
     fs::path path_;
 };
@@ -436,6 +438,32 @@ TEST_CASE("Scene::validate names the offending item", "[scene][cpu]") {
         scene.lights.resize(65536, lightAt({0, 1, 0}));
         REQUIRE_THROWS_WITH(scene.validate(), Contains("65536 lights") && Contains("65535"));
     }
+    SECTION("light radius too large (issue 13)") {
+        scene.lights[1].radius = 1e38f;
+        REQUIRE_THROWS_WITH(scene.validate(), Contains("light 1: radius 1e+38 is too large (limit 1e+18)"));
+        scene.lights[1].radius = lidr::maxLightRadius;  // the limit itself is accepted
+        REQUIRE_NOTHROW(scene.validate());
+        scene.lights[1].position = {3e38f, 0, 0};  // position + radius is still finite; 3.4e38 + 1e18 rounds
+        REQUIRE_NOTHROW(scene.validate());
+    }
+    SECTION("camera whose view basis overflows float (issue 13)") {
+        scene.camera.position = {-3e38f, 0, 0};
+        scene.camera.target = {3e38f, 0, 0};  // target - position is +inf: not "parallel to up"
+        REQUIRE_THROWS_WITH(scene.validate(), Contains("camera: target - position overflows float") &&
+                                                  !Contains("parallel"));
+        scene.camera.position = {0, 1, 0};
+        scene.camera.target = {1e20f, 1, 0};  // finite, but its length^2 overflows in normalize
+        REQUIRE_THROWS_WITH(scene.validate(), Contains("camera: target - position overflows float") &&
+                                                  !Contains("parallel"));
+        scene.camera.position = {3e38f, -3e38f, 0};
+        scene.camera.target = {3e38f, -3e38f, -1};  // a unit direction, but dot(side, position) overflows
+        scene.camera.up = {1, 1, 0};
+        REQUIRE_THROWS_WITH(scene.validate(), Contains("camera: position") && Contains("overflow float in the view basis"));
+    }
+    SECTION("too many triangles (issue 13)") {
+        scene.meshes[0].indices.resize((lidr::maxSceneTriangles + 1) * 3, 0);
+        REQUIRE_THROWS_WITH(scene.validate(), Contains("20000001 triangles") && Contains("at most 20000000"));
+    }
 }
 
 TEST_CASE("scene files: every file in media/scenes loads", "[scene][cpu]") {
@@ -692,5 +720,104 @@ TEST_CASE("scene files: bad input is an lidr::Error naming the problem", "[scene
         CHECK(scene.triangleCount() == 13);
         CHECK(scene.materials.size() == 1);
         CHECK(scene.materials[0].name == "default");
+    }
+}
+
+TEST_CASE("scene files: limits are checked before any work, naming the value and the limit (issue 13)",
+          "[scene][cpu]") {
+    TempDir dir;
+    const auto load = [&](const std::string& json) { return lidr::loadSceneFile(dir.write("scene.json", json)); };
+    SECTION("subdivisions") {
+        REQUIRE_THROWS_WITH(load(R"({"primitives": [{"shape": "box", "min": [0, 0, 0], "max": [1, 1, 1],
+                                                     "subdivisions": 100000}]})"),
+                            Contains("primitives[0].subdivisions") && Contains("[1, 256]") && Contains("100000"));
+        REQUIRE_NOTHROW(load(R"({"primitives": [{"shape": "plane", "center": [0, 0, 0], "size": [1, 1],
+                                                 "subdivisions": 256}]})"));
+        lidr::Scene scene;
+        scene.materials.resize(1);
+        REQUIRE_THROWS_WITH(lidr::addBox(scene, {0, 0, 0}, {1, 1, 1}, 0, 257),
+                            Contains("addBox: subdivisions 257 is above the limit of 256"));
+        REQUIRE_THROWS_WITH(lidr::addTorus(scene, {0, 0, 0}, 2, 1, 0, 1025, 12),
+                            Contains("majorSegments 1025 is above the limit of 1024"));
+        CHECK(scene.meshes.empty());
+    }
+    SECTION("light radius and generator bounds") {
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "lights": [{"position": [0, 1, 0], "radius": 1e38}])")),
+                            Contains("lights[0].radius: radius 1e+38 is too large (limit 1e+18)"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "generate": {"count": 4, "bounds_min": [-3e38, 0, 0],
+                                                               "bounds_max": [3e38, 1, 1]})")),
+                            Contains("generate: light generator bounds") && Contains("overflow float") &&
+                                !Contains("light 1"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "generate": [{"count": 4, "bounds_min": [0, 0, 0],
+                                   "bounds_max": [1, 1, 1], "radius_max": 1e30}])")),
+                            Contains("generate[0].radius_max") && Contains("too large (limit 1e+18)"));
+        lidr::Scene scene;
+        lidr::LightGeneratorOptions options;
+        options.count = 3;
+        options.boundsMin = glm::vec3(-3e38f);
+        options.boundsMax = glm::vec3(3e38f);
+        REQUIRE_THROWS_WITH(lidr::generateLights(scene, options), Contains("generateLights: bounds overflow float"));
+    }
+}
+
+TEST_CASE("scene files: files that are not regular, unsupported formats and huge textures say so (issue 13)",
+          "[scene][cpu]") {
+    TempDir dir;
+    const auto load = [&](const std::string& json) { return lidr::loadSceneFile(dir.write("scene.json", json)); };
+    fs::create_directories(dir.path() / "folder.obj");
+    fs::create_directories(dir.path() / "folder.json");
+    fs::create_directories(dir.path() / "folder.png");
+    fs::create_symlink("loop-b.obj", dir.path() / "loop-a.obj");
+    fs::create_symlink("loop-a.obj", dir.path() / "loop-b.obj");
+    SECTION("scene file") {
+        REQUIRE_THROWS_WITH(lidr::loadSceneFile((dir.path() / "folder.json").string()),
+                            Contains("folder.json: scene file is a directory"));
+        REQUIRE_THROWS_WITH(lidr::loadSceneFile("/dev/null"), Contains("/dev/null: scene file is not a regular file"));
+        REQUIRE_THROWS_WITH(lidr::loadSceneFile((dir.path() / "loop-a.obj").string()),
+                            Contains(std::strerror(ELOOP)) && !Contains("not found"));
+    }
+    SECTION("OBJ") {
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "folder.obj"}])")),
+                            Contains("models[0].file") && Contains("OBJ file is a directory"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "/dev/null"}])")),
+                            Contains("OBJ file is not a regular file"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "loop-a.obj"}])")),
+                            Contains(std::strerror(ELOOP)) && !Contains("not found"));
+        dir.write("mesh.ply", "ply\nformat ascii 1.0\nend_header\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.ply"}])")),
+                            Contains("format not supported (PLY)") && !Contains("no triangles"));
+        dir.write("mesh.glb", "glTF");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.glb"}])")), Contains("format not supported (glTF)"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.gltf"}])")), Contains("format not supported (glTF)"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.FBX"}])")), Contains("format not supported (FBX)"));
+    }
+    SECTION("OBJ numbers tinyobjloader would read as 0") {
+        dir.write("nan.obj", "v 0 0 0\nv 1 0 0\n# comment\nv 0 nan 0\nf 1 2 3\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "nan.obj"}])")),
+                            Contains("nan.obj") && Contains("line 4: vertex 3 coordinate 'nan' is not finite"));
+        dir.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 -inf\nf 1 2 3\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "inf.obj"}])")),
+                            Contains("inf.obj") && Contains("line 3: vertex 3 coordinate '-inf' is not finite"));
+        dir.write("big.obj", "v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "big.obj"}])")),
+                            Contains("line 3: vertex 3 coordinate '1e39' is not finite"));
+        dir.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 NaN\nf 1//1 2//1 3//1\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "vn.obj"}])")),
+                            Contains("line 4: normal 1 coordinate 'NaN' is not finite"));
+        dir.write("word.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "word.obj"}])")),
+                            Contains("line 3: vertex 3 coordinate 'zero' is not a number"));
+    }
+    SECTION("textures") {
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "materials": [{"name": "m", "texture": "folder.png"}])")),
+                            Contains("materials[0].texture") && Contains("is a directory"));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "materials": [{"name": "m", "texture": "/dev/null"}])")),
+                            Contains("is not a regular file"));
+        // A PNG signature and IHDR chunk claiming 100000 x 100000 (the rest is missing).
+        const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                        0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0, 8, 6, 0, 0, 0, 0, 0, 0, 0};
+        dir.write("huge.png", std::string(reinterpret_cast<const char*>(header), sizeof header));
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "materials": [{"name": "m", "texture": "huge.png"}])")),
+                            Contains("huge.png' is 100000x100000, over the texture limit of 16384 per side"));
     }
 }

@@ -21,6 +21,7 @@
 #include "lidr/modes/render_mode.h"
 #include "lidr/scene/sphere_bounds.h"
 #include "lidr/modes/tiled_renderer.h"
+#include "lidr/technique/cpu_sorted_scheme.h"
 #include "lidr/base/visualize.h"
 #include "render_helpers.h"
 
@@ -250,6 +251,52 @@ TEST_CASE("every pixel whose view ray meets a sphere is inside its pixel rectang
             }
     }
     CHECK(hitPixels > 10000);
+}
+
+TEST_CASE("screen rectangles: huge and non-finite projected coordinates give valid, conservative rectangles",
+          "[tiled][bounds][cpu]") {
+    // Issue 13: the pixel rectangles converted float/double coordinates to int unclamped (undefined behaviour
+    // for a camera or light near the float range). Every rectangle must be empty or inside the viewport, and a
+    // sphere that contains the camera must cover the whole viewport.
+    const float big = 3e38f, inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
+    const int w = 64, h = 48;
+    const std::vector<Camera> cameras = {camera({0, 0, 0}, {0, 0, -1}), camera({big, 0, 0}, {big, 0, -1}),
+                                         camera({0, big, big}, {0, big, 0}), camera({-big, 0, 0}, {big, 0, 0})};
+    struct Case { glm::vec3 c; float r; bool containsEye0; };
+    const std::vector<Case> spheres = {
+        {{0, 0, -10}, 1e38f, true},  {{0, 0, -2}, 1.0f, false},       {{1e38f, 0, -1}, 1.0f, false},
+        {{0, 0, -1e-3f}, 1e37f, true}, {{big, big, -big}, big, false}, {{1e30f, 0, -1e-30f}, 1e30f, false},
+        {{inf, 0, 0}, 1.0f, false},   {{nan, 0, 0}, 1.0f, false},     {{0, 0, -5}, inf, false},
+        {{0, 0, -5}, nan, false},     {{-big, -big, -big}, big, false}};
+    ImageFloat depth(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) depth.at(x, y) = 0.5f;
+    for (size_t ci = 0; ci < cameras.size(); ++ci) {
+        const CameraMatrices m = cameraMatrices(cameras[ci], w, h);
+        for (size_t si = 0; si < spheres.size(); ++si) {
+            const Case& s = spheres[si];
+            INFO("camera " << ci << " sphere " << si);
+            const bool whole = ci == 0 && s.containsEye0;
+            const ScreenFootprint f = screenFootprint(m, glm::vec4(s.c, s.r), 1.01f);
+            const bool fEmpty = f.x0 > f.x1 || f.y0 > f.y1;
+            if (!fEmpty) CHECK((f.x0 >= 0 && f.y0 >= 0 && f.x1 < w && f.y1 < h));
+            if (whole) CHECK((f.x0 == 0 && f.y0 == 0 && f.x1 == w - 1 && f.y1 == h - 1));
+            glm::ivec4 rect(-7);
+            if (spherePixelRect(m, s.c, s.r, rect)) CHECK((rect.x >= 0 && rect.y >= 0 && rect.z < w && rect.w < h));
+            if (whole) CHECK((spherePixelRect(m, s.c, s.r, rect) && rect == glm::ivec4(0, 0, w - 1, h - 1)));
+            if (boxPixelRect(m, s.c - glm::vec3(s.r), s.c + glm::vec3(s.r), rect))
+                CHECK((rect.x >= 0 && rect.y >= 0 && rect.z < w && rect.w < h && rect.x <= rect.z && rect.y <= rect.w));
+            if (whole) CHECK((boxPixelRect(m, s.c - glm::vec3(s.r), s.c + glm::vec3(s.r), rect) &&
+                              rect == glm::ivec4(0, 0, w - 1, h - 1)));
+            // computeCoverage and frontFaceCounts walk light_coverage.cpp's screen rectangle.
+            PointLight l;
+            l.position = s.c, l.radius = s.r, l.color = glm::vec3(1.0f);
+            const CoverageTruth t = computeCoverage(depth, m, {l});
+            CHECK(t.offsets.size() == size_t(w * h + 1));
+            if (whole) CHECK(t.lights.size() == size_t(w * h));  // every surface point lies inside the light
+            CHECK(frontFaceCounts(depth, m, {l}, 1.01f).size() == size_t(w * h));
+        }
+    }
 }
 
 TEST_CASE("light grid: tile size is checked, lists are ascending and terminated", "[tiled][grid][cpu]") {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lidr/base/error.h"
+#include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
 
@@ -22,16 +23,19 @@ void screenRect(const CameraMatrices& m, const PointLight& l, int& x0, int& y0, 
     for (int c = 0; c < 8; ++c) {
         const glm::vec3 corner = l.position + l.radius * glm::vec3(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
         const glm::vec4 clip = m.viewProjection * glm::vec4(corner, 1.0f);
-        if (clip.w <= 1e-6f) return;
+        if (!(clip.w > 1e-6f)) return;  // behind the eye, or not a number: the whole screen
         const float sx = (clip.x / clip.w * 0.5f + 0.5f) * m.width;
         const float sy = (0.5f - clip.y / clip.w * 0.5f) * m.height;  // rows top to bottom
+        if (!std::isfinite(sx) || !std::isfinite(sy)) return;  // overflowed: the whole screen (conservative)
         minX = std::min(minX, sx), maxX = std::max(maxX, sx);
         minY = std::min(minY, sy), maxY = std::max(maxY, sy);
     }
-    x0 = std::max(0, int(std::floor(minX)) - 1);
-    y0 = std::max(0, int(std::floor(minY)) - 1);
-    x1 = std::min(m.width - 1, int(std::ceil(maxX)) + 1);
-    y1 = std::min(m.height - 1, int(std::ceil(maxY)) + 1);
+    // Clamped in float before converting (a huge coordinate would overflow an int); an off-screen box stays
+    // off screen and gives an empty rectangle (x0 > x1 or y0 > y1).
+    x0 = clampToInt(std::floor(minX) - 1.0f, 0, m.width, 0);
+    y0 = clampToInt(std::floor(minY) - 1.0f, 0, m.height, 0);
+    x1 = clampToInt(std::ceil(maxX) + 1.0f, -1, m.width - 1, m.width - 1);
+    y1 = clampToInt(std::ceil(maxY) + 1.0f, -1, m.height - 1, m.height - 1);
 }
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "lidr/gl/render_targets.h"
 
+#include <algorithm>
+
 #include "lidr/base/error.h"
 #include "lidr/gl/frame_timer.h"
 
@@ -16,10 +18,43 @@ void checkResolution(const GlInfo& info, int width, int height) {
                     " exceeds this driver's limit of " + std::to_string(limit) + " pixels per side");
 }
 
+void checkSampleCount(int samples, const std::string& what) {
+    if (samples == 0) return;
+    if (samples < 2 || samples > 64 || (samples & (samples - 1)) != 0)
+        throw Error(what + " must be 0 (off) or a power of two 2, 4, 8, ... up to the context's GL_MAX_SAMPLES, got " +
+                    std::to_string(samples));
+}
+
+unsigned long long estimateRenderTargetBytes(int width, int height, int samples, int indexBytesPerPixel,
+                                             bool perSampleIndices) {
+    const unsigned long long pixels = (unsigned long long)std::max(width, 0) * (unsigned long long)std::max(height, 0);
+    const unsigned long long s = (unsigned long long)std::max(samples, 0);
+    const unsigned long long index = (unsigned long long)std::max(indexBytesPerPixel, 0);
+    return pixels * (8ull + index + s * 8ull + (perSampleIndices ? s * index : 0ull));
+}
+
+void checkRenderTargetMemory(int width, int height, int samples, int indexBytesPerPixel, bool perSampleIndices) {
+    const unsigned long long bytes = estimateRenderTargetBytes(width, height, samples, indexBytesPerPixel, perSampleIndices);
+    if (bytes <= maxRenderTargetBytes) return;
+    const auto mib = [](unsigned long long b) { return std::to_string((b + (1ull << 20) - 1) >> 20) + " MiB"; };
+    throw Error("render targets of " + std::to_string(width) + "x" + std::to_string(height) + " with MSAA " +
+                std::to_string(samples) + "x and " + std::to_string(indexBytesPerPixel) +
+                " index bytes per pixel need about " + mib(bytes) + " (colour + depth + MSAA samples + index targets); " +
+                "the limit is " + mib(maxRenderTargetBytes) + " (2 GiB): lower the resolution or the MSAA samples");
+}
+
+int indexBytesPerPixel(int budget, int indexBits) {
+    const long bits = long(std::max(budget, 0)) * std::max(indexBits, 0);
+    const long bytes = (bits + 7) / 8;
+    return int(std::max(4L, (bytes + 3) / 4 * 4));
+}
+
 void checkSamples(const GlInfo& info, int samples) {
     if (samples == 0) return;
     if (samples < 0 || samples == 1)
         throw Error("MSAA samples must be 0 (off) or at least 2, got " + std::to_string(samples));
+    if ((samples & (samples - 1)) != 0)
+        throw Error("MSAA samples must be 0 (off) or a power of two 2, 4, 8, ..., got " + std::to_string(samples));
     if (!info.multisampleFbo)
         throw UnsupportedError("MSAA needs multisample framebuffers (GL 3.0, ARB_framebuffer_object or "
                                "EXT_framebuffer_multisample); this context has none");

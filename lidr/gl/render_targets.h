@@ -7,6 +7,8 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/base/image.h"
 
+#include <string>
+
 namespace lidr {
 
 class RenderTargets {
@@ -43,7 +45,24 @@ private:
 
 // Checks a resolution against the context before anything is allocated.
 void checkResolution(const GlInfo& info, int width, int height);
-// Checks an MSAA sample count against the context: 0, or 2..maxSamples with multisample FBOs.
+// Checks an MSAA sample count against the context: 0, or a power of two 2, 4, 8, ... up to maxSamples with
+// multisample FBOs.
 void checkSamples(const GlInfo& info, int samples);
+// The same without a context: 0 or a power of two from 2 to 64 (the largest any driver offers); `what` starts
+// the message ("--msaa"). Throws lidr::Error.
+void checkSampleCount(int samples, const std::string& what);
+
+// Render-target memory is estimated before any context renders, so an oversized request fails at once with
+// the numbers instead of as an out-of-memory error (or a swapping machine) part-way through.
+constexpr unsigned long long maxRenderTargetBytes = 2ull << 30;  // 2 GiB
+// width x height x (colour 4 + depth-stencil 4 + index targets + samples x (colour 4 + depth-stencil 4)
+// [+ samples x index targets when the index lists are per sample]) bytes. indexBytesPerPixel: the LIDR index
+// targets of one sample (0 for other modes).
+unsigned long long estimateRenderTargetBytes(int width, int height, int samples, int indexBytesPerPixel,
+                                             bool perSampleIndices = false);
+// Throws lidr::Error naming the estimate, its parts and the limit when the estimate is above maxRenderTargetBytes.
+void checkRenderTargetMemory(int width, int height, int samples, int indexBytesPerPixel, bool perSampleIndices = false);
+// Index-target bytes per pixel of `budget` slots of `indexBits` bits, in RGBA8 targets (4 bytes each).
+int indexBytesPerPixel(int budget, int indexBits);
 
 }  // namespace lidr

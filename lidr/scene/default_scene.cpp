@@ -199,6 +199,11 @@ void generateLights(Scene& scene, const LightGeneratorOptions& options) {
     requireValid(isFinite(options.boundsMin) && isFinite(options.boundsMax) &&
                      glm::all(glm::lessThanEqual(options.boundsMin, options.boundsMax)),
                  "bounds must be finite with min <= max");
+    requireValid(isFinite(options.boundsMax - options.boundsMin) && isFinite(options.boundsMin - glm::vec3(options.radiusMax)) &&
+                     isFinite(options.boundsMax + glm::vec3(options.radiusMax)),
+                 "bounds overflow float (their extent, or the bounds +- radius max, is not finite)");
+    requireValid(!(options.radiusMax > maxLightRadius), "radius max " + std::to_string(options.radiusMax) +
+                                                             " is above the limit of 1e+18");
     requireValid(std::isfinite(options.radiusMax) && options.radiusMin > 0.0f && options.radiusMin <= options.radiusMax,
                  "radii must be finite with 0 < min <= max");
     requireValid(std::isfinite(options.intensity) && options.intensity >= 0.0f, "intensity must be finite and >= 0");

@@ -22,6 +22,13 @@ void requireAtLeast(const char* function, const char* parameter, int value, int 
                     std::to_string(value));
 }
 
+// Checked before any vertex is made, so an oversized request fails at once instead of after the allocation.
+void requireAtMost(const char* function, const char* parameter, int value, int maximum) {
+    if (value > maximum)
+        throw Error(std::string(function) + ": " + parameter + " " + std::to_string(value) + " is above the limit of " +
+                    std::to_string(maximum));
+}
+
 void requirePositive(const char* function, const char* parameter, float value) {
     if (!std::isfinite(value) || value <= 0.0f)
         throw Error(std::string(function) + ": " + parameter + " must be finite and > 0, got " + std::to_string(value));
@@ -96,6 +103,7 @@ void addCap(Mesh& mesh, const glm::vec3& center, float radius, int segments, boo
 
 void addBox(Scene& scene, const glm::vec3& min, const glm::vec3& max, int material, int subdivisions) {
     requireAtLeast("addBox", "subdivisions", subdivisions, 1);
+    requireAtMost("addBox", "subdivisions", subdivisions, maxPrimitiveSubdivisions);
     const glm::vec3 size = max - min;
     requirePositive("addBox", "size x", size.x);
     requirePositive("addBox", "size y", size.y);
@@ -112,6 +120,7 @@ void addBox(Scene& scene, const glm::vec3& min, const glm::vec3& max, int materi
 
 void addPlane(Scene& scene, const glm::vec3& center, const glm::vec2& size, int material, int subdivisions) {
     requireAtLeast("addPlane", "subdivisions", subdivisions, 1);
+    requireAtMost("addPlane", "subdivisions", subdivisions, maxPrimitiveSubdivisions);
     requirePositive("addPlane", "size x", size.x);
     requirePositive("addPlane", "size z", size.y);
     Mesh& mesh = newMesh(scene, "plane", material);
@@ -121,6 +130,7 @@ void addPlane(Scene& scene, const glm::vec3& center, const glm::vec2& size, int 
 
 void addSphere(Scene& scene, const glm::vec3& center, float radius, int material, int segments) {
     requireAtLeast("addSphere", "segments", segments, 3);
+    requireAtMost("addSphere", "segments", segments, maxPrimitiveSegments);
     requirePositive("addSphere", "radius", radius);
     Mesh& mesh = newMesh(scene, "sphere", material);
     const int rings = std::max(2, segments / 2);
@@ -138,6 +148,7 @@ void addSphere(Scene& scene, const glm::vec3& center, float radius, int material
 
 void addCylinder(Scene& scene, const glm::vec3& base, float radius, float height, int material, int segments) {
     requireAtLeast("addCylinder", "segments", segments, 3);
+    requireAtMost("addCylinder", "segments", segments, maxPrimitiveSegments);
     requirePositive("addCylinder", "radius", radius);
     requirePositive("addCylinder", "height", height);
     Mesh& mesh = newMesh(scene, "cylinder", material);
@@ -152,7 +163,9 @@ void addCylinder(Scene& scene, const glm::vec3& base, float radius, float height
 void addTorus(Scene& scene, const glm::vec3& center, float majorRadius, float minorRadius, int material,
               int majorSegments, int minorSegments) {
     requireAtLeast("addTorus", "majorSegments", majorSegments, 3);
+    requireAtMost("addTorus", "majorSegments", majorSegments, maxPrimitiveSegments);
     requireAtLeast("addTorus", "minorSegments", minorSegments, 3);
+    requireAtMost("addTorus", "minorSegments", minorSegments, maxPrimitiveSegments);
     requirePositive("addTorus", "majorRadius", majorRadius);
     requirePositive("addTorus", "minorRadius", minorRadius);
     Mesh& mesh = newMesh(scene, "torus", material);

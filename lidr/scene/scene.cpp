@@ -5,13 +5,13 @@
 #include <sstream>
 
 #include "lidr/base/error.h"
+#include "lidr/scene/camera.h"
 
 namespace lidr {
 
 namespace {
 
-// The light index texture stores at most 16 bits per light index; 0 is the null light.
-constexpr size_t maxLights = 65535;
+constexpr size_t maxLights = maxSceneLights;
 
 std::string str(double value) {
     std::ostringstream out;
@@ -91,6 +91,10 @@ void validateLight(const PointLight& light, size_t index) {
     const std::string item = "light " + std::to_string(index);
     requireFinite(item, "position", light.position);
     requirePositive(item, "radius", light.radius);
+    if (light.radius > maxLightRadius)
+        fail(item, "radius " + str(light.radius) + " is too large (limit " + str(maxLightRadius) + ")");
+    if (!isFinite(light.position + glm::vec3(light.radius)) || !isFinite(light.position - glm::vec3(light.radius)))
+        fail(item, "bounds position " + str(light.position) + " +- radius " + str(light.radius) + " overflow float");
     requireColor(item, "color", light.color);
     requireFinite(item, "priority", light.priority);
 }
@@ -125,8 +129,20 @@ void validateCamera(const Camera& camera) {
         fail(item, "far (" + str(camera.farPlane) + ") must be > near (" + str(camera.nearPlane) + ")");
     const glm::vec3 view = camera.target - camera.position;
     if (glm::length(view) == 0.0f) fail(item, "position and target are the same point " + str(camera.position));
+    // Before the parallel test: an overflowing view direction normalises to NaN or zero, which is not "parallel".
+    // glm::normalize squares the components: a direction longer than about 1.8e19 overflows to a zero vector.
+    if (!isFinite(view) || !std::isfinite(glm::length(view)))
+        fail(item, "target - position overflows float (position " + str(camera.position) + ", target " +
+                       str(camera.target) + "; its length must stay below about 1.8e19): the view basis is not finite");
     if (glm::length(glm::cross(glm::normalize(view), camera.up)) < 1e-6f)
         fail(item, "up " + str(camera.up) + " is zero or parallel to the view direction");
+    // The view matrix holds -dot(axis, position): finite inputs near the float range can still overflow it.
+    const CameraMatrices m = cameraMatrices(camera, 1, 1);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m.view[c][r]))
+                fail(item, "position " + str(camera.position) + " and target " + str(camera.target) +
+                               " overflow float in the view basis (the view matrix is not finite)");
 }
 
 }  // namespace
@@ -191,6 +207,9 @@ void Scene::validate(int maxResolution) const {
     requireColor("scene", "background", backgroundColor);
     for (size_t i = 0; i < materials.size(); ++i) validateMaterial(materials[i], i);
     for (size_t i = 0; i < meshes.size(); ++i) validateMesh(meshes[i], i, materials.size());
+    if (triangleCount() > maxSceneTriangles)
+        fail("meshes", std::to_string(triangleCount()) + " triangles; at most " + std::to_string(maxSceneTriangles) +
+                           " are supported");
     if (lights.size() > maxLights)
         fail("lights", std::to_string(lights.size()) + " lights; at most " + std::to_string(maxLights) +
                            " are supported (16-bit light indices)");

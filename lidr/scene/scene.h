@@ -59,6 +59,13 @@ struct Camera {
     float farPlane = 100.0f;
 };
 
+// Limits every scene is checked against before any work (doc/scene-format.md, "Limits").
+constexpr size_t maxSceneLights = 65535;           // the light index is 16 bits; 0 is the null light
+constexpr float maxLightRadius = 1e18f;            // radius^2 and position +- radius stay finite floats
+constexpr size_t maxSceneTriangles = 20000000;     // 20 M: about 1.4 GB of vertex data on the CPU side alone
+constexpr int maxPrimitiveSubdivisions = 256;      // box: 6 x 256^2 x 2 = 786,432 triangles
+constexpr int maxPrimitiveSegments = 1024;         // torus: 1024 x 1024 x 2 = 2 M triangles
+
 struct Scene {
     std::string name = "unnamed";
     std::vector<Material> materials;
@@ -84,7 +91,9 @@ struct Scene {
     // The lights at time t (paths applied). Same t, same result.
     std::vector<PointLight> lightsAt(float t) const;
     // Throws lidr::Error describing the first problem: non-finite or negative values, bad indices,
-    // zero or oversized resolution, bad camera, more than 65535 lights (the widest light index).
+    // zero or oversized resolution, bad camera (including a position or target so far out that the view
+    // basis overflows float), more than maxSceneLights lights (the widest light index), a light radius above
+    // maxLightRadius, more than maxSceneTriangles triangles.
     void validate(int maxResolution = 16384) const;
 };
 

@@ -60,10 +60,25 @@ SphereBounds projectSphereBounds(const CameraMatrices& m, const glm::vec3& cente
     if (!clippedDiskRange(c.x, c.z, r, nearZ, xlo, xhi) || !clippedDiskRange(c.y, c.z, r, nearZ, ylo, yhi))
         return b;
     // ndc = P00 * x / -z - P20 (P20 is zero for a symmetric frustum; kept for off-centre projections).
-    b.ndcMin = glm::vec2(float(P[0][0] * xlo - P[2][0]), float(P[1][1] * ylo - P[2][1]));
-    b.ndcMax = glm::vec2(float(P[0][0] * xhi - P[2][0]), float(P[1][1] * yhi - P[2][1]));
-    b.viewDepthMin = float(std::max(double(m.nearPlane), -c.z - r));
-    b.viewDepthMax = float(std::min(double(m.farPlane), -c.z + r));
+    // Clamped in double before the conversion to float: a sphere at a grazing angle (or near the float range)
+    // projects far beyond any float; +-2^20 is still off screen on the same side, so the bounds stay
+    // conservative. A non-finite value (a non-finite view matrix) makes the whole viewport the bounds.
+    const double lim = 1048576.0;
+    const double nd[4] = {P[0][0] * xlo - P[2][0], P[1][1] * ylo - P[2][1], P[0][0] * xhi - P[2][0], P[1][1] * yhi - P[2][1]};
+    float nf[4];
+    for (int i = 0; i < 4; ++i) {
+        if (!std::isfinite(nd[i])) {
+            b.ndcMin = glm::vec2(-1.0f), b.ndcMax = glm::vec2(1.0f);
+            b.viewDepthMin = m.nearPlane, b.viewDepthMax = m.farPlane;
+            b.visible = true;
+            return b;
+        }
+        nf[i] = float(std::clamp(nd[i], -lim, lim));
+    }
+    b.ndcMin = glm::vec2(nf[0], nf[1]);
+    b.ndcMax = glm::vec2(nf[2], nf[3]);
+    b.viewDepthMin = float(std::clamp(-c.z - r, double(m.nearPlane), double(m.farPlane)));
+    b.viewDepthMax = float(std::clamp(-c.z + r, double(m.nearPlane), double(m.farPlane)));
     b.visible = b.ndcMax.x >= -1.0f && b.ndcMin.x <= 1.0f && b.ndcMax.y >= -1.0f && b.ndcMin.y <= 1.0f;
     return b;
 }
@@ -77,10 +92,10 @@ bool spherePixelRect(const CameraMatrices& m, const glm::vec3& center, float rad
     const double x1 = (double(b.ndcMax.x) * 0.5 + 0.5) * m.width + margin - 0.5;
     const double y0 = (double(b.ndcMin.y) * 0.5 + 0.5) * m.height - margin - 0.5;
     const double y1 = (double(b.ndcMax.y) * 0.5 + 0.5) * m.height + margin - 0.5;
-    rect.x = int(std::max(0.0, std::ceil(x0)));
-    rect.y = int(std::max(0.0, std::ceil(y0)));
-    rect.z = int(std::min(double(m.width - 1), std::floor(x1)));
-    rect.w = int(std::min(double(m.height - 1), std::floor(y1)));
+    rect.x = clampToInt(std::ceil(x0), 0, m.width, 0);
+    rect.y = clampToInt(std::ceil(y0), 0, m.height, 0);
+    rect.z = clampToInt(std::floor(x1), -1, m.width - 1, m.width - 1);
+    rect.w = clampToInt(std::floor(y1), -1, m.height - 1, m.height - 1);
     return rect.x <= rect.z && rect.y <= rect.w;
 }
 
@@ -90,7 +105,8 @@ bool boxPixelRect(const CameraMatrices& m, const glm::vec3& boxMin, const glm::v
     for (int c = 0; c < 8; ++c) {
         const glm::vec3 corner((c & 1) ? boxMax.x : boxMin.x, (c & 2) ? boxMax.y : boxMin.y, (c & 4) ? boxMax.z : boxMin.z);
         const glm::dvec4 clip = glm::dvec4(m.viewProjection * glm::vec4(corner, 1.0f));
-        if (!(clip.w > double(m.nearPlane) * 0.999)) {  // at or before the near plane (or not finite): all
+        const bool finite = std::isfinite(clip.x) && std::isfinite(clip.y) && std::isfinite(clip.w);
+        if (!finite || !(clip.w > double(m.nearPlane) * 0.999)) {  // at or before the near plane (or not finite): all
             rect = glm::ivec4(0, 0, m.width - 1, m.height - 1);
             return true;
         }
@@ -101,10 +117,10 @@ bool boxPixelRect(const CameraMatrices& m, const glm::vec3& boxMin, const glm::v
     const double x0 = (lo.x * 0.5 + 0.5) * m.width - margin - 0.5, x1 = (hi.x * 0.5 + 0.5) * m.width + margin + 0.5;
     const double y0 = (lo.y * 0.5 + 0.5) * m.height - margin - 0.5, y1 = (hi.y * 0.5 + 0.5) * m.height + margin + 0.5;
     if (x1 < 0.0 || y1 < 0.0 || x0 > m.width - 1.0 || y0 > m.height - 1.0) return false;  // wholly off screen
-    rect.x = int(std::max(0.0, std::floor(x0)));
-    rect.y = int(std::max(0.0, std::floor(y0)));
-    rect.z = int(std::min(double(m.width - 1), std::ceil(x1)));
-    rect.w = int(std::min(double(m.height - 1), std::ceil(y1)));
+    rect.x = clampToInt(std::floor(x0), 0, m.width - 1, 0);
+    rect.y = clampToInt(std::floor(y0), 0, m.height - 1, 0);
+    rect.z = clampToInt(std::ceil(x1), 0, m.width - 1, m.width - 1);
+    rect.w = clampToInt(std::ceil(y1), 0, m.height - 1, m.height - 1);
     return rect.x <= rect.z && rect.y <= rect.w;
 }
 

@@ -37,6 +37,13 @@ bool spherePixelRect(const CameraMatrices& camera, const glm::vec3& center, floa
 bool boxPixelRect(const CameraMatrices& camera, const glm::vec3& boxMin, const glm::vec3& boxMax, glm::ivec4& rect,
                   float margin = 1.0f);
 
+// `v` clamped to [lo, hi] and converted to int; NaN gives `ifNaN`. Converts only in-range values, so a huge or
+// non-finite projected coordinate (camera or light near the float range) never overflows an int.
+inline int clampToInt(double v, int lo, int hi, int ifNaN) {
+    if (v != v) return ifNaN;
+    return v <= double(lo) ? lo : v >= double(hi) ? hi : int(v);
+}
+
 // Throws lidr::Error naming the first light (1-based index) with a non-finite position or colour, or a radius
 // that is not a finite number > 0; `who` starts the message ("tiled", "forward-multipass").
 void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lidr/base/error.h"
+#include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
 
@@ -15,17 +16,19 @@ ScreenFootprint screenFootprint(const CameraMatrices& m, const glm::vec4& posRad
     for (int k = 0; k < 8; ++k) {
         const glm::vec3 corner = c + r * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
         const glm::vec4 clip = m.viewProjection * glm::vec4(corner, 1.0f);
-        if (clip.w <= m.nearPlane * 0.5f) return f;  // reaches behind the near plane: the whole target
+        if (!(clip.w > m.nearPlane * 0.5f)) return f;  // reaches behind the near plane (or NaN): the whole target
         const float sx = (clip.x / clip.w * 0.5f + 0.5f) * m.width;
         const float sy = (clip.y / clip.w * 0.5f + 0.5f) * m.height;
+        if (!std::isfinite(sx) || !std::isfinite(sy)) return f;  // overflowed: the whole target (conservative)
         minX = std::min(minX, sx), maxX = std::max(maxX, sx);
         minY = std::min(minY, sy), maxY = std::max(maxY, sy);
     }
-    // One pixel of slack on each side for rasterisation and rounding.
-    f.x0 = std::max(0, int(std::floor(minX)) - 1);
-    f.y0 = std::max(0, int(std::floor(minY)) - 1);
-    f.x1 = std::min(m.width - 1, int(std::ceil(maxX)) + 1);
-    f.y1 = std::min(m.height - 1, int(std::ceil(maxY)) + 1);
+    // One pixel of slack on each side for rasterisation and rounding; clamped in float before converting, so
+    // a huge coordinate cannot overflow an int. Wholly off screen gives an empty footprint (x0 > x1 or y0 > y1).
+    f.x0 = clampToInt(std::floor(minX) - 1.0f, 0, m.width, 0);
+    f.y0 = clampToInt(std::floor(minY) - 1.0f, 0, m.height, 0);
+    f.x1 = clampToInt(std::ceil(maxX) + 1.0f, -1, m.width - 1, m.width - 1);
+    f.y1 = clampToInt(std::ceil(maxY) + 1.0f, -1, m.height - 1, m.height - 1);
     return f;
 }
 

@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cerrno>
+#include <cctype>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -15,6 +19,8 @@
 #include <nlohmann/json.hpp>
 #include <stb_image.h>
 #include <tiny_obj_loader.h>
+
+#include <sys/stat.h>
 
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
@@ -29,8 +35,10 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 constexpr int maxResolution = 16384;
-constexpr int maxLights = 65535;
-constexpr int maxSegments = 1024;
+constexpr int maxLights = int(maxSceneLights);
+constexpr int maxSegments = maxPrimitiveSegments;
+constexpr int maxSubdivisions = maxPrimitiveSubdivisions;
+constexpr int maxTextureSide = 16384;  // the largest texture GL 2.1 contexts commonly offer
 
 std::string str(double value) {
     std::ostringstream out;
@@ -38,22 +46,97 @@ std::string str(double value) {
     return out.str();
 }
 
+bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
 std::string str(const glm::vec3& v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ")"; }
 
-bool isRegularFile(const std::string& path) {
-    std::error_code ignored;
-    return fs::is_regular_file(path, ignored);
+// Empty for a regular file (symbolic links followed), else why it cannot be read as one: "not found" only
+// when nothing is there; "is a directory", "is not a regular file" (a device, a FIFO), or the system's text
+// for any other failure (a symbolic link loop, permissions).
+std::string fileProblem(const std::string& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        const int error = errno;
+        if (error == ENOENT) return "not found";
+        return std::strerror(error);
+    }
+    if (S_ISDIR(info.st_mode)) return "is a directory";
+    if (!S_ISREG(info.st_mode)) return "is not a regular file";
+    return {};
 }
 
-// Empty if stb_image can read the image's header, else what is wrong with it.
+// Empty if stb_image can read the image's header and its size fits a texture, else what is wrong with it.
 std::string imageProblem(const std::string& path) {
-    if (!isRegularFile(path)) return "texture '" + path + "' not found";
+    const std::string problem = fileProblem(path);
+    if (!problem.empty()) return "texture '" + path + "' " + problem;
     int width = 0, height = 0, channels = 0;
+    // stb_image refuses a huge PNG as "too large" before it tells its size: read the size from the IHDR chunk.
+    {
+        std::ifstream in(path, std::ios::binary);
+        unsigned char h[24] = {};
+        if (in.read(reinterpret_cast<char*>(h), sizeof h) &&
+            std::memcmp(h, "\x89PNG\r\n\x1a\n", 8) == 0 && std::memcmp(h + 12, "IHDR", 4) == 0) {
+            const auto be32 = [&](int at) {
+                return (uint32_t(h[at]) << 24) | (uint32_t(h[at + 1]) << 16) | (uint32_t(h[at + 2]) << 8) | h[at + 3];
+            };
+            const uint32_t w = be32(16), hgt = be32(20);
+            if (w > uint32_t(maxTextureSide) || hgt > uint32_t(maxTextureSide))
+                return "texture '" + path + "' is " + std::to_string(w) + "x" + std::to_string(hgt) +
+                       ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
+        }
+    }
     if (!stbi_info(path.c_str(), &width, &height, &channels)) {
         const char* reason = stbi_failure_reason();
         return "texture '" + path + "' cannot be read (" + (reason ? reason : "unknown format") + ")";
     }
+    if (width > maxTextureSide || height > maxTextureSide)
+        return "texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
+               ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
     return {};
+}
+
+// Model formats other than OBJ, by extension, so they are named instead of failing as "no triangles".
+std::string unsupportedModelFormat(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    static const std::map<std::string, std::string> known = {
+        {".ply", "PLY"}, {".gltf", "glTF"}, {".glb", "glTF"}, {".fbx", "FBX"}, {".stl", "STL"},
+        {".dae", "COLLADA"}, {".3ds", "3DS"}, {".blend", "Blender"}, {".usd", "USD"}, {".usdz", "USD"},
+        {".abc", "Alembic"}, {".x3d", "X3D"}, {".off", "OFF"}};
+    const auto it = known.find(ext);
+    return it == known.end() ? std::string() : it->second;
+}
+
+// tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999" overflows to inf) as 0 or inf without a
+// word; scan the v / vn / vt lines first and name the first coordinate that is not a finite float.
+void checkObjNumbers(const std::string& objPath, const std::function<void(const std::string&)>& fail) {
+    std::ifstream in(objPath, std::ios::binary);
+    std::string line;
+    size_t lineNumber = 0, counts[3] = {0, 0, 0};
+    static const char* const keywords[3] = {"v", "vn", "vt"};
+    static const char* const names[3] = {"vertex", "normal", "texcoord"};
+    static const int needed[3] = {3, 3, 2};
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        std::istringstream tokens(line);
+        std::string keyword;
+        if (!(tokens >> keyword)) continue;
+        int kind = -1;
+        for (int k = 0; k < 3; ++k)
+            if (keyword == keywords[k]) kind = k;
+        if (kind < 0) continue;
+        const size_t item = ++counts[kind];
+        std::string token;
+        for (int c = 0; c < needed[kind] && tokens >> token; ++c) {
+            char* end = nullptr;
+            const double value = std::strtod(token.c_str(), &end);
+            const bool parsed = end == token.c_str() + token.size();
+            if (!parsed || !std::isfinite(value) || std::abs(value) > double(std::numeric_limits<float>::max()))
+                fail("line " + std::to_string(lineNumber) + ": " + names[kind] + " " + std::to_string(item) +
+                     " coordinate '" + token + "' is " +
+                     (!parsed ? "not a number" : std::isfinite(value) ? "not finite as a float" : "not finite"));
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -111,8 +194,12 @@ glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
 
 void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial) {
     const auto fail = [&](const std::string& problem) { throw Error(objPath + ": " + problem); };
-    if (!isRegularFile(objPath)) fail("OBJ file not found");
+    const std::string format = unsupportedModelFormat(objPath);
+    if (!format.empty()) fail("format not supported (" + format + "); only OBJ models can be loaded");
+    const std::string problem = fileProblem(objPath);
+    if (!problem.empty()) fail("OBJ file " + problem);
     if (overrideMaterial >= int(scene.materials.size())) fail("override material out of range");
+    checkObjNumbers(objPath, fail);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
@@ -491,7 +578,12 @@ public:
         if (root.has("camera")) readCamera(root["camera"]);
         if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
         if (root.has("background")) scene_.backgroundColor = color(root["background"]);
-        if (root.has("msaa")) scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+        if (root.has("msaa")) {
+            scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+            if (scene_.msaaSamples != 0 && (scene_.msaaSamples < 2 || (scene_.msaaSamples & (scene_.msaaSamples - 1)) != 0))
+                root["msaa"].fail("must be 0 (off) or a power of two 2, 4, 8, ... 64, got " +
+                                  std::to_string(scene_.msaaSamples));
+        }
         if (root.has("transparency")) scene_.transparency = root["transparency"].boolean();
         if (root.has("materials"))
             for (const Field& material : root["materials"].items()) readMaterial(material);
@@ -596,6 +688,7 @@ private:
         } catch (const Error& error) {
             file.fail(error.what());
         }
+        checkTriangleCount(field);
     }
 
     void readPrimitive(const Field& field) {
@@ -605,7 +698,7 @@ private:
             return field.has(key) ? int(field[key].integer(3, maxSegments)) : fallback;
         };
         const auto subdivisions = [&] {
-            return field.has("subdivisions") ? int(field["subdivisions"].integer(1, maxSegments)) : 1;
+            return field.has("subdivisions") ? int(field["subdivisions"].integer(1, maxSubdivisions)) : 1;
         };
         if (shape == "box") {
             field.expectObject({"shape", "material", "min", "max", "subdivisions"});
@@ -632,6 +725,16 @@ private:
         } else {
             field["shape"].fail("unknown shape '" + shape + "' (known: box, plane, sphere, cylinder, torus)");
         }
+        checkTriangleCount(field);
+    }
+
+    // After each primitive or model (each adds at most a few million triangles, see the limits), so a scene
+    // that asks for too many stops before the rest is built.
+    void checkTriangleCount(const Field& field) const {
+        const size_t count = scene_.triangleCount();
+        if (count > maxSceneTriangles)
+            field.fail("the scene now has " + std::to_string(count) + " triangles; at most " +
+                       std::to_string(maxSceneTriangles) + " are supported");
     }
 
     void readLight(const Field& field) {
@@ -647,6 +750,8 @@ private:
             light.position = field["position"].vec3();
         }
         light.radius = positive(field["radius"]);
+        if (light.radius > maxLightRadius)
+            field["radius"].fail("radius " + str(light.radius) + " is too large (limit " + str(maxLightRadius) + ")");
         if (field.has("color")) light.color = color(field["color"]);
         if (field.has("priority")) light.priority = field["priority"].number();
         scene_.lights.push_back(light);
@@ -705,6 +810,12 @@ private:
                                      str(options.boundsMax));
         if (field.has("radius_min")) options.radiusMin = positive(field["radius_min"]);
         if (field.has("radius_max")) options.radiusMax = positive(field["radius_max"]);
+        if (options.radiusMax > maxLightRadius)
+            field["radius_max"].fail("radius " + str(options.radiusMax) + " is too large (limit " + str(maxLightRadius) + ")");
+        if (!isFinite(options.boundsMax - options.boundsMin) || !isFinite(options.boundsMin - glm::vec3(options.radiusMax)) ||
+            !isFinite(options.boundsMax + glm::vec3(options.radiusMax)))
+            field.fail("light generator bounds " + str(options.boundsMin) + " .. " + str(options.boundsMax) +
+                       " overflow float (their extent, or the bounds +- radius_max, is not finite)");
         if (options.radiusMin > options.radiusMax)
             field.fail("radius_min (" + str(options.radiusMin) + ") must be <= radius_max (" + str(options.radiusMax) + ")");
         if (field.has("intensity")) options.intensity = nonNegative(field["intensity"]);
@@ -745,8 +856,9 @@ Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, co
 
 Scene loadSceneFile(const std::string& path) {
     std::error_code error;
-    if (!fs::exists(path, error)) throw Error(path + ": scene file not found");
-    if (!isRegularFile(path)) throw Error(path + ": not a regular file");
+    if (!fs::exists(path, error) && !error) throw Error(path + ": scene file not found");
+    const std::string problem = fileProblem(path);
+    if (!problem.empty()) throw Error(path + ": scene file " + problem);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot open the scene file");
     std::ostringstream text;
