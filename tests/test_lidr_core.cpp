@@ -324,13 +324,15 @@ TEST_CASE("every GL object is released with its renderer", "[lidr][resources]") 
 TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     Scene scene = floorScene();
     for (int i = 0; i < 256; ++i) scene.lights.push_back(light(glm::vec3(0.0f), 1.0f));
-    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, LidrOptions{}, scene.width, scene.height),
+    LidrOptions eightBit;  // a fixed width (the automatic one takes 16 bits here)
+    eightBit.packing = {"bitshift", 4, 8};
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, eightBit, scene.width, scene.height),
                         Catch::Contains("256 lights") && Catch::Contains("255"));
     scene.lights.resize(10);
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, LidrOptions{}, 0, 100), Error);
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, LidrOptions{}, 1 << 20, 100), Catch::Contains("exceeds"));
     LidrOptions unsupported;
-    unsupported.packing.budget = 3;
+    unsupported.packing = {"bitshift", 3, 8};
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, unsupported, scene.width, scene.height), UnsupportedError);
     unsupported.packing.budget = 4;
     unsupported.packing.scheme = "nonsense";
@@ -341,7 +343,7 @@ TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     REQUIRE_THROWS_WITH(LidrRenderer(noFbo, scene, LidrOptions{}, scene.width, scene.height),
                         Catch::Contains("framebuffer objects"));
     // A frame with more lights than the width holds is refused too (the constructor saw fewer).
-    LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
+    LidrRenderer renderer(testGl(), scene, eightBit, scene.width, scene.height);
     std::vector<PointLight> tooMany(300, light(glm::vec3(0.0f), 1.0f));
     REQUIRE_THROWS_WITH(renderer.render(scene.camera, tooMany, {}), Catch::Contains("300 lights"));
     REQUIRE(glGetError() == GL_NO_ERROR);
