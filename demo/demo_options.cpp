@@ -108,6 +108,9 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     if (o.packing.autoScheme() && (o.packing.budget != PackingConfig::kAuto || o.packing.indexBits != PackingConfig::kAuto))
         throw Error("--scheme auto chooses the budget and the index width itself: leave out --budget and --index-bits, "
                     "or name a scheme (--scheme bitshift) to fix them");
+    if (!o.packing.autoScheme() && o.packing.scheme != "bitshift" && o.packing.budget == PackingConfig::kAuto)
+        throw Error("--budget auto is measured from bit-shift packing's stencil count; --scheme " + scheme +
+                    " needs --budget 1, 2, 4, 8 or 16");
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
     o.volumeTest = volumeTest == "auto"

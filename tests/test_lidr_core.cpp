@@ -89,11 +89,15 @@ TEST_CASE("LIDR matches the brute-force reference on the default room wherever o
     o.height = testHeight();
     o.time = 2.0f;
     const Scene scene = makeDefaultScene(o);
-    LidrOptions options;  // bitshift, budget 4, 8-bit, back-face test
+    LidrOptions options;  // the defaults: automatic budget and width, sphere test
     const RenderResult r = renderAndEvaluate(scene, options);
     requireMatchesReference(r);
     CHECK(r.stats.drawnLights > 0);
     CHECK(r.evaluation.maxTruthOverlap >= 1);
+    // Issue 12: the defaults drop nothing on the room and stay above 50 dB on the whole image.
+    REQUIRE(r.evaluation.lists.droppedLightPixels == 0);
+    REQUIRE(r.evaluation.error.psnr >= 50.0);
+    REQUIRE(r.stats.autoDecision.budget >= r.evaluation.maxTruthOverlap);
 }
 
 TEST_CASE("LIDR matches the reference on the default room with the exact stencil volume test", "[lidr][exact]") {
