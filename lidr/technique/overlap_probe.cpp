@@ -2,6 +2,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/render/depth_prepass.h"
 
 namespace lidr {
 
@@ -11,13 +12,15 @@ OverlapProbe::OverlapProbe(const GlInfo&) {
     // Occlusion queries are GL 1.5 core, inside lidr's GL 2.1 floor.
     program_ = gl::Program::create("overlap-probe", buildShaderSource("fullscreen.vert"),
                                    buildShaderSource("overlap_probe.frag"), {{"aPosition", gl::kPosition}});
+    meshProgram_ = gl::Program::create("overlap-probe-meshes", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("overlap_probe.frag"), geometryAttributes());
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     for (gl::Object& q : queries_) q = gl::Object(gl::Kind::Query);
     checkGl("OverlapProbe");
 }
 
-void OverlapProbe::issue(const glm::ivec4* scissor) {
+RenderState OverlapProbe::stateFor(const glm::ivec4* scissor) const {
     if (!program_) throw Error("OverlapProbe used before it was created");
     RenderState s;
     s.colorMask = glm::bvec4(false);
@@ -29,6 +32,32 @@ void OverlapProbe::issue(const glm::ivec4* scissor) {
         s.scissor = true;
         s.scissorBox = *scissor;
     }
+    return s;
+}
+
+void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera,
+                                   const glm::ivec4* scissor) {
+    RenderState s = stateFor(scissor);
+    s.depthTest = true;
+    s.depthFunc = GL_LEQUAL;  // visible in front of the opaque depth; several layers may count a pixel twice,
+                              // which changes no zero
+    meshProgram_.use();
+    meshProgram_.set("uViewProj", camera.viewProjection);
+    for (int i = 0; i < kThresholds; ++i) {
+        s.stencil.ref = kThreshold[size_t(i)];
+        applyRenderState(s);
+        glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
+        scene.draw(meshProgram_, filter, false);
+        glEndQuery(GL_SAMPLES_PASSED);
+        ++drawCalls_;
+    }
+    applyRenderState(RenderState{});
+    issued_ = true;
+    checkGl("OverlapProbe::issueOverMeshes");
+}
+
+void OverlapProbe::issue(const glm::ivec4* scissor) {
+    RenderState s = stateFor(scissor);
     program_.use();
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glEnableVertexAttribArray(gl::kPosition);

@@ -8,6 +8,8 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/scene/camera.h"
 
 namespace lidr {
 
@@ -22,6 +24,10 @@ public:
     // Issues the queries over the bound framebuffer (its stencil holds the counts), within `scissor` when given
     // (x, y, width, height). Leaves the stencil unchanged.
     void issue(const glm::ivec4* scissor = nullptr);
+    // The same over the pixels where `filter`'s meshes are visible (depth-tested against the bound depth, not
+    // written): the transparent layers read their lists only there, so only there does their overlap count.
+    void issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera,
+                         const glm::ivec4* scissor = nullptr);
     bool issued() const { return issued_; }
     // Pixels whose count exceeds kThreshold[i], for every threshold; waits for the GPU.
     std::array<long, kThresholds> pixelsAbove() const;
@@ -30,7 +36,8 @@ public:
     long drawCalls() const { return drawCalls_; }
 
 private:
-    gl::Program program_;
+    RenderState stateFor(const glm::ivec4* scissor) const;
+    gl::Program program_, meshProgram_;
     gl::Buffer triangle_;
     std::array<gl::Object, kThresholds> queries_;
     bool issued_ = false;
