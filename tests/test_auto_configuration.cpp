@@ -85,6 +85,14 @@ TEST_CASE("auto: the smallest budget no pixel exceeds, from the probe's counts",
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 0, 0}) == 8);
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 2, 0}) == 16);
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 2, 1}) == 0);
+    // Steady frames measure two thresholds (-1: not measured).
+    REQUIRE(OverlapProbe::aroundBudget(8) == 0b01100u);
+    REQUIRE(OverlapProbe::aroundBudget(1) == 0b00001u);
+    REQUIRE(OverlapProbe::aboveBudget(4) == 0b11000u);
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 0, 0, -1}) == 4);   // at most half the budget needed
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 0, -1}) == 8);   // the budget was right
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 3, -1}) == -1);  // over: ask the thresholds above
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, -1, 9, 2}) == 0);
 }
 
 namespace {
@@ -199,12 +207,13 @@ TEST_CASE("auto: frames follow the scene without dropping a light, and narrow on
     LidrRenderer renderer(testGl(), eight, options, eight.width, eight.height);
     ReferenceRenderer reference(testGl(), eight, eight.width, eight.height, 255);
     const ShadingParameters shading{eight.ambient, eight.backgroundColor};
-    // 8 overlapping, then 2 for five frames, then 8 again: 8 is held for three frames, then 2; the return to 8
-    // is re-packed in its own frame.
-    const int sequence[] = {8, 2, 2, 2, 2, 2, 8, 8};
-    const int expectBudget[] = {8, 8, 8, 8, 2, 2, 8, 8};
-    const int expectRepacks[] = {1, 0, 0, 0, 0, 0, 1, 0};
-    for (int f = 0; f < 8; ++f) {
+    // 8 overlapping, then 2 for seven frames, then 8 again. Steady frames measure only "over the budget" and
+    // "over half of it", so the budget narrows one halving per hold: 8 for three frames, 4 for three, then 2;
+    // the return to 8 is re-packed in its own frame.
+    const int sequence[] = {8, 2, 2, 2, 2, 2, 2, 2, 8, 8};
+    const int expectBudget[] = {8, 8, 8, 8, 4, 4, 4, 2, 8, 8};
+    const int expectRepacks[] = {1, 0, 0, 0, 0, 0, 0, 0, 1, 0};
+    for (int f = 0; f < 10; ++f) {
         const Scene& s = sequence[f] == 8 ? eight : two;
         const std::vector<PointLight> lights = s.lightsAt(s.time);
         const FrameStats stats = renderer.render(s.camera, lights, shading);

@@ -263,7 +263,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         decision.transparentBudget = currentTransparent_->scheme->config().budget;
     decision.budget = current_->scheme->config().budget;
     for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
-        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = pixelsAbove_[i];
+        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
     decision.indexBits = current_->scheme->config().indexBits;
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
 
@@ -298,14 +298,25 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     need = 1;
     needTransparent = -1;
     pixelsAbove_.fill(0);
+    // Steady frames ask two questions: over the budget (re-pack), over half of it (may narrow). Only an
+    // overflowing frame asks how far over, and a renderer's first frame asks everything at once.
     auto measured = [&](const glm::ivec4* transparentArea) {
-        if (transparentArea)
-            probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, transparentArea);
-        else
-            probe_.issue();
-        const auto above = probe_.pixelsAbove();
-        if (!transparentArea)
-            for (size_t i = 0; i < above.size(); ++i) pixelsAbove_[i] = above[i];
+        const AutoConfiguration& a = transparentArea ? autoTransparent_ : auto_;
+        const int budget = (transparentArea ? currentTransparent_ : current_)->scheme->config().budget;
+        auto probe = [&](unsigned which) {
+            if (transparentArea)
+                probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, transparentArea);
+            else
+                probe_.issue(which);
+            return probe_.pixelsAbove();
+        };
+        auto above = probe(a.measured() ? OverlapProbe::aroundBudget(budget) : OverlapProbe::kAll);
+        if (OverlapProbe::smallestBudget(above) < 0) {
+            const auto more = probe(OverlapProbe::aboveBudget(budget));
+            for (size_t i = 0; i < above.size(); ++i)
+                if (more[i] >= 0) above[i] = more[i];
+        }
+        if (!transparentArea) pixelsAbove_ = above;
         (transparentArea ? needTransparent : need) = OverlapProbe::smallestBudget(above);
     };
     if (transparentIndexTargets_) {

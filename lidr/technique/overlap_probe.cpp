@@ -35,8 +35,22 @@ RenderState OverlapProbe::stateFor(const glm::ivec4* scissor) const {
     return s;
 }
 
+unsigned OverlapProbe::aroundBudget(int budget) {
+    unsigned m = 0;
+    for (int i = 0; i < kThresholds; ++i)
+        if (kThreshold[size_t(i)] == budget || 2 * kThreshold[size_t(i)] == budget) m |= 1u << i;
+    return m;
+}
+
+unsigned OverlapProbe::aboveBudget(int budget) {
+    unsigned m = 0;
+    for (int i = 0; i < kThresholds; ++i)
+        if (kThreshold[size_t(i)] > budget) m |= 1u << i;
+    return m;
+}
+
 void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera,
-                                   const glm::ivec4* scissor) {
+                                   unsigned which, const glm::ivec4* scissor) {
     RenderState s = stateFor(scissor);
     s.depthTest = true;
     s.depthFunc = GL_LEQUAL;  // visible in front of the opaque depth; several layers may count a pixel twice,
@@ -44,6 +58,7 @@ void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, con
     meshProgram_.use();
     meshProgram_.set("uViewProj", camera.viewProjection);
     for (int i = 0; i < kThresholds; ++i) {
+        if (!(which & (1u << i))) continue;
         s.stencil.ref = kThreshold[size_t(i)];
         applyRenderState(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
@@ -52,17 +67,18 @@ void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, con
         ++drawCalls_;
     }
     applyRenderState(RenderState{});
-    issued_ = true;
+    issued_ = which;
     checkGl("OverlapProbe::issueOverMeshes");
 }
 
-void OverlapProbe::issue(const glm::ivec4* scissor) {
+void OverlapProbe::issue(unsigned which, const glm::ivec4* scissor) {
     RenderState s = stateFor(scissor);
     program_.use();
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     for (int i = 0; i < kThresholds; ++i) {
+        if (!(which & (1u << i))) continue;
         s.stencil.ref = kThreshold[size_t(i)];
         applyRenderState(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
@@ -72,7 +88,7 @@ void OverlapProbe::issue(const glm::ivec4* scissor) {
     }
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    issued_ = true;
+    issued_ = which;
     checkGl("OverlapProbe::issue");
 }
 
@@ -80,6 +96,8 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
     if (!issued_) throw Error("OverlapProbe: no measurement issued");
     std::array<long, kThresholds> above{};
     for (int i = 0; i < kThresholds; ++i) {
+        above[size_t(i)] = -1;
+        if (!(issued_ & (1u << i))) continue;
         GLuint n = 0;
         glGetQueryObjectuiv(queries_[size_t(i)].id(), GL_QUERY_RESULT, &n);
         above[size_t(i)] = static_cast<long>(n);
@@ -91,7 +109,7 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
 int OverlapProbe::smallestBudget(const std::array<long, kThresholds>& above) {
     for (int i = 0; i < kThresholds; ++i)
         if (above[size_t(i)] == 0) return kThreshold[size_t(i)];
-    return 0;
+    return above[size_t(kThresholds - 1)] > 0 ? 0 : -1;
 }
 
 }  // namespace lidr
