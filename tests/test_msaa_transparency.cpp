@@ -179,10 +179,24 @@ TEST_CASE("the default room with MSAA and glass in front-face mode", "[msaa][tra
     REQUIRE(std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.opacity < 1.0f; }));
     const int samples = testGl().multisampleFbo ? std::min(4, testGl().maxSamples) : 0;
     if (samples < 2) WARN("no MSAA on this context (" << testGl().summary() << "): glass only");
-    const RenderResult r = renderWith(scene, VolumeTest::FrontFace, samples >= 2 ? samples : 0);
+    LidrOptions o;
+    o.volumeTest = VolumeTest::FrontFace;
+    o.msaaSamples = samples >= 2 ? samples : 0;
+    o.packing = {"bitshift", 4, 8};  // the bound below was stated for this budget
+    const RenderResult r = renderAndEvaluate(scene, o);
     requireNeverBrighter(r);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);
     REQUIRE(r.evaluation.errorWithinBudget.psnr >= 50.0);
+    // The automatic budget holds every front-face list (no dropped light), so the whole image is as good as the
+    // lists' edge approximation allows: the pixels left off are MSAA edge samples whose surface differs from the
+    // pixel centre's (doc/msaa-transparency.md), at most 0.5% of pixels; measured 48.7 dB at 256x192.
+    o.packing = PackingConfig{};
+    const RenderResult a = renderAndEvaluate(scene, o);
+    requireNeverBrighter(a);
+    REQUIRE(a.evaluation.lists.invalidSlots == 0);
+    REQUIRE(a.evaluation.lists.droppedLightPixels == 0);
+    REQUIRE(a.evaluation.error.psnr >= 45.0);
+    REQUIRE(a.evaluation.error.pixelsOverThreshold * 200 <= long(a.lidr.width) * a.lidr.height);
 }
 
 TEST_CASE("optional per-sample MSAA index targets (Trebilco's technique 1) match the per-sample reference",

@@ -89,11 +89,12 @@ int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingCo
 LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height)
     : options_(options),
       info_(info),
+      firstPacking_(checkedPacking(info, scene, options)),
       scene_(scene),
       targets_(info, width, height, options.msaaSamples),
       volumePass_(info, options.volumeTest, options.volumeDetail),
       timer_(info, options.timingMethod) {
-    const PackingConfig first = checkedPacking(info, scene, options);
+    const PackingConfig& first = firstPacking_;
     lightTable_ = LightTable(info, lightTableCapacity(scene, options, first), options.forceFixedLightTable);
     if (options.packing.autoBudget()) {
         const int widest = options.packing.autoIndexBits()

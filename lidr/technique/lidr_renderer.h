@@ -113,6 +113,7 @@ private:
 
     LidrOptions options_;
     GlInfo info_;
+    PackingConfig firstPacking_;  // checked options, resolved for the first frame: before any GL object exists
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;
     Variant* currentTransparent_ = nullptr;
