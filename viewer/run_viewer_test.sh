@@ -64,6 +64,31 @@ printf 'wait 1\nexpect-setting mode tiled\n' > "$out/must-fail.script"
 grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$out/must-fail.log" ||
   fail "a failing check gave no message: $(cat "$out/must-fail.log")"
 
+# Every lidr setting against the others, at 160x120: each change is applied or refused with a reason, never
+# a crash, and the viewer still renders and resets afterwards.
+{
+  for scheme in bitshift max-stencil cpu-sorted; do
+    echo "set scheme $scheme"
+    for budget in 1 4 16; do
+      echo "set budget $budget"
+      for bits in 4 16; do echo "set index-bits $bits"; echo "wait 1"; done
+    done
+  done
+  echo "set scheme bitshift"; echo "set budget 8"; echo "set index-bits 8"
+  for test in sphere sphere-ray backface exact frontface; do
+    echo "set volume-test $test"
+    for msaa in 0 4 8; do
+      echo "set msaa $msaa"; echo "wait 1"; echo "set per-sample on"; echo "wait 1"; echo "set per-sample off"
+    done
+  done
+  echo "set msaa 0"; echo "set volume-test auto"; echo "set view marked"; echo "compute"; echo "expect-stat dropped == 0"
+  for mode in tiled forward-multipass forward-brute; do echo "set mode $mode"; echo "set msaa 4"; echo "wait 1"; echo "set msaa 0"; done
+  echo "press R"; echo "wait 1"; echo "expect-setting mode lidr"; echo "expect-setting budget 8"; echo "expect-applied"
+} > "$out/sweep.script"
+"${x[@]}" "$viewer" --width 160 --height 120 --paused --out "$out" --script "$out/sweep.script" >"$out/sweep.log" 2>&1 ||
+  fail "the settings sweep failed: $(tail -5 "$out/sweep.log")"
+echo "viewer.script: settings sweep: $(grep -c ' applied$' "$out/sweep.log" || true) applied, $(grep -c 'refused:' "$out/sweep.log") refused, no crash"
+
 # Without the override (the context's own GL version): switch modes, the UI drawn.
 unset MESA_GL_VERSION_OVERRIDE MESA_GLSL_VERSION_OVERRIDE
 sed "s|@OUT@|$out|g" "$here/viewer_native.script" > "$out/native.script"

@@ -210,6 +210,7 @@ bool Viewer::apply(const demo::RendererChoice& next, const std::string& what) {
         passOrder_.clear();
         frameHistory_.clear();
         status_ = what + " applied";
+        std::cout << "lidr-viewer: " << status_ << std::endl;
         lastRefused_ = false;
         eval_ = {};
         markDirty();
@@ -273,7 +274,9 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
         return true;
     }
     if (name == "speed") {
-        animSpeed_ = float(std::stod(value));
+        const int percent = toInt(value);
+        if (percent < 0 || percent > 400) throw Error("setting speed: a percentage from 0 to 400, got " + value);
+        animSpeed_ = float(percent) / 100.0f;
         return true;
     }
     demo::RendererChoice next = rc_;
@@ -469,6 +472,7 @@ void Viewer::computeViews() {
         ev.pixelsOverBudget = fe.pixelsOverBudget;
         ev.maxOverlap = fe.maxTruthOverlap;
         ev.maxMarked = fe.maxMarked;
+        ev.errorWithinBudget = fe.errorWithinBudget;
     }
     if (const auto* tiled = dynamic_cast<const TiledRenderer*>(renderer_.get()))
         ev.images[View::TileHeatMap] = tiled->tileHeatMap(16);
@@ -603,8 +607,13 @@ void Viewer::uiStats() {
     std::vector<float> values(frameHistory_.begin(), frameHistory_.end());
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "frame %.2f ms", values.empty() ? 0.0 : double(values.back()));
-    ImGui::PlotLines("##frame", values.data(), int(values.size()), 0, overlay, 0.0f, FLT_MAX, ImVec2(-1, 50));
+    // (PlotLines takes a width of 0 as "item width" but no negative one: give the pixels.)
+    ImGui::PlotLines("##frame", values.data(), int(values.size()), 0, overlay, 0.0f, FLT_MAX,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 50));
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 5.0f);
+        ImGui::TableSetupColumn("history", ImGuiTableColumnFlags_WidthStretch, 1.0f);
         for (const std::string& p : passOrder_) {
             const auto& h = history_[p];
             std::vector<float> v(h.begin(), h.end());
@@ -614,7 +623,8 @@ void Viewer::uiStats() {
             ImGui::TableNextColumn();
             ImGui::Text("%.2f ms", v.empty() ? 0.0 : double(v.back()));
             ImGui::TableNextColumn();
-            ImGui::PlotLines(("##" + p).c_str(), v.data(), int(v.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(-1, 16));
+            ImGui::PlotLines(("##" + p).c_str(), v.data(), int(v.size()), 0, nullptr, 0.0f, FLT_MAX,
+                             ImVec2(std::max(20.0f, ImGui::GetContentRegionAvail().x), 16));
         }
         ImGui::EndTable();
     }
@@ -632,6 +642,10 @@ void Viewer::uiStats() {
             ImGui::Text("pixels over budget %ld, invalid slots %ld", eval_.pixelsOverBudget, eval_.invalidSlots);
         }
         ImGui::Text("vs reference: max error %d, PSNR %.1f dB", eval_.error.maxAbsError, psnr);
+        if (eval_.listsChecked)
+            ImGui::Text("  lists within budget: max error %d, PSNR %.1f dB",
+                        eval_.errorWithinBudget.maxAbsError,
+                        std::isinf(eval_.errorWithinBudget.psnr) ? 999.0 : eval_.errorWithinBudget.psnr);
     }
     const bool lidrMode = rc_.mode == "lidr";
     const unsigned long long targets = estimateRenderTargetBytes(
@@ -761,6 +775,9 @@ void Viewer::saveAll(const std::string& dir) {
     j["error"] = {{"max_abs_error", eval_.error.maxAbsError},
                   {"psnr_db", std::isinf(eval_.error.psnr) ? 999.0 : eval_.error.psnr}};
     if (eval_.listsChecked)
+        j["error"]["within_budget"] = {{"max_abs_error", eval_.errorWithinBudget.maxAbsError},
+                                       {"psnr_db", std::isinf(eval_.errorWithinBudget.psnr) ? 999.0 : eval_.errorWithinBudget.psnr}};
+    if (eval_.listsChecked)
         j["lights"] = {{"dropped_light_pixels", eval_.droppedLightPixels}, {"max_overlap_touching", eval_.maxOverlap},
                        {"max_marked", eval_.maxMarked}};
     std::ofstream(path("state.json")) << j.dump(2) << "\n";
@@ -789,7 +806,9 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
     } else if (v == "set") {
         try {
             changeSetting(a.args[0], a.args[1]);
-        } catch (const Error& e) {
+        } catch (const GlError&) {
+            throw;
+        } catch (const std::exception& e) {
             fail(e.what());
         }
     } else if (v == "compute") {

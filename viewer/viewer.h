@@ -52,7 +52,7 @@ private:
     struct Evaluation {  // what "compute" (C) found for one frame; stale once the frame changes
         bool valid = false;
         long frame = -1;
-        ImageError error;
+        ImageError error, errorWithinBudget;  // the second: pixels whose lists hold every light (LIDR)
         bool listsChecked = false;
         long droppedLightPixels = 0, pixelsOverBudget = 0, invalidSlots = 0;
         int maxOverlap = 0, maxMarked = 0;
