@@ -25,6 +25,7 @@ expect_error "bad-verb.script:2: unknown action 'fly'" --script "$out/bad-verb.s
 expect_error "'soon' must be a whole number\|'soon' is not a number" --script "$out/bad-number.script"
 expect_error "expected key KEY FRAMES" --script "$out/bad-args.script"
 expect_error "--context must be glfw" --context egl
+expect_error "--budget must be auto, 1, 2, 4, 8, 16" --scheme bitshift --budget 3
 
 if [ -n "${DISPLAY:-}" ]; then
   x=()
@@ -37,8 +38,8 @@ fi
 
 # A first configuration the library refuses: its reason, a clean exit.
 printf 'wait 1\n' > "$out/one-frame.script"
-err="$("${x[@]}" "$viewer" --budget 3 --script "$out/one-frame.script" 2>&1)" && fail "--budget 3 was accepted"
-echo "$err" | grep -q "refused: .*budget" || fail "--budget 3: no reason given: $err"
+err="$("${x[@]}" "$viewer" --msaa-per-sample --script "$out/one-frame.script" 2>&1)" && fail "--msaa-per-sample without MSAA was accepted"
+echo "$err" | grep -q "refused: .*per-sample" || fail "--msaa-per-sample: no reason given: $err"
 
 # The GL 2.1 / GLSL 1.20 override on llvmpipe, for the demo's reference images and the viewer alike.
 export GALLIUM_DRIVER=llvmpipe MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120
@@ -83,7 +84,7 @@ grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$o
   done
   echo "set msaa 0"; echo "set volume-test auto"; echo "set view marked"; echo "compute"; echo "expect-stat dropped == 0"
   for mode in tiled forward-multipass forward-brute; do echo "set mode $mode"; echo "set msaa 4"; echo "wait 1"; echo "set msaa 0"; done
-  echo "press R"; echo "wait 1"; echo "expect-setting mode lidr"; echo "expect-setting budget 8"; echo "expect-applied"
+  echo "press R"; echo "wait 1"; echo "expect-setting mode lidr"; echo "expect-setting scheme auto"; echo "expect-setting budget auto"; echo "expect-applied"
 } > "$out/sweep.script"
 "${x[@]}" "$viewer" --width 160 --height 120 --paused --out "$out" --script "$out/sweep.script" >"$out/sweep.log" 2>&1 ||
   fail "the settings sweep failed: $(tail -5 "$out/sweep.log")"

@@ -20,6 +20,7 @@
 #include "lidr/eval/artefacts.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/gl/render_targets.h"
+#include "lidr/modes/auto_mode_renderer.h"
 
 namespace lidr::viewer {
 namespace {
@@ -31,10 +32,11 @@ struct ScriptFailure : Error {
     using Error::Error;
 };
 
-const char* const kModes[] = {"lidr", "tiled", "forward-multipass", "forward-brute"};
-const char* const kSchemes[] = {"bitshift", "max-stencil", "cpu-sorted"};
-const int kBudgets[] = {1, 2, 4, 8, 16};
-const int kIndexBits[] = {4, 8, 16};
+const char* const kModes[] = {"lidr", "tiled", "forward-multipass", "forward-brute", "auto"};
+constexpr int kModeCount = 5;
+const char* const kSchemes[] = {"auto", "bitshift", "max-stencil", "cpu-sorted"};
+const char* const kBudgets[] = {"auto", "1", "2", "4", "8", "16"};
+const char* const kIndexBits[] = {"auto", "4", "8", "16"};
 const char* const kVolumeTests[] = {"auto", "sphere", "sphere-ray", "backface", "exact", "frontface"};
 const int kMsaa[] = {0, 2, 4, 8, 16};
 const int kTileSizes[] = {8, 16, 32, 64};
@@ -154,14 +156,15 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, keyCallback);  // before ImGui's, which chains to it
 
+    if (!apply(rc_, "the configuration")) throw Error(status_);
+
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     ImGui_ImplOpenGL2_Init();
-
-    if (!apply(rc_, "the configuration")) throw Error(status_);
+    checkGl("viewer: starting Dear ImGui");
 }
 
 Viewer::~Viewer() {
@@ -176,8 +179,11 @@ Viewer::~Viewer() {
 
 int Viewer::maxLightsFor(const demo::RendererChoice& rc) const {
     const int sceneLights = int(scene_.lights.size());
-    if (rc.mode != "lidr" || rc.indexBits < 1 || rc.indexBits > 16) return sceneLights;
-    return std::min(sceneLights, (1 << rc.indexBits) - 1);
+    // (An automatic index width widens to what the visible lights need, up to 16 bits.)
+    if (rc.mode != "lidr" || rc.scheme == "auto") return sceneLights;
+    for (int bits : {4, 8, 16})
+        if (rc.indexBits == std::to_string(bits)) return std::min(sceneLights, (1 << bits) - 1);
+    return sceneLights;
 }
 
 std::vector<PointLight> Viewer::currentLights() const {
@@ -281,9 +287,16 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
     }
     demo::RendererChoice next = rc_;
     if (name == "mode") next.mode = value;
-    else if (name == "scheme") next.scheme = value;
-    else if (name == "budget") next.budget = toInt(value);
-    else if (name == "index-bits") next.indexBits = toInt(value);
+    else if (name == "scheme") {
+        next.scheme = value;
+        // The automatic scheme chooses budget and width itself; a named scheme other than bit-shift needs a fixed
+        // budget (only bit-shift's stencil count measures one): the choices the library would refuse are made
+        // for the user, who can change them after.
+        if (value == "auto") next.budget = next.indexBits = "auto";
+        else if (value != "bitshift" && next.budget == "auto") next.budget = "8";
+    }
+    else if (name == "budget") next.budget = value;
+    else if (name == "index-bits") next.indexBits = value;
     else if (name == "volume-test") next.volumeTest = value;
     else if (name == "msaa") next.msaa = toInt(value);
     else if (name == "per-sample") next.msaaPerSample = toBool(value);
@@ -302,8 +315,8 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
 std::string Viewer::setting(const std::string& name) const {
     if (name == "mode") return rc_.mode;
     if (name == "scheme") return rc_.scheme;
-    if (name == "budget") return std::to_string(rc_.budget);
-    if (name == "index-bits") return std::to_string(rc_.indexBits);
+    if (name == "budget") return rc_.budget;
+    if (name == "index-bits") return rc_.indexBits;
     if (name == "volume-test") return rc_.volumeTest;
     if (name == "msaa") return std::to_string(rc_.msaa.value_or(0));
     if (name == "per-sample") return rc_.msaaPerSample ? "on" : "off";
@@ -357,8 +370,8 @@ void Viewer::onKeyPress(int key, int mods) {
         case GLFW_KEY_TAB: showUi_ = !showUi_; break;
         case GLFW_KEY_M: {  // next mode (Shift: previous)
             int i = 0;
-            while (i < 4 && rc_.mode != kModes[i]) ++i;
-            changeSetting("mode", kModes[(i + (shift ? 3 : 1)) % 4]);
+            while (i < kModeCount && rc_.mode != kModes[i]) ++i;
+            changeSetting("mode", kModes[(i + (shift ? kModeCount - 1 : 1)) % kModeCount]);
             break;
         }
         case GLFW_KEY_V: {  // next available view
@@ -462,7 +475,7 @@ void Viewer::computeViews() {
     ev.images[View::Difference] = differenceImage(frame, ev.reference);
     if (const auto* lidr = dynamic_cast<const LidrRenderer*>(renderer_.get()); lidr && !lidr->perSampleIndices()) {
         const FrameEvaluation fe = evaluateFrame(*lidr, cam, lights, frame, ev.reference);
-        const demo::LidrViews lv = demo::lidrViews(fe, width_, height_, lidr->options().packing.budget);
+        const demo::LidrViews lv = demo::lidrViews(fe, width_, height_, lidr->scheme().config().budget);
         ev.images[View::IndexLists] = lv.indexLists;
         ev.images[View::Overlap] = lv.overlap;
         ev.images[View::Marked] = lv.marked;
@@ -557,8 +570,18 @@ void Viewer::uiSettings() {
     const bool lidrMode = rc_.mode == "lidr";
     ImGui::BeginDisabled(!lidrMode);
     combo("scheme", rc_.scheme, kSchemes, "scheme", str, always);
-    combo("budget", std::to_string(rc_.budget), kBudgets, "budget", str, always);
-    combo("index bits", std::to_string(rc_.indexBits), kIndexBits, "index-bits", str, always);
+    ImGui::BeginDisabled(rc_.scheme == "auto");
+    combo("budget", rc_.budget, kBudgets, "budget", str, [&](const char* b, std::string* why) {
+        if (std::string(b) == "auto" && rc_.scheme != "bitshift" && rc_.scheme != "auto") {
+            *why = "an automatic budget is measured from bit-shift packing's stencil count";
+            return false;
+        }
+        return true;
+    });
+    combo("index bits", rc_.indexBits, kIndexBits, "index-bits", str, always);
+    ImGui::EndDisabled();
+    if (rc_.scheme == "auto" && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("the automatic scheme chooses budget and index width per frame: name a scheme to fix them");
     combo("volume test", rc_.volumeTest, kVolumeTests, "volume-test", str, always);
     bool detail = rc_.volumeDetail;
     if (ImGui::Checkbox("coarse volumes for small lights", &detail)) changeSetting("volume-detail", detail ? "on" : "off");
@@ -647,10 +670,22 @@ void Viewer::uiStats() {
                         eval_.errorWithinBudget.maxAbsError,
                         std::isinf(eval_.errorWithinBudget.psnr) ? 999.0 : eval_.errorWithinBudget.psnr);
     }
-    const bool lidrMode = rc_.mode == "lidr";
+    const auto* lidrRenderer = dynamic_cast<const LidrRenderer*>(renderer_.get());
+    if (lidrRenderer) {
+        const AutoDecision& d = st.autoDecision;
+        const PackingConfig& c = lidrRenderer->scheme().config();
+        if (d.autoBudget || d.autoIndexBits)
+            ImGui::TextWrapped("automatic: budget %d%s, %d-bit indices for %d visible lights, re-packed %d times", c.budget,
+                               d.autoBudget ? (d.measuredBudget ? " (measured)" : " (overlap above 16)") : " (fixed)",
+                               c.indexBits, d.visibleLights, d.repacks);
+    }
+    if (const auto* autoMode = dynamic_cast<const AutoModeRenderer*>(renderer_.get()))
+        ImGui::TextWrapped("auto mode: drawing with %s; %s", autoMode->lastMode().c_str(), autoMode->reason().c_str());
+    // The index targets the last frame used (an automatic budget and width change them).
     const unsigned long long targets = estimateRenderTargetBytes(
-        width_, height_, rc_.msaa.value_or(0), lidrMode ? indexBytesPerPixel(rc_.budget, rc_.indexBits) : 0,
-        lidrMode && rc_.msaaPerSample);
+        width_, height_, rc_.msaa.value_or(0),
+        lidrRenderer ? indexBytesPerPixel(lidrRenderer->scheme().config().budget, lidrRenderer->scheme().config().indexBits) : 0,
+        lidrRenderer && rc_.msaaPerSample);
     size_t table = 0;
     if (auto* l = dynamic_cast<const LidrRenderer*>(renderer_.get())) table = l->lightTable().bytes();
     if (auto* t = dynamic_cast<const TiledRenderer*>(renderer_.get())) table = t->lightTable().bytes();
@@ -701,7 +736,7 @@ void Viewer::buildUi(int fbw, int fbh) {
         const int maxL = maxLightsFor(rc_);
         if (ImGui::SliderInt("lights", &lights, 0, maxL) && lights != lightCount_) changeSetting("lights", std::to_string(lights));
         if (maxL < int(scene_.lights.size()))
-            ImGui::TextDisabled("%d-bit indices hold %d lights: the slider stops there", rc_.indexBits, maxL);
+            ImGui::TextDisabled("%s-bit indices hold %d lights: the slider stops there", rc_.indexBits.c_str(), maxL);
         const glm::vec3 p = camera_.position();
         ImGui::Text("camera (%.2f, %.2f, %.2f), yaw %.0f, pitch %.0f", double(p.x), double(p.y), double(p.z),
                     double(glm::degrees(camera_.yaw())), double(glm::degrees(camera_.pitch())));
@@ -758,7 +793,11 @@ void Viewer::saveAll(const std::string& dir) {
         a.lightCounts = lidr->readLightCounts();
         a.camera = cameraMatrices(camera_.camera(), width_, height_);
         a.lights = lights;
-        a.drawOrder = LidrRenderer::drawOrder(lights);
+        if (!lidr->frameLightIndices().empty()) {  // compact numbering (automatic width), as lidr-demo --dump
+            a.lights.clear();
+            for (uint32_t sceneIndex : lidr->frameLightIndices()) a.lights.push_back(lights[sceneIndex - 1]);
+        }
+        a.drawOrder = LidrRenderer::drawOrder(a.lights);
         writeFrameArtefacts(path("dump"), a, lidr->scheme());
     }
     checkGl("viewer: saving artefacts");
