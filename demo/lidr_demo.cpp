@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demo_options.h"
+#include "frame_views.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/frame_evaluation.h"
@@ -143,11 +144,9 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     s << "\n";
     if (withReference) {
         // Rendered the way the mode renders: same MSAA, transparency where the mode draws it.
-        ReferenceRenderer reference(info, scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
-                                    mo.forceFixedLightTable, mo.msaaSamples,
-                                    mo.transparency && mo.mode != "forward-multipass");
-        reference.render(scene.camera, lights, shading);
-        const ImageRGBA8 refImage = reference.targets().readColor();
+        auto reference = demo::makeReference(info, scene, mo, scene.width, scene.height, int(lights.size()));
+        reference->render(scene.camera, lights, shading);
+        const ImageRGBA8 refImage = reference->targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
         writePng(path(outDir, "difference.png"), differenceImage(image, refImage));
         outputs += ", reference.png, difference.png";
@@ -253,13 +252,11 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     artefacts.drawOrder = LidrRenderer::drawOrder(artefacts.lights);
 
     if (withReference) {
-        ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
-                                    options.forceFixedLightTable, options.msaaSamples, options.transparency,
-                                    options.perSampleIndices);
+        auto reference = demo::makeReference(info, scene, modeOptions, scene.width, scene.height, int(lights.size()));
         MedianTimes refTimes;
-        reference.render(scene.camera, lights, shading);
-        for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
-        const ImageRGBA8 refImage = reference.targets().readColor();
+        reference->render(scene.camera, lights, shading);
+        for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference->render(scene.camera, lights, shading).passes);
+        const ImageRGBA8 refImage = reference->targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
         writePng(path(outDir, "difference.png"), differenceImage(image, refImage));
         summary["timing"]["reference_median_ms"] = refTimes.json();
@@ -270,13 +267,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                                  {"lists_checked", false},
                                  {"why", "per-sample index targets are multisample textures; only the image is judged"}};
         } else {
-            writePng(path(outDir, "index_lists.png"), indexListImage(scene.width, scene.height, ev.lists.decoded));
-            std::vector<int> truthCounts(ev.truth.surface.size());
-            for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
-            writePng(path(outDir, "overlap.png"),
-                     overlapHeatMap(scene.width, scene.height, truthCounts, budget, &ev.truth.surface));
-            writePng(path(outDir, "marked.png"),
-                     overlapHeatMap(scene.width, scene.height, ev.marked, budget, &ev.truth.surface));
+            const demo::LidrViews views = demo::lidrViews(ev, scene.width, scene.height, budget);
+            writePng(path(outDir, "index_lists.png"), views.indexLists);
+            writePng(path(outDir, "overlap.png"), views.overlap);
+            writePng(path(outDir, "marked.png"), views.marked);
             summary["lights"] = {{"visible_lights", stats.drawnLights},
                                  {"max_overlap_touching", ev.maxTruthOverlap},
                                  {"max_marked_by_volume_test", ev.maxMarked},

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
 #   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
-#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, package)
+#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, viewer, package)
 #   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out).
 set -euo pipefail
@@ -19,6 +19,7 @@ packages=(
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
   libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
   gnuplot-nox
+  libimgui-dev xvfb xauth
 )
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)

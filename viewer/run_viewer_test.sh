@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# CTest viewer.script: drives lidr-viewer with scripted inputs (viewer/viewer_test.script) in an X display and
+# checks the outcomes against lidr-demo --headless. Usage: run_viewer_test.sh VIEWER DEMO OUT
+# Exit 77 (CTest SKIP_RETURN_CODE) only when no X server can be had: no DISPLAY and no xvfb-run.
+set -u
+viewer="$1" demo="$2" out="$3"
+here="$(cd "$(dirname "$0")" && pwd)"
+rm -rf "$out"
+mkdir -p "$out"
+fail() { echo "viewer.script: FAILED: $*" >&2; exit 1; }
+
+# Bad input: a clear message and a non-zero exit, before any window (so these need no display).
+expect_error() {  # expect_error "what the message must contain" ARGS...
+  local want="$1"; shift
+  local err rc
+  err="$("$viewer" "$@" 2>&1 >/dev/null)"; rc=$?
+  [ "$rc" -ne 0 ] && [ "$rc" -lt 128 ] || fail "lidr-viewer $*: expected a clean non-zero exit, got $rc"
+  echo "$err" | grep -q -- "$want" || fail "lidr-viewer $*: message lacks '$want': $err"
+}
+printf 'wait 1\nfly 3\n' > "$out/bad-verb.script"
+printf 'wait soon\n' > "$out/bad-number.script"
+printf 'key W\n' > "$out/bad-args.script"
+expect_error "cannot read script" --script "$out/missing.script"
+expect_error "bad-verb.script:2: unknown action 'fly'" --script "$out/bad-verb.script"
+expect_error "'soon' must be a whole number\|'soon' is not a number" --script "$out/bad-number.script"
+expect_error "expected key KEY FRAMES" --script "$out/bad-args.script"
+expect_error "--context must be glfw" --context egl
+expect_error "--budget must be auto, 1, 2, 4, 8, 16" --scheme bitshift --budget 3
+
+if [ -n "${DISPLAY:-}" ]; then
+  x=()
+elif command -v xvfb-run >/dev/null 2>&1; then
+  x=(xvfb-run -a -s "-screen 0 1280x1024x24")
+else
+  echo "viewer.script: SKIPPED: no DISPLAY and no xvfb-run (Debian: apt-get install xvfb xauth)"
+  exit 77
+fi
+
+# A first configuration the library refuses: its reason, a clean exit.
+printf 'wait 1\n' > "$out/one-frame.script"
+err="$("${x[@]}" "$viewer" --msaa-per-sample --script "$out/one-frame.script" 2>&1)" && fail "--msaa-per-sample without MSAA was accepted"
+echo "$err" | grep -q "refused: .*per-sample" || fail "--msaa-per-sample: no reason given: $err"
+
+# The GL 2.1 / GLSL 1.20 override on llvmpipe, for the demo's reference images and the viewer alike.
+export GALLIUM_DRIVER=llvmpipe MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120
+size=(--width 480 --height 360 --time 2)
+for mode in lidr tiled forward-multipass; do
+  LIDR_CONTEXT=egl "$demo" --headless "${size[@]}" --frames 1 --mode "$mode" --out "$out/demo-$mode" >"$out/demo-$mode.log" 2>&1 ||
+    fail "lidr-demo --mode $mode failed: $(cat "$out/demo-$mode.log")"
+done
+
+sed "s|@OUT@|$out|g" "$here/viewer_test.script" > "$out/test.script"
+echo "viewer.script: ${x[*]} lidr-viewer --script $out/test.script (GL 2.1 override)"
+"${x[@]}" "$viewer" "${size[@]}" --paused --out "$out" --script "$out/test.script"; rc=$?
+[ "$rc" -eq 0 ] || fail "the scripted run failed ($rc)"
+for f in shot.png capture/screenshot.png capture/frame.png capture/reference.png capture/difference.png \
+         capture/index_lists.png capture/overlap.png capture/marked.png capture/state.json \
+         capture/dump/index_target0.png capture/dump/depth.pfm capture/dump/lights.json screenshot-000.png; do
+  [ -s "$out/$f" ] || fail "the viewer did not write $f"
+done
+
+# A failed check must fail the run: the checks are real.
+printf 'wait 1\nexpect-setting mode tiled\n' > "$out/must-fail.script"
+"${x[@]}" "$viewer" "${size[@]}" --script "$out/must-fail.script" >"$out/must-fail.log" 2>&1 && fail "a failing check passed"
+grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$out/must-fail.log" ||
+  fail "a failing check gave no message: $(cat "$out/must-fail.log")"
+
+# Every lidr setting against the others, at 160x120: each change is applied or refused with a reason, never
+# a crash, and the viewer still renders and resets afterwards.
+{
+  for scheme in bitshift max-stencil cpu-sorted; do
+    echo "set scheme $scheme"
+    for budget in 1 4 16; do
+      echo "set budget $budget"
+      for bits in 4 16; do echo "set index-bits $bits"; echo "wait 1"; done
+    done
+  done
+  echo "set scheme bitshift"; echo "set budget 8"; echo "set index-bits 8"
+  for test in sphere sphere-ray backface exact frontface; do
+    echo "set volume-test $test"
+    for msaa in 0 4 8; do
+      echo "set msaa $msaa"; echo "wait 1"; echo "set per-sample on"; echo "wait 1"; echo "set per-sample off"
+    done
+  done
+  echo "set msaa 0"; echo "set volume-test auto"; echo "set view marked"; echo "compute"; echo "expect-stat dropped == 0"
+  for mode in tiled forward-multipass forward-brute; do echo "set mode $mode"; echo "set msaa 4"; echo "wait 1"; echo "set msaa 0"; done
+  echo "press R"; echo "wait 1"; echo "expect-setting mode lidr"; echo "expect-setting scheme auto"; echo "expect-setting budget auto"; echo "expect-applied"
+} > "$out/sweep.script"
+"${x[@]}" "$viewer" --width 160 --height 120 --paused --out "$out" --script "$out/sweep.script" >"$out/sweep.log" 2>&1 ||
+  fail "the settings sweep failed: $(tail -5 "$out/sweep.log")"
+echo "viewer.script: settings sweep: $(grep -c ' applied$' "$out/sweep.log" || true) applied, $(grep -c 'refused:' "$out/sweep.log") refused, no crash"
+
+# Without the override (the context's own GL version): switch modes, the UI drawn.
+unset MESA_GL_VERSION_OVERRIDE MESA_GLSL_VERSION_OVERRIDE
+sed "s|@OUT@|$out|g" "$here/viewer_native.script" > "$out/native.script"
+"${x[@]}" "$viewer" "${size[@]}" --out "$out" --script "$out/native.script" || fail "the run without the override failed"
+echo "viewer.script: passed"
