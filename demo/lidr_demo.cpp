@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demo_options.h"
+#include "lidr/base/gl.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/frame_evaluation.h"

@@ -1,4 +1,5 @@
 #include "lidr/gl/frame_timer.h"
+#include "lidr/base/gl.h"
 
 #include <chrono>
 
