@@ -12,10 +12,12 @@
 //                lidr::FramePresenter::present() into your framebuffer or FBO (lidr/render/present.h)
 //   your shaders LidrOptions::materialShader: a GLSL 1.20 fragment shader that includes "lidr_lights.glsl"
 //                (doc/embedding.md)
-// Every renderer leaves the GL state it found (doc/embedding.md lists what is kept).
+// Every renderer leaves the GL state it found (doc/embedding.md lists what is kept); lidr::SavedGlState keeps
+// it around anything else of lidr's (constructors, read-backs).
 #include "lidr/base/error.h"
 #include "lidr/base/image.h"
 #include "lidr/gl/gl_info.h"
+#include "lidr/gl/saved_gl_state.h"
 #include "lidr/platform/context.h"
 #include "lidr/scene/camera.h"
 #include "lidr/scene/default_scene.h"

@@ -1,4 +1,6 @@
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -25,6 +27,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
 
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));

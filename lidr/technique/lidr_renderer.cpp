@@ -1,4 +1,6 @@
 #include "lidr/technique/lidr_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
 #include <numeric>
@@ -54,7 +56,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
                     options.perSampleIndices ? options.msaaSamples : 0),
       lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
       volumePass_(info, options.volumeTest, options.volumeDetail),
-      forwardPass_(*scheme_, lightTable_, options.perSampleIndices),
+      forwardPass_(*scheme_, lightTable_, options.perSampleIndices, options.materialShader),
       timer_(info, options.timingMethod) {
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
@@ -88,6 +90,7 @@ std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lig
 
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (lights.size() > scheme_->maxLights())
         throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string(scheme_->maxLights()) +
                     " that " + std::to_string(options_.packing.indexBits) + "-bit indices hold");
