@@ -37,6 +37,9 @@ struct LidrOptions {
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     bool timing = true;
     TimingMethod timingMethod = TimingMethod::Auto;
+    // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)
+    // that iterates this pixel's lights with lidr_lights.glsl (doc/embedding.md). Empty: lidr's Blinn-Phong.
+    std::string materialShader;
 };
 
 class LidrRenderer final : public Renderer {
