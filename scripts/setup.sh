@@ -18,7 +18,7 @@ packages=(
   build-essential cmake pkg-config
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
   libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
-  gnuplot-nox
+  gnuplot-nox xvfb xauth
 )
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)
