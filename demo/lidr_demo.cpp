@@ -85,6 +85,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
+    renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
     renderer->render(scene.camera, lights, shading);  // warm-up
     for (int i = 0; i < frames; ++i) times.add(renderer->render(scene.camera, lights, shading).passes);
@@ -139,6 +140,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         ReferenceRenderer reference(info, scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
                                     mo.forceFixedLightTable, mo.msaaSamples,
                                     mo.transparency && mo.mode != "forward-multipass");
+        reference.setTiming(true, true);
         reference.render(scene.camera, lights, shading);
         const ImageRGBA8 refImage = reference.targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
@@ -189,6 +191,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
+    renderer.setTiming(true, true);
     std::cout << "LIDR: " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
               << ", light table " << (renderer.lightTable().format() == LightTableFormat::Float ? "float" : "fixed16")
               << "\n";
@@ -232,6 +235,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
                                     options.forceFixedLightTable, options.msaaSamples, options.transparency,
                                     options.perSampleIndices);
+        reference.setTiming(true, true);
         MedianTimes refTimes;
         reference.render(scene.camera, lights, shading);
         for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference.render(scene.camera, lights, shading).passes);
@@ -315,6 +319,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     std::cout << "GL: " << context->info().summary() << std::endl;
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
+    renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     const double start = glfwGetTime();

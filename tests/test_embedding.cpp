@@ -434,3 +434,65 @@ TEST_CASE("a material shader that does not compile is an error naming it", "[emb
     o.materialShader = "#version 120\n#include \"no_such_file.glsl\"\nvoid main() {}\n";
     CHECK_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("no_such_file.glsl"));
 }
+
+TEST_CASE("timing is off by default: no timer queries, no pass times, in every mode", "[embed][timing]") {
+    testContext();
+    const Scene scene = litFloorScene();
+    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    for (const std::string& mode : renderModeNames()) {
+        INFO("mode " << mode);
+        RenderModeOptions options;
+        options.mode = mode;
+        options.timingMethod = testGl().timerQuery ? TimingMethod::GpuQueries : TimingMethod::Auto;
+        std::unique_ptr<Renderer> renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
+        renderer->render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
+        const int objects = gl::liveGlObjects();
+        for (int frame = 0; frame < 3; ++frame) {
+            const FrameStats& stats = renderer->render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
+            CHECK(stats.passes.empty());
+        }
+        CHECK(gl::liveGlObjects() == objects);  // nothing created per frame, no query objects
+    }
+}
+
+TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a ring of queries", "[embed][timing]") {
+    testContext();
+    if (!testGl().timerQuery) {
+        WARN("no timer queries in this context: skipped");
+        return;
+    }
+    const Scene scene = litFloorScene();
+    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    LidrOptions o;
+    o.timingMethod = TimingMethod::GpuQueries;
+    // The passes a frame has, from a renderer that waits for its own frame's results.
+    LidrRenderer waiting(testGl(), scene, o, scene.width, scene.height);
+    waiting.setTiming(true, true);
+    std::vector<std::string> names;
+    for (const PassTime& p : waiting.render(scene.camera, lights, shading).passes) names.push_back(p.pass);
+    CHECK(waiting.lastFrame().timingLag == 0);
+    REQUIRE(names.size() >= 3);
+
+    LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
+    renderer.setTiming(true);
+    int objects = 0, firstWithTimes = -1;
+    for (int frame = 0; frame < 8; ++frame) {
+        const FrameStats& stats = renderer.render(scene.camera, lights, shading);
+        if (frame == 0) objects = gl::liveGlObjects();  // the renderer's own, and the first frame's queries
+        glFinish();  // the GPU is done with this frame: its queries answer by the next collect
+        if (stats.passes.empty()) continue;
+        if (firstWithTimes < 0) firstWithTimes = frame;
+        CHECK(stats.timingLag >= 1);
+        std::vector<std::string> got;
+        for (const PassTime& p : stats.passes) {
+            got.push_back(p.pass);
+            CHECK(p.milliseconds >= 0.0);
+        }
+        CHECK(got == names);
+    }
+    CHECK(firstWithTimes >= 1);  // never the frame itself: no stall on its queries
+    CHECK(firstWithTimes <= 2);
+    // One set of queries per ring slot at most: the other slots' sets.
+    CHECK(gl::liveGlObjects() - objects <= (FrameTimer::kRingFrames - 1) * static_cast<int>(names.size()));
+}

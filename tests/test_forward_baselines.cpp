@@ -162,6 +162,7 @@ TEST_CASE("render-mode factory builds every mode, all close to the reference", "
         o.mode = mode;
         std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
         REQUIRE(r->modeName() == mode);
+        r->setTiming(true);
         r->render(scene.camera, scene.lights, shading);
         const ImageError e = compareImages(r->targets().readColor(), ref);
         INFO(mode << ": max " << e.maxAbsError);

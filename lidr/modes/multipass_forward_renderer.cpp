@@ -143,6 +143,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MultipassForwardRenderer::render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     return stats_;
 }
 

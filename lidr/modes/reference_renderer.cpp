@@ -17,6 +17,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
       timer_(info),
       drawTransparent_(transparency && scene_.hasTransparent()),
       sampleShading_(sampleShading) {
+    timer_.setEnabled(false);  // Renderer::setTiming turns it on
     if (sampleShading && !info.sampleShading)
         throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
     ShaderDefines defines = lightTable_.defines();
@@ -72,6 +73,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     return stats_;
 }
 

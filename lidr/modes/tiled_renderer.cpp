@@ -162,6 +162,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("TiledRenderer::render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
 
     frameInfo_.grid = gs;
     frameInfo_.assignMilliseconds = assignMs;

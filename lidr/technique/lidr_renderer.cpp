@@ -183,6 +183,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     targets_.resolve(timer_);
 
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("LidrRenderer::render");
     return stats_;

@@ -35,7 +35,7 @@ struct LidrOptions {
     // 320-face one (LightVolumePass); false: the 320-face volume for every light.
     bool volumeDetail = false;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
-    bool timing = true;
+    bool timing = false;  // per-pass times in FrameStats (Renderer::setTiming); off: no timer queries at all
     TimingMethod timingMethod = TimingMethod::Auto;
     // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)
     // that iterates this pixel's lights with lidr_lights.glsl (doc/embedding.md). Empty: lidr's Blinn-Phong.
@@ -56,6 +56,10 @@ public:
     const PackingScheme& scheme() const { return *scheme_; }
     const LidrOptions& options() const { return options_; }
     const RenderTargets& targets() const override { return targets_; }
+    void setTiming(bool on, bool waitForResults = false) override {
+        timer_.setEnabled(on);
+        timer_.setWaitForResults(waitForResults);
+    }
     const IndexTargets& indexTargets() const { return indexTargets_; }
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
