@@ -107,6 +107,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
 // ---- configurations -------------------------------------------------------------------------------------
 
 std::string ModeConfig::label() const {
+    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "");
     if (mode == "lidr")
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
                (volumeDetail ? " detail" : "");
@@ -211,13 +212,20 @@ std::pair<int, int> parseResolution(const std::string& text) {
     return {w, h};
 }
 
+// The library's schemes and "auto" (bit-shift with the budget and the width chosen per frame).
+std::vector<std::string> schemesWithAuto() {
+    std::vector<std::string> s = packingSchemeNames();
+    s.push_back("auto");
+    return s;
+}
+
 std::vector<SweepGroup> quickPreset() {
     SweepGroup g;
     g.name = "quick";
     g.scenes = {"overlap-2", "room"};
     g.resolutions = {{96, 72}};
     g.modes = availableModes();
-    g.schemes = packingSchemeNames();
+    g.schemes = schemesWithAuto();
     g.budgets = {1, 4};
     g.indexBits = {8};
     g.volumeTests = {"backface", "frontface"};
@@ -236,7 +244,7 @@ std::vector<SweepGroup> fullPreset() {
     room.scenes = {"room"};
     room.resolutions = {{1024, 768}};
     room.modes = availableModes();
-    room.schemes = packingSchemeNames();
+    room.schemes = schemesWithAuto();
     room.budgets = budgets;
     room.indexBits = {8, 16};
     room.volumeTests = {"backface", "exact", "frontface"};
@@ -273,7 +281,7 @@ std::vector<SweepGroup> fullPreset() {
     overlap.scenes = {"overlap-1", "overlap-2", "overlap-4", "overlap-8", "overlap-16"};
     overlap.resolutions = {{512, 384}};
     overlap.modes = availableModes();
-    overlap.schemes = packingSchemeNames();
+    overlap.schemes = schemesWithAuto();
     overlap.budgets = budgets;
     overlap.indexBits = {4, 8};  // 4-bit holds 15 lights: overlap-1 only (16-bit: the many-light scenes)
     overlap.volumeTests = {"backface"};
@@ -312,7 +320,7 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
     for (const char* m : {"lidr", "tiled", "forward-multipass"})  // those the library has, in this order
         for (const std::string& have : availableModes())
             if (have == m) base.modes.push_back(have);
-    base.schemes = {"bitshift"};
+    base.schemes = {"bitshift", "auto"};
     base.budgets = {4, 8};
     base.volumeTests = sweepVolumeTests();
     base.msaa = {0};
@@ -397,8 +405,8 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
             if (std::find(modes.begin(), modes.end(), m) == modes.end())
                 throw Error("unknown render mode '" + m + "' (valid: " + joinNames(modes) + ")");
         for (const std::string& s : g.schemes)
-            if (std::find(schemes.begin(), schemes.end(), s) == schemes.end())
-                throw Error("unknown packing scheme '" + s + "' (valid: " + joinNames(schemes) + ")");
+            if (s != "auto" && std::find(schemes.begin(), schemes.end(), s) == schemes.end())
+                throw Error("unknown packing scheme '" + s + "' (valid: auto, " + joinNames(schemes) + ")");
         for (const std::string& v : g.volumeTests) parseVolumeTest(v);  // throws naming the valid ones
         for (int b : g.budgets)
             if (b < 1) throw Error("budget must be >= 1, got " + std::to_string(b));
@@ -446,8 +454,9 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                             base.transparency = transparency;
                             if (mode == "lidr") {
                                 for (const auto& scheme : g.schemes)
-                                    for (int budget : g.budgets)
-                                        for (int bits : g.indexBits)
+                                    // "auto" chooses its budget and width per frame: one configuration.
+                                    for (int budget : scheme == "auto" ? std::vector<int>{0} : g.budgets)
+                                        for (int bits : scheme == "auto" ? std::vector<int>{0} : g.indexBits)
                                             for (const auto& vt : g.volumeTests)
                                                 for (bool detail : g.volumeDetail) {
                                                     ModeConfig c = base;
@@ -474,7 +483,9 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                     if (!probeResults.count(probeKey)) {
                         // Before the probe allocates anything: an oversized configuration is an error, not a skip.
                         const bool lidr = c.mode == "lidr";
-                        checkRenderTargetMemory(w, h, c.msaa, lidr ? indexBytesPerPixel(c.budget, c.indexBits) : 0,
+                        const bool autoLidr = lidr && c.scheme == "auto";  // at most budget 16, 16-bit
+                        checkRenderTargetMemory(w, h, c.msaa,
+                                                lidr ? indexBytesPerPixel(autoLidr ? 16 : c.budget, autoLidr ? 16 : c.indexBits) : 0,
                                                 lidr && c.perSample);
                         std::string reason;
                         try {
@@ -494,8 +505,10 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                     note("transparency", str(c.transparency), reason);
                     if (c.mode == "lidr") {
                         note("scheme", c.scheme, reason);
-                        note("budget", str(c.budget), reason);
-                        note("index width", str(c.indexBits), reason);
+                        if (c.scheme != "auto") {
+                            note("budget", str(c.budget), reason);
+                            note("index width", str(c.indexBits), reason);
+                        }
                         note("volume test", c.volumeTest, reason);
                     }
                     if (!reason.empty()) {

@@ -86,7 +86,8 @@ const std::vector<std::string>& resultColumns() {
         "light_volume_ms_median", "light_volume_share", "light_data_bytes", "drawn_lights", "rmse", "psnr_db",
         "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
         "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "scene_triangles", "rounds",
-        "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max"};
+        "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
+        "auto_index_bits", "auto_repacks"};
     return c;
 }
 
@@ -123,7 +124,9 @@ std::vector<std::string> csvCells(const Row& r) {
     auto err = [&](const std::string& v) { return r.hasError ? v : std::string(); };
     return {std::to_string(r.id), r.run.group, r.run.scene, std::to_string(r.run.width), std::to_string(r.run.height),
             std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
-            lidr ? std::to_string(c.budget) : "", lidr ? std::to_string(c.indexBits) : "", lidr ? c.volumeTest : "",
+            // auto: the budget and width its last measured frame used
+            lidr ? std::to_string(r.autoBudget ? r.autoBudget : c.budget) : "",
+            lidr ? std::to_string(r.autoIndexBits ? r.autoIndexBits : c.indexBits) : "", lidr ? c.volumeTest : "",
             c.mode == "tiled" ? (c.tiledDepthBounds ? "1" : "0") : "", std::to_string(c.msaa),
             c.perSample ? "1" : "0", c.transparency ? "1" : "0", r.timingMethod, std::to_string(r.warmupFrames), std::to_string(r.frames),
             num(r.frameMs.median), num(r.frameMs.min), num(r.frameMs.max), num(r.wallMs.median),
@@ -133,7 +136,9 @@ std::vector<std::string> csvCells(const Row& r) {
             err(std::to_string(r.error.comparedPixels)), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
             lists(r.pixelsOverBudget), lists(r.maxMarked), lists(r.invalidSlots),
             r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : "", std::to_string(r.sceneTriangles),
-            std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max)};
+            std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max),
+            r.autoBudget ? std::to_string(r.autoBudget) : "", r.autoIndexBits ? std::to_string(r.autoIndexBits) : "",
+            r.autoBudget || r.autoIndexBits ? std::to_string(r.autoRepacks) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -152,6 +157,8 @@ nlohmann::json rowJson(const Row& r) {
     j["config"] = c.key();
     if (c.mode == "lidr")
         j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}};
+    if (r.autoBudget || r.autoIndexBits)
+        j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
     j["msaa"] = c.msaa;
     j["per_sample"] = c.perSample;

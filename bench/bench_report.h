@@ -36,6 +36,8 @@ struct Row {
     double lightVolumeMs = 0.0;        // median of the light-volume passes' sum (LIDR), else 0
     size_t lightDataBytes = 0;
     int drawnLights = 0;
+    // LIDR's automatic configuration, last measured frame: budget and width chosen, re-packs over all frames.
+    int autoBudget = 0, autoIndexBits = 0, autoRepacks = 0;
     bool hasError = true;              // false: a timing-only sweep (SweepGroup::reference), no error columns
     ImageError error;                  // against forward-brute with the same MSAA and transparency
     // LIDR only: the decoded index lists against the CPU truth.

@@ -130,7 +130,8 @@ int main(int argc, char** argv) {
             if (row[c].empty()) {  // not applicable to the mode: allowed only in the mode-specific columns
                 static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
                     "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
-                    "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db"};
+                    "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "auto_budget",
+                    "auto_index_bits", "auto_repacks"};
                 if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
                 continue;
             }
@@ -144,6 +145,8 @@ int main(int argc, char** argv) {
         if (frames < 1) problem("results.csv row " + row[0] + ": no measured frames");
         if (!(lo <= median && median <= hi)) problem("results.csv row " + row[0] + ": frame median outside [min, max]");
         if (row[7] == "lidr" && row[10].empty()) problem("results.csv row " + row[0] + ": a lidr row without a budget");
+        if (row[7] == "lidr" && row[9] == "auto" && (row[col("auto_budget")].empty() || row[col("auto_index_bits")].empty()))
+            problem("results.csv row " + row[0] + ": a lidr auto row without the budget and width it chose");
         if (emptyErrors != 0 && emptyErrors != errorColumns.size())
             problem("results.csv row " + row[0] + ": some error columns empty, others not");
         // The interleaved rounds.

@@ -24,6 +24,7 @@
 #include "bench_config.h"
 #include "bench_report.h"
 #include "lidr/base/error.h"
+#include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/base/gl.h"
@@ -229,6 +230,12 @@ void warmUp(Slot& slot, const Scene& scene, const std::vector<PointLight>& light
         ++slot.m.warmupFrames;
         if (i == 0) warmupStart = nowMilliseconds();
     }
+    // --mode auto times each candidate in trial frames: those belong to the warm-up, not to the rounds.
+    if (auto* autoMode = dynamic_cast<AutoModeRenderer*>(slot.renderer.get()))
+        for (int i = 0; !g_stop && autoMode->measuring() && i < kMaxWarmupFrames; ++i) {
+            renderFrame(*slot.renderer, scene, lights);
+            ++slot.m.warmupFrames;
+        }
 }
 
 void fillTiming(Row& row, const Measured& m) {
@@ -253,6 +260,13 @@ void fillTiming(Row& row, const Measured& m) {
     row.lightVolumeMs = Stat::of(vol).median;
     for (const std::string& p : order) row.passes.push_back({p, Stat::of(perPass[p])});
     row.drawnLights = m.frames.back().drawnLights;
+    const AutoDecision& decision = m.frames.back().autoDecision;
+    if (decision.autoBudget || decision.autoIndexBits) {
+        row.autoBudget = decision.budget;
+        row.autoIndexBits = decision.indexBits;
+        row.autoRepacks = 0;
+        for (const FrameStats& f : m.frames) row.autoRepacks += f.autoDecision.repacks;
+    }
 }
 
 std::string refKey(const Run& r) {

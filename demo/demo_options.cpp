@@ -5,13 +5,28 @@
 #include "lidr/base/error.h"
 #include "lidr/gl/render_targets.h"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/scene_loader.h"
 
 namespace lidr::demo {
+
+namespace {
+// "auto" (PackingConfig::kAuto) or one of `valid`; anything else names the option and the valid values.
+int parseAutoOrNumber(const std::string& text, const char* option, std::initializer_list<int> valid) {
+    if (text == "auto") return PackingConfig::kAuto;
+    std::string list = "auto";
+    for (int v : valid) {
+        list += ", " + std::to_string(v);
+        if (text == std::to_string(v)) return v;
+    }
+    throw Error(std::string(option) + " must be " + list + "; got '" + text + "'");
+}
+}  // namespace
 
 void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--scene", sceneFile, "Scene file (JSON, see doc/scene-format.md); default: the built-in room");
@@ -54,11 +69,16 @@ void RendererChoice::addOptions(CLI::App& app) {
     std::string schemes;
     for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
     app.add_option("--scheme", scheme,
-                   "Packing scheme: " + schemes +
+                   "Packing scheme: auto (default: bit-shift with the budget and index width chosen per frame, "
+                   "doc/auto.md), " + schemes +
                        " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
                        "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
-    app.add_option("--budget", budget, "Light slots per pixel (1, 2, 4, 8, 16)")->capture_default_str();
-    app.add_option("--index-bits", indexBits, "Light index width: 4, 8 or 16 bits");
+    app.add_option("--budget", budget,
+                   "Light slots per pixel: auto (measured per frame; bitshift) or 1, 2, 4, 8, 16 (with a named scheme)")
+        ->capture_default_str();
+    app.add_option("--index-bits", indexBits,
+                   "Light index width: auto (the narrowest for the visible lights) or 4, 8, 16 (with a named scheme)")
+        ->capture_default_str();
     app.add_option("--volume-test", volumeTest,
                    "Light volume test: auto (sphere; sphere-ray with MSAA; backface with --msaa-per-sample), sphere "
                    "(exact, in the shader, batched), sphere-ray, backface, exact (stencil), frontface");
@@ -84,8 +104,14 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     else
         throw Error("--transparency must be on, off or scene, got '" + transparency + "'");
     o.packing.scheme = scheme;
-    o.packing.budget = budget;
-    o.packing.indexBits = indexBits;
+    o.packing.budget = parseAutoOrNumber(budget, "--budget", {1, 2, 4, 8, 16});
+    o.packing.indexBits = parseAutoOrNumber(indexBits, "--index-bits", {4, 8, 16});
+    if (o.packing.autoScheme() && (o.packing.budget != PackingConfig::kAuto || o.packing.indexBits != PackingConfig::kAuto))
+        throw Error("--scheme auto chooses the budget and the index width itself: leave out --budget and --index-bits, "
+                    "or name a scheme (--scheme bitshift) to fix them");
+    if (!o.packing.autoScheme() && o.packing.scheme != "bitshift" && o.packing.budget == PackingConfig::kAuto)
+        throw Error("--budget auto is measured from bit-shift packing's stencil count; --scheme " + scheme +
+                    " needs --budget 1, 2, 4, 8 or 16");
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
     o.volumeTest = volumeTest == "auto"
@@ -116,7 +142,11 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
 void checkTargetMemory(const Scene& scene, const RenderModeOptions& options) {
     const bool lidr = options.mode == "lidr";
     checkRenderTargetMemory(scene.width, scene.height, options.msaaSamples,
-                            lidr ? indexBytesPerPixel(options.lidr.packing.budget, options.lidr.packing.indexBits) : 0,
+                            lidr ? indexBytesPerPixel(options.lidr.packing.autoBudget() ? 16 : options.lidr.packing.budget,
+                                                      options.lidr.packing.autoIndexBits()
+                                                          ? AutoConfiguration::indexBitsFor(std::min<int>(65535, int(scene.lights.size())))
+                                                          : options.lidr.packing.indexBits)
+                                 : 0,
                             lidr && options.lidr.perSampleIndices);
 }
 

@@ -21,6 +21,7 @@
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/base/visualize.h"
 
@@ -88,6 +89,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
     renderer->render(scene.camera, lights, shading);  // warm-up
+    auto* autoMode = dynamic_cast<AutoModeRenderer*>(renderer.get());
+    while (autoMode && autoMode->measuring()) renderer->render(scene.camera, lights, shading);  // its trial frames
     for (int i = 0; i < frames; ++i) times.add(renderer->render(scene.camera, lights, shading).passes);
     const FrameStats stats = renderer->lastFrame();
     const ImageRGBA8 image = renderer->targets().readColor();
@@ -107,6 +110,11 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
       << " triangles, " << lights.size() << " lights\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
+    if (autoMode) {
+        summary["auto_mode"] = {{"chosen", autoMode->lastMode()}, {"reason", autoMode->reason()},
+                                {"candidates", autoMode->candidates()}};
+        s << "auto mode  " << autoMode->reason() << "\n";
+    }
     std::string outputs = imageFile;
     const auto* tiled = dynamic_cast<const TiledRenderer*>(renderer.get());
     if (tiled) {
@@ -192,7 +200,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
-    std::cout << "LIDR: " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+    std::cout << "LIDR: "
+              << (options.packing.autoBudget() || options.packing.autoIndexBits() ? "automatic, first frame " : "")
+              << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
               << ", light table " << (renderer.lightTable().format() == LightTableFormat::Float ? "float" : "fixed16")
               << "\n";
 
@@ -208,8 +218,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
                         {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time}};
-    summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", options.packing.budget},
-                       {"index_bits", options.packing.indexBits}, {"targets", renderer.scheme().targetCount()},
+    const AutoDecision& decision = stats.autoDecision;
+    const int budget = renderer.scheme().config().budget;
+    summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", budget},
+                       {"index_bits", renderer.scheme().config().indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
@@ -219,6 +231,11 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"light_table_bytes", renderer.lightTable().bytes()},
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls},
                        {"transparent_volume_lights", stats.transparentVolumeLights}};
+    summary["auto"] = {{"budget_automatic", decision.autoBudget}, {"index_bits_automatic", decision.autoIndexBits},
+                       {"visible_lights", decision.visibleLights}, {"budget", decision.budget},
+                       {"index_bits", decision.indexBits}, {"measured_budget", decision.measuredBudget},
+                       {"overflow_pixels", decision.overflowPixels}, {"repacks", decision.repacks},
+                       {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
 
     if (renderer.perSampleIndices() && !dumpDir.empty())
@@ -229,7 +246,13 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     artefacts.lightCounts = renderer.readLightCounts();
     artefacts.camera = cameraMatrices(scene.camera, scene.width, scene.height);
     artefacts.lights = lights;
-    artefacts.drawOrder = LidrRenderer::drawOrder(lights);
+    if (!renderer.frameLightIndices().empty()) {
+        // Compact numbering: the dump holds the frame's own light table (index k is entry k), so that an outside
+        // decoder reads it as it reads any frame.
+        artefacts.lights.clear();
+        for (uint32_t sceneIndex : renderer.frameLightIndices()) artefacts.lights.push_back(lights[sceneIndex - 1]);
+    }
+    artefacts.drawOrder = LidrRenderer::drawOrder(artefacts.lights);
 
     if (withReference) {
         ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(lights.size()),
@@ -254,9 +277,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
             std::vector<int> truthCounts(ev.truth.surface.size());
             for (size_t p = 0; p < truthCounts.size(); ++p) truthCounts[p] = ev.truth.count(p);
             writePng(path(outDir, "overlap.png"),
-                     overlapHeatMap(scene.width, scene.height, truthCounts, options.packing.budget, &ev.truth.surface));
+                     overlapHeatMap(scene.width, scene.height, truthCounts, budget, &ev.truth.surface));
             writePng(path(outDir, "marked.png"),
-                     overlapHeatMap(scene.width, scene.height, ev.marked, options.packing.budget, &ev.truth.surface));
+                     overlapHeatMap(scene.width, scene.height, ev.marked, budget, &ev.truth.surface));
             summary["lights"] = {{"visible_lights", stats.drawnLights},
                                  {"max_overlap_touching", ev.maxTruthOverlap},
                                  {"max_marked_by_volume_test", ev.maxMarked},
@@ -282,6 +305,20 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
+    if (decision.autoBudget || decision.autoIndexBits) {
+        s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
+          << (decision.autoIndexBits ? " (narrowest)" : " (fixed)") << ", budget " << decision.budget;
+        if (decision.autoBudget)
+            s << " (measured: " << (decision.measuredBudget ? "overlap fits " + std::to_string(decision.measuredBudget)
+                                                            : "overlap above 16, " + std::to_string(decision.overflowPixels) +
+                                                                  " pixels over")
+              << ", repacked " << decision.repacks << "x)";
+        else
+            s << " (fixed)";
+        if (renderer.drawsTransparency())
+            s << ", transparent volume pass " << (stats.transparentVolumePassSkipped ? "skipped (none in view)" : "drawn");
+        s << "\n";
+    }
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";

@@ -20,9 +20,19 @@ string(JSON psnr GET "${summary}" error pixels_within_budget psnr_db)
 if(NOT lights EQUAL 255 OR NOT invalid EQUAL 0 OR psnr LESS 50)
   message(FATAL_ERROR "summary out of bounds: lights ${lights}, invalid slots ${invalid}, PSNR within budget ${psnr}")
 endif()
+# The defaults are automatic and accurate on the whole image (issue 12): nothing dropped, PSNR >= 50 dB.
+string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
+string(JSON auto_budget GET "${summary}" auto budget)
+string(JSON auto_bits GET "${summary}" auto index_bits)
+string(JSON auto_on GET "${summary}" auto budget_automatic)
+if(NOT dropped EQUAL 0 OR whole_psnr LESS 50 OR NOT auto_on STREQUAL "ON" OR auto_budget LESS 1 OR NOT auto_bits EQUAL 8)
+  message(FATAL_ERROR "default run: dropped ${dropped}, whole-image PSNR ${whole_psnr}, automatic ${auto_on}, "
+                      "budget ${auto_budget}, ${auto_bits}-bit")
+endif()
 
 # The other render modes: their image, the reference and, for tiled, the tile heat map; tiled must miss no light.
-foreach(mode tiled forward-multipass forward-brute)
+foreach(mode tiled forward-multipass forward-brute auto)
   execute_process(COMMAND ${DEMO} --headless --mode ${mode} --width 160 --height 120 --frames 1 --out ${OUT}/${mode}
                   RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message("${out}${err}")
@@ -84,7 +94,10 @@ set(bad_values
   "--msaa|-1@--msaa must be 0 \\(off\\) or a power of two.*got -1"
   "--width|16384|--height|16384|--msaa|8@need about [0-9]+ MiB.*the limit is 2048 MiB"
   "--scene|/dev/null@/dev/null: scene file is not a regular file"
-  "--scene|${OUT}@scene file is a directory")
+  "--scene|${OUT}@scene file is a directory"
+  "--scheme|auto|--budget|4@--scheme auto chooses the budget and the index width itself"
+  "--index-bits|12@--index-bits must be auto, 4, 8, 16.*got '12'"
+  "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16")
 foreach(entry IN LISTS bad_values)
   string(REPLACE "@" ";" parts "${entry}")
   list(GET parts 0 args)

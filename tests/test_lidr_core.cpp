@@ -90,11 +90,15 @@ TEST_CASE("LIDR matches the brute-force reference on the default room wherever o
     o.height = testHeight();
     o.time = 2.0f;
     const Scene scene = makeDefaultScene(o);
-    LidrOptions options;  // bitshift, budget 4, 8-bit, back-face test
+    LidrOptions options;  // the defaults: automatic budget and width, sphere test
     const RenderResult r = renderAndEvaluate(scene, options);
     requireMatchesReference(r);
     CHECK(r.stats.drawnLights > 0);
     CHECK(r.evaluation.maxTruthOverlap >= 1);
+    // Issue 12: the defaults drop nothing on the room and stay above 50 dB on the whole image.
+    REQUIRE(r.evaluation.lists.droppedLightPixels == 0);
+    REQUIRE(r.evaluation.error.psnr >= 50.0);
+    REQUIRE(r.stats.autoDecision.budget >= r.evaluation.maxTruthOverlap);
 }
 
 TEST_CASE("LIDR matches the reference on the default room with the exact stencil volume test", "[lidr][exact]") {
@@ -325,13 +329,15 @@ TEST_CASE("every GL object is released with its renderer", "[lidr][resources]") 
 TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     Scene scene = floorScene();
     for (int i = 0; i < 256; ++i) scene.lights.push_back(light(glm::vec3(0.0f), 1.0f));
-    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, LidrOptions{}, scene.width, scene.height),
+    LidrOptions eightBit;  // a fixed width (the automatic one takes 16 bits here)
+    eightBit.packing = {"bitshift", 4, 8};
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, eightBit, scene.width, scene.height),
                         Catch::Contains("256 lights") && Catch::Contains("255"));
     scene.lights.resize(10);
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, LidrOptions{}, 0, 100), Error);
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, LidrOptions{}, 1 << 20, 100), Catch::Contains("exceeds"));
     LidrOptions unsupported;
-    unsupported.packing.budget = 3;
+    unsupported.packing = {"bitshift", 3, 8};
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, unsupported, scene.width, scene.height), UnsupportedError);
     unsupported.packing.budget = 4;
     unsupported.packing.scheme = "nonsense";
@@ -342,7 +348,7 @@ TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     REQUIRE_THROWS_WITH(LidrRenderer(noFbo, scene, LidrOptions{}, scene.width, scene.height),
                         Catch::Contains("framebuffer objects"));
     // A frame with more lights than the width holds is refused too (the constructor saw fewer).
-    LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
+    LidrRenderer renderer(testGl(), scene, eightBit, scene.width, scene.height);
     std::vector<PointLight> tooMany(300, light(glm::vec3(0.0f), 1.0f));
     REQUIRE_THROWS_WITH(renderer.render(scene.camera, tooMany, {}), Catch::Contains("300 lights"));
     REQUIRE(glGetError() == GL_NO_ERROR);

@@ -22,7 +22,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.truth = computeCoverage(t.readDepth(), cam, lights);
     e.maxTruthOverlap = e.truth.maxOverlap();
     e.lists = checkIndexLists(e.truth, renderer.scheme(), renderer.readIndexTargets(),
-                              static_cast<uint32_t>(lights.size()));
+                              static_cast<uint32_t>(lights.size()), renderer.frameLightIndices());
     const std::vector<uint8_t> counts = renderer.readLightCounts();
     const size_t n = size_t(t.width()) * t.height();
     e.marked.assign(n, 0);

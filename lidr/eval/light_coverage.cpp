@@ -120,7 +120,8 @@ std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& 
 }
 
 ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
-                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount) {
+                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount,
+                          const std::vector<uint32_t>& sceneIndexOf) {
     const int targets = scheme.targetCount();
     if (static_cast<int>(indexTargets.size()) != targets) throw Error("checkIndexLists: wrong number of targets");
     for (const auto& img : indexTargets)
@@ -134,8 +135,12 @@ ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& schem
         for (int t = 0; t < targets; ++t)
             std::copy_n(&indexTargets[t].pixels[p * 4], 4, &texels[size_t(t) * 4]);
         std::vector<uint32_t>& list = c.decoded[p];
-        for (uint32_t idx : scheme.decodePixel(texels.data()))
-            if (idx != 0) list.push_back(idx);
+        for (uint32_t idx : scheme.decodePixel(texels.data())) {
+            if (idx == 0) continue;
+            // Compact numbering: back to scene indices (an index past the frame's lights stays invalid).
+            if (!sceneIndexOf.empty()) idx = idx <= sceneIndexOf.size() ? sceneIndexOf[idx - 1] : lightCount + 1;
+            list.push_back(idx);
+        }
         c.slotsUsed += static_cast<long>(list.size());
         c.maxSlotsUsed = std::max(c.maxSlotsUsed, static_cast<int>(list.size()));
         std::vector<uint32_t> sorted = list;

@@ -47,7 +47,10 @@ struct ListCheck {
 };
 
 // Decodes every pixel of the index targets with the scheme's CPU model and checks it against the truth.
+// sceneIndexOf: the frame's compact numbering (LidrRenderer::frameLightIndices); empty when indices are the
+// scene's own.
 ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
-                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount);
+                          const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount,
+                          const std::vector<uint32_t>& sceneIndexOf = {});
 
 }  // namespace lidr

@@ -3,12 +3,13 @@
 #include <algorithm>
 
 #include "lidr/base/error.h"
+#include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/reference_renderer.h"
 
 namespace lidr {
 
 const std::vector<std::string>& renderModeNames() {
-    static const std::vector<std::string> names = {"lidr", "tiled", "forward-multipass", "forward-brute"};
+    static const std::vector<std::string> names = {"lidr", "tiled", "forward-multipass", "forward-brute", "auto"};
     return names;
 }
 
@@ -48,6 +49,7 @@ std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInf
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable,
                                                    o.msaaSamples, o.transparency);
+    if (o.mode == "auto") return std::make_unique<AutoModeRenderer>(info, scene, o, width, height);
     throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Choosing a render mode by name: "lidr", "tiled", "forward-multipass", "forward-brute". lidr-demo's --mode
+// Choosing a render mode by name: "lidr", "tiled", "forward-multipass", "forward-brute", or "auto" (the fastest
+// of the first three, measured: lidr/modes/auto_mode_renderer.h). lidr-demo's --mode
 // and a scene file's "mode" key both come through here, so every mode is built the same way everywhere.
 #include <memory>
 #include <string>

@@ -16,6 +16,17 @@ struct ShadingParameters {
     glm::vec3 background{0.0f};
 };
 
+// What LIDR's automatic configuration chose for a frame (zeros in other modes and for fixed choices).
+struct AutoDecision {
+    bool autoBudget = false, autoIndexBits = false;
+    int budget = 0;          // packed with (after any re-pack)
+    int indexBits = 0;
+    int visibleLights = 0;   // lights given an index this frame
+    int measuredBudget = 0;  // the smallest budget that dropped nothing, measured (0: more than 16 overlap)
+    long overflowPixels = 0; // pixels whose overlap exceeded the final budget (nonzero only above 16)
+    int repacks = 0;         // volume passes drawn again this frame with a larger budget
+};
+
 struct FrameStats {
     std::vector<PassTime> passes;  // in order; frame time is their sum
     const char* timingMethod = "";
@@ -23,6 +34,8 @@ struct FrameStats {
     int drawnLights = 0;  // lights the frame used after culling
     long volumeDrawCalls = 0;
     int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
+    bool transparentVolumePassSkipped = false;  // LIDR: no transparent surface in view, no pass drawn
+    AutoDecision autoDecision;
     // Timing (Renderer::setTiming): `passes` belong to the frame this many frames before this one (deferred
     // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.
     int timingLag = 0;

@@ -12,7 +12,9 @@
 namespace lidr {
 
 namespace {
-std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+// Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
+// an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
+PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
                     " volume test needs the depth pre-pass; only frontface may skip it");
@@ -37,35 +39,77 @@ std::unique_ptr<PackingScheme> checkedScheme(const GlInfo& info, const Scene& sc
     if (o.perSampleIndices && !o.depthPrepass)
         throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
     checkSamples(info, o.msaaSamples);
-    auto scheme = createPackingScheme(o.packing, info);
-    if (scene.lights.size() > scheme->maxLights())
+
+    PackingConfig c = o.packing;
+    if (c.autoScheme()) {
+        if (c.budget != PackingConfig::kAuto || c.indexBits != PackingConfig::kAuto)
+            throw Error("the auto scheme chooses the budget and the index width itself (got budget " +
+                        std::to_string(c.budget) + ", " + std::to_string(c.indexBits) +
+                        "-bit): leave both automatic, or name a scheme (bitshift, max-stencil, cpu-sorted) to fix them");
+        c.scheme = "bitshift";
+    }
+    if (c.budget == PackingConfig::kAuto && c.scheme != "bitshift")
+        throw Error("an automatic budget is measured from the stencil count of bit-shift packing; " + c.scheme +
+                    " needs a fixed budget (1, 2, 4, 8 or 16)");
+    if (o.autoHoldFrames < 0 || o.autoHoldFrames > 100000)
+        throw Error("autoHoldFrames must be in [0, 100000], got " + std::to_string(o.autoHoldFrames));
+    const int sceneLights = static_cast<int>(scene.lights.size());
+    if (c.indexBits == PackingConfig::kAuto) {
+        if (sceneLights > 65535)
+            throw Error("scene has " + std::to_string(sceneLights) + " lights; lidr indexes at most 65,535");
+        c.indexBits = AutoConfiguration::indexBitsFor(sceneLights);
+    }
+    if (c.budget == PackingConfig::kAuto) c.budget = AutoConfiguration::kInitialBudget;
+    const auto scheme = createPackingScheme(c, info);  // names what the context or the config lacks
+    if (!o.packing.autoIndexBits() && scene.lights.size() > scheme->maxLights())
         throw Error("scene has " + std::to_string(scene.lights.size()) + " lights but " +
-                    std::to_string(o.packing.indexBits) + "-bit indices hold at most " +
-                    std::to_string(scheme->maxLights()) + " (choose a wider index)");
-    return scheme;
+                    std::to_string(c.indexBits) + "-bit indices hold at most " +
+                    std::to_string(scheme->maxLights()) + " (choose a wider index, or an automatic one)");
+    return c;
+}
+
+// The largest budget an automatic configuration may use: 16 where the context can bind its targets at the
+// widest index the frame may need.
+int largestBudget(const GlInfo& info, const PackingConfig& c, int widestBits) {
+    for (int b : {16, 8, 4, 2, 1}) {
+        try {
+            createPackingScheme({c.scheme, b, widestBits}, info);
+            return b;
+        } catch (const UnsupportedError&) {
+        }
+    }
+    throw UnsupportedError("no budget of bit-shift packing fits this context at " + std::to_string(widestBits) + "-bit");
+}
+
+int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingConfig& first) {
+    if (!o.packing.autoIndexBits()) return static_cast<int>((1u << first.indexBits) - 1u);
+    // Compact numbering: never more than the scene's lights (the 8-bit table's one row at least).
+    return std::max<int>(255, static_cast<int>(scene.lights.size()));
 }
 }  // namespace
 
 LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height)
     : options_(options),
-      scheme_(checkedScheme(info, scene, options)),
+      info_(info),
       scene_(scene),
       targets_(info, width, height, options.msaaSamples),
-      indexTargets_(scheme_->targetCount(), width, height,
-                    options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
-                    options.perSampleIndices ? options.msaaSamples : 0),
-      lightTable_(info, static_cast<int>(scheme_->maxLights()), options.forceFixedLightTable),
       volumePass_(info, options.volumeTest, options.volumeDetail),
-      forwardPass_(*scheme_, lightTable_, options.perSampleIndices, options.materialShader),
       timer_(info, options.timingMethod) {
+    const PackingConfig first = checkedPacking(info, scene, options);
+    lightTable_ = LightTable(info, lightTableCapacity(scene, options, first), options.forceFixedLightTable);
+    if (options.packing.autoBudget()) {
+        const int widest = options.packing.autoIndexBits()
+                               ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
+                               : first.indexBits;
+        auto_ = AutoConfiguration(largestBudget(info, first, widest), options.autoHoldFrames);
+        probe_ = OverlapProbe(info);
+    } else {
+        auto_ = AutoConfiguration(16, options.autoHoldFrames);
+    }
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
     bool needsDepthTexture = isShaderVolumeTest(options.volumeTest);
     if (drawTransparent_ && !isFrontFaceVolumeTest(options.volumeTest)) {
-        transparentIndexTargets_ =
-            IndexTargets(scheme_->targetCount(), width, height,
-                         options.perSampleIndices ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
-                         options.perSampleIndices ? options.msaaSamples : 0);
         // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
         const VolumeTest front = options.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
         transparentVolumePass_ = LightVolumePass(info, front, options.volumeDetail);
@@ -73,10 +117,47 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     }
     if (needsDepthTexture)
         depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+    selectVariant(first.budget, first.indexBits);
+}
+
+LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
+    Variant& v = variants_[{budget, indexBits}];
+    if (!v.scheme) {
+        PackingConfig c = options_.packing;
+        if (c.autoScheme()) c.scheme = "bitshift";
+        c.budget = budget;
+        c.indexBits = indexBits;
+        v.scheme = createPackingScheme(c, info_);
+        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices, options_.materialShader);
+    }
+    return v;
+}
+
+IndexTargets& LidrRenderer::indexTargetsFor(std::map<int, IndexTargets>& cache, int count) {
+    auto it = cache.find(count);
+    if (it == cache.end()) {
+        const bool perSample = options_.perSampleIndices;
+        it = cache.emplace(count, IndexTargets(count, targets_.width(), targets_.height(),
+                                               perSample ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+                                               perSample ? options_.msaaSamples : 0)).first;
+    }
+    return it->second;
+}
+
+void LidrRenderer::selectVariant(int budget, int indexBits) {
+    current_ = &variant(budget, indexBits);
+    const int count = current_->scheme->targetCount();
+    indexTargets_ = &indexTargetsFor(indexTargetCache_, count);
+    if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest))
+        transparentIndexTargets_ = &indexTargetsFor(transparentTargetCache_, count);
+}
+
+size_t LidrRenderer::lightDataBytes() const {
+    return indexTargets_->bytes() + (transparentIndexTargets_ ? transparentIndexTargets_->bytes() : 0);
 }
 
 const IndexTargets& LidrRenderer::transparentIndexTargets() const {
-    return transparentIndexTargets_.count() > 0 ? transparentIndexTargets_ : indexTargets_;
+    return transparentIndexTargets_ ? *transparentIndexTargets_ : *indexTargets_;
 }
 
 std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lights) {
@@ -91,23 +172,43 @@ std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lig
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
     const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
-    if (lights.size() > scheme_->maxLights())
-        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string(scheme_->maxLights()) +
-                    " that " + std::to_string(options_.packing.indexBits) + "-bit indices hold");
+    const bool autoBits = options_.packing.autoIndexBits(), autoBudget = options_.packing.autoBudget();
+    const PackingConfig& fixed = options_.packing;
+    if (!autoBits && lights.size() > (1u << fixed.indexBits) - 1u)
+        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +
+                    " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = static_cast<int>(lights.size());
 
     timer_.begin("light-table");
-    lightTable_.update(lights);
+    // Lights that cannot touch a visible surface get no index: outside the view frustum, or touching no
+    // mesh's bounds. With an automatic width the rest are numbered 1..n in draw order and only they go into
+    // the light table.
     std::vector<VolumeLight> volumes;
+    std::vector<PointLight> tableLights;
+    frameLights_.clear();
     for (uint32_t index : drawOrder(lights)) {
         const PointLight& l = lights[index - 1];
-        if (options_.cullLights && !sphereMayBeVisible(cam, l.position, l.radius)) continue;
-        volumes.push_back({index, glm::vec4(l.position, l.radius)});
+        const glm::vec4 posRadius(l.position, l.radius);
+        if (options_.cullLights && (!sphereMayBeVisible(cam, l.position, l.radius) || !touchesScene(posRadius)))
+            continue;
+        if (autoBits) {
+            tableLights.push_back(l);
+            frameLights_.push_back(index);
+            index = static_cast<uint32_t>(frameLights_.size());
+        }
+        volumes.push_back({index, posRadius});
     }
+    lightTable_.update(autoBits ? tableLights : lights);
     stats_.drawnLights = static_cast<int>(volumes.size());
+    AutoDecision& decision = stats_.autoDecision;
+    decision.autoBudget = autoBudget;
+    decision.autoIndexBits = autoBits;
+    decision.visibleLights = stats_.drawnLights;
+    const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
+    selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
     timer_.end();
 
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
@@ -134,34 +235,22 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         glClear(GL_DEPTH_BUFFER_BIT);
     }
 
-    if (transparentIndexTargets_.count() > 0) {
-        // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
-        // transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds: the
-        // lists outside stay empty, and no transparent surface reads them.
-        glm::ivec4 area(0);
-        std::vector<VolumeLight> reaching;
-        if (transparentScreenArea(cam, area))
-            for (const VolumeLight& v : volumes)
-                if (reachesTransparentMesh(v)) reaching.push_back(v);
-        stats_.transparentVolumeLights = static_cast<int>(reaching.size());
-        timer_.begin("light-volumes-transparent");
-        transparentVolumePass_.begin(transparentIndexTargets_, cam, &depthTexture_);
-        if (!reaching.empty()) {
-            const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
-            transparentVolumePass_.setScissor(&box);
-            scheme_->encode(transparentVolumePass_, reaching);
-            transparentVolumePass_.setScissor(nullptr);
-        }
-        transparentVolumePass_.end();
-        timer_.end();
+    // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
+    // packed with is packed again, at once, with the smallest budget that holds it (doc/auto.md).
+    for (;;) {
+        const int need = drawVolumes(cam, volumes);
+        if (!autoBudget) break;
+        decision.measuredBudget = need;
+        const int repack = auto_.observeNeed(need);
+        if (repack == 0) break;
+        ++decision.repacks;
+        selectVariant(repack, bits);
     }
-
-    timer_.begin("light-volumes");
-    volumePass_.begin(indexTargets_, cam, &depthTexture_);
-    scheme_->encode(volumePass_, volumes);
-    volumePass_.end();
+    decision.budget = current_->scheme->config().budget;
+    for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
+        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = pixelsAbove_[i];
+    decision.indexBits = current_->scheme->config().indexBits;
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
-    timer_.end();
 
     const bool multisampled = targets_.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
@@ -172,12 +261,12 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     }
 
     timer_.begin("forward");
-    forwardPass_.run(targets_, indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass);
+    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass);
     timer_.end();
 
     if (drawTransparent_) {
         timer_.begin("forward-transparent");
-        forwardPass_.runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
+        current_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
         timer_.end();
     }
     targets_.resolve(timer_);
@@ -187,6 +276,53 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("LidrRenderer::render");
     return stats_;
+}
+
+int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes) {
+    const bool measure = options_.packing.autoBudget();
+    int need = 1;
+    pixelsAbove_.fill(0);
+    auto measured = [&](const glm::ivec4* scissor) {
+        probe_.issue(scissor);
+        const auto above = probe_.pixelsAbove();
+        for (size_t i = 0; i < above.size(); ++i) pixelsAbove_[i] += above[i];
+        const int n = OverlapProbe::smallestBudget(above);
+        need = (n == 0 || need == 0) ? 0 : std::max(need, n);
+    };
+    if (transparentIndexTargets_) {
+        // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
+        // transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds: the
+        // lists outside stay empty, and no transparent surface reads them.
+        glm::ivec4 area(0);
+        std::vector<VolumeLight> reaching;
+        const bool inView = transparentScreenArea(cam, area);
+        if (inView)
+            for (const VolumeLight& v : volumes)
+                if (reachesTransparentMesh(v)) reaching.push_back(v);
+        stats_.transparentVolumeLights = static_cast<int>(reaching.size());
+        stats_.transparentVolumePassSkipped = reaching.empty();
+        timer_.begin("light-volumes-transparent");
+        transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
+        if (!reaching.empty()) {
+            const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
+            transparentVolumePass_.setScissor(&box);
+            current_->scheme->encode(transparentVolumePass_, reaching);
+            transparentVolumePass_.setScissor(nullptr);
+            transparentVolumePass_.end();
+            if (measure) measured(&box);
+        } else {
+            transparentVolumePass_.end();
+        }
+        timer_.end();
+    }
+
+    timer_.begin("light-volumes");
+    volumePass_.begin(*indexTargets_, cam, &depthTexture_);
+    current_->scheme->encode(volumePass_, volumes);
+    volumePass_.end();
+    if (measure) measured(nullptr);
+    timer_.end();
+    return need;
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
@@ -204,6 +340,15 @@ bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& 
     return any;
 }
 
+bool LidrRenderer::touchesScene(const glm::vec4& posRadius) const {
+    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+        glm::vec3 lo, hi;
+        scene_.batchBounds(b, lo, hi);
+        if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
+    }
+    return false;
+}
+
 bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
     for (size_t b = 0; b < scene_.batchCount(); ++b) {
         if (!scene_.batchTransparent(b)) continue;
@@ -216,10 +361,10 @@ bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
 
 std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
     std::vector<ImageRGBA8> out;
-    indexTargets_.framebuffer().bind();
-    for (int i = 0; i < indexTargets_.count(); ++i) {
+    indexTargets_->framebuffer().bind();
+    for (int i = 0; i < indexTargets_->count(); ++i) {
         glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
-        out.push_back(readPixelsRGBA8(indexTargets_.width(), indexTargets_.height()));
+        out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return out;

@@ -2,11 +2,16 @@
 // Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
 // (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file;
 // this class owns the frame: targets, light ordering, culling, timing, readback.
+#include <array>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lidr/render/depth_prepass.h"
+#include "lidr/technique/auto_configuration.h"
+#include "lidr/technique/overlap_probe.h"
 #include "lidr/technique/forward_pass.h"
 #include "lidr/gl/frame_timer.h"
 #include "lidr/render/gpu_scene.h"
@@ -19,7 +24,11 @@
 namespace lidr {
 
 struct LidrOptions {
+    // Default: automatic (bit-shift; budget measured per frame, the narrowest index width for the visible lights,
+    // renumbered compactly). A named scheme takes a fixed budget and width, either of which may stay kAuto.
     PackingConfig packing;
+    // Automatic choices widen at once and narrow after this many frames in a row that fit the narrower one.
+    int autoHoldFrames = AutoConfiguration::kDefaultHoldFrames;
     VolumeTest volumeTest = VolumeTest::Sphere;  // exact, batched (LightVolumePass)
     bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
     int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
@@ -53,14 +62,20 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
 
-    const PackingScheme& scheme() const { return *scheme_; }
+    // The scheme, index targets and light numbering of the last frame (with automatic choices they change).
+    const PackingScheme& scheme() const { return *current_->scheme; }
     const LidrOptions& options() const { return options_; }
     const RenderTargets& targets() const override { return targets_; }
     void setTiming(bool on, bool waitForResults = false) override {
         timer_.setEnabled(on);
         timer_.setWaitForResults(waitForResults);
     }
-    const IndexTargets& indexTargets() const { return indexTargets_; }
+    const IndexTargets& indexTargets() const { return *indexTargets_; }
+    // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
+    // index (1-based) of index k. Empty: indices are the scene's own.
+    const std::vector<uint32_t>& frameLightIndices() const { return frameLights_; }
+    // What the automatic configuration decided for the last frame.
+    const AutoDecision& autoDecision() const { return stats_.autoDecision; }
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
     bool drawsTransparency() const { return drawTransparent_; }
@@ -74,8 +89,8 @@ public:
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;
-    size_t indexMemoryBytes() const { return indexTargets_.bytes(); }
-    size_t lightDataBytes() const override { return indexTargets_.bytes() + transparentIndexTargets_.bytes(); }
+    size_t indexMemoryBytes() const { return indexTargets_->bytes(); }
+    size_t lightDataBytes() const override;
 
     // Lights in the order the volume pass draws them: priority high to low, then index low to high.
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
@@ -85,18 +100,37 @@ private:
     // seen; false when none can.
     bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
     bool reachesTransparentMesh(const VolumeLight& light) const;  // touches a transparent mesh's bounds
+    bool touchesScene(const glm::vec4& posRadius) const;           // reaches some mesh's bounds
+    // One packing of the frame: the scheme and its forward shader, built on first use and kept.
+    struct Variant {
+        std::unique_ptr<PackingScheme> scheme;
+        std::unique_ptr<ForwardPass> forward;
+    };
+    Variant& variant(int budget, int indexBits);
+    void selectVariant(int budget, int indexBits);  // current_ and the index targets for its target count
+    IndexTargets& indexTargetsFor(std::map<int, IndexTargets>& cache, int count);
+    // The volume passes (transparent lists first, then the main ones) with the current variant; with an
+    // automatic budget, the overlap each one measured: the smallest budget that drops nothing (0: none does).
+    int drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes);
+
     LidrOptions options_;
-    std::unique_ptr<PackingScheme> scheme_;
+    GlInfo info_;
+    std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
+    Variant* current_ = nullptr;
+    AutoConfiguration auto_;
+    OverlapProbe probe_;
+    std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
+    std::vector<uint32_t> frameLights_;
     GpuScene scene_;
     RenderTargets targets_;
-    IndexTargets indexTargets_;
-    IndexTargets transparentIndexTargets_;  // only when transparent layers need their own front-face lists
+    std::map<int, IndexTargets> indexTargetCache_, transparentTargetCache_;  // by target count
+    IndexTargets* indexTargets_ = nullptr;
+    IndexTargets* transparentIndexTargets_ = nullptr;  // when transparent layers need their own front-face lists
     gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;
     LightVolumePass transparentVolumePass_;
-    ForwardPass forwardPass_;
     FrameTimer timer_;
     bool drawTransparent_ = false;
 };

@@ -35,6 +35,9 @@ std::string PackingScheme::describe() const {
 std::vector<std::string> packingSchemeNames() { return {"bitshift", "max-stencil", "cpu-sorted"}; }
 
 std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info) {
+    if (config.autoScheme() || config.budget == PackingConfig::kAuto || config.indexBits == PackingConfig::kAuto)
+        throw Error("createPackingScheme: '" + config.scheme + "' budget " + std::to_string(config.budget) + ", " +
+                    std::to_string(config.indexBits) + "-bit is automatic; LidrRenderer resolves it per frame");
     if (config.scheme == "bitshift") return std::make_unique<BitShiftScheme>(config, info);
     if (config.scheme == "max-stencil" || config.scheme == "max") return std::make_unique<MaxStencilScheme>(config, info);
     if (config.scheme == "cpu-sorted" || config.scheme == "sorted") return std::make_unique<CpuSortedScheme>(config, info);

@@ -20,9 +20,14 @@
 namespace lidr {
 
 struct PackingConfig {
-    std::string scheme = "bitshift";
-    int budget = 8;      // light slots per pixel: 1, 2, 4, 8, 16 (8: the default room, 5 at most, loses none)
-    int indexBits = 8;   // 4 (15 lights), 8 (255), 16 (65,535)
+    static constexpr int kAuto = 0;
+    // "auto": bit-shift with the budget and the index width chosen per frame (LidrRenderer, doc/auto.md).
+    std::string scheme = "auto";
+    int budget = kAuto;     // light slots per pixel: 1, 2, 4, 8, 16, or kAuto (measured per frame; bitshift)
+    int indexBits = kAuto;  // 4 (15 lights), 8 (255), 16 (65,535), or kAuto (the narrowest for the visible lights)
+    bool autoScheme() const { return scheme == "auto"; }
+    bool autoBudget() const { return autoScheme() || budget == kAuto; }
+    bool autoIndexBits() const { return autoScheme() || indexBits == kAuto; }
 };
 
 // How a kind of hardware blends into an RGBA8 target (the CPU model's knobs).
@@ -96,7 +101,8 @@ protected:
 };
 
 // Throws UnsupportedError (before any drawing) for a budget or width the scheme cannot do, or a context
-// without what the scheme needs; the message lists what is valid.
+// without what the scheme needs; the message lists what is valid. The config must be concrete (no "auto",
+// no kAuto): LidrRenderer resolves those per frame.
 std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info);
 std::vector<std::string> packingSchemeNames();
 

@@ -1,0 +1,89 @@
+#include "lidr/modes/auto_mode_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/frame_timer.h"
+#include "lidr/scene/sphere_bounds.h"
+
+namespace lidr {
+
+namespace {
+int visibleLights(const Camera& camera, const std::vector<PointLight>& lights, int width, int height) {
+    const CameraMatrices cam = cameraMatrices(camera, width, height);
+    int n = 0;
+    for (const PointLight& l : lights) n += sphereMayBeVisible(cam, l.position, l.radius) ? 1 : 0;
+    return n;
+}
+}  // namespace
+
+AutoModeRenderer::AutoModeRenderer(const GlInfo& info, const Scene& scene, const RenderModeOptions& options, int width,
+                                   int height, const AutoModeOptions& autoOptions)
+    : options_(autoOptions) {
+    if (options_.trialFrames < 2 || options_.trialFrames > 100)
+        throw Error("auto mode: trial frames must be in [2, 100], got " + std::to_string(options_.trialFrames));
+    if (options_.remeasureFrames < 1) throw Error("auto mode: remeasureFrames must be >= 1");
+    if (!(options_.lightChange > 0.0)) throw Error("auto mode: lightChange must be > 0");
+    candidates_ = {"lidr", "tiled"};
+    // Multi-pass forward draws no transparent layers: a candidate only where none is drawn.
+    const bool transparentDrawn =
+        options.transparency && std::any_of(scene.meshes.begin(), scene.meshes.end(), [&](const Mesh& m) {
+            return m.material >= 0 && size_t(m.material) < scene.materials.size() &&
+                   scene.materials[size_t(m.material)].opacity < 1.0f;
+        });
+    if (!transparentDrawn && options.msaaSamples == 0)
+        candidates_.push_back("forward-multipass");
+    for (const std::string& mode : candidates_) {
+        RenderModeOptions o = options;
+        o.mode = mode;
+        renderers_.push_back(createRenderer(o, info, scene, width, height));
+    }
+    bestMs_.assign(candidates_.size(), 0.0);
+}
+
+const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                           const ShadingParameters& shading) {
+    const RenderTargets& t = renderers_[0]->targets();
+    const int visible = visibleLights(camera, lights, t.width(), t.height());
+    if (chosen_ >= 0) {
+        ++framesSinceChoice_;
+        const double change = std::abs(double(visible - lightsAtChoice_)) / std::max(1.0, double(lightsAtChoice_));
+        if (framesSinceChoice_ >= options_.remeasureFrames || change > options_.lightChange) {
+            chosen_ = -1;
+            trialCandidate_ = trialFrame_ = 0;
+            reason_ = "measuring";
+        }
+    }
+    if (chosen_ >= 0) {
+        last_ = chosen_;
+        stats_ = renderers_[size_t(chosen_)]->render(camera, lights, shading);
+        return stats_;
+    }
+
+    // A trial frame: the candidate's whole frame between two glFinish calls.
+    last_ = trialCandidate_;
+    glFinish();
+    const double start = nowMilliseconds();
+    stats_ = renderers_[size_t(trialCandidate_)]->render(camera, lights, shading);
+    glFinish();
+    const double ms = nowMilliseconds() - start;
+    if (trialFrame_ == 1 || (trialFrame_ > 1 && ms < bestMs_[size_t(trialCandidate_)])) bestMs_[size_t(trialCandidate_)] = ms;
+    if (++trialFrame_ == options_.trialFrames) {
+        trialFrame_ = 0;
+        if (++trialCandidate_ == int(candidates_.size())) {
+            chosen_ = int(std::min_element(bestMs_.begin(), bestMs_.end()) - bestMs_.begin());
+            framesSinceChoice_ = 0;
+            lightsAtChoice_ = visible;
+            std::ostringstream why;
+            why << candidates_[size_t(chosen_)] << " fastest in trial frames:";
+            for (size_t c = 0; c < candidates_.size(); ++c) why << " " << candidates_[c] << " " << bestMs_[c] << " ms";
+            why << " (" << visible << " lights in view)";
+            reason_ = why.str();
+        }
+    }
+    return stats_;
+}
+
+}  // namespace lidr

@@ -1,0 +1,56 @@
+#pragma once
+// --mode auto: picks, by measuring, the fastest of the modes that draw this scene the same way (LIDR with its
+// automatic configuration, tiled forward, and multi-pass forward where nothing transparent is drawn), and
+// measures again when the frame changes enough to move the answer (doc/auto.md).
+//
+// A cost model calibrated once would be wrong on the next machine (llvmpipe and a discrete GPU rank the modes
+// differently, doc/benchmarks.md), so the model is the machine itself: each candidate renders a few trial
+// frames timed with glFinish, the fastest is kept. Trial frames are ordinary frames (every candidate draws the
+// same image), so nothing is wasted but the glFinish.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lidr/modes/render_mode.h"
+
+namespace lidr {
+
+struct AutoModeOptions {
+    int trialFrames = 3;         // per candidate; the first is a warm-up (shader compiles, first uploads)
+    int remeasureFrames = 600;   // measure again after this many frames
+    double lightChange = 0.25;   // ... or when the visible lights change by this fraction since the choice
+};
+
+class AutoModeRenderer final : public Renderer {
+public:
+    AutoModeRenderer(const GlInfo& info, const Scene& scene, const RenderModeOptions& options, int width, int height,
+                     const AutoModeOptions& autoOptions = {});
+    std::string modeName() const override { return "auto"; }
+    const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading) override;
+    const RenderTargets& targets() const override { return renderers_[size_t(last_)]->targets(); }
+    size_t lightDataBytes() const override { return renderers_[size_t(last_)]->lightDataBytes(); }
+    void setTiming(bool on, bool waitForResults = false) override {  // every candidate's pass times
+        for (auto& r : renderers_) r->setTiming(on, waitForResults);
+    }
+
+    const std::vector<std::string>& candidates() const { return candidates_; }
+    // The mode the last frame was drawn with, and why ("measuring", or the trial times).
+    const std::string& lastMode() const { return candidates_[size_t(last_)]; }
+    const std::string& reason() const { return reason_; }
+    bool measuring() const { return chosen_ < 0; }
+    // The renderer of a candidate, to inspect (e.g. the LidrRenderer's decisions).
+    const Renderer& renderer(size_t candidate) const { return *renderers_[candidate]; }
+
+private:
+    AutoModeOptions options_;
+    std::vector<std::string> candidates_;
+    std::vector<std::unique_ptr<Renderer>> renderers_;
+    std::vector<double> bestMs_;
+    int chosen_ = -1, last_ = 0;
+    int trialCandidate_ = 0, trialFrame_ = 0;
+    int framesSinceChoice_ = 0, lightsAtChoice_ = 0;
+    std::string reason_ = "measuring";
+};
+
+}  // namespace lidr

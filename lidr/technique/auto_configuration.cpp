@@ -1,0 +1,62 @@
+#include "lidr/technique/auto_configuration.h"
+
+#include <algorithm>
+
+#include "lidr/base/error.h"
+
+namespace lidr {
+
+AutoConfiguration::AutoConfiguration(int maxBudget, int holdFrames) : maxBudget_(maxBudget), holdFrames_(holdFrames) {
+    if (maxBudget < 1 || maxBudget > 16 || (maxBudget & (maxBudget - 1)) != 0)
+        throw Error("automatic budget: the largest budget must be 1, 2, 4, 8 or 16, got " + std::to_string(maxBudget));
+    if (holdFrames < 0) throw Error("automatic configuration: hold frames must be >= 0");
+    budget_ = std::min(kInitialBudget, maxBudget_);
+}
+
+int AutoConfiguration::indexBitsFor(int visibleLights) {
+    if (visibleLights < 0) throw Error("automatic index width: negative light count");
+    if (visibleLights <= 15) return 4;
+    if (visibleLights <= 255) return 8;
+    if (visibleLights <= 65535) return 16;
+    throw Error(std::to_string(visibleLights) + " visible lights exceed the 65,535 that 16-bit indices hold");
+}
+
+int AutoConfiguration::chooseIndexBits(int visibleLights) {
+    const int need = indexBitsFor(visibleLights);
+    if (bits_ == 0 || need >= bits_) {
+        bits_ = need;
+        bitsLowFrames_ = 0;
+        return bits_;
+    }
+    bitsLowMax_ = bitsLowFrames_ == 0 ? need : std::max(bitsLowMax_, need);
+    if (++bitsLowFrames_ >= holdFrames_) {
+        bits_ = bitsLowMax_;
+        bitsLowFrames_ = 0;
+    }
+    return bits_;
+}
+
+int AutoConfiguration::observeNeed(int need) {
+    const bool overflow = need == 0 || need > budget_;
+    const int target = need == 0 ? maxBudget_ : std::min(need, maxBudget_);
+    if (!measured_) {
+        measured_ = true;
+        const int repack = overflow && target > budget_ ? target : 0;
+        budget_ = target;
+        return repack;
+    }
+    if (target >= budget_) {
+        budgetLowFrames_ = 0;
+        const int repack = overflow && target > budget_ ? target : 0;
+        budget_ = target;
+        return repack;
+    }
+    budgetLowMax_ = budgetLowFrames_ == 0 ? target : std::max(budgetLowMax_, target);
+    if (++budgetLowFrames_ >= holdFrames_) {
+        budget_ = budgetLowMax_;
+        budgetLowFrames_ = 0;
+    }
+    return 0;
+}
+
+}  // namespace lidr

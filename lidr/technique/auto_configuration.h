@@ -1,0 +1,43 @@
+#pragma once
+// The automatic configuration of LIDR (doc/auto.md): what each frame needs, decided from what it holds.
+// - Index width: the narrowest (4, 8 or 16 bits) that holds the frame's visible lights, which are numbered
+//   compactly in draw order (the light table holds only them).
+// - Budget: the smallest of 1, 2, 4, 8, 16 that drops nothing, measured on the GPU after the volume pass
+//   (OverlapProbe). A frame that needs more than it was packed with is packed again at once, the same frame.
+// Both widen at once and narrow only after `holdFrames` frames in a row that would all fit the narrower
+// choice, so a camera moving through the scene does not flip them every frame. The first measurement is
+// taken as it is (no history to hold against).
+#include <string>
+
+namespace lidr {
+
+class AutoConfiguration {
+public:
+    static constexpr int kDefaultHoldFrames = 8;
+    static constexpr int kInitialBudget = 4;
+    explicit AutoConfiguration(int maxBudget = 16, int holdFrames = kDefaultHoldFrames);
+
+    // The narrowest width that holds `visibleLights` lights: 4 up to 15, 8 up to 255, 16 up to 65,535; throws
+    // lidr::Error above.
+    static int indexBitsFor(int visibleLights);
+
+    // The width for this frame's visible lights (widens at once, narrows after the hold).
+    int chooseIndexBits(int visibleLights);
+    // The budget to pack this frame with: the last decision (kInitialBudget before any measurement).
+    int budget() const { return budget_; }
+    // After the volume pass: `need` is the smallest budget that drops nothing (0: more than the largest).
+    // Returns the budget to re-pack this frame with when the frame overflowed and a larger budget exists;
+    // 0 when the frame stands as packed.
+    int observeNeed(int need);
+    int maxBudget() const { return maxBudget_; }
+    int holdFrames() const { return holdFrames_; }
+
+private:
+    int maxBudget_, holdFrames_;
+    int budget_ = kInitialBudget, bits_ = 0;
+    bool measured_ = false;
+    int budgetLowFrames_ = 0, budgetLowMax_ = 0;  // frames in a row that needed less, and the most they needed
+    int bitsLowFrames_ = 0, bitsLowMax_ = 0;
+};
+
+}  // namespace lidr

@@ -1,0 +1,68 @@
+#include "lidr/technique/overlap_probe.h"
+
+#include "lidr/base/error.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+constexpr std::array<int, OverlapProbe::kThresholds> OverlapProbe::kThreshold;
+
+OverlapProbe::OverlapProbe(const GlInfo&) {
+    // Occlusion queries are GL 1.5 core, inside lidr's GL 2.1 floor.
+    program_ = gl::Program::create("overlap-probe", buildShaderSource("fullscreen.vert"),
+                                   buildShaderSource("overlap_probe.frag"), {{"aPosition", gl::kPosition}});
+    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
+    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    for (gl::Object& q : queries_) q = gl::Object(gl::Kind::Query);
+    checkGl("OverlapProbe");
+}
+
+void OverlapProbe::issue(const glm::ivec4* scissor) {
+    if (!program_) throw Error("OverlapProbe used before it was created");
+    RenderState s;
+    s.colorMask = glm::bvec4(false);
+    s.stencilTest = true;
+    s.stencil.func = GL_LESS;  // passes where ref < count, i.e. count > threshold
+    s.stencil.readMask = 0xFF;
+    s.stencil.writeMask = 0;
+    if (scissor) {
+        s.scissor = true;
+        s.scissorBox = *scissor;
+    }
+    program_.use();
+    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
+    glEnableVertexAttribArray(gl::kPosition);
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    for (int i = 0; i < kThresholds; ++i) {
+        s.stencil.ref = kThreshold[size_t(i)];
+        applyRenderState(s);
+        glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glEndQuery(GL_SAMPLES_PASSED);
+        ++drawCalls_;
+    }
+    glDisableVertexAttribArray(gl::kPosition);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    issued_ = true;
+    checkGl("OverlapProbe::issue");
+}
+
+std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
+    if (!issued_) throw Error("OverlapProbe: no measurement issued");
+    std::array<long, kThresholds> above{};
+    for (int i = 0; i < kThresholds; ++i) {
+        GLuint n = 0;
+        glGetQueryObjectuiv(queries_[size_t(i)].id(), GL_QUERY_RESULT, &n);
+        above[size_t(i)] = static_cast<long>(n);
+    }
+    checkGl("OverlapProbe::pixelsAbove");
+    return above;
+}
+
+int OverlapProbe::smallestBudget(const std::array<long, kThresholds>& above) {
+    for (int i = 0; i < kThresholds; ++i)
+        if (above[size_t(i)] == 0) return kThreshold[size_t(i)];
+    return 0;
+}
+
+}  // namespace lidr
