@@ -28,4 +28,5 @@
 #include "lidr/render/renderer.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/eval/image_compare.h"
