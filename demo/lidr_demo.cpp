@@ -235,6 +235,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"visible_lights", decision.visibleLights}, {"budget", decision.budget},
                        {"index_bits", decision.indexBits}, {"measured_budget", decision.measuredBudget},
                        {"overflow_pixels", decision.overflowPixels}, {"repacks", decision.repacks},
+                       {"transparent_budget", decision.transparentBudget},
+                       {"measured_transparent_budget", decision.measuredTransparentBudget},
                        {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
 
@@ -316,7 +318,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         else
             s << " (fixed)";
         if (renderer.drawsTransparency())
-            s << ", transparent volume pass " << (stats.transparentVolumePassSkipped ? "skipped (none in view)" : "drawn");
+            s << ", transparent volume pass "
+              << (stats.transparentVolumePassSkipped ? std::string("skipped (none in view)")
+                                                     : "budget " + std::to_string(decision.transparentBudget));
         s << "\n";
     }
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";

@@ -2,6 +2,7 @@
 // the measured budget equals the controlled overlap, compact numbering gives the narrowest width, a frame
 // that needs more than it was packed with is re-packed at once, and nothing is dropped.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -9,6 +10,7 @@
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/controlled_scenes.h"
+#include "lidr/scene/default_scene.h"
 #include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/scene/primitives.h"
@@ -83,6 +85,14 @@ TEST_CASE("auto: the smallest budget no pixel exceeds, from the probe's counts",
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 0, 0}) == 8);
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 2, 0}) == 16);
     REQUIRE(OverlapProbe::smallestBudget(A{50, 9, 3, 2, 1}) == 0);
+    // Steady frames measure two thresholds (-1: not measured).
+    REQUIRE(OverlapProbe::aroundBudget(8) == 0b01100u);
+    REQUIRE(OverlapProbe::aroundBudget(1) == 0b00001u);
+    REQUIRE(OverlapProbe::aboveBudget(4) == 0b11000u);
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 0, 0, -1}) == 4);   // at most half the budget needed
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 0, -1}) == 8);   // the budget was right
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 3, -1}) == -1);  // over: ask the thresholds above
+    REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, -1, 9, 2}) == 0);
 }
 
 namespace {
@@ -197,12 +207,13 @@ TEST_CASE("auto: frames follow the scene without dropping a light, and narrow on
     LidrRenderer renderer(testGl(), eight, options, eight.width, eight.height);
     ReferenceRenderer reference(testGl(), eight, eight.width, eight.height, 255);
     const ShadingParameters shading{eight.ambient, eight.backgroundColor};
-    // 8 overlapping, then 2 for five frames, then 8 again: 8 is held for three frames, then 2; the return to 8
-    // is re-packed in its own frame.
-    const int sequence[] = {8, 2, 2, 2, 2, 2, 8, 8};
-    const int expectBudget[] = {8, 8, 8, 8, 2, 2, 8, 8};
-    const int expectRepacks[] = {1, 0, 0, 0, 0, 0, 1, 0};
-    for (int f = 0; f < 8; ++f) {
+    // 8 overlapping, then 2 for seven frames, then 8 again. Steady frames measure only "over the budget" and
+    // "over half of it", so the budget narrows one halving per hold: 8 for three frames, 4 for three, then 2;
+    // the return to 8 is re-packed in its own frame.
+    const int sequence[] = {8, 2, 2, 2, 2, 2, 2, 2, 8, 8};
+    const int expectBudget[] = {8, 8, 8, 8, 4, 4, 4, 2, 8, 8};
+    const int expectRepacks[] = {1, 0, 0, 0, 0, 0, 0, 0, 1, 0};
+    for (int f = 0; f < 10; ++f) {
         const Scene& s = sequence[f] == 8 ? eight : two;
         const std::vector<PointLight> lights = s.lightsAt(s.time);
         const FrameStats stats = renderer.render(s.camera, lights, shading);
@@ -292,4 +303,42 @@ TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candi
     REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates() == std::vector<std::string>{"lidr", "tiled"});
     o.transparency = false;
     REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates().size() == 3);
+}
+
+TEST_CASE("auto: a camera flying through the room, lights moving: no frame drops a light, no choice flips back "
+          "the next frame", "[render][auto]") {
+    testContext();
+    DefaultSceneOptions so;
+    so.width = testWidth();
+    so.height = testHeight();
+    const Scene scene = makeDefaultScene(so);
+    LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const int frames = isSoftpipe() ? 8 : 20;
+    std::vector<int> budgets, widths;
+    for (int f = 0; f < frames; ++f) {
+        const float s = float(f) / float(frames - 1);
+        Camera camera = scene.camera;  // from the doorway's view down into the room and round to the side
+        camera.position = glm::mix(glm::vec3(0.0f, 4.5f, 17.0f), glm::vec3(-4.0f, 1.6f, -2.0f), s);
+        camera.target = camera.position + glm::vec3(std::sin(2.5f * s), -0.25f * (1.0f - s), -std::cos(2.5f * s));
+        const std::vector<PointLight> lights = scene.lightsAt(1.0f + 0.4f * float(f));
+        const FrameStats stats = renderer.render(camera, lights, shading);
+        const ImageRGBA8 image = renderer.targets().readColor();
+        reference.render(camera, lights, shading);
+        const FrameEvaluation e = evaluateFrame(renderer, camera, lights, image, reference.targets().readColor());
+        INFO("frame " << f << ": " << stats.autoDecision.visibleLights << " lights in view, budget "
+                      << stats.autoDecision.budget << ", " << stats.autoDecision.indexBits << "-bit, max overlap "
+                      << e.maxTruthOverlap << ", dropped " << e.lists.droppedLightPixels);
+        REQUIRE(e.lists.droppedLightPixels == 0);
+        REQUIRE(e.lists.invalidSlots == 0);
+        REQUIRE(e.error.maxAbsError <= 1);
+        budgets.push_back(stats.autoDecision.budget);
+        widths.push_back(stats.autoDecision.indexBits);
+    }
+    // A change is kept at least one more frame: never A, B, A in three frames.
+    for (size_t f = 2; f < budgets.size(); ++f) {
+        REQUIRE_FALSE((budgets[f] == budgets[f - 2] && budgets[f] != budgets[f - 1]));
+        REQUIRE_FALSE((widths[f] == widths[f - 2] && widths[f] != widths[f - 1]));
+    }
 }

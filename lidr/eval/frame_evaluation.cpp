@@ -28,6 +28,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.marked.assign(n, 0);
     for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
     const int budget = renderer.scheme().config().budget;
+    const int transparentBudget = renderer.transparentScheme().config().budget;
     const bool wholeLights = !renderer.scheme().keepsFirstMarks();
     if (renderer.drawsTransparency())
         e.frontFaceMarked = frontFaceCounts(t.readDepth(), cam, lights, renderer.volumeOutsideRadii(lights));
@@ -38,13 +39,13 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     for (size_t p = 0; p < n; ++p) {
         if (!e.truth.surface[p]) {
             // Background: no opaque surface, but transparent layers in front of it read front-face lists.
-            e.withinBudget[p] = e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= budget;
+            e.withinBudget[p] = e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= transparentBudget;
             continue;
         }
         e.maxMarked = std::max(e.maxMarked, e.marked[p]);
         if (e.marked[p] > budget || (wholeLights && e.droppedMarks[p] > 0))
             ++e.pixelsOverBudget;
-        else if (e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= budget)
+        else if (e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= transparentBudget)
             e.withinBudget[p] = 1;
     }
     e.error = compareImages(image, reference);

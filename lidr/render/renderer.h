@@ -25,6 +25,8 @@ struct AutoDecision {
     int measuredBudget = 0;  // the smallest budget that dropped nothing, measured (0: more than 16 overlap)
     long overflowPixels = 0; // pixels whose overlap exceeded the final budget (nonzero only above 16)
     int repacks = 0;         // volume passes drawn again this frame with a larger budget
+    // The transparent layers' own front-face lists (0: none drawn this frame)
+    int transparentBudget = 0, measuredTransparentBudget = 0;
 };
 
 struct FrameStats {

@@ -30,6 +30,7 @@ public:
     // 0 when the frame stands as packed.
     int observeNeed(int need);
     int maxBudget() const { return maxBudget_; }
+    bool measured() const { return measured_; }  // a first measurement was taken
     int holdFrames() const { return holdFrames_; }
 
 private:

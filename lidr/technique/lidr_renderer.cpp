@@ -102,9 +102,10 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
                                : first.indexBits;
         auto_ = AutoConfiguration(largestBudget(info, first, widest), options.autoHoldFrames);
+        autoTransparent_ = auto_;
         probe_ = OverlapProbe(info);
     } else {
-        auto_ = AutoConfiguration(16, options.autoHoldFrames);
+        auto_ = autoTransparent_ = AutoConfiguration(16, options.autoHoldFrames);
     }
     timer_.setEnabled(options.timing);
     drawTransparent_ = options.transparency && scene_.hasTransparent();
@@ -118,6 +119,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     if (needsDepthTexture)
         depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
     selectVariant(first.budget, first.indexBits);
+    selectTransparentVariant(first.budget, first.indexBits);
 }
 
 LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
@@ -146,10 +148,17 @@ IndexTargets& LidrRenderer::indexTargetsFor(std::map<int, IndexTargets>& cache, 
 
 void LidrRenderer::selectVariant(int budget, int indexBits) {
     current_ = &variant(budget, indexBits);
-    const int count = current_->scheme->targetCount();
-    indexTargets_ = &indexTargetsFor(indexTargetCache_, count);
-    if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest))
-        transparentIndexTargets_ = &indexTargetsFor(transparentTargetCache_, count);
+    indexTargets_ = &indexTargetsFor(indexTargetCache_, current_->scheme->targetCount());
+    if (!transparentIndexTargets_) currentTransparent_ = current_;  // transparent layers read the main lists
+}
+
+void LidrRenderer::selectTransparentVariant(int budget, int indexBits) {
+    if (!(drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest))) {
+        currentTransparent_ = current_;
+        return;
+    }
+    currentTransparent_ = &variant(budget, indexBits);
+    transparentIndexTargets_ = &indexTargetsFor(transparentTargetCache_, currentTransparent_->scheme->targetCount());
 }
 
 size_t LidrRenderer::lightDataBytes() const {
@@ -209,6 +218,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     decision.visibleLights = stats_.drawnLights;
     const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
     selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
+    selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
     timer_.end();
 
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
@@ -237,18 +247,26 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
 
     // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
     // packed with is packed again, at once, with the smallest budget that holds it (doc/auto.md).
+    // The transparent lists have their own budget: a ray in front of a surface meets more lights than the
+    // surface does, and only the transparent layers read those lists.
     for (;;) {
-        const int need = drawVolumes(cam, volumes);
+        int need = 0, needTransparent = -1;
+        drawVolumes(cam, volumes, need, needTransparent);
         if (!autoBudget) break;
         decision.measuredBudget = need;
+        decision.measuredTransparentBudget = std::max(needTransparent, 0);
         const int repack = auto_.observeNeed(need);
-        if (repack == 0) break;
-        ++decision.repacks;
-        selectVariant(repack, bits);
+        const int repackTransparent = needTransparent >= 0 ? autoTransparent_.observeNeed(needTransparent) : 0;
+        if (repack == 0 && repackTransparent == 0) break;
+        ++decision.repacks;  // both passes again: the main pass's stencil counts must be the last ones drawn
+        if (repack) selectVariant(repack, bits);
+        if (repackTransparent) selectTransparentVariant(repackTransparent, bits);
     }
+    if (transparentIndexTargets_ && stats_.transparentVolumeLights > 0)
+        decision.transparentBudget = currentTransparent_->scheme->config().budget;
     decision.budget = current_->scheme->config().budget;
     for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
-        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = pixelsAbove_[i];
+        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
     decision.indexBits = current_->scheme->config().indexBits;
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
 
@@ -266,7 +284,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
 
     if (drawTransparent_) {
         timer_.begin("forward-transparent");
-        current_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
+        currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
         timer_.end();
     }
     targets_.resolve(timer_);
@@ -278,16 +296,32 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     return stats_;
 }
 
-int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes) {
+void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& need,
+                               int& needTransparent) {
     const bool measure = options_.packing.autoBudget();
-    int need = 1;
+    need = 1;
+    needTransparent = -1;
     pixelsAbove_.fill(0);
-    auto measured = [&](const glm::ivec4* scissor) {
-        probe_.issue(scissor);
-        const auto above = probe_.pixelsAbove();
-        for (size_t i = 0; i < above.size(); ++i) pixelsAbove_[i] += above[i];
-        const int n = OverlapProbe::smallestBudget(above);
-        need = (n == 0 || need == 0) ? 0 : std::max(need, n);
+    // Steady frames ask two questions: over the budget (re-pack), over half of it (may narrow). Only an
+    // overflowing frame asks how far over, and a renderer's first frame asks everything at once.
+    auto measured = [&](const glm::ivec4* transparentArea) {
+        const AutoConfiguration& a = transparentArea ? autoTransparent_ : auto_;
+        const int budget = (transparentArea ? currentTransparent_ : current_)->scheme->config().budget;
+        auto probe = [&](unsigned which) {
+            if (transparentArea)
+                probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, transparentArea);
+            else
+                probe_.issue(which);
+            return probe_.pixelsAbove();
+        };
+        auto above = probe(a.measured() ? OverlapProbe::aroundBudget(budget) : OverlapProbe::kAll);
+        if (OverlapProbe::smallestBudget(above) < 0) {
+            const auto more = probe(OverlapProbe::aboveBudget(budget));
+            for (size_t i = 0; i < above.size(); ++i)
+                if (more[i] >= 0) above[i] = more[i];
+        }
+        if (!transparentArea) pixelsAbove_ = above;
+        (transparentArea ? needTransparent : need) = OverlapProbe::smallestBudget(above);
     };
     if (transparentIndexTargets_) {
         // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
@@ -306,7 +340,7 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
         if (!reaching.empty()) {
             const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
             transparentVolumePass_.setScissor(&box);
-            current_->scheme->encode(transparentVolumePass_, reaching);
+            currentTransparent_->scheme->encode(transparentVolumePass_, reaching);
             transparentVolumePass_.setScissor(nullptr);
             transparentVolumePass_.end();
             if (measure) measured(&box);
@@ -322,7 +356,6 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
     volumePass_.end();
     if (measure) measured(nullptr);
     timer_.end();
-    return need;
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {

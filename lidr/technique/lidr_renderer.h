@@ -64,6 +64,9 @@ public:
 
     // The scheme, index targets and light numbering of the last frame (with automatic choices they change).
     const PackingScheme& scheme() const { return *current_->scheme; }
+    // The scheme of the transparent layers' own front-face lists (their budget is measured apart: a ray in front
+    // of a surface meets more lights than the surface does); scheme() where they read the main lists.
+    const PackingScheme& transparentScheme() const { return *currentTransparent_->scheme; }
     const LidrOptions& options() const { return options_; }
     const RenderTargets& targets() const override { return targets_; }
     void setTiming(bool on, bool waitForResults = false) override {
@@ -108,16 +111,19 @@ private:
     };
     Variant& variant(int budget, int indexBits);
     void selectVariant(int budget, int indexBits);  // current_ and the index targets for its target count
+    void selectTransparentVariant(int budget, int indexBits);  // the same for the transparent lists
     IndexTargets& indexTargetsFor(std::map<int, IndexTargets>& cache, int count);
-    // The volume passes (transparent lists first, then the main ones) with the current variant; with an
+    // The volume passes (transparent lists first, then the main ones) with the current variants; with an
     // automatic budget, the overlap each one measured: the smallest budget that drops nothing (0: none does).
-    int drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes);
+    // needTransparent: -1 where the transparent lists were not drawn (none separate, or none in view).
+    void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& need, int& needTransparent);
 
     LidrOptions options_;
     GlInfo info_;
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;
-    AutoConfiguration auto_;
+    Variant* currentTransparent_ = nullptr;
+    AutoConfiguration auto_, autoTransparent_;
     OverlapProbe probe_;
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
     std::vector<uint32_t> frameLights_;

@@ -3,6 +3,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/render/depth_prepass.h"
 
 namespace lidr {
 
@@ -12,13 +13,15 @@ OverlapProbe::OverlapProbe(const GlInfo&) {
     // Occlusion queries are GL 1.5 core, inside lidr's GL 2.1 floor.
     program_ = gl::Program::create("overlap-probe", buildShaderSource("fullscreen.vert"),
                                    buildShaderSource("overlap_probe.frag"), {{"aPosition", gl::kPosition}});
+    meshProgram_ = gl::Program::create("overlap-probe-meshes", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("overlap_probe.frag"), geometryAttributes());
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     for (gl::Object& q : queries_) q = gl::Object(gl::Kind::Query);
     checkGl("OverlapProbe");
 }
 
-void OverlapProbe::issue(const glm::ivec4* scissor) {
+RenderState OverlapProbe::stateFor(const glm::ivec4* scissor) const {
     if (!program_) throw Error("OverlapProbe used before it was created");
     RenderState s;
     s.colorMask = glm::bvec4(false);
@@ -30,11 +33,53 @@ void OverlapProbe::issue(const glm::ivec4* scissor) {
         s.scissor = true;
         s.scissorBox = *scissor;
     }
+    return s;
+}
+
+unsigned OverlapProbe::aroundBudget(int budget) {
+    unsigned m = 0;
+    for (int i = 0; i < kThresholds; ++i)
+        if (kThreshold[size_t(i)] == budget || 2 * kThreshold[size_t(i)] == budget) m |= 1u << i;
+    return m;
+}
+
+unsigned OverlapProbe::aboveBudget(int budget) {
+    unsigned m = 0;
+    for (int i = 0; i < kThresholds; ++i)
+        if (kThreshold[size_t(i)] > budget) m |= 1u << i;
+    return m;
+}
+
+void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera,
+                                   unsigned which, const glm::ivec4* scissor) {
+    RenderState s = stateFor(scissor);
+    s.depthTest = true;
+    s.depthFunc = GL_LEQUAL;  // visible in front of the opaque depth; several layers may count a pixel twice,
+                              // which changes no zero
+    meshProgram_.use();
+    meshProgram_.set("uViewProj", camera.viewProjection);
+    for (int i = 0; i < kThresholds; ++i) {
+        if (!(which & (1u << i))) continue;
+        s.stencil.ref = kThreshold[size_t(i)];
+        applyRenderState(s);
+        glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
+        scene.draw(meshProgram_, filter, false);
+        glEndQuery(GL_SAMPLES_PASSED);
+        ++drawCalls_;
+    }
+    applyRenderState(RenderState{});
+    issued_ = which;
+    checkGl("OverlapProbe::issueOverMeshes");
+}
+
+void OverlapProbe::issue(unsigned which, const glm::ivec4* scissor) {
+    RenderState s = stateFor(scissor);
     program_.use();
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     for (int i = 0; i < kThresholds; ++i) {
+        if (!(which & (1u << i))) continue;
         s.stencil.ref = kThreshold[size_t(i)];
         applyRenderState(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
@@ -44,7 +89,7 @@ void OverlapProbe::issue(const glm::ivec4* scissor) {
     }
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    issued_ = true;
+    issued_ = which;
     checkGl("OverlapProbe::issue");
 }
 
@@ -52,6 +97,8 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
     if (!issued_) throw Error("OverlapProbe: no measurement issued");
     std::array<long, kThresholds> above{};
     for (int i = 0; i < kThresholds; ++i) {
+        above[size_t(i)] = -1;
+        if (!(issued_ & (1u << i))) continue;
         GLuint n = 0;
         glGetQueryObjectuiv(queries_[size_t(i)].id(), GL_QUERY_RESULT, &n);
         above[size_t(i)] = static_cast<long>(n);
@@ -63,7 +110,7 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
 int OverlapProbe::smallestBudget(const std::array<long, kThresholds>& above) {
     for (int i = 0; i < kThresholds; ++i)
         if (above[size_t(i)] == 0) return kThreshold[size_t(i)];
-    return 0;
+    return above[size_t(kThresholds - 1)] > 0 ? 0 : -1;
 }
 
 }  // namespace lidr

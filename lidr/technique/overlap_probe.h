@@ -8,6 +8,8 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/scene/camera.h"
 
 namespace lidr {
 
@@ -19,21 +21,33 @@ public:
     OverlapProbe() = default;
     explicit OverlapProbe(const GlInfo& info);
     explicit operator bool() const { return static_cast<bool>(program_); }
-    // Issues the queries over the bound framebuffer (its stencil holds the counts), within `scissor` when given
-    // (x, y, width, height). Leaves the stencil unchanged.
-    void issue(const glm::ivec4* scissor = nullptr);
-    bool issued() const { return issued_; }
-    // Pixels whose count exceeds kThreshold[i], for every threshold; waits for the GPU.
+    static constexpr unsigned kAll = (1u << kThresholds) - 1u;
+    // The thresholds that tell whether `budget` was too small or twice what was needed: budget / 2 and budget.
+    static unsigned aroundBudget(int budget);
+    // The thresholds above `budget` (to find how much more an overflowing frame needs).
+    static unsigned aboveBudget(int budget);
+    // Issues the queries of the thresholds in `which` (bit i: kThreshold[i]) over the bound framebuffer (its
+    // stencil holds the counts), within `scissor` when given (x, y, width, height). Leaves the stencil unchanged.
+    void issue(unsigned which = kAll, const glm::ivec4* scissor = nullptr);
+    // The same over the pixels where `filter`'s meshes are visible (depth-tested against the bound depth, not
+    // written): the transparent layers read their lists only there, so only there does their overlap count.
+    void issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera, unsigned which = kAll,
+                         const glm::ivec4* scissor = nullptr);
+    bool issued() const { return issued_ != 0; }
+    // Pixels whose count exceeds kThreshold[i] for the thresholds last issued, -1 for the others; waits for the GPU.
     std::array<long, kThresholds> pixelsAbove() const;
-    // The smallest budget of kThreshold that no pixel exceeds; 0 when even the largest is exceeded.
+    // From counts where -1 means "not measured": the smallest measured threshold no pixel exceeds (the frame
+    // needs at most that budget); 0 when the largest, 16, is exceeded; -1 when every measured threshold is
+    // exceeded but larger ones were not measured.
     static int smallestBudget(const std::array<long, kThresholds>& above);
     long drawCalls() const { return drawCalls_; }
 
 private:
-    gl::Program program_;
+    RenderState stateFor(const glm::ivec4* scissor) const;
+    gl::Program program_, meshProgram_;
     gl::Buffer triangle_;
     std::array<gl::Object, kThresholds> queries_;
-    bool issued_ = false;
+    unsigned issued_ = 0;
     long drawCalls_ = 0;
 };
 
