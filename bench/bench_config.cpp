@@ -154,8 +154,22 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
 
 }  // namespace
 
+namespace {
+std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInfo& info, const Scene& scene, int width,
+                                                int height);
+}
+
+// Every renderer the bench measures times each frame's own passes (waiting for GPU queries).
 std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo& info, const Scene& scene, int width,
                                               int height) {
+    std::unique_ptr<Renderer> r = createUntimedRenderer(c, info, scene, width, height);
+    r->setTiming(true, true);
+    return r;
+}
+
+namespace {
+std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInfo& info, const Scene& scene, int width,
+                                                int height) {
     if (c.perSample && c.mode == "forward-brute")  // the factory has no per-sample shading for the reference
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), false, c.msaa,
@@ -185,6 +199,7 @@ std::unique_ptr<Renderer> createBenchRenderer(const ModeConfig& c, const GlInfo&
                 "; this build's library has no render-mode factory yet)");
 #endif
 }
+}  // namespace
 
 // ---- sweeps ---------------------------------------------------------------------------------------------
 

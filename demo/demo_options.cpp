@@ -1,5 +1,6 @@
 #include "demo_options.h"
 
+#include "lidr/base/gl.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/render_targets.h"

@@ -16,6 +16,7 @@
 
 #include "demo_options.h"
 #include "frame_views.h"
+#include "lidr/base/gl.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/frame_evaluation.h"
@@ -86,6 +87,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
+    renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
     renderer->render(scene.camera, lights, shading);  // warm-up
     auto* autoMode = dynamic_cast<AutoModeRenderer*>(renderer.get());
@@ -145,6 +147,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     if (withReference) {
         // Rendered the way the mode renders: same MSAA, transparency where the mode draws it.
         auto reference = demo::makeReference(info, scene, mo, scene.width, scene.height, int(lights.size()));
+        reference->setTiming(true, true);
         reference->render(scene.camera, lights, shading);
         const ImageRGBA8 refImage = reference->targets().readColor();
         writePng(path(outDir, "reference.png"), refImage);
@@ -195,6 +198,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
+    renderer.setTiming(true, true);
     std::cout << "LIDR: "
               << (options.packing.autoBudget() || options.packing.autoIndexBits() ? "automatic, first frame " : "")
               << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
@@ -253,6 +257,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
 
     if (withReference) {
         auto reference = demo::makeReference(info, scene, modeOptions, scene.width, scene.height, int(lights.size()));
+        reference->setTiming(true, true);
         MedianTimes refTimes;
         reference->render(scene.camera, lights, shading);
         for (int i = 0; i < std::max(1, frames / 2); ++i) refTimes.add(reference->render(scene.camera, lights, shading).passes);
@@ -349,6 +354,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     std::cout << "GL: " << context->info().summary() << std::endl;
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
+    renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     const double start = glfwGetTime();

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/base/gl.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
@@ -161,6 +162,7 @@ TEST_CASE("render-mode factory builds every mode, all close to the reference", "
         o.mode = mode;
         std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
         REQUIRE(r->modeName() == mode);
+        r->setTiming(true);
         r->render(scene.camera, scene.lights, shading);
         const ImageError e = compareImages(r->targets().readColor(), ref);
         INFO(mode << ": max " << e.maxAbsError);

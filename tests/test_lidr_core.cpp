@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/base/gl.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/technique/bitshift_scheme.h"
 #include "lidr/scene/default_scene.h"

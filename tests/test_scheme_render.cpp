@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/base/gl.h"
 #include "lidr/technique/cpu_sorted_scheme.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/eval/controlled_scenes.h"

@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/base/gl.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"

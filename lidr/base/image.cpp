@@ -54,12 +54,31 @@ ImageFloat readPfm(const std::string& path) {
     return img;
 }
 
+namespace {
+// glReadPixels into a tightly packed buffer whatever pack state the program set; its pack state comes back.
+void readTight(int width, int height, GLenum format, GLenum type, GLint alignment, void* out, const char* where) {
+    GLint oldAlignment = 4, oldRowLength = 0, oldSkipRows = 0, oldSkipPixels = 0;
+    glGetIntegerv(GL_PACK_ALIGNMENT, &oldAlignment);
+    glGetIntegerv(GL_PACK_ROW_LENGTH, &oldRowLength);
+    glGetIntegerv(GL_PACK_SKIP_ROWS, &oldSkipRows);
+    glGetIntegerv(GL_PACK_SKIP_PIXELS, &oldSkipPixels);
+    glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    glReadPixels(0, 0, width, height, format, type, out);
+    glPixelStorei(GL_PACK_ALIGNMENT, oldAlignment);
+    glPixelStorei(GL_PACK_ROW_LENGTH, oldRowLength);
+    glPixelStorei(GL_PACK_SKIP_ROWS, oldSkipRows);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, oldSkipPixels);
+    checkGl(where);
+}
+}  // namespace
+
 ImageRGBA8 readPixelsRGBA8(int width, int height) {
     ImageRGBA8 img(width, height);
     std::vector<uint8_t> raw(img.pixels.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
-    checkGl("readPixelsRGBA8");
+    readTight(width, height, GL_RGBA, GL_UNSIGNED_BYTE, 1, raw.data(), "readPixelsRGBA8");
     const size_t row = static_cast<size_t>(width) * 4;
     for (int y = 0; y < height; ++y)
         std::memcpy(&img.pixels[static_cast<size_t>(y) * row], &raw[static_cast<size_t>(height - 1 - y) * row], row);
@@ -69,9 +88,7 @@ ImageRGBA8 readPixelsRGBA8(int width, int height) {
 ImageFloat readDepth(int width, int height) {
     ImageFloat img(width, height);
     std::vector<float> raw(img.pixels.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, raw.data());
-    checkGl("readDepth");
+    readTight(width, height, GL_DEPTH_COMPONENT, GL_FLOAT, 4, raw.data(), "readDepth");
     for (int y = 0; y < height; ++y)
         std::memcpy(&img.pixels[static_cast<size_t>(y) * width], &raw[static_cast<size_t>(height - 1 - y) * width],
                     sizeof(float) * width);
@@ -80,9 +97,7 @@ ImageFloat readDepth(int width, int height) {
 
 std::vector<uint8_t> readStencil(int width, int height) {
     std::vector<uint8_t> raw(static_cast<size_t>(width) * height), out(raw.size());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, raw.data());
-    checkGl("readStencil");
+    readTight(width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 1, raw.data(), "readStencil");
     for (int y = 0; y < height; ++y)
         std::memcpy(&out[static_cast<size_t>(y) * width], &raw[static_cast<size_t>(height - 1 - y) * width], width);
     return out;

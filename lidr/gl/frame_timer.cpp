@@ -1,4 +1,5 @@
 #include "lidr/gl/frame_timer.h"
+#include "lidr/base/gl.h"
 
 #include <chrono>
 
@@ -31,11 +32,18 @@ void FrameTimer::begin(const std::string& pass) {
     if (!enabled_) return;
     if (open_) throw Error("FrameTimer: pass '" + pass + "' begun inside another");
     open_ = true;
-    names_.push_back(pass);
     if (gpu_) {
-        if (queries_.size() < names_.size()) queries_.emplace_back(gl::Kind::Query);
-        glBeginQuery(GL_TIME_ELAPSED_EXT, queries_[names_.size() - 1].id());
+        Frame& f = ring_[current_];
+        if (f.pending || f.number != frameNumber_) {  // first pass of this frame: the slot's old results go
+            f.names.clear();
+            f.pending = false;
+            f.number = frameNumber_;
+        }
+        f.names.push_back(pass);
+        if (f.queries.size() < f.names.size()) f.queries.emplace_back(gl::Kind::Query);
+        glBeginQuery(GL_TIME_ELAPSED_EXT, f.queries[f.names.size() - 1].id());
     } else {
+        names_.push_back(pass);
         glFinish();
         cpuStart_ = nowMilliseconds();
     }
@@ -53,26 +61,62 @@ void FrameTimer::end() {
     }
 }
 
+std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
+    std::vector<PassTime> out;
+    for (size_t i = 0; i < f.names.size(); ++i) {
+        GLuint id = f.queries[i].id();
+        if (!wait) {
+            GLuint available = 0;
+            glGetQueryObjectuiv(id, GL_QUERY_RESULT_AVAILABLE, &available);
+            if (!available) return {};
+        }
+        GLuint64EXT ns = 0;
+        if (glGetQueryObjectui64v)
+            glGetQueryObjectui64v(id, GL_QUERY_RESULT, &ns);
+        else
+            glGetQueryObjectui64vEXT(id, GL_QUERY_RESULT, &ns);
+        out.push_back({f.names[i], double(ns) * 1e-6});
+    }
+    return out;
+}
+
 std::vector<PassTime> FrameTimer::collect() {
     std::vector<PassTime> out;
-    for (size_t i = 0; i < names_.size(); ++i) {
-        double ms = 0.0;
-        if (gpu_) {
-            GLuint64EXT ns = 0;
-            if (glGetQueryObjectui64v)
-                glGetQueryObjectui64v(queries_[i].id(), GL_QUERY_RESULT, &ns);
-            else
-                glGetQueryObjectui64vEXT(queries_[i].id(), GL_QUERY_RESULT, &ns);
-            ms = double(ns) * 1e-6;
+    lag_ = 0;
+    if (gpu_) {
+        Frame& now = ring_[current_];
+        if (now.number == frameNumber_ && !now.names.empty()) now.pending = true;
+        if (wait_) {
+            if (now.pending) out = read(now, true);
+            now.pending = false;
         } else {
-            ms = cpuMs_[i];
+            // The newest earlier frame whose queries have all answered; older pending frames are dropped.
+            for (int back = 1; back < kRingFrames; ++back) {
+                Frame& f = ring_[(current_ + kRingFrames - back) % kRingFrames];
+                if (!f.pending || f.number != frameNumber_ - back) continue;
+                out = read(f, false);
+                if (out.empty()) continue;
+                lag_ = back;
+                for (Frame& older : ring_)
+                    if (older.pending && older.number <= f.number) older.pending = false;
+                break;
+            }
         }
-        out.push_back({names_[i], ms});
+        current_ = (current_ + 1) % kRingFrames;
+    } else {
+        for (size_t i = 0; i < names_.size() && i < cpuMs_.size(); ++i) out.push_back({names_[i], cpuMs_[i]});
     }
+    ++frameNumber_;
     names_.clear();
     cpuMs_.clear();
     checkGl("FrameTimer::collect");
     return out;
+}
+
+int FrameTimer::queryObjects() const {
+    int n = 0;
+    for (const Frame& f : ring_) n += static_cast<int>(f.queries.size());
+    return n;
 }
 
 }  // namespace lidr

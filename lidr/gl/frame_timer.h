@@ -20,22 +20,43 @@ struct PassTime {
 enum class TimingMethod { Auto, GpuQueries, CpuFinish };
 TimingMethod parseTimingMethod(const std::string& name);  // "auto", "gpu", "cpu"
 
+// Timing is opt-in (LidrOptions::timing and the other modes' `timing`, off by default). GPU timer queries are
+// read without stalling: each frame's queries go into a ring of kRingFrames sets, and collect() returns the
+// newest earlier frame whose results have all arrived (lag() frames old), or nothing yet; the queries of a
+// frame never answered are reused kRingFrames frames later. setWaitForResults(true) instead waits for this
+// frame's results (lidr-demo and lidr-bench, which want each frame's own times). The CPU method (glFinish
+// around each pass) is synchronous by nature and always reports this frame.
 class FrameTimer {
 public:
+    static constexpr int kRingFrames = 4;
     FrameTimer() = default;
     explicit FrameTimer(const GlInfo& info, TimingMethod method = TimingMethod::Auto);
     void begin(const std::string& pass);
     void end();
-    // Waits for the frame's results, returns them in pass order and starts a new frame.
+    // Pass times (see above) and the start of a new frame. Empty when timing is off, or when no earlier
+    // frame's GPU queries have answered yet.
     std::vector<PassTime> collect();
+    // Frames between the frame just collected and the one whose times it returned (0: its own).
+    int lag() const { return lag_; }
     const char* method() const { return gpu_ ? "gpu-timer-query" : "cpu-glfinish"; }
     bool enabled() const { return enabled_; }
     void setEnabled(bool on) { enabled_ = on; }
+    void setWaitForResults(bool wait) { wait_ = wait; }
+    int queryObjects() const;  // GL query objects this timer holds (none until a GPU-timed pass begins)
 
 private:
-    bool gpu_ = false, enabled_ = true, open_ = false;
-    std::vector<gl::Object> queries_;
-    std::vector<std::string> names_;
+    struct Frame {
+        std::vector<gl::Object> queries;
+        std::vector<std::string> names;
+        long number = -1;
+        bool pending = false;  // ended, results not read yet
+    };
+    std::vector<PassTime> read(Frame& frame, bool wait);
+    bool gpu_ = false, enabled_ = true, open_ = false, wait_ = false;
+    Frame ring_[kRingFrames];
+    int current_ = 0, lag_ = 0;
+    long frameNumber_ = 0;
+    std::vector<std::string> names_;  // this frame's passes (CPU method)
     std::vector<double> cpuMs_;
     double cpuStart_ = 0.0;
 };

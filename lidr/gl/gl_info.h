@@ -32,4 +32,11 @@ struct GlInfo {
     std::string summary() const;
 };
 
+// The GlInfo of the GL context current on this thread, for a program that made its own context (GLFW, SDL,
+// EGL, Qt, an engine): loads lidr's GL entry points (GLEW; glewInit's "no GLX display" under EGL is accepted
+// when GL answers) and reads what the context offers. Call it with the context current, before creating a
+// renderer; lidr::GlContext calls it for the contexts lidr makes. Throws UnsupportedError when no context is
+// current, entry points cannot be loaded or the context is below GL 2.1. backendName goes to GlInfo::backend.
+GlInfo currentContextGlInfo(const std::string& backendName = "current");
+
 }  // namespace lidr

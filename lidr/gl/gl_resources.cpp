@@ -1,4 +1,5 @@
 #include "lidr/gl/gl_resources.h"
+#include "lidr/base/gl.h"
 
 #include <atomic>
 
@@ -99,6 +100,8 @@ Framebuffer Framebuffer::create() {
     return f;
 }
 
+void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+
 void Framebuffer::attachTexture(GLenum attachment, const Texture& t) {
     glBindFramebuffer(GL_FRAMEBUFFER, id_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, t.samples() > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D,
@@ -184,6 +187,8 @@ Program Program::create(const std::string& name, const std::string& vs, const st
     checkGl(("Program::create " + name).c_str());
     return p;
 }
+
+void Program::use() const { glUseProgram(id_); }
 
 GLint Program::uniform(const char* n) const {
     auto it = uniforms_.find(n);

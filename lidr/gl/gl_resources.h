@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "lidr/base/gl.h"
+#include "lidr/base/gl_types.h"
 
 namespace lidr::gl {
 
@@ -48,7 +48,7 @@ public:
     // A 2D texture with NEAREST filtering and clamped edges (index and light-table textures are looked up at
     // texel centres; no filtering may mix neighbouring texels).
     static Texture create2D(GLint internalFormat, int width, int height, GLenum format, GLenum type,
-                            const void* data = nullptr, GLint filter = GL_NEAREST);
+                            const void* data = nullptr, GLint filter = GLint(glc::kNearest));
     // A multisample 2D texture (GL 3.2 / ARB_texture_multisample), read with texelFetch per sample.
     static Texture create2DMultisample(GLint internalFormat, int width, int height, int samples);
     int width() const { return width_; }
@@ -70,7 +70,7 @@ class Framebuffer : public Object {
 public:
     Framebuffer() = default;
     static Framebuffer create();
-    void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+    void bind() const;
     void attachTexture(GLenum attachment, const Texture& t);
     void attachRenderbuffer(GLenum attachment, const Renderbuffer& rb);
     void checkComplete(const char* name) const;  // throws GlError naming the status
@@ -79,7 +79,7 @@ public:
 class Buffer : public Object {
 public:
     Buffer() = default;
-    static Buffer create(GLenum target, const void* data, size_t bytes, GLenum usage = GL_STATIC_DRAW);
+    static Buffer create(GLenum target, const void* data, size_t bytes, GLenum usage = glc::kStaticDraw);
     size_t bytes() const { return bytes_; }
 
 private:
@@ -93,7 +93,7 @@ public:
     static Program create(const std::string& name, const std::string& vertexSource,
                           const std::string& fragmentSource,
                           const std::vector<std::pair<std::string, GLuint>>& attributes);
-    void use() const { glUseProgram(id_); }
+    void use() const;
     GLint uniform(const char* name) const;  // -1 when the compiler removed it; cached
     void set(const char* name, int v) const;
     void set(const char* name, float v) const;

@@ -1,4 +1,5 @@
 #include "lidr/gl/gl_state.h"
+#include "lidr/base/gl.h"
 
 namespace lidr {
 

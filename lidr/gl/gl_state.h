@@ -4,33 +4,33 @@
 // pass, never per light, so there is nothing to gain from diffing.
 #include <glm/glm.hpp>
 
-#include "lidr/base/gl.h"
+#include "lidr/base/gl_types.h"
 
 namespace lidr {
 
 struct StencilState {
-    GLenum func = GL_ALWAYS;
+    GLenum func = glc::kAlways;
     GLint ref = 0;
     GLuint readMask = 0xFF;
-    GLenum stencilFail = GL_KEEP, depthFail = GL_KEEP, depthPass = GL_KEEP;
+    GLenum stencilFail = glc::kKeep, depthFail = glc::kKeep, depthPass = glc::kKeep;
     GLuint writeMask = 0xFF;
 };
 
 struct RenderState {
     bool depthTest = false;
-    GLenum depthFunc = GL_LESS;
+    GLenum depthFunc = glc::kLess;
     bool depthWrite = false;
     bool depthClamp = false;  // only where the context has ARB/NV_depth_clamp
 
     bool cull = false;
-    GLenum cullFace = GL_BACK;
+    GLenum cullFace = glc::kBack;
 
     bool stencilTest = false;
     StencilState stencil;
 
     bool blend = false;
-    GLenum blendEquation = GL_FUNC_ADD;
-    GLenum blendSrcRgb = GL_ONE, blendDstRgb = GL_ZERO, blendSrcAlpha = GL_ONE, blendDstAlpha = GL_ZERO;
+    GLenum blendEquation = glc::kFuncAdd;
+    GLenum blendSrcRgb = glc::kOne, blendDstRgb = glc::kZero, blendSrcAlpha = glc::kOne, blendDstAlpha = glc::kZero;
     glm::vec4 blendColor{0.0f};
 
     glm::bvec4 colorMask{true, true, true, true};

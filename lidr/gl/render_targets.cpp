@@ -1,4 +1,5 @@
 #include "lidr/gl/render_targets.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 

@@ -32,10 +32,10 @@ static std::string lineDirective(int nextLine, int number) {
 }
 
 static std::string expandIncludes(const std::string& name, const ShaderIncludes& subs, int depth,
-                                  std::vector<std::string>& files) {
+                                  std::vector<std::string>& files, const std::string* text = nullptr) {
     if (depth > 8) throw Error("shader include nesting too deep at '" + name + "'");
     const int self = sourceNumber(files, name);
-    std::istringstream in(shaderFile(name));
+    std::istringstream in(text ? *text : shaderFile(name));
     std::string out, line;
     int lineNo = 0;
     while (std::getline(in, line)) {
@@ -59,9 +59,10 @@ static std::string expandIncludes(const std::string& name, const ShaderIncludes&
     return out;
 }
 
-std::string buildShaderSource(const std::string& name, const ShaderDefines& defines, const ShaderIncludes& subs) {
+static std::string buildSource(const std::string& name, const std::string* text, const ShaderDefines& defines,
+                               const ShaderIncludes& subs) {
     std::vector<std::string> files;
-    std::string src = expandIncludes(name, subs, 0, files);
+    std::string src = expandIncludes(name, subs, 0, files, text);
     std::string defs;
     for (const auto& [k, v] : defines) defs += "#define " + k + " " + v + "\n";
     defs += kSourceStrings;
@@ -72,6 +73,15 @@ std::string buildShaderSource(const std::string& name, const ShaderDefines& defi
     const size_t eol = src.find('\n', v);
     const int versionLine = 1 + static_cast<int>(std::count(src.begin(), src.begin() + static_cast<long>(v), '\n'));
     return src.substr(0, eol + 1) + defs + lineDirective(versionLine + 1, 0) + src.substr(eol + 1);
+}
+
+std::string buildShaderSource(const std::string& name, const ShaderDefines& defines, const ShaderIncludes& subs) {
+    return buildSource(name, nullptr, defines, subs);
+}
+
+std::string buildShaderSourceFromText(const std::string& name, const std::string& text, const ShaderDefines& defines,
+                                      const ShaderIncludes& subs) {
+    return buildSource(name, &text, defines, subs);
 }
 
 std::string shaderSourceStrings(const std::string& source) {

@@ -30,6 +30,11 @@ std::string shaderFile(const std::string& name);
 std::string buildShaderSource(const std::string& name, const ShaderDefines& defines = {},
                               const ShaderIncludes& substitutions = {});
 
+// The same for a source the program gives (a user material shader): `text` is source string 0, named `name`
+// in messages; its #include lines name lidr's shader files.
+std::string buildShaderSourceFromText(const std::string& name, const std::string& text,
+                                      const ShaderDefines& defines = {}, const ShaderIncludes& substitutions = {});
+
 // "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.
 std::string shaderSourceStrings(const std::string& source);
 

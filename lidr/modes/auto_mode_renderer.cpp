@@ -1,4 +1,5 @@
 #include "lidr/modes/auto_mode_renderer.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cmath>

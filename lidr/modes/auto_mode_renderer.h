@@ -30,6 +30,9 @@ public:
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return renderers_[size_t(last_)]->targets(); }
     size_t lightDataBytes() const override { return renderers_[size_t(last_)]->lightDataBytes(); }
+    void setTiming(bool on, bool waitForResults = false) override {  // every candidate's pass times
+        for (auto& r : renderers_) r->setTiming(on, waitForResults);
+    }
 
     const std::vector<std::string>& candidates() const { return candidates_; }
     // The mode the last frame was drawn with, and why ("measuring", or the trial times).

@@ -1,4 +1,5 @@
 #include "lidr/modes/light_grid.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cmath>

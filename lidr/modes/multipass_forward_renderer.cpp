@@ -1,4 +1,6 @@
 #include "lidr/modes/multipass_forward_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
 
@@ -42,6 +44,7 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                                    const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (lights.size() > 65535)
         throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
     checkLightSpheres(lights, "forward-multipass");
@@ -140,6 +143,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MultipassForwardRenderer::render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     return stats_;
 }
 

@@ -30,7 +30,7 @@ struct MultipassOptions {
     bool exactMsaaCulling = true;
     bool forceFixedLightTable = false;
     int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES: shading multisampled, then resolved
-    bool timing = true;
+    bool timing = false;  // as LidrOptions::timing
     TimingMethod timingMethod = TimingMethod::Auto;
 };
 
@@ -42,6 +42,10 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return targets_; }
+    void setTiming(bool on, bool waitForResults = false) override {
+        timer_.setEnabled(on);
+        timer_.setWaitForResults(waitForResults);
+    }
     long meshDrawCalls() const { return meshDraws_; }  // light-pass mesh draws of the last frame
 
 private:

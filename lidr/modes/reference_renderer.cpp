@@ -1,4 +1,6 @@
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -15,6 +17,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
       timer_(info),
       drawTransparent_(transparency && scene_.hasTransparent()),
       sampleShading_(sampleShading) {
+    timer_.setEnabled(false);  // Renderer::setTiming turns it on
     if (sampleShading && !info.sampleShading)
         throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
     ShaderDefines defines = lightTable_.defines();
@@ -25,6 +28,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
 
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));
@@ -69,6 +73,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("reference render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     return stats_;
 }
 

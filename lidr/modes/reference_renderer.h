@@ -23,6 +23,10 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return targets_; }
+    void setTiming(bool on, bool waitForResults = false) override {
+        timer_.setEnabled(on);
+        timer_.setWaitForResults(waitForResults);
+    }
     const char* timingMethod() const { return timer_.method(); }
 
 private:

@@ -1,4 +1,5 @@
 #include "lidr/modes/tile_depth_bounds.h"
+#include "lidr/base/gl.h"
 
 #include "lidr/render/depth_prepass.h"
 #include "lidr/base/error.h"

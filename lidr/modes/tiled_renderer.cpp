@@ -1,4 +1,6 @@
 #include "lidr/modes/tiled_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
 
@@ -66,6 +68,7 @@ void TiledRenderer::buildProgram(int loopBound) {
 
 const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (lights.size() > 65535)
         throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
     checkLightSpheres(lights, "tiled");
@@ -159,6 +162,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("TiledRenderer::render");
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
 
     frameInfo_.grid = gs;
     frameInfo_.assignMilliseconds = assignMs;

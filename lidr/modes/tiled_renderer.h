@@ -36,7 +36,7 @@ struct TiledOptions {
     bool forceFixedLightTable = false; // the RGBA8 fixed-point light table even with float textures
     bool forcePackedDepth = false;     // the RGBA8 packed depth reduction even with float render targets
     int initialLoopBound = 16;         // first LIDR_MAX_TILE_LIGHTS; grows (power of two) with the lists
-    bool timing = true;
+    bool timing = false;  // as LidrOptions::timing
     TimingMethod timingMethod = TimingMethod::Auto;
 };
 
@@ -61,6 +61,10 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     const RenderTargets& targets() const override { return targets_; }
+    void setTiming(bool on, bool waitForResults = false) override {
+        timer_.setEnabled(on);
+        timer_.setWaitForResults(waitForResults);
+    }
     size_t lightDataBytes() const override;
 
     const TiledOptions& options() const { return options_; }

@@ -34,9 +34,9 @@ public:
     static std::unique_ptr<GlContext> create(const ContextOptions& options = {});
 
 protected:
-    // Loads entry points with GLEW and fills info_. Debian's GLEW is a GLX build: under EGL glewInit()
-    // returns GLEW_ERROR_NO_GLX_DISPLAY (4) after the entry points have loaded, so 4 counts as success
-    // only if glGetString(GL_VERSION) answers.
+    // Fills info_ with currentContextGlInfo (lidr/gl/gl_info.h): loads entry points with GLEW (Debian's GLEW
+    // is a GLX build: under EGL glewInit() returns GLEW_ERROR_NO_GLX_DISPLAY (4) after the entry points have
+    // loaded, so 4 counts as success only if glGetString(GL_VERSION) answers).
     void initialiseGl(const std::string& backendName);
     GlInfo info_;
 };

@@ -1,4 +1,5 @@
 #include "lidr/render/depth_prepass.h"
+#include "lidr/base/gl.h"
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"

@@ -1,4 +1,5 @@
 #include "lidr/render/gpu_scene.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cstring>

@@ -1,4 +1,5 @@
 #include "lidr/render/light_table.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cmath>

@@ -38,6 +38,9 @@ struct FrameStats {
     int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
     bool transparentVolumePassSkipped = false;  // LIDR: no transparent surface in view, no pass drawn
     AutoDecision autoDecision;
+    // Timing (Renderer::setTiming): `passes` belong to the frame this many frames before this one (deferred
+    // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.
+    int timingLag = 0;
     double frameMilliseconds() const;
 };
 
@@ -52,6 +55,10 @@ public:
     // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
     virtual size_t lightDataBytes() const { return 0; }
     const FrameStats& lastFrame() const { return stats_; }
+    // Per-pass timing, off by default (a mode's options may turn it on too). On: GPU timer queries read a
+    // frame or more later without stalling (FrameStats::timingLag), or, with waitForResults, this frame's
+    // (stalls; lidr-demo and lidr-bench); on software rasterisers glFinish around each pass (gl/frame_timer.h).
+    virtual void setTiming(bool on, bool waitForResults = false) = 0;
 
 protected:
     FrameStats stats_;

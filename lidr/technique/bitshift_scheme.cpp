@@ -1,4 +1,5 @@
 #include "lidr/technique/bitshift_scheme.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "lidr/technique/cpu_sorted_scheme.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 #include <cmath>

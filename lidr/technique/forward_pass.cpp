@@ -1,4 +1,5 @@
 #include "lidr/technique/forward_pass.h"
+#include "lidr/base/gl.h"
 
 #include "lidr/render/depth_prepass.h"
 #include "lidr/base/error.h"
@@ -27,7 +28,9 @@ std::string perSampleVersion(std::string source) {
 }
 }  // namespace
 
-ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample) : perSample_(perSample) {
+ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
+                         const std::string& materialShader)
+    : perSample_(perSample) {
     ShaderDefines defines = table.defines();
     for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
     if (perSample) {
@@ -35,13 +38,16 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
         defines.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
     }
     std::string vertex = buildShaderSource("geometry.vert");
-    std::string fragment =
-        buildShaderSource("lidr_forward.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}});
+    const ShaderIncludes unpack = {{"lidr_unpack.glsl", scheme.unpackShaderFile()}};
+    std::string fragment = materialShader.empty()
+                               ? buildShaderSource("lidr_forward.frag", defines, unpack)
+                               : buildShaderSourceFromText("material shader", materialShader, defines, unpack);
     if (perSample) {
         vertex = perSampleVersion(vertex);
         fragment = perSampleVersion(fragment);
     }
-    program_ = gl::Program::create(std::string("lidr-forward-") + scheme.name() + (perSample ? "-per-sample" : ""),
+    program_ = gl::Program::create(std::string(materialShader.empty() ? "lidr-forward-" : "lidr-material-") +
+                                       scheme.name() + (perSample ? "-per-sample" : ""),
                                    vertex, fragment, geometryAttributes());
 }
 

@@ -16,7 +16,12 @@ class ForwardPass {
 public:
     // perSample: the index targets are multisample textures read per sample (GLSL 1.50 compatibility +
     // ARB_sample_shading); the pass then shades every sample.
-    ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false);
+    // materialShader: a fragment shader of the program's own (GLSL 1.20, `#include "lidr_lights.glsl"` for
+    // the light list, see doc/embedding.md) instead of lidr_forward.frag; empty: lidr_forward.frag. It is
+    // built with the scheme's unpack file and the light table's defines, like the built-in one; a compile
+    // or link error throws GlError with the log and the line of the material shader.
+    ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false,
+                const std::string& materialShader = {});
     // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
     // depth there, or LEQUAL with depth writes when that target had no pre-pass (so that, as with EQUAL,
     // the last fragment drawn at the nearest depth stays).

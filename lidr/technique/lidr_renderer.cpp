@@ -1,4 +1,6 @@
 #include "lidr/technique/lidr_renderer.h"
+#include "lidr/base/gl.h"
+#include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
 #include <numeric>
@@ -129,7 +131,7 @@ LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
         c.budget = budget;
         c.indexBits = indexBits;
         v.scheme = createPackingScheme(c, info_);
-        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices);
+        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices, options_.materialShader);
     }
     return v;
 }
@@ -179,6 +181,7 @@ std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lig
 
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
+    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     const bool autoBits = options_.packing.autoIndexBits(), autoBudget = options_.packing.autoBudget();
     const PackingConfig& fixed = options_.packing;
     if (!autoBits && lights.size() > (1u << fixed.indexBits) - 1u)
@@ -288,6 +291,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     targets_.resolve(timer_);
 
     stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("LidrRenderer::render");
     return stats_;

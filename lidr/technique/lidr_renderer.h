@@ -44,8 +44,11 @@ struct LidrOptions {
     // 320-face one (LightVolumePass); false: the 320-face volume for every light.
     bool volumeDetail = false;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
-    bool timing = true;
+    bool timing = false;  // per-pass times in FrameStats (Renderer::setTiming); off: no timer queries at all
     TimingMethod timingMethod = TimingMethod::Auto;
+    // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)
+    // that iterates this pixel's lights with lidr_lights.glsl (doc/embedding.md). Empty: lidr's Blinn-Phong.
+    std::string materialShader;
 };
 
 class LidrRenderer final : public Renderer {
@@ -66,6 +69,10 @@ public:
     const PackingScheme& transparentScheme() const { return *currentTransparent_->scheme; }
     const LidrOptions& options() const { return options_; }
     const RenderTargets& targets() const override { return targets_; }
+    void setTiming(bool on, bool waitForResults = false) override {
+        timer_.setEnabled(on);
+        timer_.setWaitForResults(waitForResults);
+    }
     const IndexTargets& indexTargets() const { return *indexTargets_; }
     // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
     // index (1-based) of index k. Empty: indices are the scene's own.

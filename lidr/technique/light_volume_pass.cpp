@@ -1,4 +1,5 @@
 #include "lidr/technique/light_volume_pass.h"
+#include "lidr/base/gl.h"
 
 #include <algorithm>
 

@@ -69,8 +69,8 @@ struct VolumeDraw {
     int firstTarget = 0, targetCount = 1;  // written together (draw buffers) when targetCount > 1
     glm::bvec4 colorMask{true, true, true, true};
     bool blend = false;
-    GLenum blendEquation = GL_FUNC_ADD;
-    GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
+    GLenum blendEquation = glc::kFuncAdd;
+    GLenum blendSrc = glc::kOne, blendDst = glc::kZero;
     glm::vec4 blendColor{0.0f};
     // Stencil rank window. rankCount > 0: a light writes only where it is the rankFirst-th ..
     // (rankFirst + rankCount - 1)-th light (0-based, in draw order) to mark the pixel in this draw. rankCount is

@@ -1,4 +1,5 @@
 #include "lidr/technique/max_stencil_scheme.h"
+#include "lidr/base/gl.h"
 
 #include <cmath>
 

@@ -1,4 +1,5 @@
 #include "lidr/technique/overlap_probe.h"
+#include "lidr/base/gl.h"
 
 #include "lidr/base/error.h"
 #include "lidr/gl/shader_source.h"

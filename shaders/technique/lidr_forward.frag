@@ -1,37 +1,17 @@
 #version 120
-// LIDR forward pass: unpack this pixel's light indices and shade with those lights only.
-// "lidr_unpack.glsl" is replaced by the packing scheme's unpack file (unpack_<scheme>.glsl); it defines
-// LIDR_SLOTS, lidrUnpackBegin(uv) and lidrUnpackNext() (0.0 for an empty slot), and LIDR_NULL_ENDS_LIST
-// when the first empty slot means no more lights follow.
-// Index targets are read through these two, so the per-sample MSAA path can swap in sampler2DMS and
-// texelFetch(..., gl_SampleID) (lidr/technique/forward_pass.cpp) without touching the unpack files.
-#ifndef LIDR_INDEX_SAMPLER
-#define LIDR_INDEX_SAMPLER sampler2D
-#define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)
-#endif
-#include "light_table.glsl"
+// LIDR forward pass, the built-in material: lidr's Blinn-Phong (shading.glsl) summed over this pixel's light
+// list, read with the same API a user material shader has (lidr_lights.glsl; LidrOptions::materialShader).
 #include "shading.glsl"
-#include "lidr_unpack.glsl"
-
-uniform vec2 uInvViewportSize;
+#include "lidr_lights.glsl"
 
 void main() {
     LidrSurface s = lidrSurface();
     vec3 color = lidrAmbient(s);
-    lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
-    for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
-        float index = lidrUnpackNext();
-        if (index < 0.5) {
-#ifdef LIDR_NULL_ENDS_LIST
-            break;
-#else
-            continue;
-#endif
-        }
-        vec4 posRadius;
-        vec3 lightColor;
-        lidrFetchLight(index, posRadius, lightColor);
-        color += lidrShadeLight(s, posRadius, lightColor);
+    lidrBeginLights();
+    LidrLight light;
+    for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
+        if (!lidrNextLight(light)) break;
+        color += lidrShadeLight(s, vec4(light.position, light.radius), light.color);
     }
     gl_FragColor = vec4(color, uMaterialOpacity);
 }

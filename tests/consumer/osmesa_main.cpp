@@ -3,7 +3,7 @@
 
 #include <lidr/platform/context.h>
 #include <lidr/base/error.h>
-#include <lidr/base/gl.h>
+#include <GL/glew.h>  // the program's own GL loader; lidr loaded its entry points into GLEW
 #include <lidr/gl/gl_resources.h>
 
 int main() {

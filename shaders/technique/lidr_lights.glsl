@@ -1,0 +1,70 @@
+// The light list of this pixel, for any fragment shader drawn by LIDR's forward pass (GLSL 1.20). A material
+// shader (LidrOptions::materialShader, doc/embedding.md) says #include "lidr_lights.glsl" and gets:
+//
+//   LidrLight light;                          // position, radius, color (world space), index (1-based)
+//   lidrBeginLights();                        // unpacks this pixel's lists (once per fragment)
+//   for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
+//       if (!lidrNextLight(light)) break;     // false: no more lights on this pixel
+//       ... light.position, light.radius, light.color ...
+//   }
+//
+// LIDR_MAX_LIGHTS is the budget (slots a pixel holds); the bounded loop is what GL 2.1 hardware compiles.
+// Attenuation is the material's business: lidr's own is clamp(1 - d^2 / r^2, 0, 1) (lidrShadeLight in
+// shading.glsl, which also gives the surface varyings, material uniforms and Blinn-Phong).
+// lidr fills uInvViewportSize, the index textures uIndexTex0.. and the light table (light_table.glsl); the
+// packing scheme's unpack file stands in for "lidr_unpack.glsl" (it defines LIDR_SLOTS, lidrUnpackBegin(uv),
+// lidrUnpackNext() and, where the first empty slot ends the list, LIDR_NULL_ENDS_LIST).
+// Index targets are read through LIDR_INDEX_SAMPLER / LIDR_FETCH_INDEX, so the per-sample MSAA path can swap
+// in sampler2DMS and texelFetch(..., gl_SampleID) (lidr/technique/forward_pass.cpp) without touching the
+// unpack files.
+#ifndef LIDR_INDEX_SAMPLER
+#define LIDR_INDEX_SAMPLER sampler2D
+#define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)
+#endif
+#include "light_table.glsl"
+#include "lidr_unpack.glsl"
+
+#define LIDR_MAX_LIGHTS LIDR_SLOTS
+
+uniform vec2 uInvViewportSize;
+
+struct LidrLight {
+    vec3 position;
+    float radius;
+    vec3 color;
+    float index;  // the light's index in the frame's light list plus one (0 is the null light)
+};
+
+float lidrSlotsLeft;
+
+void lidrBeginLights() {
+    lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
+    lidrSlotsLeft = float(LIDR_SLOTS);
+}
+
+bool lidrNextLight(out LidrLight light) {
+    light.position = vec3(0.0);
+    light.radius = 0.0;
+    light.color = vec3(0.0);
+    light.index = 0.0;
+    for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
+        if (lidrSlotsLeft < 0.5) return false;
+        lidrSlotsLeft -= 1.0;
+        float index = lidrUnpackNext();
+        if (index >= 0.5) {
+            vec4 posRadius;
+            vec3 color;
+            lidrFetchLight(index, posRadius, color);
+            light.position = posRadius.xyz;
+            light.radius = posRadius.w;
+            light.color = color;
+            light.index = index;
+            return true;
+        }
+#ifdef LIDR_NULL_ENDS_LIST
+        lidrSlotsLeft = 0.0;  // the first empty slot ends the list
+        return false;
+#endif
+    }
+    return false;
+}
