@@ -1,3 +1,6 @@
+// GLEW before anything that includes GL/gl.h (GLFW does).
+#include "lidr/base/gl.h"
+
 #include "viewer.h"
 
 #include <algorithm>
@@ -16,7 +19,6 @@
 
 #include "frame_views.h"
 #include "lidr/base/error.h"
-#include "lidr/base/gl.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/gl/render_targets.h"
@@ -207,6 +209,7 @@ bool Viewer::apply(const demo::RendererChoice& next, const std::string& what) {
         // All the lights the old configuration allowed stays "all"; a smaller count stays, within the new limit.
         lightCount_ = lightCount_ >= maxLightsFor(rc_) ? maxLights : std::min(lightCount_, maxLights);
         std::unique_ptr<Renderer> r = createRenderer(mo, context_->info(), renderScene, width_, height_);
+        r->setTiming(true);  // the panel's per-pass times: read a frame or more late, never stalling
         r->render(camera_.camera(), currentLights(), shading_);  // a refusal at draw time reverts too
         checkGl("viewer: first frame of the new configuration");
         renderer_ = std::move(r);
