@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -66,11 +68,24 @@ std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
 
+// Creates `dir` and proves it writable with a probe file, so an unwritable --out or --dump fails before any
+// rendering, naming the folder and the system's reason.
+void prepareWritableFolder(const std::string& dir, const std::string& option) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw Error(option + ": cannot create folder '" + dir + "': " + ec.message());
+    if (!std::filesystem::is_directory(dir, ec)) throw Error(option + ": '" + dir + "' is not a folder");
+    const std::string probe = path(dir, ".lidr-write-test");
+    errno = 0;
+    std::FILE* file = std::fopen(probe.c_str(), "wb");
+    if (!file) throw Error(option + ": cannot write into '" + dir + "': " + std::strerror(errno));
+    std::fclose(file);
+    std::filesystem::remove(probe, ec);
+}
+
 // The output folder and the GL context every headless run needs.
 std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::RendererChoice& rc) {
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
+    prepareWritableFolder(outDir, "--out");
     auto context = GlContext::create(rc.contextOptions());
     std::cout << "GL: " << context->info().summary() << "\n";
     return context;
@@ -177,8 +192,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const Scene scene = sceneChoice.load();
     const RenderModeOptions modeOptions = rc.renderModeOptions(scene);
     demo::checkTargetMemory(scene, modeOptions);  // before the context: an oversized request fails at once
+    if (modeOptions.mode != "lidr" && !dumpDir.empty())
+        throw Error("--dump writes LIDR index targets; it needs --mode lidr");
+    if (!dumpDir.empty()) prepareWritableFolder(dumpDir, "--dump");  // before rendering, not after it
     if (modeOptions.mode != "lidr") {
-        if (!dumpDir.empty()) throw Error("--dump writes LIDR index targets; it needs --mode lidr");
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
     }
     const LidrOptions options = rc.lidrOptions(scene);

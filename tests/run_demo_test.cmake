@@ -84,7 +84,9 @@ set(bad_values
   "--msaa|-1@--msaa must be 0 \\(off\\) or a power of two.*got -1"
   "--width|16384|--height|16384|--msaa|8@need about [0-9]+ MiB.*the limit is 2048 MiB"
   "--scene|/dev/null@/dev/null: scene file is not a regular file"
-  "--scene|${OUT}@scene file is a directory")
+  "--scene|${OUT}@scene file is a directory"
+  "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'")
+file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 foreach(entry IN LISTS bad_values)
   string(REPLACE "@" ";" parts "${entry}")
   list(GET parts 0 args)
@@ -103,3 +105,9 @@ foreach(entry IN LISTS bad_values)
     message(FATAL_ERROR "lidr-demo ${shown}: a context was created before the error\n${out}")
   endif()
 endforeach()
+# An --out that cannot be a folder fails before the context, naming the option and the folder.
+execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/a-file
+                RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(r EQUAL 0 OR NOT err MATCHES "--out: (cannot create folder|'[^']*' is not a folder).*a-file" OR out MATCHES "GL: ")
+  message(FATAL_ERROR "lidr-demo --out <a file>: expected an early error naming --out, got ${r}\n${out}${err}")
+endif()
