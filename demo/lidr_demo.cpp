@@ -13,10 +13,12 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "demo_options.h"
+#include "demo_soak.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/frame_evaluation.h"
@@ -380,7 +382,13 @@ int main(int argc, char** argv) {
     app.add_flag("--window", window, "Open an interactive window (needs a display)");
     app.add_option("--out", outDir, "Folder for images and summary")->capture_default_str();
     app.add_option("--dump", dumpDir, "Also write raw artefacts (index targets, depth, lights, camera) here");
-    app.add_option("--frames", frames, "Timed frames (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--frames", frames, "Timed frames (median reported); with --time-step up to 1000000 frames")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    std::optional<double> timeStep;
+    app.add_option("--time-step", timeStep,
+                   "Soak run: frame k shows time + k * S seconds; writes soak.csv (image hash, memory, GL objects "
+                   "per frame) and soak.json instead of the usual images");
     app.add_flag("--no-reference", noReference, "Skip the brute-force reference and the error figures");
     try {
         app.parse(argc, argv);
@@ -390,6 +398,13 @@ int main(int argc, char** argv) {
     try {
         if (window && headless) throw Error("--window and --headless exclude each other");
         if (window) return runWindow(sceneChoice, rc);
+        if (timeStep) {
+            if (!std::isfinite(*timeStep) || *timeStep < 0.0)
+                throw Error("--time-step must be a finite number of seconds >= 0, got " + std::to_string(*timeStep));
+            if (!dumpDir.empty()) throw Error("--dump does not apply to a soak run (--time-step)");
+            return demo::runSoak(sceneChoice, rc, outDir, frames, *timeStep);
+        }
+        if (frames > 1000) throw Error("--frames must be in [1, 1000] without --time-step, got " + std::to_string(frames));
         return runHeadless(sceneChoice, rc, outDir, dumpDir, frames, !noReference);
     } catch (const std::exception& e) {
         std::cerr << "lidr-demo: error: " << e.what() << "\n";
