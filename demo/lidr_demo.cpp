@@ -6,15 +6,19 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "demo_options.h"
+#include "demo_soak.h"
 #include "frame_views.h"
 #include "lidr/base/gl.h"
 #include "lidr/eval/artefacts.h"
@@ -69,11 +73,24 @@ std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
 
+// Creates `dir` and proves it writable with a probe file, so an unwritable --out or --dump fails before any
+// rendering, naming the folder and the system's reason.
+void prepareWritableFolder(const std::string& dir, const std::string& option) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw Error(option + ": cannot create folder '" + dir + "': " + ec.message());
+    if (!std::filesystem::is_directory(dir, ec)) throw Error(option + ": '" + dir + "' is not a folder");
+    const std::string probe = path(dir, ".lidr-write-test");
+    errno = 0;
+    std::FILE* file = std::fopen(probe.c_str(), "wb");
+    if (!file) throw Error(option + ": cannot write into '" + dir + "': " + std::strerror(errno));
+    std::fclose(file);
+    std::filesystem::remove(probe, ec);
+}
+
 // The output folder and the GL context every headless run needs.
 std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::RendererChoice& rc) {
-    std::error_code ec;
-    std::filesystem::create_directories(outDir, ec);
-    if (ec) throw Error("cannot create output folder '" + outDir + "': " + ec.message());
+    prepareWritableFolder(outDir, "--out");
     auto context = GlContext::create(rc.contextOptions());
     std::cout << "GL: " << context->info().summary() << "\n";
     return context;
@@ -187,8 +204,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const Scene scene = sceneChoice.load();
     const RenderModeOptions modeOptions = rc.renderModeOptions(scene);
     demo::checkTargetMemory(scene, modeOptions);  // before the context: an oversized request fails at once
+    if (modeOptions.mode != "lidr" && !dumpDir.empty())
+        throw Error("--dump writes LIDR index targets; it needs --mode lidr");
+    if (!dumpDir.empty()) prepareWritableFolder(dumpDir, "--dump");  // before rendering, not after it
     if (modeOptions.mode != "lidr") {
-        if (!dumpDir.empty()) throw Error("--dump writes LIDR index targets; it needs --mode lidr");
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
     }
     const LidrOptions options = rc.lidrOptions(scene);
@@ -404,7 +423,13 @@ int main(int argc, char** argv) {
     app.add_flag("--window", window, "Open an interactive window (needs a display)");
     app.add_option("--out", outDir, "Folder for images and summary")->capture_default_str();
     app.add_option("--dump", dumpDir, "Also write raw artefacts (index targets, depth, lights, camera) here");
-    app.add_option("--frames", frames, "Timed frames (median reported)")->capture_default_str()->check(CLI::Range(1, 1000));
+    app.add_option("--frames", frames, "Timed frames (median reported); with --time-step up to 1000000 frames")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    std::optional<double> timeStep;
+    app.add_option("--time-step", timeStep,
+                   "Soak run: frame k shows time + k * S seconds; writes soak.csv (image hash, memory, GL objects "
+                   "per frame) and soak.json instead of the usual images");
     app.add_flag("--no-reference", noReference, "Skip the brute-force reference and the error figures");
     try {
         app.parse(argc, argv);
@@ -414,6 +439,13 @@ int main(int argc, char** argv) {
     try {
         if (window && headless) throw Error("--window and --headless exclude each other");
         if (window) return runWindow(sceneChoice, rc);
+        if (timeStep) {
+            if (!std::isfinite(*timeStep) || *timeStep < 0.0)
+                throw Error("--time-step must be a finite number of seconds >= 0, got " + std::to_string(*timeStep));
+            if (!dumpDir.empty()) throw Error("--dump does not apply to a soak run (--time-step)");
+            return demo::runSoak(sceneChoice, rc, outDir, frames, *timeStep);
+        }
+        if (frames > 1000) throw Error("--frames must be in [1, 1000] without --time-step, got " + std::to_string(frames));
         return runHeadless(sceneChoice, rc, outDir, dumpDir, frames, !noReference);
     } catch (const std::exception& e) {
         std::cerr << "lidr-demo: error: " << e.what() << "\n";

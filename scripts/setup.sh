@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
 #   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
-#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, viewer, package)
+#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, viewer,
+#                                examples, package), then the AddressSanitizer + UBSan build's subset and the fuzz
+#                                smoke runs (clang)
 #   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
-# Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out).
+# Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out),
+#   SANITIZE_BUILD_DIR (default build-sanitize), SANITIZE=0 skips the sanitizer build and fuzz runs (test job).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,6 +23,7 @@ packages=(
   libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
   gnuplot-nox
   libimgui-dev xvfb xauth
+  clang libclang-rt-14-dev
 )
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)
@@ -56,5 +60,15 @@ case "$job" in
     ;;
   test)
     ctest --test-dir "$build" --output-on-failure -j "$jobs"
+    if [ "${SANITIZE:-1}" != 0 ]; then
+      # A second build with AddressSanitizer + UBSan and the libFuzzer harnesses (clang): sanitize.cpu,
+      # sanitize.gl (a GL subset, tests/CMakeLists.txt) and fuzz.* smoke runs. doc/stability.md says why and how long.
+      sanitize_build="${SANITIZE_BUILD_DIR:-build-sanitize}"
+      cmake -S . -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+        -DCMAKE_CXX_COMPILER=clang++ -DLIDR_SANITIZE=address,undefined -DLIDR_BUILD_FUZZERS=ON \
+        -DLIDR_BUILD_DEMO=OFF -DLIDR_WITH_OSMESA=OFF >/dev/null
+      cmake --build "$sanitize_build" -j "$jobs"
+      ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs"
+    fi
     ;;
 esac

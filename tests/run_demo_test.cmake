@@ -97,7 +97,9 @@ set(bad_values
   "--scene|${OUT}@scene file is a directory"
   "--scheme|auto|--budget|4@--scheme auto chooses the budget and the index width itself"
   "--index-bits|12@--index-bits must be auto, 4, 8, 16.*got '12'"
-  "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16")
+  "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
+  "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'")
+file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 foreach(entry IN LISTS bad_values)
   string(REPLACE "@" ";" parts "${entry}")
   list(GET parts 0 args)
@@ -116,3 +118,9 @@ foreach(entry IN LISTS bad_values)
     message(FATAL_ERROR "lidr-demo ${shown}: a context was created before the error\n${out}")
   endif()
 endforeach()
+# An --out that cannot be a folder fails before the context, naming the option and the folder.
+execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/a-file
+                RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(r EQUAL 0 OR NOT err MATCHES "--out: (cannot create folder|'[^']*' is not a folder).*a-file" OR out MATCHES "GL: ")
+  message(FATAL_ERROR "lidr-demo --out <a file>: expected an early error naming --out, got ${r}\n${out}${err}")
+endif()

@@ -151,7 +151,8 @@ TEST_CASE("MSAA and pre-pass requests the context or the mode cannot honour are 
     const Scene scene = glassScene();
     LidrOptions o;
     o.volumeTest = VolumeTest::FrontFace;
-    o.msaaSamples = testGl().maxSamples * 2;  // a power of two past the limit
+    // A power of two above the context's maximum (maxSamples + 1 is no power of two, refused as such first).
+    o.msaaSamples = testGl().maxSamples * 2;
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("at most"));
     o.msaaSamples = 1;
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Error);

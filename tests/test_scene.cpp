@@ -758,6 +758,39 @@ TEST_CASE("scene files: limits are checked before any work, naming the value and
         options.boundsMax = glm::vec3(3e38f);
         REQUIRE_THROWS_WITH(lidr::generateLights(scene, options), Contains("generateLights: bounds overflow float"));
     }
+    SECTION("deep nesting and huge keys or strings give short messages") {
+        // 200,000 open arrays gave a 600 KB message (the path of every level).
+        std::string message;
+        try {
+            load(std::string(200000, '['));
+        } catch (const lidr::Error& error) {
+            message = error.what();
+        }
+        CHECK_THAT(message, Contains("nested deeper than 64 arrays and objects"));
+        CHECK(message.size() < 400);
+        // The limit counts the top-level object: 63 arrays inside it are allowed, 64 are not.
+        const std::string deep = R"({"lights": )" + std::string(64, '[') + std::string(64, ']') + "}";
+        CHECK_THROWS_WITH(load(deep), Contains("lights") && Contains("nested deeper than 64"));
+        const std::string fine = R"({"lights": )" + std::string(63, '[') + std::string(63, ']') + "}";
+        CHECK_THROWS_WITH(load(fine), !Contains("nested deeper") && Contains("lights"));
+        const std::string longKey(1000000, 'k');
+        message.clear();
+        try {
+            load("{\"" + longKey + "\": 1}");
+        } catch (const lidr::Error& error) {
+            message = error.what();
+        }
+        CHECK_THAT(message, Contains("unknown key") && Contains("(1000000 characters)"));
+        CHECK(message.size() < 400);
+        message.clear();
+        try {
+            load(R"({"mode": ")" + longKey + R"("})");
+        } catch (const lidr::Error& error) {
+            message = error.what();
+        }
+        CHECK_THAT(message, Contains("mode") && Contains("characters left out"));
+        CHECK(message.size() <= 2100);
+    }
 }
 
 TEST_CASE("scene files: files that are not regular, unsupported formats and huge textures say so (issue 13)",

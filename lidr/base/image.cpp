@@ -8,6 +8,9 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include "lidr/base/error.h"
 #include "lidr/base/gl.h"
 
@@ -15,8 +18,9 @@ namespace lidr {
 
 void writePng(const std::string& path, const ImageRGBA8& image) {
     if (image.width <= 0 || image.height <= 0) throw Error("writePng: empty image for " + path);
+    errno = 0;
     if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
-        throw Error("could not write PNG '" + path + "'");
+        throw Error("could not write PNG '" + path + "': " + (errno ? std::strerror(errno) : "write failed"));
 }
 
 ImageRGBA8 readPng(const std::string& path) {
@@ -29,8 +33,9 @@ ImageRGBA8 readPng(const std::string& path) {
 }
 
 void writePfm(const std::string& path, const ImageFloat& image) {
+    errno = 0;
     std::ofstream f(path, std::ios::binary);
-    if (!f) throw Error("could not write PFM '" + path + "'");
+    if (!f) throw Error("could not write PFM '" + path + "': " + (errno ? std::strerror(errno) : "open failed"));
     f << "Pf\n" << image.width << " " << image.height << "\n-1.0\n";  // negative scale: little-endian
     for (int y = image.height - 1; y >= 0; --y)
         f.write(reinterpret_cast<const char*>(&image.pixels[static_cast<size_t>(y) * image.width]),

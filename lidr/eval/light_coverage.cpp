@@ -37,6 +37,20 @@ void screenRect(const CameraMatrices& m, const PointLight& l, int& x0, int& y0, 
     x1 = clampToInt(std::ceil(maxX) + 1.0f, -1, m.width - 1, m.width - 1);
     y1 = clampToInt(std::ceil(maxY) + 1.0f, -1, m.height - 1, m.height - 1);
 }
+// The surface point of pixel (x, y) at window depth d, in double through the exact inverse of the float
+// projection the GPU drew with: distance = P32 / (2d - 1 + P22), x and y along the pixel's ray. Not through the
+// float inverse view-projection, whose rounding dominates where far/near is huge (1e5 and up), so the truth is
+// the stored depth's surface, as exactly as doubles give it.
+glm::vec3 surfacePoint(const CameraMatrices& m, const glm::dmat4& inverseView, int x, int y, float depth) {
+    const glm::dmat4 P(m.projection);
+    const bool perspective = P[2][3] == -1.0 && P[3][3] == 0.0 && P[2][0] == 0.0 && P[2][1] == 0.0;
+    if (!perspective) return unprojectPixel(m, x, y, depth);
+    const double distance = P[3][2] / (2.0 * double(depth) - 1.0 + P[2][2]);
+    const double xn = (x + 0.5) / m.width * 2.0 - 1.0, yn = 1.0 - (y + 0.5) / m.height * 2.0;
+    const glm::dvec4 view(xn * distance / P[0][0], yn * distance / P[1][1], -distance, 1.0);
+    return glm::vec3(inverseView * view);
+}
+
 }  // namespace
 
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
@@ -49,13 +63,14 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
     const size_t n = size_t(t.width) * t.height;
     t.surface.assign(n, 0);
     std::vector<glm::vec3> world(n);
+    const glm::dmat4 inverseView = glm::inverse(glm::dmat4(camera.view));
     for (int y = 0; y < t.height; ++y)
         for (int x = 0; x < t.width; ++x) {
             const size_t p = size_t(y) * t.width + x;
             const float d = depth.at(x, y);
             if (d >= 1.0f) continue;
             t.surface[p] = 1;
-            world[p] = unprojectPixel(camera, x, y, d);
+            world[p] = surfacePoint(camera, inverseView, x, y, d);
         }
     std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (pixel, light)
     for (size_t i = 0; i < lights.size(); ++i) {

@@ -62,6 +62,15 @@ std::string glslVec4(const double v[4]) {
 }
 }  // namespace
 
+// Channel c of a window holds bits [c*k, c*k + k) of the index: below bit 8 they weigh into the low byte, from
+// bit 8 on into the high byte (k divides 8, so no group straddles bit 8).
+double BitShiftScheme::lowWeight(int c) const {
+    return c < channels_ && c * groupBits_ < 8 ? std::ldexp(1.0, c * groupBits_) : 0.0;
+}
+double BitShiftScheme::highWeight(int c) const {
+    return c < channels_ && c * groupBits_ >= 8 ? std::ldexp(1.0, c * groupBits_ - 8) : 0.0;
+}
+
 ShaderDefines BitShiftScheme::unpackDefines() const {
     ShaderDefines d = {{"LIDR_SLOTS", std::to_string(config_.budget)},
                        {"LIDR_INDEX_TARGETS", std::to_string(targetCount())},
@@ -71,12 +80,13 @@ ShaderDefines BitShiftScheme::unpackDefines() const {
                        {"LIDR_GROUP_SCALE", std::to_string(1 << (8 - groupBits_)) + ".0"},
                        {"LIDR_GROUP_VALUES", std::to_string(1 << groupBits_) + ".0"}};
     for (int t = 0; t < 4; ++t) {
-        double w[4];
+        double low[4], high[4];
         for (int ch = 0; ch < 4; ++ch) {
-            const int c = t * 4 + ch;
-            w[ch] = c < channels_ ? std::ldexp(1.0, c * groupBits_) : 0.0;
+            low[ch] = lowWeight(t * 4 + ch);
+            high[ch] = highWeight(t * 4 + ch);
         }
-        d.push_back({"LIDR_WEIGHTS" + std::to_string(t), glslVec4(w)});
+        d.push_back({"LIDR_WEIGHTS_LOW" + std::to_string(t), glslVec4(low)});
+        d.push_back({"LIDR_WEIGHTS_HIGH" + std::to_string(t), glslVec4(high)});
     }
     return d;
 }
@@ -91,20 +101,22 @@ std::vector<uint32_t> BitShiftScheme::decodeBytes(const std::vector<ShaderFloat>
         std::vector<ShaderFloat> packed(bytes.begin() + w * windowTargets_ * 4,
                                         bytes.begin() + (w + 1) * windowTargets_ * 4);
         for (int s = 0; s < windowSlots_; ++s) {
-            ShaderFloat index(0.0, p);
+            // The index's low and high bytes, weighted separately (lidrHalves): never one float above 255.
+            ShaderFloat low(0.0, p), high(0.0, p);
             for (int t = 0; t < windowTargets_; ++t) {
-                ShaderFloat dot(0.0, p);
+                ShaderFloat dotLow(0.0, p), dotHigh(0.0, p);
                 for (int ch = 0; ch < 4; ++ch) {
                     ShaderFloat& v = packed[t * 4 + ch];
                     const ShaderFloat top = floorOf(v * invScale);
                     v = (v - top * scale) * values;
-                    const int c = t * 4 + ch;
-                    const ShaderFloat weight(c < channels_ ? std::ldexp(1.0, c * groupBits_) : 0.0, p);
-                    dot = ch == 0 ? top * weight : dot + top * weight;
+                    const ShaderFloat wLow(lowWeight(t * 4 + ch), p), wHigh(highWeight(t * 4 + ch), p);
+                    dotLow = ch == 0 ? top * wLow : dotLow + top * wLow;
+                    dotHigh = ch == 0 ? top * wHigh : dotHigh + top * wHigh;
                 }
-                index = t == 0 ? dot : index + dot;
+                low = t == 0 ? dotLow : low + dotLow;
+                high = t == 0 ? dotHigh : high + dotHigh;
             }
-            slots.push_back(std::isfinite(index.v) && index.v >= 0.0 ? static_cast<uint32_t>(index.v) : 0xFFFFFFFFu);
+            slots.push_back(indexFromHalves(low, high));
         }
     }
     return slots;

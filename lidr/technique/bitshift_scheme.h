@@ -37,6 +37,8 @@ protected:
     std::vector<uint32_t> decodeBytes(const std::vector<ShaderFloat>& bytes) const override;
 
 private:
+    double lowWeight(int channel) const;   // LIDR_WEIGHTS_LOWt: 2^(c*k) for groups below bit 8, else 0
+    double highWeight(int channel) const;  // LIDR_WEIGHTS_HIGHt: 2^(c*k - 8) for groups from bit 8, else 0
     int groupBits_ = 2, channels_ = 4, windowSlots_ = 4, windows_ = 1, windowTargets_ = 1;
 };
 

@@ -132,7 +132,7 @@ std::vector<uint32_t> CpuSortedScheme::decodeBytes(const std::vector<ShaderFloat
     std::vector<uint32_t> slots;
     for (int g = 0; g < config_.budget; ++g) {
         if (config_.indexBits == 16) {
-            slots.push_back(out(bytes[size_t(2 * g)] + bytes[size_t(2 * g + 1)] * ShaderFloat(256.0, p)));
+            slots.push_back(indexFromHalves(bytes[size_t(2 * g)], bytes[size_t(2 * g + 1)]));  // (low, high)
         } else if (config_.indexBits == 4) {
             const ShaderFloat byte = bytes[size_t(g / 2)];
             const ShaderFloat high = floorOf(byte * ShaderFloat(1.0 / 16.0, p));

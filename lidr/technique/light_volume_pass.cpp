@@ -436,6 +436,7 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     program.set("uNearPlane", camera_.nearPlane);
     program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
     program.set("uRadiusScale", kSphereRadiusScale);
+    program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
     program.set("uDepth", 0);
     depth_->bind(0);
     beginDraw(d);

@@ -135,6 +135,12 @@ public:
     // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
     // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
     static constexpr float kSphereRadiusScale = 1.0005f;
+    // The sphere tests treat the pixel's surface as anywhere within this many steps of the 24-bit depth copy
+    // (light_volume_sphere.frag): the stored depth is the true depth within half a step, and rebuilding distance
+    // from it in fp32 costs about one more. Negligible at ordinary near/far ratios (about 1 mm at 20 m for near
+    // 0.1 m), it keeps a light whose sphere the true surface reaches from being lost where depth precision is
+    // coarse (far/near 1e5 and up: doc/stability.md).
+    static constexpr float kSphereDepthSteps = 3.0f;
 
 private:
     void beginDraw(const VolumeDraw& d);

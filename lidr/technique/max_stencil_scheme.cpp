@@ -70,7 +70,7 @@ std::vector<uint32_t> MaxStencilScheme::decodeBytes(const std::vector<ShaderFloa
             const bool none = high.v < 0.5 || std::fabs((low - high).v) < 0.5;
             slots.push_back(none ? 0u : out(low));
         } else if (config_.indexBits == 16) {
-            slots.push_back(out(a + b * ShaderFloat(256.0, p)));
+            slots.push_back(indexFromHalves(a, b));  // the shader returns (low, high), never one float
         } else {
             slots.push_back(out(a));
         }

@@ -126,6 +126,12 @@ std::vector<uint8_t> PackingScheme::encodePixel(const std::vector<uint32_t>& dra
     return bytes;
 }
 
+uint32_t indexFromHalves(ShaderFloat low, ShaderFloat high) {
+    const auto isByte = [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 255.0 && v == std::floor(v); };
+    if (!isByte(low.v) || !isByte(high.v)) return 0xFFFFFFFFu;
+    return uint32_t(low.v) + 256u * uint32_t(high.v);
+}
+
 std::vector<uint32_t> PackingScheme::decodeReads(const float* reads, FloatPrecision p) const {
     std::vector<ShaderFloat> bytes;
     for (int i = 0; i < targetCount() * 4; ++i) bytes.push_back(lidrBytesFor(ShaderFloat(reads[i], p)));

@@ -111,6 +111,11 @@ std::vector<std::string> packingSchemeNames();
 void checkPackingConfig(const PackingConfig& config);
 void checkContextFor(const std::string& what, const GlInfo& info, int targets, int drawTargets);
 
+// A slot's index from the unpack shader's (low byte, high byte) pair, the two coordinates of its light-table texel
+// (column, row): low + 256 * high, computed here in integers as the lookup never forms it in one shader float;
+// 0xFFFFFFFF (an invalid slot) where either is not an integer in 0..255.
+uint32_t indexFromHalves(ShaderFloat low, ShaderFloat high);
+
 // Bytes of an index as colours: byte / 255 exactly.
 inline float byteColor(uint32_t byte) { return float(byte) / 255.0f; }
 

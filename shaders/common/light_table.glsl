@@ -20,8 +20,13 @@ vec2 lidrLightTexCoord(float index) {
     return vec2((column + 0.5) * (1.0 / 256.0), (row + 0.5) / uLightTableRows);
 }
 
-void lidrFetchLight(float index, out vec4 posRadius, out vec3 color) {
-    vec2 uv = lidrLightTexCoord(index);
+// The same from the index's two bytes (low, high) = (column, row), never formed into one number: an index above
+// 2048 does not fit one fp16 value, each byte does (LIDR's forward pass; doc/packing.md, "Precision").
+vec2 lidrLightTexCoord(vec2 halves) {
+    return vec2((halves.x + 0.5) * (1.0 / 256.0), (halves.y + 0.5) / uLightTableRows);
+}
+
+void lidrFetchLightAt(vec2 uv, out vec4 posRadius, out vec3 color) {
 #ifdef LIDR_LIGHT_TABLE_FIXED16
     // Bytes come back as k/255; (high * 256 + low) / 65535 rebuilds the 16-bit fraction.
     vec4 high = texture2D(uLightPosRadius, uv);
@@ -33,4 +38,12 @@ void lidrFetchLight(float index, out vec4 posRadius, out vec3 color) {
     posRadius = texture2D(uLightPosRadius, uv);
     color = texture2D(uLightColor, uv).rgb;
 #endif
+}
+
+void lidrFetchLight(float index, out vec4 posRadius, out vec3 color) {
+    lidrFetchLightAt(lidrLightTexCoord(index), posRadius, color);
+}
+
+void lidrFetchLight(vec2 halves, out vec4 posRadius, out vec3 color) {
+    lidrFetchLightAt(lidrLightTexCoord(halves), posRadius, color);
 }

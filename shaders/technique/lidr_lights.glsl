@@ -13,7 +13,8 @@
 // shading.glsl, which also gives the surface varyings, material uniforms and Blinn-Phong).
 // lidr fills uInvViewportSize, the index textures uIndexTex0.. and the light table (light_table.glsl); the
 // packing scheme's unpack file stands in for "lidr_unpack.glsl" (it defines LIDR_SLOTS, lidrUnpackBegin(uv),
-// lidrUnpackNext() and, where the first empty slot ends the list, LIDR_NULL_ENDS_LIST).
+// lidrUnpackNext() returning the index as (low byte, high byte), and, where the first empty slot ends the list,
+// LIDR_NULL_ENDS_LIST).
 // Index targets are read through LIDR_INDEX_SAMPLER / LIDR_FETCH_INDEX, so the per-sample MSAA path can swap
 // in sampler2DMS and texelFetch(..., gl_SampleID) (lidr/technique/forward_pass.cpp) without touching the
 // unpack files.
@@ -32,7 +33,9 @@ struct LidrLight {
     vec3 position;
     float radius;
     vec3 color;
-    float index;  // the light's index in the frame's light list plus one (0 is the null light)
+    float index;       // the light's index in the frame's light list plus one (0 is the null light); above 2048
+                       // not exact where fragments compute in fp16
+    vec2 indexBytes;   // the same as its two bytes (low, high): exact in any precision
 };
 
 float lidrSlotsLeft;
@@ -47,18 +50,22 @@ bool lidrNextLight(out LidrLight light) {
     light.radius = 0.0;
     light.color = vec3(0.0);
     light.index = 0.0;
+    light.indexBytes = vec2(0.0);
     for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
         if (lidrSlotsLeft < 0.5) return false;
         lidrSlotsLeft -= 1.0;
-        float index = lidrUnpackNext();
-        if (index >= 0.5) {
+        // The index as its two bytes (low, high), (0, 0) for an empty slot: never one float, which fp16
+        // fragments cannot hold above 2048; the light table is read at texel (low, high).
+        vec2 index = lidrUnpackNext();
+        if (index.x + index.y >= 0.5) {
             vec4 posRadius;
             vec3 color;
             lidrFetchLight(index, posRadius, color);
             light.position = posRadius.xyz;
             light.radius = posRadius.w;
             light.color = color;
-            light.index = index;
+            light.index = index.x + 256.0 * index.y;
+            light.indexBytes = index;
             return true;
         }
 #ifdef LIDR_NULL_ENDS_LIST

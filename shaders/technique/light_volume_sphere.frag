@@ -14,6 +14,7 @@ uniform vec2 uInvTargetSize;
 uniform vec2 uDepthToDistance; // window depth d -> distance in front of the eye: x / (d + y) (perspective)
 uniform float uNearPlane;
 uniform float uRadiusScale;    // a hair over 1: lights are kept up to here (the CPU truth's band lies inside)
+uniform float uDepthMargin;    // the surface lies within this much window depth of the stored depth (a few steps)
 
 varying vec4 vLightView;
 varying vec3 vViewPos;
@@ -34,15 +35,21 @@ vec4 lidrExactBytes(vec4 c) {
 void main() {
     float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
-    float surface = uDepthToDistance.x / (depth + uDepthToDistance.y);
+    float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
 #ifdef LIDR_SPHERE_RAY
     // The closest point to the centre on the ray between the near plane and the surface.
-    float t = clamp(dot(vLightView.xyz, ray) / dot(ray, ray), uNearPlane, surface);
-    vec3 d = ray * t - vLightView.xyz;
+    float surface = uDepthToDistance.x / (depth + uDepthToDistance.y);
+    float t = clamp(toCentre, uNearPlane, surface);
 #else
     if (depth >= 1.0) discard;  // background: nothing to light
-    vec3 d = ray * surface - vLightView.xyz;
+    // The surface's distance is known to within the depth buffer's precision: [surfaceNear, surfaceFar] holds
+    // the true surface (uDepthMargin), so the test is conservative where depth is coarse (a huge far/near
+    // ratio) and marks nothing more elsewhere. The closest point to the centre on the ray where it may be:
+    float surfaceNear = uDepthToDistance.x / (max(depth - uDepthMargin, 0.0) + uDepthToDistance.y);
+    float surfaceFar = uDepthToDistance.x / (min(depth + uDepthMargin, 1.0) + uDepthToDistance.y);
+    float t = clamp(toCentre, surfaceNear, surfaceFar);
 #endif
+    vec3 d = ray * t - vLightView.xyz;
     float r = vLightView.w * uRadiusScale;
     if (dot(d, d) > r * r) discard;
     gl_FragData[0] = lidrExactBytes(vColor0);

@@ -2,13 +2,15 @@
 // targets holds LIDR_WINDOW_SLOTS lights; in it, channel c holds bits [c*k, c*k + k) of each index, the most
 // recently drawn light's group on top. Budget 16 has two windows (ranks 0-7, then 8-15), read in turn.
 // Bytes are rebuilt exactly by lidrBytes() (any read within +-0.45 step, fp16 and up); after that every value
-// is an integer below 256 until the channel groups are weighted into the index, which is exact where the index
-// fits the precision's significand (fp16: 11 bits, so 4- and 8-bit widths; fp24/fp32: all widths).
+// is an integer below 256, and so are the index's two bytes: the channel groups are weighted into the low byte
+// (LIDR_WEIGHTS_LOWt, groups below bit 8) and the high byte (LIDR_WEIGHTS_HIGHt, groups from bit 8, weight / 256)
+// separately, so every width is exact in fp16 too (an index above 2048 never exists as one fp16 value).
 // No integer or bit operations: GLSL 1.20.
 //   LIDR_SLOTS, LIDR_INDEX_TARGETS, LIDR_WINDOWS (1 or 2), LIDR_WINDOW_TARGETS (1, 2, 4), LIDR_WINDOW_SLOTS
 //   LIDR_GROUP_SCALE   2^(8-k): dividing by it takes the top k bits
 //   LIDR_GROUP_VALUES  2^k: multiplying by it shifts the remaining bits up by k
-//   LIDR_WEIGHTSt      weights 2^(c*k) of target t's channels c = 4t..4t+3 in a window, zero where unused
+//   LIDR_WEIGHTS_LOWt  weights 2^(c*k) of target t's channels c = 4t..4t+3 in a window whose group lies below
+//                      bit 8, zero elsewhere; LIDR_WEIGHTS_HIGHt: 2^(c*k - 8) for groups from bit 8
 #define LIDR_NULL_ENDS_LIST 1
 #include "lidr_bytes.glsl"
 #include "lidr_index_samplers.glsl"
@@ -51,7 +53,13 @@ vec4 lidrTakeTop(inout vec4 bytes) {
     return top;
 }
 
-float lidrUnpackNext() {
+// One window channel set's contribution to the index bytes (low, high).
+vec2 lidrHalves(inout vec4 bytes, vec4 low, vec4 high) {
+    vec4 top = lidrTakeTop(bytes);
+    return vec2(dot(top, low), dot(top, high));
+}
+
+vec2 lidrUnpackNext() {
 #if LIDR_WINDOWS > 1
     if (lidrLeft < 0.5) {
         lidrP0 = lidrQ0;
@@ -62,13 +70,13 @@ float lidrUnpackNext() {
     }
 #endif
     lidrLeft -= 1.0;
-    float index = dot(lidrTakeTop(lidrP0), LIDR_WEIGHTS0);
+    vec2 index = lidrHalves(lidrP0, LIDR_WEIGHTS_LOW0, LIDR_WEIGHTS_HIGH0);
 #if LIDR_WINDOW_TARGETS > 1
-    index += dot(lidrTakeTop(lidrP1), LIDR_WEIGHTS1);
+    index += lidrHalves(lidrP1, LIDR_WEIGHTS_LOW1, LIDR_WEIGHTS_HIGH1);
 #endif
 #if LIDR_WINDOW_TARGETS > 2
-    index += dot(lidrTakeTop(lidrP2), LIDR_WEIGHTS2);
-    index += dot(lidrTakeTop(lidrP3), LIDR_WEIGHTS3);
+    index += lidrHalves(lidrP2, LIDR_WEIGHTS_LOW2, LIDR_WEIGHTS_HIGH2);
+    index += lidrHalves(lidrP3, LIDR_WEIGHTS_LOW3, LIDR_WEIGHTS_HIGH3);
 #endif
     return index;
 }

@@ -12,13 +12,11 @@ uniform float uSlotBase;
 
 void main() {
     lidrUnpackBegin(gl_FragCoord.xy * uInvTargetSize);
-    vec2 got = vec2(0.0);
+    vec2 first = vec2(0.0), second = vec2(0.0);  // (low byte, high byte) of slots uSlotBase and uSlotBase + 1
     for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
-        float index = lidrUnpackNext();
-        if (abs(float(slot) - uSlotBase) < 0.5) got.x = index;
-        if (abs(float(slot) - uSlotBase - 1.0) < 0.5) got.y = index;
+        vec2 index = lidrUnpackNext();
+        if (abs(float(slot) - uSlotBase) < 0.5) first = index;
+        if (abs(float(slot) - uSlotBase - 1.0) < 0.5) second = index;
     }
-    vec2 high = floor(got * (1.0 / 256.0));
-    vec2 low = got - high * 256.0;
-    gl_FragColor = vec4(low.x, high.x, low.y, high.y) * (1.0 / 255.0);
+    gl_FragColor = vec4(first, second) * (1.0 / 255.0);
 }

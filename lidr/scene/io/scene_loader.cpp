@@ -50,6 +50,19 @@ bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v
 
 std::string str(const glm::vec3& v) { return "(" + str(v.x) + ", " + str(v.y) + ", " + str(v.z) + ")"; }
 
+// JSON nesting allowed in a scene file (the format itself needs 6 levels); deeper input is refused while
+// parsing, so an error's path stays short.
+constexpr int maxJsonDepth = 64;
+// Longest error message a scene file gives; longer ones (a huge key or string echoed back) keep their start
+// and end.
+constexpr size_t maxMessageLength = 2000;
+
+// A key or text from the file as shown in a message: at most 80 characters.
+std::string clipped(const std::string& text, size_t limit = 80) {
+    if (text.size() <= limit) return text;
+    return text.substr(0, limit) + "...(" + std::to_string(text.size()) + " characters)";
+}
+
 // Empty for a regular file (symbolic links followed), else why it cannot be read as one: "not found" only
 // when nothing is there; "is a directory", "is not a regular file" (a device, a FIFO), or the system's text
 // for any other failure (a symbolic link loop, permissions).
@@ -402,7 +415,7 @@ private:
                 const size_t index = frame.node->size() - (k + 1 < open_.size() ? 1 : 0);
                 path += "[" + std::to_string(index) + "]";
             } else if (!frame.key.empty()) {
-                path += (path.empty() ? "" : ".") + frame.key;
+                path += (path.empty() ? "" : ".") + clipped(frame.key);
             }
         }
         return path;
@@ -427,6 +440,8 @@ private:
     }
 
     bool open(Json container) {
+        if (open_.size() >= size_t(maxJsonDepth))
+            fail("nested deeper than " + std::to_string(maxJsonDepth) + " arrays and objects (scene files need at most 6)");
         Json* node = insert(std::move(container));
         open_.push_back({node, {}});
         return true;
@@ -459,7 +474,7 @@ public:
     // A member that must be there.
     Field operator[](const char* key) const {
         if (!value_.is_object()) fail("expected an object, got " + typeName());
-        const std::string childPath = path_.empty() ? key : path_ + "." + key;
+        const std::string childPath = path_.empty() ? clipped(key) : path_ + "." + clipped(key);
         if (!has(key)) Field(value_, childPath, file_).fail("missing required field");
         return Field(value_.at(key), childPath, file_);
     }
@@ -849,9 +864,17 @@ private:
 }  // namespace
 
 Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors) {
-    PathTrackingParser parser(nameForErrors);
-    Json::sax_parse(jsonText, &parser);
-    return SceneReader(nameForErrors, baseDir).read(parser.document);
+    try {
+        PathTrackingParser parser(nameForErrors);
+        Json::sax_parse(jsonText, &parser);
+        return SceneReader(nameForErrors, baseDir).read(parser.document);
+    } catch (const Error& error) {
+        const std::string message = error.what();
+        if (message.size() <= maxMessageLength) throw;
+        const size_t keep = maxMessageLength / 2;
+        throw Error(message.substr(0, keep) + " ...(" + std::to_string(message.size() - 2 * keep) +
+                    " characters left out)... " + message.substr(message.size() - keep));
+    }
 }
 
 Scene loadSceneFile(const std::string& path) {
