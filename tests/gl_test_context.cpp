@@ -9,8 +9,17 @@
 
 namespace lidr::test {
 
-GlContext& testContext() {
+namespace {
+std::unique_ptr<GlContext>& contextSlot() {
     static std::unique_ptr<GlContext> context;
+    return context;
+}
+}  // namespace
+
+void releaseTestContext() { contextSlot().reset(); }
+
+GlContext& testContext() {
+    std::unique_ptr<GlContext>& context = contextSlot();
     static bool reported = false;
     if (!context) {
         context = GlContext::create();

@@ -8,6 +8,10 @@
 namespace lidr::test {
 
 GlContext& testContext();
+// Destroys the context while the GL library is whole: main() calls it after the run. Left to static
+// destruction, it ran after Mesa's own exit handlers had stopped llvmpipe's threads, and OSMesa's unbind
+// crashed at exit (exit status 139 after every test had passed).
+void releaseTestContext();
 const GlInfo& testGl();
 bool isSoftpipe();
 // Test image sizes: smaller on softpipe, whose rasteriser is an interpreter.

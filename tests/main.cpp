@@ -2,6 +2,10 @@
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
+#include "gl_test_context.h"
+
 int main(int argc, char* argv[]) {
-    return Catch::Session().run(argc, argv);
+    const int result = Catch::Session().run(argc, argv);
+    lidr::test::releaseTestContext();
+    return result;
 }
