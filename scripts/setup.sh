@@ -66,7 +66,7 @@ case "$job" in
       sanitize_build="${SANITIZE_BUILD_DIR:-build-sanitize}"
       cmake -S . -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
         -DCMAKE_CXX_COMPILER=clang++ -DLIDR_SANITIZE=address,undefined -DLIDR_BUILD_FUZZERS=ON \
-        -DLIDR_BUILD_DEMO=OFF -DLIDR_WITH_OSMESA=OFF >/dev/null
+        -DLIDR_BUILD_DEMO=OFF -DLIDR_BUILD_EXAMPLES=OFF -DLIDR_WITH_OSMESA=OFF >/dev/null
       cmake --build "$sanitize_build" -j "$jobs"
       ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs"
     fi

@@ -714,6 +714,15 @@ TEST_CASE("scene files: bad input is an lidr::Error naming the problem", "[scene
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "textured.obj"}])")),
                             Contains("models[0].file") && Contains("material 't'") && Contains("missing.ppm"));
     }
+    SECTION("OBJ whose MTL has values the renderer cannot use (found by fuzz.obj)") {
+        dir.write("neg.obj", "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl n\nf 1 2 3\n");
+        dir.write("neg.mtl", "newmtl n\nKd 0 0 -0.5\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "neg.obj"}])")),
+                            Contains("material 'n'") && Contains("Kd must be finite and >= 0"));
+        dir.write("neg.mtl", "newmtl n\nKd 1 1 1\nd 2\n");
+        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "neg.obj"}])")),
+                            Contains("material 'n'") && Contains("d (dissolve) must be in [0, 1]"));
+    }
     SECTION("OBJ without an MTL loads with the default material") {
         dir.write("nomtl.obj", "mtllib absent.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
         const lidr::Scene scene = load(sceneWith(R"(, "models": [{"file": "nomtl.obj"}])"));

@@ -239,6 +239,20 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             material.specular = {source.specular[0], source.specular[1], source.specular[2]};
             material.shininess = std::max(source.shininess, 1.0f);  // exporters often write Ns 0
             material.opacity = source.dissolve;
+            // MTL values the renderer cannot use are the file's error, named with its keyword (the fuzzer found
+            // "Kd 0 0 -0.5" passing import and failing only later, in scene validation).
+            const auto color = [&](const char* keyword, const glm::vec3& c) {
+                if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.x >= 0.0f && c.y >= 0.0f &&
+                      c.z >= 0.0f))
+                    fail("material '" + source.name + "': " + keyword + " must be finite and >= 0, got (" +
+                         std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ")");
+            };
+            color("Kd", material.diffuse);
+            color("Ks", material.specular);
+            if (!std::isfinite(material.shininess))
+                fail("material '" + source.name + "': Ns must be finite, got " + std::to_string(source.shininess));
+            if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+                fail("material '" + source.name + "': d (dissolve) must be in [0, 1], got " + std::to_string(source.dissolve));
             if (!source.diffuse_texname.empty()) {
                 material.diffuseTexture = (folder / source.diffuse_texname).lexically_normal().string();
                 const std::string problem = imageProblem(material.diffuseTexture);
