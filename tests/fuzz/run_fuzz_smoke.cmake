@@ -8,7 +8,10 @@ file(COPY ${seeds} DESTINATION ${WORK}/corpus)
 set(ENV{LSAN_OPTIONS} "suppressions=${SUPPRESSIONS}:print_suppressions=0")
 set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1")
 execute_process(
-  COMMAND ${FUZZER} -max_total_time=${SECONDS} -max_len=8192 -timeout=10 -rss_limit_mb=2048
+  # A fixed seed: the smoke run explores the same sequence of inputs every time (a slower machine a prefix of
+  # it), so CI does not fail by chance on a
+  # finding nobody has looked at; the documented long runs (doc/stability.md) take random seeds.
+  COMMAND ${FUZZER} -seed=1 -max_total_time=${SECONDS} -max_len=8192 -timeout=10 -rss_limit_mb=2048
           -print_final_stats=1 -artifact_prefix=${WORK}/artifacts/ ${WORK}/corpus
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 file(WRITE ${WORK}/log.txt "${out}${err}")
