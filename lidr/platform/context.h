@@ -10,7 +10,9 @@
 
 namespace lidr {
 
-enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa };
+// EglGles2: EGL surfaceless with an OpenGL ES 2.0 context (EGL_OPENGL_ES_API), for ES 2.0-class hardware;
+// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0").
+enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2 };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
@@ -41,15 +43,17 @@ protected:
     GlInfo info_;
 };
 
-ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa"
+ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa",
+                                                              // "egl-gles2"
 const char* contextBackendName(ContextBackend b);
-// The backends this library offers. lidr::lidr: egl, egl-device (and glfw where built); lidr::lidr_osmesa:
+// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw where built); lidr::lidr_osmesa:
 // osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md).
 std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
 std::unique_ptr<GlContext> createEglSurfaceless();
 std::unique_ptr<GlContext> createEglDevice();
+std::unique_ptr<GlContext> createEglGles2();
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&);
 std::unique_ptr<GlContext> createOSMesa();
 }  // namespace detail
