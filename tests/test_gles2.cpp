@@ -18,6 +18,7 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/modes/tiled_renderer.h"
 #include "lidr/scene/default_scene.h"
 #include "render_helpers.h"
 
@@ -242,6 +243,12 @@ TEST_CASE("ES 2.0 refuses what it lacks before drawing, naming the missing featu
     REQUIRE_THROWS_WITH(make(es, msaa), Contains("multisample"));
 
     REQUIRE_THROWS_WITH(FrameTimer(es, TimingMethod::GpuQueries), Contains("timer"));
+
+    // Tiled depth bounds need a highp gl_FragCoord.z; without them tiled runs.
+    TiledOptions tiled;
+    REQUIRE_THROWS_WITH(TiledRenderer(es, scene, tiled, w, h), Contains("mediump") && Contains("--no-depth-bounds"));
+    tiled.depthBounds = false;
+    REQUIRE_NOTHROW(TiledRenderer(es, scene, tiled, w, h));
 
 
     // An automatic budget cannot be measured without occlusion queries: a fixed one, said in the frame's stats.
