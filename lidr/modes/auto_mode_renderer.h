@@ -44,6 +44,9 @@ public:
     // The candidate that drew the last frame (its index lists, tiles and decisions are that frame's).
     const Renderer& lastRenderer() const { return *renderers_[size_t(last_)]; }
 
+    std::vector<GpuScene*> gpuScenes() override;
+    void checkObjectMaterial(const Material& material) const override;
+
 private:
     AutoModeOptions options_;
     std::vector<std::string> candidates_;
