@@ -437,7 +437,7 @@ TEST_CASE("a material shader that does not compile is an error naming it", "[emb
     CHECK_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("no_such_file.glsl"));
 }
 
-TEST_CASE("timing is off by default: no timer queries, no pass times, in every mode", "[embed][timing]") {
+TEST_CASE("timing is off by default: no timer queries, no pass times, in every mode", "[embed][timing][modes]") {
     testContext();
     const Scene scene = litFloorScene();
     const std::vector<PointLight> lights = scene.lightsAt(0.0f);
