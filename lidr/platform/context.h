@@ -10,7 +10,7 @@
 
 namespace lidr {
 
-enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa };
+enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, WebGl };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
@@ -18,6 +18,7 @@ struct ContextOptions {
     int windowWidth = 1024, windowHeight = 768;     // GLFW only
     bool visibleWindow = false;                      // GLFW only
     std::string windowTitle = "lidr";
+    std::string canvasSelector = "#canvas";          // WebGL only (the web build): the page's <canvas>
 };
 
 class GlContext {
@@ -41,10 +42,11 @@ protected:
     GlInfo info_;
 };
 
-ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa"
+// "auto", "egl", "egl-device", "glfw", "osmesa", "webgl"
+ContextBackend parseContextBackend(const std::string& name);
 const char* contextBackendName(ContextBackend b);
 // The backends this library offers. lidr::lidr: egl, egl-device (and glfw where built); lidr::lidr_osmesa:
-// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md).
+// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md); the web build: webgl only.
 std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
@@ -52,6 +54,7 @@ std::unique_ptr<GlContext> createEglSurfaceless();
 std::unique_ptr<GlContext> createEglDevice();
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&);
 std::unique_ptr<GlContext> createOSMesa();
+std::unique_ptr<GlContext> createWebGl(const ContextOptions&);
 }  // namespace detail
 
 }  // namespace lidr
