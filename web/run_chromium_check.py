@@ -96,8 +96,11 @@ def main():
                                                     f"--screenshot={os.path.abspath(args.screenshot)}", url]),
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=args.timeout)
             print(f"web.chromium: screenshot {args.screenshot} (exit {shot.returncode})")
+        last = Handler.result.strip().splitlines()[-1] if Handler.result.strip() else ""
+        if not last.startswith("PASS"):
+            with open(log_path, errors="replace") as log:
+                print("web.chromium: Chromium's log (the page's console):\n" + log.read()[-6000:], file=sys.stderr)
     server.shutdown()
-    last = Handler.result.strip().splitlines()[-1] if Handler.result.strip() else ""
     return 0 if last.startswith("PASS") else 1
 
 

@@ -38,3 +38,53 @@ inline GLenum glewInit() { return GLEW_OK; }
 inline const GLubyte* glewGetErrorString(GLenum) { return reinterpret_cast<const GLubyte*>(""); }
 #define GLEW_ARB_depth_clamp false
 #define GLEW_NV_depth_clamp false
+
+// WebGL names the ES 2.0 extensions lidr looks for its own way. The web build reports them under their ES
+// names too, so the GLES 2.0 path's detection (lidr/gl/gl_info.cpp) reads a WebGL 1 context like an ES one:
+// WEBGL_draw_buffers is EXT_draw_buffers (same enums, same GLSL #extension name), WEBGL_depth_texture is
+// OES_depth_texture, and packed depth-stencil (OES_packed_depth_stencil) is core in WebGL 1 (DEPTH_STENCIL).
+#include <cstring>
+#include <string>
+inline const GLubyte* lidrWebGetString(GLenum name) {
+    const GLubyte* s = glGetString(name);
+    if (name != GL_EXTENSIONS || s == nullptr) return s;
+    static std::string extensions;
+    extensions = reinterpret_cast<const char*>(s);
+    const std::string padded = " " + extensions + " ";
+    if (padded.find(" WEBGL_draw_buffers ") != std::string::npos) extensions += " GL_EXT_draw_buffers";
+    if (padded.find(" WEBGL_depth_texture ") != std::string::npos) extensions += " GL_OES_depth_texture";
+    extensions += " GL_OES_packed_depth_stencil";
+    return reinterpret_cast<const GLubyte*>(extensions.c_str());
+}
+#define glGetString lidrWebGetString
+
+// WebGL 1's packed depth-stencil renderbuffer is DEPTH_STENCIL (0x84F9) attached at DEPTH_STENCIL_ATTACHMENT
+// (0x821A); ES 2.0 names it DEPTH24_STENCIL8_OES (0x88F0, WebGL 2 only) and attaches it as depth and as stencil,
+// which WebGL 1 refuses. The web build translates both: the renderbuffers made as packed depth-stencil are
+// remembered, and their depth attachment becomes the DEPTH_STENCIL one, their stencil attachment nothing more.
+#include <set>
+inline std::set<GLuint>& lidrWebDepthStencilRenderbuffers() {
+    static std::set<GLuint> ids;
+    return ids;
+}
+inline void lidrWebRenderbufferStorage(GLenum target, GLenum format, GLsizei width, GLsizei height) {
+    GLint bound = 0;
+    glGetIntegerv(GL_RENDERBUFFER_BINDING, &bound);
+    if (format == GL_DEPTH24_STENCIL8) {
+        lidrWebDepthStencilRenderbuffers().insert(GLuint(bound));
+        format = GL_DEPTH_STENCIL;
+    } else {
+        lidrWebDepthStencilRenderbuffers().erase(GLuint(bound));
+    }
+    glRenderbufferStorage(target, format, width, height);
+}
+inline void lidrWebFramebufferRenderbuffer(GLenum target, GLenum attachment, GLenum renderbufferTarget,
+                                           GLuint renderbuffer) {
+    if (lidrWebDepthStencilRenderbuffers().count(renderbuffer)) {
+        if (attachment == GL_STENCIL_ATTACHMENT) return;
+        if (attachment == GL_DEPTH_ATTACHMENT) attachment = GL_DEPTH_STENCIL_ATTACHMENT;
+    }
+    glFramebufferRenderbuffer(target, attachment, renderbufferTarget, renderbuffer);
+}
+#define glRenderbufferStorage lidrWebRenderbufferStorage
+#define glFramebufferRenderbuffer lidrWebFramebufferRenderbuffer

@@ -14,11 +14,12 @@ namespace {
 
 // The WebGL 1 extensions lidr's GLES 2.0 path looks for (doc/web.md). WebGL hides an extension until it is
 // asked for; emscripten_webgl_enable_extension also installs the entry points of the ones that add functions
-// (glDrawBuffers, vertex arrays, instancing). One the browser lacks is simply left out of GL_EXTENSIONS.
+// (glDrawBuffers, vertex arrays, instancing). GL_EXTENSIONS lists every extension the browser offers, enabled
+// or not, so each one lidr reads there is enabled here (EXT_depth_clamp: SavedGlState asks for DEPTH_CLAMP).
 constexpr const char* kWantedExtensions[] = {
     "WEBGL_draw_buffers",      "EXT_blend_minmax",        "OES_texture_float",     "WEBGL_depth_texture",
     "OES_element_index_uint",  "OES_vertex_array_object", "ANGLE_instanced_arrays", "EXT_disjoint_timer_query",
-    "OES_standard_derivatives", "EXT_frag_depth",
+    "OES_standard_derivatives", "EXT_frag_depth",           "EXT_depth_clamp",
 };
 
 class WebGlContext final : public GlContext {
