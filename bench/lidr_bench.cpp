@@ -366,7 +366,7 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::Range(2, 100000));
     app.add_option("--out", outDir, "Output folder: results.csv, passes.csv, results.json, summary.md, plots/")->capture_default_str();
     app.add_option("--seed", seed, "Seed of the room's and many-light scenes' lights")->capture_default_str();
-    app.add_option("--context", context, "GL context: auto, egl, egl-device, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
+    app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
     auto* quickFlag = app.add_flag("--quick", quick, "Seconds-long smoke run: tiny resolution, few configurations, one frame");
     auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
     app.add_option("--sweep", sweeps,

@@ -252,6 +252,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["auto"] = {{"budget_automatic", decision.autoBudget}, {"index_bits_automatic", decision.autoIndexBits},
                        {"visible_lights", decision.visibleLights}, {"budget", decision.budget},
                        {"index_bits", decision.indexBits}, {"measured_budget", decision.measuredBudget},
+                       {"budget_fallback", decision.budgetFallback},
                        {"overflow_pixels", decision.overflowPixels}, {"repacks", decision.repacks},
                        {"transparent_budget", decision.transparentBudget},
                        {"measured_transparent_budget", decision.measuredTransparentBudget},
@@ -320,7 +321,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
-    if (decision.autoBudget || decision.autoIndexBits) {
+    if (decision.autoBudget || decision.autoIndexBits || *decision.budgetFallback) {
         s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
           << (decision.autoIndexBits ? " (narrowest)" : " (fixed)") << ", budget " << decision.budget;
         if (decision.autoBudget)
@@ -328,6 +329,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                                                             : "overlap above 16, " + std::to_string(decision.overflowPixels) +
                                                                   " pixels over")
               << ", repacked " << decision.repacks << "x)";
+        else if (*decision.budgetFallback)
+            s << " (" << decision.budgetFallback << ")";
         else
             s << " (fixed)";
         if (renderer.drawsTransparency())

@@ -41,14 +41,15 @@ TEST_CASE("lidr offers EGL, lidr_osmesa offers only OSMesa", "[context]") {
     } else {
         CHECK(offered(ContextBackend::EglSurfaceless));
         CHECK(offered(ContextBackend::EglDevice));
+        CHECK(offered(ContextBackend::EglGles2));
         CHECK_FALSE(offered(ContextBackend::OSMesa));
     }
 }
 
 TEST_CASE("a backend the linked library does not offer is refused, naming it and why", "[context]") {
     testContext();  // the refusal below must leave the test context alone
-    for (ContextBackend b : {ContextBackend::EglSurfaceless, ContextBackend::EglDevice, ContextBackend::Glfw,
-                             ContextBackend::OSMesa}) {
+    for (ContextBackend b : {ContextBackend::EglSurfaceless, ContextBackend::EglDevice, ContextBackend::EglGles2,
+                             ContextBackend::Glfw, ContextBackend::OSMesa}) {
         if (offered(b)) continue;
         ContextOptions options;
         options.backend = b;

@@ -6,3 +6,33 @@
 #else
 #include <GL/glew.h>
 #endif
+
+#include <cstring>
+
+namespace lidr {
+
+// True when the current context is OpenGL ES (GL_VERSION "OpenGL ES N.M ..."). Asked of the context, not of a
+// flag, so a program's own ES context (WebGL 1, an embedded ES 2.0 part) takes the ES path too.
+inline bool currentContextIsGles() {
+    const GLubyte* v = glGetString(GL_VERSION);
+    return v != nullptr && std::strncmp(reinterpret_cast<const char*>(v), "OpenGL ES", 9) == 0;
+}
+
+// Calls whose desktop GL and OpenGL ES 2.0 forms differ (doc/contexts.md, "OpenGL ES 2.0").
+// glClearDepth (double) is desktop only; ES has glClearDepthf.
+inline void setClearDepth(float depth) {
+    if (currentContextIsGles())
+        glClearDepthf(depth);
+    else
+        glClearDepth(depth);
+}
+// glDrawBuffer / glReadBuffer are desktop only; an ES 2.0 FBO draws to and reads from COLOR_ATTACHMENT0 (more
+// draw targets go through glDrawBuffers, EXT_draw_buffers), so there these do nothing for attachment 0.
+inline void drawToColorAttachment0() {
+    if (!currentContextIsGles()) glDrawBuffer(GL_COLOR_ATTACHMENT0);
+}
+inline void readFromColorAttachment0() {
+    if (!currentContextIsGles()) glReadBuffer(GL_COLOR_ATTACHMENT0);
+}
+
+}  // namespace lidr

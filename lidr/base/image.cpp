@@ -63,6 +63,14 @@ namespace {
 // glReadPixels into a tightly packed buffer whatever pack state the program set; its pack state comes back.
 void readTight(int width, int height, GLenum format, GLenum type, GLint alignment, void* out, const char* where) {
     GLint oldAlignment = 4, oldRowLength = 0, oldSkipRows = 0, oldSkipPixels = 0;
+    if (currentContextIsGles()) {  // OpenGL ES 2.0 packs by alignment alone (no row length or skips)
+        glGetIntegerv(GL_PACK_ALIGNMENT, &oldAlignment);
+        glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+        glReadPixels(0, 0, width, height, format, type, out);
+        glPixelStorei(GL_PACK_ALIGNMENT, oldAlignment);
+        checkGl(where);
+        return;
+    }
     glGetIntegerv(GL_PACK_ALIGNMENT, &oldAlignment);
     glGetIntegerv(GL_PACK_ROW_LENGTH, &oldRowLength);
     glGetIntegerv(GL_PACK_SKIP_ROWS, &oldSkipRows);
@@ -90,8 +98,26 @@ ImageRGBA8 readPixelsRGBA8(int width, int height) {
     return img;
 }
 
+namespace {
+// OpenGL ES reads depth and stencil together or not at all: NV_read_depth_stencil's DEPTH_STENCIL with
+// UNSIGNED_INT_24_8 (Mesa's ES 2.0 refuses depth as FLOAT and stencil alone), depth in the top 24 bits.
+std::vector<GLuint> readDepthStencilEs(int width, int height, const char* where) {
+    std::vector<GLuint> raw(static_cast<size_t>(width) * height);
+    readTight(width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 4, raw.data(), where);
+    return raw;
+}
+}  // namespace
+
 ImageFloat readDepth(int width, int height) {
     ImageFloat img(width, height);
+    if (currentContextIsGles()) {
+        const std::vector<GLuint> raw = readDepthStencilEs(width, height, "readDepth (DEPTH_STENCIL)");
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)  // what a FLOAT read of the 24-bit depth gives on desktop GL
+                img.pixels[static_cast<size_t>(y) * width + x] =
+                    float(double(raw[static_cast<size_t>(height - 1 - y) * width + x] >> 8) / 16777215.0);
+        return img;
+    }
     std::vector<float> raw(img.pixels.size());
     readTight(width, height, GL_DEPTH_COMPONENT, GL_FLOAT, 4, raw.data(), "readDepth");
     for (int y = 0; y < height; ++y)
@@ -102,6 +128,14 @@ ImageFloat readDepth(int width, int height) {
 
 std::vector<uint8_t> readStencil(int width, int height) {
     std::vector<uint8_t> raw(static_cast<size_t>(width) * height), out(raw.size());
+    if (currentContextIsGles()) {
+        const std::vector<GLuint> packed = readDepthStencilEs(width, height, "readStencil (DEPTH_STENCIL)");
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                out[static_cast<size_t>(y) * width + x] =
+                    uint8_t(packed[static_cast<size_t>(height - 1 - y) * width + x] & 0xFFu);
+        return out;
+    }
     readTight(width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 1, raw.data(), "readStencil");
     for (int y = 0; y < height; ++y)
         std::memcpy(&out[static_cast<size_t>(y) * width], &raw[static_cast<size_t>(height - 1 - y) * width], width);

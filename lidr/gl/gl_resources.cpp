@@ -46,6 +46,9 @@ Texture Texture::create2D(GLint internalFormat, int width, int height, GLenum fo
     static_cast<Object&>(t) = Object(Kind::Texture);
     t.width_ = width;
     t.height_ = height;
+    // OpenGL ES 2.0 has no sized internal formats: the internal format is the format (RGBA + UNSIGNED_BYTE is
+    // RGBA8, RGBA + FLOAT is OES_texture_float's, DEPTH_COMPONENT + UNSIGNED_INT is OES_depth_texture's).
+    if (currentContextIsGles()) internalFormat = GLint(format);
     glBindTexture(GL_TEXTURE_2D, t.id_);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter == GL_LINEAR_MIPMAP_LINEAR ? GL_LINEAR : filter);
@@ -110,6 +113,13 @@ void Framebuffer::attachTexture(GLenum attachment, const Texture& t) {
 
 void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) {
     glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    if (attachment == GL_DEPTH_STENCIL_ATTACHMENT && currentContextIsGles()) {
+        // OpenGL ES 2.0 has no DEPTH_STENCIL_ATTACHMENT: a packed depth-stencil renderbuffer
+        // (OES_packed_depth_stencil) is attached as depth and as stencil.
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb.id());
+        return;
+    }
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb.id());
 }
 
@@ -134,7 +144,12 @@ Buffer Buffer::create(GLenum target, const void* data, size_t bytes, GLenum usag
     return b;
 }
 
-static GLuint compileShader(GLenum type, const std::string& source, const std::string& name) {
+static GLuint compileShader(GLenum type, const std::string& glsl120, const std::string& name) {
+    // An OpenGL ES context compiles the same source as GLSL ES 1.00 (lidr/gl/shader_source.h).
+    const std::string source =
+        currentContextIsGles()
+            ? glslEs100FromGlsl120(glsl120, type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment, name)
+            : glsl120;
     GLuint s = glCreateShader(type);
     const char* src = source.c_str();
     glShaderSource(s, 1, &src, nullptr);

@@ -66,6 +66,9 @@ void checkSamples(const GlInfo& info, int samples) {
 
 RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samples)
     : width_(width), height_(height), samples_(samples) {
+    if (!info.framebufferObject && info.gles)
+        throw UnsupportedError("this OpenGL ES context lacks OES_packed_depth_stencil: lidr's passes share one "
+                               "depth-stencil buffer (depth test and stencil count together)");
     if (!info.framebufferObject)
         throw UnsupportedError("this context has no framebuffer objects (GL 3.0 or ARB_framebuffer_object); "
                                "lidr needs GL 2.1 + FBOs");
@@ -93,13 +96,13 @@ void RenderTargets::bindColor() const {
         msaaFbo_.bind();
     else
         colorFbo_.bind();
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    drawToColorAttachment0();
     glViewport(0, 0, width_, height_);
 }
 
 void RenderTargets::bindSingleSample() const {
     colorFbo_.bind();
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    drawToColorAttachment0();
     glViewport(0, 0, width_, height_);
 }
 
@@ -107,8 +110,8 @@ void RenderTargets::resolve() const {
     if (samples_ == 0) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, colorFbo_.id());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    readFromColorAttachment0();
+    drawToColorAttachment0();
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     checkGl("MSAA resolve");
@@ -123,7 +126,7 @@ void RenderTargets::resolve(FrameTimer& timer) const {
 
 ImageRGBA8 RenderTargets::readColor() const {
     colorFbo_.bind();
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    readFromColorAttachment0();
     return readPixelsRGBA8(width_, height_);
 }
 

@@ -15,7 +15,7 @@ namespace {
 // What the current context has, from its version and extension strings (GLEW's flags cannot say: with
 // glewExperimental they report whatever entry points the driver exports, e.g. GL 4.0 on softpipe's 3.3).
 struct Features {
-    bool vao, readFramebuffer, depthClamp, sampleShading, multisampleTexture;
+    bool gles, vao, readFramebuffer, depthClamp, sampleShading, multisampleTexture;
 };
 
 bool hasExtension(const char* list, const char* name) {
@@ -33,6 +33,12 @@ Features currentFeatures() {
     const int v = major * 10 + minor;
     const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
     Features f;
+    f.gles = currentContextIsGles();
+    if (f.gles) {  // OpenGL ES 2.0: lidr binds no VAO and no read framebuffer there, so neither is saved
+        f.vao = f.readFramebuffer = f.sampleShading = f.multisampleTexture = false;
+        f.depthClamp = hasExtension(ext, "GL_EXT_depth_clamp");
+        return f;
+    }
     f.vao = v >= 30 || hasExtension(ext, "GL_ARB_vertex_array_object");
     f.readFramebuffer = v >= 30 || hasExtension(ext, "GL_ARB_framebuffer_object") ||
                         hasExtension(ext, "GL_EXT_framebuffer_blit");
@@ -45,6 +51,7 @@ Features currentFeatures() {
 
 SavedGlState::SavedGlState() {
     const Features f = currentFeatures();
+    gles_ = f.gles;
     vao_ = f.vao;
     readFramebuffer_ = f.readFramebuffer;
     depthClamp_ = f.depthClamp;
@@ -73,14 +80,16 @@ void SavedGlState::save() {
     glActiveTexture(activeTexture_);
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment_);
-    glGetIntegerv(GL_PACK_ROW_LENGTH, &packRowLength_);
-    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &unpackRowLength_);
-    glGetIntegerv(GL_PACK_SKIP_ROWS, &skip_[0]);
-    glGetIntegerv(GL_PACK_SKIP_PIXELS, &skip_[1]);
-    glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skip_[2]);
-    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_[3]);
-    glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
-    logicOp_ = glIsEnabled(GL_COLOR_LOGIC_OP);
+    if (!gles_) {
+        glGetIntegerv(GL_PACK_ROW_LENGTH, &packRowLength_);
+        glGetIntegerv(GL_UNPACK_ROW_LENGTH, &unpackRowLength_);
+        glGetIntegerv(GL_PACK_SKIP_ROWS, &skip_[0]);
+        glGetIntegerv(GL_PACK_SKIP_PIXELS, &skip_[1]);
+        glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skip_[2]);
+        glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_[3]);
+        glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
+        logicOp_ = glIsEnabled(GL_COLOR_LOGIC_OP);
+    }
     alphaToCoverage_ = glIsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glGetIntegerv(GL_VIEWPORT, viewport_);
     glGetIntegerv(GL_SCISSOR_BOX, scissorBox_);
@@ -146,13 +155,15 @@ void SavedGlState::save() {
     // into tight buffers), polygon offset and mode, front face, logic op, alpha to coverage.
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    for (GLenum e : {GL_PACK_ROW_LENGTH, GL_UNPACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
-                     GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS})
-        glPixelStorei(e, 0);
+    if (!gles_) {
+        for (GLenum e : {GL_PACK_ROW_LENGTH, GL_UNPACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
+                         GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS})
+            glPixelStorei(e, 0);
+        glDisable(GL_COLOR_LOGIC_OP);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_COLOR_LOGIC_OP);
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glFrontFace(GL_CCW);
     // lidr enables the arrays it draws with; one the caller left enabled (perhaps a client-memory pointer, or
     // a buffer since deleted) would be fetched by drivers that read every enabled array (softpipe does).
@@ -184,16 +195,18 @@ void SavedGlState::restore() const {
     glActiveTexture(activeTexture_);
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
-    glPixelStorei(GL_PACK_ROW_LENGTH, packRowLength_);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, unpackRowLength_);
-    glPixelStorei(GL_PACK_SKIP_ROWS, skip_[0]);
-    glPixelStorei(GL_PACK_SKIP_PIXELS, skip_[1]);
-    glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_[2]);
-    glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_[3]);
-    // GL_POLYGON_MODE reads front and back (compatibility profile); they are set together here.
-    glPolygonMode(GL_FRONT, GLenum(polygonMode_[0]));
-    glPolygonMode(GL_BACK, GLenum(polygonMode_[1]));
-    enable(GL_COLOR_LOGIC_OP, logicOp_);
+    if (!gles_) {
+        glPixelStorei(GL_PACK_ROW_LENGTH, packRowLength_);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, unpackRowLength_);
+        glPixelStorei(GL_PACK_SKIP_ROWS, skip_[0]);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, skip_[1]);
+        glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_[2]);
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_[3]);
+        // GL_POLYGON_MODE reads front and back (compatibility profile); they are set together here.
+        glPolygonMode(GL_FRONT, GLenum(polygonMode_[0]));
+        glPolygonMode(GL_BACK, GLenum(polygonMode_[1]));
+        enable(GL_COLOR_LOGIC_OP, logicOp_);
+    }
     enable(GL_SAMPLE_ALPHA_TO_COVERAGE, alphaToCoverage_);
     glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
     glScissor(scissorBox_[0], scissorBox_[1], scissorBox_[2], scissorBox_[3]);
@@ -210,7 +223,7 @@ void SavedGlState::restore() const {
     }
     glDepthFunc(depthFunc_);
     glDepthMask(depthMask_);
-    glClearDepth(depthClear_);
+    setClearDepth(depthClear_);
     const GLenum faces[2] = {GL_FRONT, GL_BACK};
     for (int f = 0; f < 2; ++f) {
         glStencilFuncSeparate(faces[f], stencilFunc_[f], stencilRef_[f], GLuint(stencilValueMask_[f]));

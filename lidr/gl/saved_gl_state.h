@@ -30,6 +30,8 @@ private:
     void save();
     void restore() const;
 
+    // gles_: OpenGL ES 2.0 has no row length / skip pixel store, polygon mode or logic op to save.
+    bool gles_ = false;
     bool vao_ = false, readFramebuffer_ = false, depthClamp_ = false, sampleShading_ = false, multisampleTex_ = false;
     int units_ = 0, attributes_ = 0;
     GLint vertexArray_ = 0, program_ = 0, activeTexture_ = 0;

@@ -1,6 +1,7 @@
 #include "lidr/gl/shader_source.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -82,6 +83,51 @@ std::string buildShaderSource(const std::string& name, const ShaderDefines& defi
 std::string buildShaderSourceFromText(const std::string& name, const std::string& text, const ShaderDefines& defines,
                                       const ShaderIncludes& subs) {
     return buildSource(name, &text, defines, subs);
+}
+
+// True if the source writes gl_FragData[i] with an index that is not the literal 0 (a loop index counts).
+static bool writesSecondDrawBuffer(const std::string& src) {
+    static const std::string kFragData = "gl_FragData[";
+    for (size_t p = src.find(kFragData); p != std::string::npos; p = src.find(kFragData, p + 1)) {
+        const size_t a = p + kFragData.size(), b = src.find(']', a);
+        std::string index = src.substr(a, b == std::string::npos ? std::string::npos : b - a);
+        index.erase(std::remove_if(index.begin(), index.end(), [](char c) { return c == ' ' || c == '\t'; }),
+                    index.end());
+        if (index != "0") return true;
+    }
+    return false;
+}
+
+std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, const std::string& name) {
+    const size_t v = source.find("#version");
+    if (v == std::string::npos)
+        throw Error("shader '" + name + "' has no #version line; lidr's sources say #version 120");
+    const size_t eol = source.find('\n', v);
+    const std::string versionLine = source.substr(v, eol == std::string::npos ? std::string::npos : eol - v);
+    int version = 0;
+    std::sscanf(versionLine.c_str(), "#version %d", &version);
+    if (version != 120 && version != 100)
+        throw Error("shader '" + name + "' is GLSL " + std::to_string(version) +
+                    "; OpenGL ES 2.0 compiles GLSL ES 1.00, which lidr makes from GLSL 1.20 sources only");
+    if (stage == ShaderStage::Fragment && source.find("gl_FragDepth") != std::string::npos)
+        throw Error("shader '" + name + "' writes gl_FragDepth, which GLSL ES 1.00 (OpenGL ES 2.0) does not have");
+    std::string header = "#version 100\n";
+    if (stage == ShaderStage::Fragment) {
+        // Conditional: a single-target variant of a shader that names gl_FragData[1] under #if still compiles
+        // where the extension is missing (multi-target schemes are refused before any shader is built there).
+        if (writesSecondDrawBuffer(source))
+            header += "#ifdef GL_EXT_draw_buffers\n#extension GL_EXT_draw_buffers : require\n#endif\n";
+        header +=
+            "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+            "precision highp float;\n"
+            "precision highp sampler2D;\n"
+            "#else\n"
+            "precision mediump float;\n"
+            "precision mediump sampler2D;\n"
+            "#define LIDR_FRAGMENT_FP16 1\n"
+            "#endif\n";
+    }
+    return source.substr(0, v) + header + (eol == std::string::npos ? std::string() : source.substr(eol + 1));
 }
 
 std::string shaderSourceStrings(const std::string& source) {

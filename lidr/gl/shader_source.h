@@ -35,6 +35,24 @@ std::string buildShaderSource(const std::string& name, const ShaderDefines& defi
 std::string buildShaderSourceFromText(const std::string& name, const std::string& text,
                                       const ShaderDefines& defines = {}, const ShaderIncludes& substitutions = {});
 
+enum class ShaderStage { Vertex, Fragment };
+
+// A GLSL 1.20 source (what buildShaderSource makes) as GLSL ES 1.00 for an OpenGL ES 2.0 context; gl::Program
+// calls it when the current context is ES, so every shader, a program's material shader included, comes from
+// the same files. Only the header changes; the rest is the source as it was (lidr's shaders keep to the common
+// subset: no integer bit operations, constant loop bounds, float literals where a float is meant, no texelFetch):
+//   `#version 120` -> `#version 100`;
+//   fragment shaders: `#extension GL_EXT_draw_buffers : require` (where the context defines GL_EXT_draw_buffers)
+//     if gl_FragData[i], i > 0, is written, then
+//     highp float and highp sampler2D where GL_FRAGMENT_PRECISION_HIGH is defined (samplers default to lowp, and
+//     Mesa really returns lowp texels: the light table and the depth copy lose their precision), else mediump
+//     with LIDR_FRAGMENT_FP16 defined (the bit-exact fp16 unpack of lidr_bytes.glsl; doc/contexts.md says which
+//     paths that proves exact);
+//   `#line L N` keeps its meaning (ES 1.00 also counts source strings by number).
+// Throws lidr::Error for a source that needs more than GLSL 1.20 (the per-sample MSAA path's 1.50) or that
+// writes gl_FragDepth (ES 2.0 has none), naming what it needs.
+std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, const std::string& name);
+
 // "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.
 std::string shaderSourceStrings(const std::string& source);
 

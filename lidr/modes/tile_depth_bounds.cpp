@@ -127,14 +127,14 @@ size_t TileDepthBounds::bytes() const {
 
 void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camera) const {
     prepassFbo_.bind();
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    drawToColorAttachment0();
     glViewport(0, 0, width_, height_);
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
     applyRenderState(s);  // masks open for the clear
-    glClearDepth(1.0);
+    setClearDepth(1.0f);
     glClearStencil(0);
     glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // depth 1 (the far plane) in both formats
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -148,7 +148,7 @@ void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camer
 void TileDepthBounds::runPass(const gl::Program& program, const gl::Texture& input, const gl::Framebuffer& output,
                               int outW, int outH) const {
     output.bind();
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    drawToColorAttachment0();
     glViewport(0, 0, outW, outH);
     program.use();
     input.bind(0);
@@ -161,7 +161,7 @@ std::vector<float> TileDepthBounds::readChain(const Chain& chain, int component)
     const size_t tiles = size_t(tilesX_) * tilesY_;
     std::vector<float> out(tiles);
     chain.tilesFbo.bind();
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    readFromColorAttachment0();
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (format_ == DepthReductionFormat::Float32) {
         std::vector<float> texels(tiles * 4);

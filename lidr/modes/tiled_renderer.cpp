@@ -130,7 +130,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     } else {
         s.depthWrite = true;  // masks open for the clear
         applyRenderState(s);
-        glClearDepth(1.0);
+        setClearDepth(1.0f);
         glClearStencil(0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         s.depthFunc = GL_LEQUAL;  // the last fragment at the nearest depth stays, as with the pre-Z and EQUAL

@@ -18,8 +18,10 @@ ContextBackend parseContextBackend(const std::string& name) {
     if (name == "egl-device" || name == "device") return ContextBackend::EglDevice;
     if (name == "glfw") return ContextBackend::Glfw;
     if (name == "osmesa") return ContextBackend::OSMesa;
+    if (name == "egl-gles2" || name == "gles2") return ContextBackend::EglGles2;
     if (name == "webgl") return ContextBackend::WebGl;
-    throw Error("unknown GL context backend '" + name + "' (valid: auto, egl, egl-device, glfw, osmesa, webgl)");
+    throw Error("unknown GL context backend '" + name +
+                "' (valid: auto, egl, egl-device, egl-gles2, glfw, osmesa, webgl)");
 }
 
 const char* contextBackendName(ContextBackend b) {
@@ -29,6 +31,7 @@ const char* contextBackendName(ContextBackend b) {
     case ContextBackend::EglDevice: return "egl-device";
     case ContextBackend::Glfw: return "glfw";
     case ContextBackend::OSMesa: return "osmesa";
+    case ContextBackend::EglGles2: return "egl-gles2";
     case ContextBackend::WebGl: return "webgl";
     }
     return "?";
@@ -38,6 +41,7 @@ static std::unique_ptr<GlContext> createOne(ContextBackend b, const ContextOptio
     switch (b) {
     case ContextBackend::EglSurfaceless: return detail::createEglSurfaceless();
     case ContextBackend::EglDevice: return detail::createEglDevice();
+    case ContextBackend::EglGles2: return detail::createEglGles2();
     case ContextBackend::Glfw: return detail::createGlfw(o);
     case ContextBackend::OSMesa: return detail::createOSMesa();
     case ContextBackend::WebGl: return detail::createWebGl(o);
@@ -75,6 +79,7 @@ std::vector<ContextBackend> availableContextBackends() {
     if (LIDR_HAVE_EGL) {
         b.push_back(ContextBackend::EglSurfaceless);
         b.push_back(ContextBackend::EglDevice);
+        b.push_back(ContextBackend::EglGles2);
     }
     if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
     if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
@@ -87,10 +92,11 @@ namespace detail {
 [[maybe_unused]] static const char* const kOnlyThisLibrarysBackends = LIDR_HAVE_WEBGL
     ? "the web build (emscripten) offers only the webgl backend"
     : "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
-      "program linked to it); link lidr::lidr for egl, egl-device and glfw";
+      "program linked to it); link lidr::lidr for egl, egl-device, egl-gles2 and glfw";
 #if !LIDR_HAVE_EGL
 std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
 std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
+std::unique_ptr<GlContext> createEglGles2() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
 #endif
 #if !LIDR_HAVE_GLFW
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&) {

@@ -10,7 +10,10 @@
 
 namespace lidr {
 
-enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, WebGl };
+// EglGles2: EGL surfaceless with an OpenGL ES 2.0 context (EGL_OPENGL_ES_API), for ES 2.0-class hardware;
+// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0"). WebGl: a WebGL 1
+// context on a page's <canvas>, only in the web build (emscripten; doc/web.md), an ES 2.0 context too.
+enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2, WebGl };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
@@ -42,16 +45,18 @@ protected:
     GlInfo info_;
 };
 
-// "auto", "egl", "egl-device", "glfw", "osmesa", "webgl"
+// "auto", "egl", "egl-device", "glfw", "osmesa", "egl-gles2", "webgl"
 ContextBackend parseContextBackend(const std::string& name);
 const char* contextBackendName(ContextBackend b);
-// The backends this library offers. lidr::lidr: egl, egl-device (and glfw where built); lidr::lidr_osmesa:
-// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md); the web build: webgl only.
+// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw where built);
+// lidr::lidr_osmesa: osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md); the web
+// build: webgl only.
 std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
 std::unique_ptr<GlContext> createEglSurfaceless();
 std::unique_ptr<GlContext> createEglDevice();
+std::unique_ptr<GlContext> createEglGles2();
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&);
 std::unique_ptr<GlContext> createOSMesa();
 std::unique_ptr<GlContext> createWebGl(const ContextOptions&);

@@ -24,7 +24,7 @@ void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) cons
     s.depthWrite = true;
     s.stencil.writeMask = 0xFF;
     applyRenderState(s);  // masks open for the clear
-    glClearDepth(1.0);
+    setClearDepth(1.0f);
     glClearStencil(0);
     glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     s.colorMask = glm::bvec4(false);

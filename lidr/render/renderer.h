@@ -27,6 +27,9 @@ struct AutoDecision {
     int repacks = 0;         // volume passes drawn again this frame with a larger budget
     // The transparent layers' own front-face lists (0: none drawn this frame)
     int transparentBudget = 0, measuredTransparentBudget = 0;
+    // Non-empty where an automatic budget was asked for and the context cannot measure it (no occlusion
+    // queries, OpenGL ES 2.0): the budget is LidrRenderer::kBudgetWithoutOcclusionQueries, fixed.
+    const char* budgetFallback = "";
 };
 
 struct FrameStats {

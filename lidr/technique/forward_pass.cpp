@@ -98,7 +98,7 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     } else {
         // No pre-pass depth here: the MSAA target never had one, the single-sample one holds the volume
         // pass's cleared depth. Either way this pass writes its own.
-        glClearDepth(1.0);
+        setClearDepth(1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
     RenderState s;

@@ -12,6 +12,16 @@
 namespace lidr {
 
 namespace {
+// The options a context without occlusion queries (OpenGL ES 2.0) can run: an automatic budget is measured by
+// occlusion queries over the stencil count, so there it becomes the fixed kBudgetWithoutOcclusionQueries
+// (bit-shift; the automatic width stays). FrameStats::autoDecision.budgetFallback says so each frame.
+LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
+    if (info.occlusionQuery || !o.packing.autoBudget()) return o;
+    if (o.packing.autoScheme()) o.packing.scheme = "bitshift";
+    o.packing.budget = LidrRenderer::kBudgetWithoutOcclusionQueries;
+    return o;
+}
+
 // Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
 // an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
 PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
@@ -39,6 +49,11 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
     if (o.perSampleIndices && !o.depthPrepass)
         throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
     checkSamples(info, o.msaaSamples);
+    // The shader tests read a depth texture; transparent layers under `sphere` take `sphere-ray`.
+    if (isShaderVolumeTest(o.volumeTest) && !info.depthTexture)
+        throw UnsupportedError(std::string("the ") + volumeTestName(o.volumeTest) + " volume test reads a copy of the "
+                               "pre-pass depth, and this context has no depth textures (OpenGL ES 2.0 needs "
+                               "OES_depth_texture): use --volume-test backface or exact");
 
     PackingConfig c = o.packing;
     if (c.autoScheme()) {
@@ -88,37 +103,48 @@ int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingCo
 }
 }  // namespace
 
-LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height)
-    : options_(options),
+LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& requested, int width, int height)
+    : options_(withContextFallbacks(info, requested)),
       info_(info),
-      firstPacking_(checkedPacking(info, scene, options)),
+      firstPacking_(checkedPacking(info, scene, options_)),
       scene_(scene),
-      targets_(info, width, height, options.msaaSamples),
-      volumePass_(info, options.volumeTest, options.volumeDetail),
-      timer_(info, options.timingMethod) {
+      targets_(info, width, height, options_.msaaSamples),
+      volumePass_(info, options_.volumeTest, options_.volumeDetail),
+      timer_(info, options_.timingMethod) {
+    requestedAutoBudget_ = requested.packing.autoBudget();
     const PackingConfig& first = firstPacking_;
-    lightTable_ = LightTable(info, lightTableCapacity(scene, options, first), options.forceFixedLightTable);
-    if (options.packing.autoBudget()) {
-        const int widest = options.packing.autoIndexBits()
+    lightTable_ = LightTable(info, lightTableCapacity(scene, options_, first), options_.forceFixedLightTable);
+    if (options_.packing.autoBudget()) {
+        const int widest = options_.packing.autoIndexBits()
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
                                : first.indexBits;
-        auto_ = AutoConfiguration(largestBudget(info, first, widest), options.autoHoldFrames);
+        auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames);
         autoTransparent_ = auto_;
         probe_ = OverlapProbe(info);
     } else {
-        auto_ = autoTransparent_ = AutoConfiguration(16, options.autoHoldFrames);
+        auto_ = autoTransparent_ = AutoConfiguration(16, options_.autoHoldFrames);
     }
-    timer_.setEnabled(options.timing);
-    drawTransparent_ = options.transparency && scene_.hasTransparent();
-    bool needsDepthTexture = isShaderVolumeTest(options.volumeTest);
-    if (drawTransparent_ && !isFrontFaceVolumeTest(options.volumeTest)) {
+    timer_.setEnabled(options_.timing);
+    drawTransparent_ = options_.transparency && scene_.hasTransparent();
+    bool needsDepthTexture = isShaderVolumeTest(options_.volumeTest);
+    if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest)) {
         // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
-        const VolumeTest front = options.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
-        transparentVolumePass_ = LightVolumePass(info, front, options.volumeDetail);
+        const VolumeTest front = options_.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
+        transparentVolumePass_ = LightVolumePass(info, front, options_.volumeDetail);
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
-    if (needsDepthTexture)
+    if (needsDepthTexture) {
         depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+        if (info.gles) {
+            // OpenGL ES 2.0 cannot copy depth (glCopyTexSubImage2D takes colour formats only; Mesa accepts the
+            // call and leaves the texture wrong): the pre-pass is drawn a second time into the depth texture
+            // (OES_depth_texture) as the only attachment of a framebuffer of its own.
+            depthTextureFbo_ = gl::Framebuffer::create();
+            depthTextureFbo_.attachTexture(GL_DEPTH_ATTACHMENT, depthTexture_);
+            depthTextureFbo_.checkComplete("pre-pass depth texture (OpenGL ES)");
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        }
+    }
     selectVariant(first.budget, first.indexBits);
     selectTransparentVariant(first.budget, first.indexBits);
 }
@@ -233,16 +259,23 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         if (depthTexture_) {
             // The shader volume tests read the pre-pass depth from a texture that is not attached to the
             // framebuffer they draw into (reading an attached one is a feedback loop).
-            depthTexture_.bind(0);
-            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
-            checkGl("depth copy for the volume tests");
+            if (depthTextureFbo_) {
+                depthTextureFbo_.bind();
+                depthPrepass_.run(scene_, cam);
+                targets_.bindSingleSample();
+                checkGl("pre-pass depth texture for the volume tests (OpenGL ES)");
+            } else {
+                depthTexture_.bind(0);
+                glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
+                checkGl("depth copy for the volume tests");
+            }
         }
         timer_.end();
     } else {
         RenderState clearable;
         clearable.depthWrite = true;
         applyRenderState(clearable);
-        glClearDepth(1.0);
+        setClearDepth(1.0f);
         glClear(GL_DEPTH_BUFFER_BIT);
     }
 
@@ -269,6 +302,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
         if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
     decision.indexBits = current_->scheme->config().indexBits;
+    if (requestedAutoBudget_ && !autoBudget) decision.budgetFallback = "fixed (no occlusion queries)";
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
 
     const bool multisampled = targets_.samples() > 0;
@@ -397,6 +431,15 @@ std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
     std::vector<ImageRGBA8> out;
     indexTargets_->framebuffer().bind();
     for (int i = 0; i < indexTargets_->count(); ++i) {
+        if (info_.gles) {
+            // OpenGL ES 2.0 reads COLOR_ATTACHMENT0 only (no glReadBuffer): each target in turn is attached
+            // there to a framebuffer of its own.
+            gl::Framebuffer single = gl::Framebuffer::create();
+            single.attachTexture(GL_COLOR_ATTACHMENT0, indexTargets_->texture(i));
+            single.checkComplete("index target read-back");
+            out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
+            continue;
+        }
         glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
         out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
     }

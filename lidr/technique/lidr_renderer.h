@@ -53,8 +53,13 @@ struct LidrOptions {
 
 class LidrRenderer final : public Renderer {
 public:
-    // Checks everything before any drawing: FBO support, resolution, scheme x budget x width; throws
-    // UnsupportedError / lidr::Error with the reason.
+    // An automatic budget where the context has no occlusion queries to measure it (OpenGL ES 2.0): this fixed
+    // budget instead, the paper's main case (one RGBA8 target at 8-bit indices); options() holds it and
+    // FrameStats::autoDecision.budgetFallback says so.
+    static constexpr int kBudgetWithoutOcclusionQueries = 4;
+
+    // Checks everything before any drawing: FBO support, resolution, scheme x budget x width, the volume test's
+    // needs; throws UnsupportedError / lidr::Error with the reason.
     LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& options, int width, int height);
 
     // Renders one frame. `lights` (light i has index i + 1) must fit the index width.
@@ -118,7 +123,8 @@ private:
     // needTransparent: -1 where the transparent lists were not drawn (none separate, or none in view).
     void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& need, int& needTransparent);
 
-    LidrOptions options_;
+    LidrOptions options_;  // as asked, with the context's fallbacks (withContextFallbacks)
+    bool requestedAutoBudget_ = false;
     GlInfo info_;
     PackingConfig firstPacking_;  // checked options, resolved for the first frame: before any GL object exists
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
@@ -134,6 +140,7 @@ private:
     IndexTargets* indexTargets_ = nullptr;
     IndexTargets* transparentIndexTargets_ = nullptr;  // when transparent layers need their own front-face lists
     gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
+    gl::Framebuffer depthTextureFbo_;       // OpenGL ES: the pre-pass drawn again into depthTexture_
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;

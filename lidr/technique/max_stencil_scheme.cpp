@@ -11,7 +11,11 @@ MaxStencilScheme::MaxStencilScheme(const PackingConfig& config, const GlInfo& in
     checkPackingConfig(config);
     windowSlots_ = (config.indexBits == 16 || config.budget == 1) ? 1 : 2;
     windows_ = config.budget / windowSlots_;
-    // GL_MAX is GL 1.4 (EXT_blend_minmax), stencil GL 1.0: every context lidr accepts has them.
+    // GL_MAX is GL 1.4 (EXT_blend_minmax), stencil GL 1.0: every desktop context lidr accepts has them; OpenGL
+    // ES 2.0 has GL_MAX only with EXT_blend_minmax.
+    if (!info.blendMinMax)
+        throw UnsupportedError("max-stencil packs with the GL_MAX blend equation; this context lacks it "
+                               "(OpenGL ES 2.0 needs EXT_blend_minmax): use --scheme bitshift");
     if (info.framebufferObject) checkContextFor("max-stencil " + describe(), info, targetCount(), 1);
 }
 

@@ -60,11 +60,13 @@ void checkContextFor(const std::string& what, const GlInfo& info, int targets, i
                                std::to_string(kMaxIndexTargets));
     if (info.framebufferObject && targets > info.maxColorAttachments)
         throw UnsupportedError(what + " needs " + std::to_string(targets) + " FBO colour attachments; this context has " +
-                               std::to_string(info.maxColorAttachments) + " (choose a smaller budget or width)");
+                               std::to_string(info.maxColorAttachments) + " (choose a smaller budget or width)" +
+                               (info.gles && !info.drawBuffers ? "; OpenGL ES 2.0 has one without EXT_draw_buffers" : ""));
     if (drawTargets > 1 && (!info.drawBuffers || drawTargets > info.maxDrawBuffers))
         throw UnsupportedError(what + " writes " + std::to_string(drawTargets) + " targets at once; this context has " +
                                std::to_string(info.drawBuffers ? info.maxDrawBuffers : 1) +
-                               " draw buffers (choose a smaller budget or width)");
+                               " draw buffers (choose a smaller budget or width)" +
+                               (info.gles && !info.drawBuffers ? "; OpenGL ES 2.0 has one without EXT_draw_buffers" : ""));
     const int units = std::max(LightTable::kUnitPosRadiusLow, GpuScene::kMaterialTextureUnit) + 1;
     if (info.maxTextureUnits < units)
         throw UnsupportedError(what + ": the forward pass binds index textures and the light table on " +
