@@ -92,7 +92,7 @@ bool applySettings(const Settings& wanted) {
             throw Error("the " + wanted.view + " view shows LIDR's index lists: choose mode lidr");
         if (rebuild) {
             std::unique_ptr<Renderer> r = makeRenderer(wanted);
-            r->setTiming(true);
+            r->setTiming(true, true);  // CPU clock around glFinish per pass: WebGL 1 has no timer queries lidr uses
             page->renderer = std::move(r);
         }
         page->settings = wanted;
