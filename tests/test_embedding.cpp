@@ -265,7 +265,8 @@ TEST_CASE("currentContextGlInfo reads the context current on this thread", "[emb
     CHECK(info.maxVertexUniformVectors == testGl().maxVertexUniformVectors);
 }
 
-TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed]") {
+// [desktop-state]: the caller's state set here is desktop GL's (glClearDepth, polygon mode, logic op...).
+TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed][desktop-state]") {
     testContext();
     const Scene scene = litFloorScene();
     const std::vector<PointLight> lights = scene.lightsAt(0.0f);

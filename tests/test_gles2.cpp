@@ -3,7 +3,9 @@
 // and the refusals that name what ES 2.0 lacks. The [gles2] cases are hidden ([.gles2]): suite.gles2 runs them
 // with LIDR_CONTEXT=egl-gles2 MESA_GLES_VERSION_OVERRIDE=2.0, and they fail unless the context is ES 2.0.
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -16,6 +18,7 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/modes/tiled_renderer.h"
 #include "lidr/scene/default_scene.h"
 #include "render_helpers.h"
 
@@ -41,8 +44,18 @@ bool hasExtension(const char* name) {
     return all.find(std::string(" ") + name + " ") != std::string::npos;
 }
 
-// The text after the first line (#version).
-std::string afterVersionLine(const std::string& source) { return source.substr(source.find('\n') + 1); }
+// The text after the first line (#version), with GLSL 1.20's `#line L N` written as GLSL ES 1.00's `#line L+1 N`.
+std::string afterVersionLine(const std::string& source) {
+    std::istringstream in(source.substr(source.find('\n') + 1));
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        int number = 0, string = 0;
+        if (line.rfind("#line ", 0) == 0 && std::sscanf(line.c_str(), "#line %d %d", &number, &string) == 2)
+            line = "#line " + std::to_string(number + 1) + " " + std::to_string(string);
+        out += line + "\n";
+    }
+    return out;
+}
 }  // namespace
 
 TEST_CASE("GLSL ES 1.00 from the GLSL 1.20 sources: a new header, the rest byte for byte", "[shader][cpu]") {
@@ -79,9 +92,11 @@ TEST_CASE("GLSL ES 1.00 from the GLSL 1.20 sources: a new header, the rest byte 
     // What ES 2.0 cannot take is named.
     REQUIRE_THROWS_WITH(glslEs100FromGlsl120("#version 150\nvoid main() {}\n", ShaderStage::Fragment, "ms.frag"),
                         Contains("ms.frag") && Contains("GLSL 150") && Contains("GLSL ES 1.00"));
-    REQUIRE_THROWS_WITH(glslEs100FromGlsl120(buildShaderSource("pixel_list_volume.frag", {{"LIDR_DRAW_TARGETS", "1"}}),
-                                             ShaderStage::Fragment, "pixel_list_volume.frag"),
-                        Contains("gl_FragDepth"));
+    // gl_FragDepth (the pixel-list test hook) is EXT_frag_depth's.
+    const std::string depth = glslEs100FromGlsl120(buildShaderSource("pixel_list_volume.frag", {{"LIDR_DRAW_TARGETS", "1"}}),
+                                                   ShaderStage::Fragment, "pixel_list_volume.frag");
+    REQUIRE_THAT(depth, Contains("#extension GL_EXT_frag_depth : require\n") && Contains("gl_FragDepthEXT = "));
+    REQUIRE_THAT(depth, !Contains("gl_FragDepth ="));
 }
 
 TEST_CASE("the OpenGL ES 2.0 context: capabilities from its extensions, no desktop-only feature", "[.gles2][context]") {
@@ -229,11 +244,12 @@ TEST_CASE("ES 2.0 refuses what it lacks before drawing, naming the missing featu
 
     REQUIRE_THROWS_WITH(FrameTimer(es, TimingMethod::GpuQueries), Contains("timer"));
 
-    // gl_FragDepth (the CPU-sorting test hook's shader) is refused at compile time, naming it.
-    REQUIRE_THROWS_WITH(gl::Program::create("frag-depth", buildShaderSource("pixel_list_volume.vert"),
-                                            buildShaderSource("pixel_list_volume.frag", {{"LIDR_DRAW_TARGETS", "1"}}),
-                                            {{"aPosition", gl::kPosition}}),
-                        Contains("gl_FragDepth"));
+    // Tiled depth bounds need a highp gl_FragCoord.z; without them tiled runs.
+    TiledOptions tiled;
+    REQUIRE_THROWS_WITH(TiledRenderer(es, scene, tiled, w, h), Contains("mediump") && Contains("--no-depth-bounds"));
+    tiled.depthBounds = false;
+    REQUIRE_NOTHROW(TiledRenderer(es, scene, tiled, w, h));
+
 
     // An automatic budget cannot be measured without occlusion queries: a fixed one, said in the frame's stats.
     Scene lit = scene;

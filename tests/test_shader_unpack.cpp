@@ -93,9 +93,9 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     RenderState depthClear;
     depthClear.depthWrite = true;
     applyRenderState(depthClear);
-    glClearDepth(0.5);  // list entries (depth 1) pass the volume test's GEQUAL, decoys (0.25) fail it
+    setClearDepth(0.5f);  // list entries (depth 1) pass the volume test's GEQUAL, decoys (0.25) fail it
     glClear(GL_DEPTH_BUFFER_BIT);
-    glClearDepth(1.0);
+    setClearDepth(1.0f);
     CameraMatrices camera;
     camera.width = width;
     camera.height = height;
@@ -111,11 +111,25 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     run.height = height;
     targets.framebuffer().bind();
     for (int t = 0; t < targets.count(); ++t) {
+        if (testGl().gles) {  // ES 2.0 reads COLOR_ATTACHMENT0 only
+            targets.framebufferFrom(t).bind();
+            run.targets.push_back(readRaw(width, height, GL_RGBA, 4));
+            continue;
+        }
         glReadBuffer(GL_COLOR_ATTACHMENT0 + t);
         run.targets.push_back(readRaw(width, height, GL_RGBA, 4));
     }
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    run.stencil = readRaw(width, height, GL_STENCIL_INDEX, 1);
+    targets.framebuffer().bind();
+    if (testGl().gles) {  // NV_read_depth_stencil: depth and stencil together, stencil in the low byte
+        std::vector<GLuint> packed(size_t(width) * height);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+        checkGl("unpack test stencil readback");
+        for (GLuint v : packed) run.stencil.push_back(uint8_t(v & 0xFFu));
+    } else {
+        readFromColorAttachment0();
+        run.stencil = readRaw(width, height, GL_STENCIL_INDEX, 1);
+    }
 
     // Decode with the real unpack shader, two slots per draw.
     static std::map<std::string, gl::Program> probes;  // one per configuration

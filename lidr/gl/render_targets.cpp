@@ -67,8 +67,8 @@ void checkSamples(const GlInfo& info, int samples) {
 RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samples)
     : width_(width), height_(height), samples_(samples) {
     if (!info.framebufferObject && info.gles)
-        throw UnsupportedError("this OpenGL ES context lacks OES_packed_depth_stencil: lidr's passes share one "
-                               "depth-stencil buffer (depth test and stencil count together)");
+        throw UnsupportedError("this OpenGL ES context lacks OES_packed_depth_stencil, which lidr's framebuffer "
+                               "objects need: the passes share one depth-stencil buffer (depth test and stencil count)");
     if (!info.framebufferObject)
         throw UnsupportedError("this context has no framebuffer objects (GL 3.0 or ARB_framebuffer_object); "
                                "lidr needs GL 2.1 + FBOs");

@@ -109,14 +109,16 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
     if (version != 120 && version != 100)
         throw Error("shader '" + name + "' is GLSL " + std::to_string(version) +
                     "; OpenGL ES 2.0 compiles GLSL ES 1.00, which lidr makes from GLSL 1.20 sources only");
-    if (stage == ShaderStage::Fragment && source.find("gl_FragDepth") != std::string::npos)
-        throw Error("shader '" + name + "' writes gl_FragDepth, which GLSL ES 1.00 (OpenGL ES 2.0) does not have");
+    const bool writesFragDepth = stage == ShaderStage::Fragment && source.find("gl_FragDepth") != std::string::npos;
     std::string header = "#version 100\n";
     if (stage == ShaderStage::Fragment) {
         // Conditional: a single-target variant of a shader that names gl_FragData[1] under #if still compiles
         // where the extension is missing (multi-target schemes are refused before any shader is built there).
         if (writesSecondDrawBuffer(source))
             header += "#ifdef GL_EXT_draw_buffers\n#extension GL_EXT_draw_buffers : require\n#endif\n";
+        // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (lidr writes it only in the pixel-list test hook);
+        // a context without the extension fails the compile naming it.
+        if (writesFragDepth) header += "#extension GL_EXT_frag_depth : require\n";
         header +=
             "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
             "precision highp float;\n"
@@ -127,7 +129,20 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
             "#define LIDR_FRAGMENT_FP16 1\n"
             "#endif\n";
     }
-    return source.substr(0, v) + header + (eol == std::string::npos ? std::string() : source.substr(eol + 1));
+    // `#line L N`: in GLSL 1.20 the next line is L + 1, in GLSL ES 1.00 (as in GLSL 3.30) it is L.
+    std::istringstream in(eol == std::string::npos ? std::string() : source.substr(eol + 1));
+    std::string body, line;
+    while (std::getline(in, line)) {
+        int number = 0, string = 0, used = 0;
+        if (std::sscanf(line.c_str(), " #line %d %d%n", &number, &string, &used) == 2 &&
+            line.find_first_not_of(" \t", size_t(used)) == std::string::npos)
+            line = "#line " + std::to_string(number + 1) + " " + std::to_string(string);
+        for (size_t p = 0; writesFragDepth && (p = line.find("gl_FragDepth", p)) != std::string::npos; p += 15)
+            line.replace(p, 12, "gl_FragDepthEXT");
+        body += line;
+        body += '\n';
+    }
+    return source.substr(0, v) + header + body;
 }
 
 std::string shaderSourceStrings(const std::string& source) {

@@ -48,9 +48,10 @@ enum class ShaderStage { Vertex, Fragment };
 //     Mesa really returns lowp texels: the light table and the depth copy lose their precision), else mediump
 //     with LIDR_FRAGMENT_FP16 defined (the bit-exact fp16 unpack of lidr_bytes.glsl; doc/contexts.md says which
 //     paths that proves exact);
-//   `#line L N` keeps its meaning (ES 1.00 also counts source strings by number).
-// Throws lidr::Error for a source that needs more than GLSL 1.20 (the per-sample MSAA path's 1.50) or that
-// writes gl_FragDepth (ES 2.0 has none), naming what it needs.
+//   `#line L N` -> `#line L+1 N`: GLSL 1.20 counts the next line as L + 1, GLSL ES 1.00 as L (both number source
+//   strings, so the "lidr source strings" names hold).
+//   gl_FragDepth -> EXT_frag_depth's gl_FragDepthEXT, the extension required (the compile names it if missing).
+// Throws lidr::Error for a source that needs more than GLSL 1.20 (the per-sample MSAA path's 1.50), naming it.
 std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, const std::string& name);
 
 // "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.

@@ -28,11 +28,19 @@ int lightCapacity(const Scene& scene) { return std::max<int>(1, int(scene.lights
 
 }  // namespace
 
+// Before any GL object: per-tile depth bounds write gl_FragCoord.z into colour, and GLSL ES 1.00 declares
+// gl_FragCoord mediump (Mesa's ES 2.0 then gives depth to about 11 bits: bounds that miss the surface).
+static void checkContextFor(const GlInfo& info, const TiledOptions& o) {
+    if (info.gles && o.depthBounds && o.msaaSamples == 0)
+        throw UnsupportedError("tiled depth bounds read gl_FragCoord.z, which OpenGL ES 2.0 (GLSL ES 1.00) gives only "
+                               "at mediump: use --no-depth-bounds on ES");
+}
+
 TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const TiledOptions& options, int width,
                              int height)
     : options_(checkedOptions(options)),
       scene_(scene),
-      targets_(info, width, height, options.msaaSamples),
+      targets_((checkContextFor(info, options_), info), width, height, options.msaaSamples),
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()),
       lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),

@@ -42,13 +42,27 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
     }
     fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
     fbo_.checkComplete("light-index targets");
+    if (currentContextIsGles()) {
+        for (int first = 1; first < count; ++first) {
+            gl::Framebuffer f = gl::Framebuffer::create();
+            for (int i = first; i < count; ++i) f.attachTexture(GL_COLOR_ATTACHMENT0 + (i - first), textures_[size_t(i)]);
+            f.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
+            f.checkComplete("light-index targets from a later one (OpenGL ES)");
+            fromFbos_.push_back(std::move(f));
+        }
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+const gl::Framebuffer& IndexTargets::framebufferFrom(int first) const {
+    if (first == 0 || fromFbos_.empty()) return fbo_;
+    return fromFbos_.at(size_t(first - 1));
 }
 
 size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail)
-    : test_(test), depthClamp_(info.depthClamp), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+    : test_(test), depthClamp_(info.depthClamp), gles_(info.gles), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
     std::vector<glm::vec3> positions;
     std::vector<uint16_t> indices;
     for (int level = 0; level < kDetailLevels; ++level) {
@@ -140,7 +154,7 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
     targets.framebuffer().bind();
     std::vector<GLenum> all;
     for (int i = 0; i < targets.count(); ++i) all.push_back(GL_COLOR_ATTACHMENT0 + i);
-    glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
+    if (!gles_ || maxDrawTargets_ > 1) glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
     glViewport(0, 0, targets.width(), targets.height());
     applyRenderState(RenderState{});  // all masks open for the clear
     glClearColor(0, 0, 0, 0);
@@ -418,6 +432,12 @@ void LightVolumePass::beginDraw(const VolumeDraw& d) {
         glClear(GL_STENCIL_BUFFER_BIT);
     }
     std::vector<GLenum> buffers;
+    if (gles_) {  // gl_FragData[i] goes to COLOR_ATTACHMENTi only: the targets from firstTarget on start at 0
+        targets_->framebufferFrom(d.firstTarget).bind();
+        for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + i);
+        if (maxDrawTargets_ > 1) glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+        return;
+    }
     for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
     glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
 }

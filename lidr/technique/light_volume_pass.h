@@ -53,6 +53,11 @@ public:
     int count() const { return static_cast<int>(textures_.size()); }
     const gl::Texture& texture(int i) const { return textures_[i]; }
     const gl::Framebuffer& framebuffer() const { return fbo_; }
+    // The framebuffer whose COLOR_ATTACHMENT0.. are targets first..: framebuffer() on desktop GL, where
+    // glDrawBuffers maps gl_FragData[0] to any attachment; OpenGL ES (EXT_draw_buffers) maps gl_FragData[i] to
+    // COLOR_ATTACHMENTi only, so there a draw into targets from `first` on binds a framebuffer of its own (the
+    // same textures and depth-stencil).
+    const gl::Framebuffer& framebufferFrom(int first) const;
     size_t bytes() const;
     int width() const { return width_; }
     int height() const { return height_; }
@@ -60,6 +65,7 @@ public:
 private:
     std::vector<gl::Texture> textures_;
     gl::Framebuffer fbo_;
+    std::vector<gl::Framebuffer> fromFbos_;  // OpenGL ES: [k - 1] has targets k.. at attachments 0..
     int width_ = 0, height_ = 0, samples_ = 0;
 };
 
@@ -158,6 +164,7 @@ private:
     void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
     VolumeTest test_ = VolumeTest::BackFace;
     bool depthClamp_ = false;
+    bool gles_ = false;  // OpenGL ES: draw buffers by framebufferFrom, glDrawBuffers only with EXT_draw_buffers
     static constexpr int kDetailLevels = 3;
     LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
     GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
