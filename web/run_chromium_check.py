@@ -8,6 +8,7 @@ import argparse
 import functools
 import http.server
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -62,13 +63,14 @@ def main():
     threading.Thread(target=server.serve_forever, daemon=True).start()
     url = f"http://127.0.0.1:{server.server_address[1]}/{args.page}"
 
-    with tempfile.TemporaryDirectory(prefix="lidr-web-chromium-") as profile:
+    # Chromium's helper processes may still write into the profile while they exit: cleanup errors are ignored.
+    with tempfile.TemporaryDirectory(prefix="lidr-web-chromium-", ignore_cleanup_errors=True) as profile:
         log_path = os.path.join(profile, "chromium.log")
         with open(log_path, "w") as log:
             start = time.monotonic()
             browser = subprocess.Popen(chromium_command(args.chromium, os.path.join(profile, "profile"),
                                                         [url + "?check"]),
-                                       stdout=log, stderr=subprocess.STDOUT)
+                                       stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
             try:
                 while not Handler.result_ready.wait(0.5):
                     if browser.poll() is not None:
@@ -76,7 +78,11 @@ def main():
                     if time.monotonic() - start > args.timeout:
                         break
             finally:
-                browser.kill()
+                # The whole process group: the browser and its renderer, GPU and utility processes.
+                try:
+                    os.killpg(browser.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
                 browser.wait()
         elapsed = time.monotonic() - start
         if Handler.result is None:
