@@ -5,18 +5,26 @@
 #                                examples, package), then the AddressSanitizer + UBSan build's subset and the fuzz
 #                                smoke runs (clang)
 #   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
+#   bash scripts/setup.sh web    the WebGL 1 page (emscripten) into build-web/web/, then its test in headless
+#                                Chromium (CTest web.chromium; doc/web.md)
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out),
-#   SANITIZE_BUILD_DIR (default build-sanitize), SANITIZE=0 skips the sanitizer build and fuzz runs (test job).
+#   SANITIZE_BUILD_DIR (default build-sanitize), SANITIZE=0 skips the sanitizer build and fuzz runs (test job),
+#   WEB_BUILD_DIR (default build-web).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 job="${1:-}"
 case "$job" in
-  demo|test|bench) ;;
-  *) echo "usage: bash scripts/setup.sh demo|test|bench" >&2; exit 2 ;;
+  demo|test|bench|web) ;;
+  *) echo "usage: bash scripts/setup.sh demo|test|bench|web" >&2; exit 2 ;;
 esac
 
 # Debian 12 packages only; nothing is downloaded at build time.
+if [ "$job" = web ]; then
+  # emscripten 3.1.6 ships its system libraries prebuilt in a frozen cache (EM_CACHE stays unset); node-acorn
+  # comes with it (its optimising link steps need NODE_PATH=/usr/share/nodejs when Node.js is not Debian's).
+  packages=(cmake emscripten chromium python3)
+else
 packages=(
   build-essential cmake pkg-config
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
@@ -25,6 +33,7 @@ packages=(
   libimgui-dev xvfb xauth
   clang libclang-rt-14-dev
 )
+fi
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
@@ -46,8 +55,18 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-build="${BUILD_DIR:-build}"
 jobs="${JOBS:-$(nproc)}"
+if [ "$job" = web ]; then
+  # The page and its test only: the library's web layers, web/lidr_web.cpp, CTest web.chromium (doc/web.md).
+  web_build="${WEB_BUILD_DIR:-build-web}"
+  export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
+  emcmake cmake -S . -B "$web_build" -DCMAKE_BUILD_TYPE=Release -DLIDR_WEB=ON >/dev/null
+  cmake --build "$web_build" -j "$jobs"
+  ctest --test-dir "$web_build" --output-on-failure
+  exit 0
+fi
+
+build="${BUILD_DIR:-build}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j "$jobs"
 

@@ -6,6 +6,10 @@
 #include "lidr/base/error.h"
 #include "lidr/base/gl.h"
 
+#ifndef LIDR_HAVE_WEBGL
+#define LIDR_HAVE_WEBGL 0  // only the web build (LIDR_WEB, emscripten) has the WebGL backend
+#endif
+
 namespace lidr {
 
 ContextBackend parseContextBackend(const std::string& name) {
@@ -15,7 +19,9 @@ ContextBackend parseContextBackend(const std::string& name) {
     if (name == "glfw") return ContextBackend::Glfw;
     if (name == "osmesa") return ContextBackend::OSMesa;
     if (name == "egl-gles2" || name == "gles2") return ContextBackend::EglGles2;
-    throw Error("unknown GL context backend '" + name + "' (valid: auto, egl, egl-device, egl-gles2, glfw, osmesa)");
+    if (name == "webgl") return ContextBackend::WebGl;
+    throw Error("unknown GL context backend '" + name +
+                "' (valid: auto, egl, egl-device, egl-gles2, glfw, osmesa, webgl)");
 }
 
 const char* contextBackendName(ContextBackend b) {
@@ -26,6 +32,7 @@ const char* contextBackendName(ContextBackend b) {
     case ContextBackend::Glfw: return "glfw";
     case ContextBackend::OSMesa: return "osmesa";
     case ContextBackend::EglGles2: return "egl-gles2";
+    case ContextBackend::WebGl: return "webgl";
     }
     return "?";
 }
@@ -37,6 +44,7 @@ static std::unique_ptr<GlContext> createOne(ContextBackend b, const ContextOptio
     case ContextBackend::EglGles2: return detail::createEglGles2();
     case ContextBackend::Glfw: return detail::createGlfw(o);
     case ContextBackend::OSMesa: return detail::createOSMesa();
+    case ContextBackend::WebGl: return detail::createWebGl(o);
     case ContextBackend::Auto: break;
     }
     throw Error("internal: no backend");
@@ -75,31 +83,38 @@ std::vector<ContextBackend> availableContextBackends() {
     }
     if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
     if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
+    if (LIDR_HAVE_WEBGL) b.push_back(ContextBackend::WebGl);
     return b;
 }
 
 // This file is compiled into each library with that library's set of backends; the others say why not.
 namespace detail {
-[[maybe_unused]] static const char* const kOnlyOSMesa =
-    "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
-    "program linked to it); link lidr::lidr for egl, egl-device, egl-gles2 and glfw";
+[[maybe_unused]] static const char* const kOnlyThisLibrarysBackends = LIDR_HAVE_WEBGL
+    ? "the web build (emscripten) offers only the webgl backend"
+    : "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
+      "program linked to it); link lidr::lidr for egl, egl-device, egl-gles2 and glfw";
 #if !LIDR_HAVE_EGL
-std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyOSMesa); }
-std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyOSMesa); }
-std::unique_ptr<GlContext> createEglGles2() { throw UnsupportedError(kOnlyOSMesa); }
+std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
+std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
+std::unique_ptr<GlContext> createEglGles2() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
 #endif
 #if !LIDR_HAVE_GLFW
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&) {
     throw UnsupportedError(LIDR_HAVE_EGL ? "lidr was built without GLFW (libglfw3-dev not found at configure time)"
-                                         : kOnlyOSMesa);
+                                         : kOnlyThisLibrarysBackends);
 }
 #endif
 #if !LIDR_HAVE_OSMESA
 std::unique_ptr<GlContext> createOSMesa() {
-    throw UnsupportedError(LIDR_OSMESA_FOUND
+    throw UnsupportedError(LIDR_HAVE_WEBGL ? kOnlyThisLibrarysBackends : LIDR_OSMESA_FOUND
         ? "lidr::lidr does not offer OSMesa, whose GL entry points would clash with glvnd's: link the program "
           "against lidr::lidr_osmesa instead (see doc/contexts.md)"
         : "lidr was built without OSMesa (osmesa.pc not found at configure time; OSMesa is gone from Mesa 25.1 on)");
+}
+#endif
+#if !LIDR_HAVE_WEBGL
+std::unique_ptr<GlContext> createWebGl(const ContextOptions&) {
+    throw UnsupportedError("WebGL contexts exist only in the web build (emscripten, LIDR_WEB=ON; doc/web.md)");
 }
 #endif
 }  // namespace detail

@@ -11,8 +11,9 @@
 namespace lidr {
 
 // EglGles2: EGL surfaceless with an OpenGL ES 2.0 context (EGL_OPENGL_ES_API), for ES 2.0-class hardware;
-// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0").
-enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2 };
+// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0"). WebGl: a WebGL 1
+// context on a page's <canvas>, only in the web build (emscripten; doc/web.md), an ES 2.0 context too.
+enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2, WebGl };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
@@ -20,6 +21,7 @@ struct ContextOptions {
     int windowWidth = 1024, windowHeight = 768;     // GLFW only
     bool visibleWindow = false;                      // GLFW only
     std::string windowTitle = "lidr";
+    std::string canvasSelector = "#canvas";          // WebGL only (the web build): the page's <canvas>
 };
 
 class GlContext {
@@ -43,11 +45,12 @@ protected:
     GlInfo info_;
 };
 
-ContextBackend parseContextBackend(const std::string& name);  // "auto", "egl", "egl-device", "glfw", "osmesa",
-                                                              // "egl-gles2"
+// "auto", "egl", "egl-device", "glfw", "osmesa", "egl-gles2", "webgl"
+ContextBackend parseContextBackend(const std::string& name);
 const char* contextBackendName(ContextBackend b);
-// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw where built); lidr::lidr_osmesa:
-// osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md).
+// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw where built);
+// lidr::lidr_osmesa: osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md); the web
+// build: webgl only.
 std::vector<ContextBackend> availableContextBackends();
 
 namespace detail {
@@ -56,6 +59,7 @@ std::unique_ptr<GlContext> createEglDevice();
 std::unique_ptr<GlContext> createEglGles2();
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&);
 std::unique_ptr<GlContext> createOSMesa();
+std::unique_ptr<GlContext> createWebGl(const ContextOptions&);
 }  // namespace detail
 
 }  // namespace lidr
