@@ -220,4 +220,25 @@ void Scene::validate(int maxResolution) const {
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
 }
 
+int findOrAddMaterial(Scene& scene, const Material& material) {
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& existing = scene.materials[i];
+        if (existing.name == material.name && existing.diffuse == material.diffuse &&
+            existing.diffuseTexture == material.diffuseTexture && existing.specular == material.specular &&
+            existing.shininess == material.shininess && existing.opacity == material.opacity)
+            return int(i);
+    }
+    scene.materials.push_back(material);
+    return int(scene.materials.size() - 1);
+}
+
+int findOrAddDefaultMaterial(Scene& scene) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == "default") return int(i);
+    Material material;
+    material.name = "default";
+    scene.materials.push_back(material);
+    return int(scene.materials.size() - 1);
+}
+
 }  // namespace lidr

@@ -97,6 +97,13 @@ struct Scene {
     void validate(int maxResolution = 16384) const;
 };
 
+// The index of a material equal to `material` (name and every value), adding it if there is none: loading
+// the same model twice reuses its materials instead of adding copies.
+int findOrAddMaterial(Scene& scene, const Material& material);
+// Geometry without a material gets the scene's "default" material, which a scene file may define itself;
+// one with Material's defaults is added if the scene has none.
+int findOrAddDefaultMaterial(Scene& scene);
+
 glm::vec3 evaluatePath(const LightPath& path, const glm::vec3& restPosition, float t);
 
 }  // namespace lidr

@@ -1,18 +1,17 @@
 #pragma once
-// Scene files (JSON) and OBJ models. Every problem in a file is an lidr::Error naming the file and field.
+// Scenes from files: the one entry point, loadScene(path), picks the reader by the file's extension. Every
+// problem in a file is an lidr::Error naming the file (and, for scene files, the field).
 #include <string>
 
 #include "lidr/scene/scene.h"
+#include "lidr/scene/io/obj_importer.h"  // appendObj
+#include "lidr/scene/io/scene_file.h"    // loadSceneFile, parseSceneJson
 
 namespace lidr {
 
-// Loads a JSON scene file (format: doc/scene-format.md). Relative model and texture paths resolve against
-// the file's folder. The result is validated (Scene::validate).
-Scene loadSceneFile(const std::string& path);
-Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors);
-
-// Appends the OBJ file's triangles (with its .mtl materials) to `scene`, transformed by `transform`.
-// `overrideMaterial` >= 0 replaces the file's materials with that scene material.
-void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial = -1);
+// .json: a lidr scene file (doc/scene-format.md); .obj: the model alone, no lights, seen by the default view
+// that frames its bounds (cameraFramingBounds). The extension is matched without regard to case; any other is
+// an error naming the supported ones. The result is validated (Scene::validate).
+Scene loadScene(const std::string& path);
 
 }  // namespace lidr
