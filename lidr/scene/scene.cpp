@@ -59,6 +59,12 @@ void validateMaterial(const Material& material, size_t index) {
     requirePositive(item, "shininess", material.shininess);
     if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
         fail(item, "opacity must be in [0, 1], got " + str(material.opacity));
+    if (material.diffuseImage) {
+        const ImageRGBA8& image = *material.diffuseImage;
+        if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height) * 4)
+            fail(item, "texture image is " + std::to_string(image.width) + "x" + std::to_string(image.height) + " with " +
+                           std::to_string(image.pixels.size()) + " bytes");
+    }
 }
 
 void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
@@ -225,7 +231,8 @@ int findOrAddMaterial(Scene& scene, const Material& material) {
         const Material& existing = scene.materials[i];
         if (existing.name == material.name && existing.diffuse == material.diffuse &&
             existing.diffuseTexture == material.diffuseTexture && existing.specular == material.specular &&
-            existing.shininess == material.shininess && existing.opacity == material.opacity)
+            existing.shininess == material.shininess && existing.opacity == material.opacity &&
+            existing.diffuseImage == material.diffuseImage)
             return int(i);
     }
     scene.materials.push_back(material);

@@ -2,10 +2,13 @@
 // Scene data: what every render mode (LIDR, tiled, forward) draws. Geometry is stored in world space (model
 // transforms are applied when a scene is built), lights are evaluated for a time with Scene::lightsAt().
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "lidr/base/image.h"
 
 namespace lidr {
 
@@ -16,6 +19,9 @@ struct Material {
     glm::vec3 specular{0.25f};
     float shininess = 32.0f;
     float opacity = 1.0f;        // < 1: transparent, drawn after opaque geometry
+    // The texture's pixels when the importer decoded them (glTF images, embedded ones included; rows top to
+    // bottom like a file): used instead of reading diffuseTexture, which then only names the image.
+    std::shared_ptr<const ImageRGBA8> diffuseImage{};
 };
 
 // One draw batch: triangles of one material, world space.
@@ -84,6 +90,9 @@ struct Scene {
     // transparent materials are drawn (after the opaque geometry, back to front).
     int msaaSamples = 0;
     bool transparency = true;
+    // What the importers read but could not honour as asked (a missing .mtl, a spot light, ...), one line
+    // each naming the file; tools print them (lidr-demo's summary).
+    std::vector<std::string> warnings;
 
     size_t triangleCount() const;
     glm::vec3 boundsMin() const;  // of the geometry

@@ -77,11 +77,11 @@ std::string lowerCaseExtension(const std::string& path) {
     return ext;
 }
 
-// Model formats other than OBJ, by extension, so they are named instead of failing as "no triangles".
+// Model formats other than OBJ and glTF, by extension, so they are named instead of failing as "no triangles".
 std::string unsupportedModelFormat(const std::string& path) {
     const std::string ext = lowerCaseExtension(path);
     static const std::map<std::string, std::string> known = {
-        {".ply", "PLY"}, {".gltf", "glTF"}, {".glb", "glTF"}, {".fbx", "FBX"}, {".stl", "STL"},
+        {".ply", "PLY"}, {".fbx", "FBX"}, {".stl", "STL"},
         {".dae", "COLLADA"}, {".3ds", "3DS"}, {".blend", "Blender"}, {".usd", "USD"}, {".usdz", "USD"},
         {".abc", "Alembic"}, {".x3d", "X3D"}, {".off", "OFF"}};
     const auto it = known.find(ext);

@@ -16,7 +16,7 @@ std::string fileProblem(const std::string& path);
 // Empty if stb_image can read the image's header and its size fits a texture, else what is wrong with it.
 std::string imageProblem(const std::string& path);
 
-// The name of a model format lidr does not import, by extension ("PLY", "FBX"), or empty (OBJ, unknown).
+// The name of a model format lidr does not import, by extension ("PLY", "FBX"), or empty (OBJ, glTF, unknown).
 std::string unsupportedModelFormat(const std::string& path);
 
 // Lower-case extension with its dot (".obj"), for dispatching on file types.

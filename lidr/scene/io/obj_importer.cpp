@@ -89,7 +89,9 @@ glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
 void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial) {
     const auto fail = [&](const std::string& problem) { throw Error(objPath + ": " + problem); };
     const std::string format = unsupportedModelFormat(objPath);
-    if (!format.empty()) fail("format not supported (" + format + "); only OBJ models can be loaded");
+    if (!format.empty()) fail("format not supported (" + format + "); OBJ and glTF models can be loaded");
+    const std::string extension = lowerCaseExtension(objPath);
+    if (extension == ".gltf" || extension == ".glb") fail("a glTF file, not OBJ (appendGltf reads it)");
     const std::string problem = fileProblem(objPath);
     if (!problem.empty()) fail("OBJ file " + problem);
     if (overrideMaterial >= int(scene.materials.size())) fail("override material out of range");

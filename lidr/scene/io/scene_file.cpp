@@ -12,6 +12,7 @@
 #include "lidr/scene/primitives.h"
 #include "lidr/scene/render_mode_names.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/gltf_importer.h"
 #include "lidr/scene/io/json_fields.h"
 #include "lidr/scene/io/obj_importer.h"
 
@@ -159,7 +160,12 @@ private:
         const int material = field.has("material") ? materialIndex(field["material"]) : -1;
         const Field file = field["file"];
         try {
-            appendObj(scene_, resolve(file.text()), transform, material);
+            const std::string path = resolve(file.text());
+            const std::string extension = lowerCaseExtension(path);
+            if (extension == ".gltf" || extension == ".glb")
+                appendGltf(scene_, path, transform, material);  // the scene file's camera stays the view
+            else
+                appendObj(scene_, path, transform, material);
         } catch (const Error& error) {
             file.fail(error.what());
         }

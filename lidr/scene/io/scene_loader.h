@@ -4,14 +4,17 @@
 #include <string>
 
 #include "lidr/scene/scene.h"
-#include "lidr/scene/io/obj_importer.h"  // appendObj
-#include "lidr/scene/io/scene_file.h"    // loadSceneFile, parseSceneJson
+#include "lidr/scene/io/gltf_importer.h"  // appendGltf
+#include "lidr/scene/io/obj_importer.h"   // appendObj
+#include "lidr/scene/io/scene_file.h"     // loadSceneFile, parseSceneJson
 
 namespace lidr {
 
-// .json: a lidr scene file (doc/scene-format.md); .obj: the model alone, no lights, seen by the default view
-// that frames its bounds (cameraFramingBounds). The extension is matched without regard to case; any other is
-// an error naming the supported ones. The result is validated (Scene::validate).
+// .gltf / .glb: the glTF model with its point lights, seen by its first perspective camera, else by the default
+// view that frames its bounds (cameraFramingBounds). .obj: the model alone, no lights, seen by that default view.
+// Other model formats (.ply, .fbx, ...) are errors naming the format; anything else is read as a lidr JSON scene
+// file (doc/scene-format.md; usually .json). Extensions are matched without regard to case. The result is
+// validated (Scene::validate).
 Scene loadScene(const std::string& path);
 
 }  // namespace lidr
