@@ -203,6 +203,9 @@ void Program::set(const char* n, float v) const { glUniform1f(uniform(n), v); }
 void Program::set(const char* n, const glm::vec2& v) const { glUniform2fv(uniform(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec3& v) const { glUniform3fv(uniform(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec4& v) const { glUniform4fv(uniform(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::mat3& v) const {
+    glUniformMatrix3fv(uniform(n), 1, GL_FALSE, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::mat4& v) const {
     glUniformMatrix4fv(uniform(n), 1, GL_FALSE, glm::value_ptr(v));
 }

@@ -248,4 +248,12 @@ int findOrAddDefaultMaterial(Scene& scene) {
     return int(scene.materials.size() - 1);
 }
 
+void validateObject(const Mesh& mesh, const Material& material) {
+    validateMaterial(material, 0);
+    Mesh m = mesh;
+    m.material = 0;
+    validateMesh(m, 0, 1);
+    if (mesh.indices.empty()) fail("mesh '" + mesh.name + "'", "has no triangles");
+}
+
 }  // namespace lidr
