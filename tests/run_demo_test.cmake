@@ -149,3 +149,15 @@ execute_process(COMMAND ${DEMO} --headless --scene ${OUT}/broken.glb --frames 1 
 if(r EQUAL 0 OR NOT err MATCHES "broken.glb: malformed glTF" OR EXISTS ${OUT}/broken/summary.json)
   message(FATAL_ERROR "lidr-demo on a truncated .glb: exit ${r}, stderr '${err}'")
 endif()
+
+# Importer warnings reach the summary (stdout and summary.json): an OBJ whose .mtl is missing, in a scene file.
+file(WRITE ${OUT}/warn/quad.obj "mtllib missing.mtl\nv -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nusemtl stone\nf 1 4 3 2\n")
+file(WRITE ${OUT}/warn/scene.json "{\"models\": [{\"file\": \"quad.obj\"}], \"lights\": [{\"position\": [0, 1, 0], \"radius\": 3}]}")
+execute_process(COMMAND ${DEMO} --headless --scene ${OUT}/warn/scene.json --width 64 --height 48 --frames 1
+                --out ${OUT}/warn/out RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+file(READ ${OUT}/warn/out/summary.json summary)
+string(JSON warnings LENGTH "${summary}" scene warnings)
+if(NOT r EQUAL 0 OR warnings LESS 1 OR NOT out MATCHES "warning +[^\n]*quad.obj: Material file \\[ missing.mtl \\] not found")
+  message(FATAL_ERROR "lidr-demo with a missing .mtl: exit ${r}, ${warnings} warnings in summary.json, stdout lacks the warning")
+endif()

@@ -173,6 +173,7 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
         program.set("uMaterialSpecular", m.specular);
         program.set("uMaterialShininess", m.shininess);
         program.set("uMaterialOpacity", m.opacity);
+        program.set("uMaterialEmissive", m.emissive);
         const gl::Texture& tex = textures_[b.material];
         program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {

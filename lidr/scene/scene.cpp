@@ -57,6 +57,7 @@ void validateMaterial(const Material& material, size_t index) {
     requireColor(item, "diffuse", material.diffuse);
     requireColor(item, "specular", material.specular);
     requirePositive(item, "shininess", material.shininess);
+    requireColor(item, "emissive", material.emissive);
     if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
         fail(item, "opacity must be in [0, 1], got " + str(material.opacity));
     if (material.diffuseImage) {
@@ -232,7 +233,7 @@ int findOrAddMaterial(Scene& scene, const Material& material) {
         if (existing.name == material.name && existing.diffuse == material.diffuse &&
             existing.diffuseTexture == material.diffuseTexture && existing.specular == material.specular &&
             existing.shininess == material.shininess && existing.opacity == material.opacity &&
-            existing.diffuseImage == material.diffuseImage)
+            existing.diffuseImage == material.diffuseImage && existing.emissive == material.emissive)
             return int(i);
     }
     scene.materials.push_back(material);

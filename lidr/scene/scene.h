@@ -19,6 +19,7 @@ struct Material {
     glm::vec3 specular{0.25f};
     float shininess = 32.0f;
     float opacity = 1.0f;        // < 1: transparent, drawn after opaque geometry
+    glm::vec3 emissive{0.0f};    // light the surface gives off itself, added to the ambient term (MTL Ke, glTF emissive)
     // The texture's pixels when the importer decoded them (glTF images, embedded ones included; rows top to
     // bottom like a file): used instead of reading diffuseTexture, which then only names the image.
     std::shared_ptr<const ImageRGBA8> diffuseImage{};

@@ -24,6 +24,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/mesh_split.h"
 
 namespace lidr {
 
@@ -372,7 +373,7 @@ private:
                 }
             }
         }
-        scene_.meshes.push_back(std::move(out));
+        for (Mesh& part : splitMeshSpatially(std::move(out))) scene_.meshes.push_back(std::move(part));
     }
 
     // ---- materials -----------------------------------------------------------------------------------------
@@ -397,6 +398,9 @@ private:
         const float metallic = glm::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
         const float roughness = glm::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
         material.diffuse = glm::vec3(base);
+        for (size_t c = 0; c < 3 && c < source.emissiveFactor.size(); ++c) material.emissive[int(c)] = float(source.emissiveFactor[c]);
+        if (!(isFinite(material.emissive) && glm::all(glm::greaterThanEqual(material.emissive, glm::vec3(0.0f)))))
+            fail(name + ": emissiveFactor must be finite and >= 0, got " + str(material.emissive));
         // Blinn-Phong from metallic-roughness: the specular colour F0 (0.04 for dielectrics, the base colour for
         // metals) fading out with roughness, and the exponent whose lobe width matches the roughness.
         material.specular = glm::mix(glm::vec3(0.04f), glm::vec3(base), metallic) * (1.0f - roughness) * (1.0f - roughness);

@@ -10,12 +10,14 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <tiny_obj_loader.h>
 
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/mesh_split.h"
 
 namespace lidr {
 
@@ -79,6 +81,71 @@ struct MeshBuilder {
 };
 
 
+// The materials whose MTL files (named by the OBJ's mtllib lines) give an `illum` line: tinyobjloader reads a
+// missing illum as 0 (unlit), which would turn every material without one black-and-flat.
+std::set<std::string> materialsWithIllum(const std::string& objPath) {
+    std::set<std::string> result;
+    std::ifstream obj(objPath, std::ios::binary);
+    std::string line;
+    while (std::getline(obj, line)) {
+        std::istringstream tokens(line);
+        std::string keyword, file;
+        if (!(tokens >> keyword) || keyword != "mtllib") continue;
+        while (tokens >> file) {
+            std::ifstream mtl(fs::path(objPath).parent_path() / file, std::ios::binary);
+            std::string mtlLine, current;
+            while (std::getline(mtl, mtlLine)) {
+                std::istringstream words(mtlLine);
+                std::string word;
+                if (!(words >> word)) continue;
+                if (word == "newmtl") {
+                    std::getline(words >> std::ws, current);
+                    current.erase(current.find_last_not_of(" \t\r") + 1);
+                } else if (word == "illum") {
+                    result.insert(current);
+                }
+            }
+        }
+    }
+    return result;
+}
+
+// MTL illumination models (illum 0..10) as far as Blinn-Phong with opacity and an emissive term can draw them.
+// 0: colour without lighting (Kd shown as is: drawn as emission); 1: no highlights (Ks off); 2: Blinn-Phong;
+// 3..10 add reflection, refraction, Fresnel or shadow effects lidr does not draw: shaded as 2, with a warning;
+// the glass models (4, 6, 7, 9) are drawn transparent when the file gives no d below 1: opacity from Tf
+// (1 - its mean, at least 0.2). Last, an opacity of 0 (d 0, or Tr 1, whose direction exporters disagree on) would
+// hide the material: drawn opaque, with a warning.
+void applyIllum(Material& material, const tinyobj::material_t& source, bool illumGiven,
+                const std::function<void(const std::string&)>& warn) {
+    const std::string name = "material '" + source.name + "'";
+    const int illum = illumGiven ? source.illum : 2;
+    if (illum == 0) {
+        material.emissive += material.diffuse;
+        material.diffuse = glm::vec3(0.0f);
+        material.specular = glm::vec3(0.0f);
+    } else if (illum == 1) {
+        material.specular = glm::vec3(0.0f);
+    } else if (illum >= 3 && illum <= 10) {
+        const bool glass = illum == 4 || illum == 6 || illum == 7 || illum == 9;
+        const glm::vec3 filter(source.transmittance[0], source.transmittance[1], source.transmittance[2]);
+        const float transmitted = (filter.x + filter.y + filter.z) / 3.0f;
+        if (glass && material.opacity >= 1.0f && std::isfinite(transmitted) && transmitted > 0.0f) {
+            material.opacity = std::clamp(1.0f - transmitted, 0.2f, 1.0f);
+            warn(name + ": illum " + std::to_string(illum) + " (glass) drawn as a transparent surface with opacity " +
+                 str(material.opacity) + " from Tf; reflection and refraction are not drawn");
+        } else {
+            warn(name + ": illum " + std::to_string(illum) + " asks for reflection/refraction lidr does not draw; shaded as illum 2");
+        }
+    } else if (illum != 2) {
+        warn(name + ": unknown illum " + std::to_string(illum) + "; shaded as illum 2");
+    }
+    if (material.opacity <= 0.0f) {
+        material.opacity = 1.0f;
+        warn(name + ": d 0 (or Tr 1) would make it invisible; drawn opaque (exporters disagree on which way Tr runs)");
+    }
+}
+
 glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
     const float length = glm::length(v);
     return std::isfinite(length) && length > 1e-20f ? v / length : fallback;
@@ -86,8 +153,10 @@ glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
 
 }  // namespace
 
-void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial) {
+void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial,
+               const ObjImportOptions& options) {
     const auto fail = [&](const std::string& problem) { throw Error(objPath + ": " + problem); };
+    const auto warn = [&](const std::string& warning) { scene.warnings.push_back(objPath + ": " + warning); };
     const std::string format = unsupportedModelFormat(objPath);
     if (!format.empty()) fail("format not supported (" + format + "); OBJ and glTF models can be loaded");
     const std::string extension = lowerCaseExtension(objPath);
@@ -107,6 +176,16 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
         message.erase(message.find_last_not_of(" \n") + 1);  // tinyobjloader ends its messages with newlines
         fail("malformed OBJ: " + message);
     }
+    // tinyobjloader's warnings (a missing .mtl, an unknown usemtl: those faces get the "default" material) are
+    // the scene's, one line each.
+    {
+        std::istringstream lines(reader.Warning());
+        std::string line;
+        while (std::getline(lines, line)) {
+            line.erase(line.find_last_not_of(" \r\n.") + 1);
+            if (!line.empty()) warn(line);
+        }
+    }
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const int positionCount = int(attrib.vertices.size() / 3);
     const int normalCount = int(attrib.normals.size() / 3);
@@ -115,6 +194,7 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
     std::vector<int> sceneMaterialOf;
     if (overrideMaterial < 0) {
         const fs::path folder = fs::path(objPath).parent_path();
+        const std::set<std::string> withIllum = materialsWithIllum(objPath);
         for (const tinyobj::material_t& source : reader.GetMaterials()) {
             Material material;
             material.name = source.name;
@@ -122,6 +202,7 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             material.specular = {source.specular[0], source.specular[1], source.specular[2]};
             material.shininess = std::max(source.shininess, 1.0f);  // exporters often write Ns 0
             material.opacity = source.dissolve;
+            material.emissive = {source.emission[0], source.emission[1], source.emission[2]};
             // MTL values the renderer cannot use are the file's error, named with its keyword (the fuzzer found
             // "Kd 0 0 -0.5" passing import and failing only later, in scene validation).
             const auto color = [&](const char* keyword, const glm::vec3& c) {
@@ -132,10 +213,12 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             };
             color("Kd", material.diffuse);
             color("Ks", material.specular);
+            color("Ke", material.emissive);
             if (!std::isfinite(material.shininess))
                 fail("material '" + source.name + "': Ns must be finite, got " + std::to_string(source.shininess));
             if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
                 fail("material '" + source.name + "': d (dissolve) must be in [0, 1], got " + std::to_string(source.dissolve));
+            applyIllum(material, source, withIllum.count(source.name) > 0, warn);
             if (!source.diffuse_texname.empty()) {
                 material.diffuseTexture = (folder / source.diffuse_texname).lexically_normal().string();
                 const std::string problem = imageProblem(material.diffuseTexture);
@@ -162,12 +245,15 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
         glm::vec3 faceNormal;
         bool smooth;
         int sceneMaterial;
+        size_t shape;
     };
     std::vector<Triangle> triangles;
     // Corners without a normal in smoothing groups share the normal of their position, averaged over its
     // faces weighted by the corner angle (so how a polygon was triangulated does not matter).
     std::vector<glm::vec3> smoothNormals(size_t(positionCount), glm::vec3(0.0f));
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
+    for (size_t shapeIndex = 0; shapeIndex < shapes.size(); ++shapeIndex) {
+        const tinyobj::shape_t& shape = shapes[shapeIndex];
         const tinyobj::mesh_t& source = shape.mesh;
         for (size_t face = 0; face < source.num_face_vertices.size(); ++face) {
             const std::string faceName = "face " + std::to_string(face + 1) + " of '" + shape.name + "'";
@@ -191,7 +277,9 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             for (size_t k = 0; k < 3; ++k) points[k] = worldPosition(triangle.corners[k].vertex_index);
             const glm::vec3 areaNormal = glm::cross(points[1] - points[0], points[2] - points[0]);
             triangle.faceNormal = normalizedOr(areaNormal, glm::vec3(0.0f, 1.0f, 0.0f));
-            triangle.smooth = face < source.smoothing_group_ids.size() && source.smoothing_group_ids[face] != 0;
+            triangle.smooth = options.smoothNormals ||
+                              (face < source.smoothing_group_ids.size() && source.smoothing_group_ids[face] != 0);
+            triangle.shape = shapeIndex;
             const int objMaterial = face < source.material_ids.size() ? source.material_ids[face] : -1;
             if (overrideMaterial >= 0)
                 triangle.sceneMaterial = overrideMaterial;
@@ -213,9 +301,11 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
     if (triangles.empty()) fail("no triangles");
 
     const std::string stem = fs::path(objPath).stem().string();
-    std::map<int, MeshBuilder> builders;  // by scene material: ascending, so the mesh order is deterministic
+    // By group or object (tinyobjloader's shapes, in file order), then scene material: the mesh order is
+    // deterministic.
+    std::map<std::pair<size_t, int>, MeshBuilder> builders;
     for (const Triangle& triangle : triangles) {
-        MeshBuilder& builder = builders[triangle.sceneMaterial];
+        MeshBuilder& builder = builders[{triangle.shape, triangle.sceneMaterial}];
         for (const tinyobj::index_t& corner : triangle.corners) {
             const bool flat = corner.normal_index < 0 && !triangle.smooth;
             const CornerKey key = cornerKey(corner, flat ? &triangle.faceNormal : nullptr);
@@ -245,11 +335,13 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             builder.vertexOf.emplace(key, index);
         }
     }
-    for (auto& [material, builder] : builders) {
+    for (auto& [key, builder] : builders) {
+        const auto& [shape, material] = key;
         builder.mesh.material = material;
-        builder.mesh.name = stem + "/" + scene.materials[size_t(material)].name;
+        const std::string& group = shapes[shape].name;
+        builder.mesh.name = stem + "/" + (group.empty() ? "" : group + "/") + scene.materials[size_t(material)].name;
         if (!builder.hasTexCoords) builder.mesh.texCoords.clear();
-        scene.meshes.push_back(std::move(builder.mesh));
+        for (Mesh& part : splitMeshSpatially(std::move(builder.mesh))) scene.meshes.push_back(std::move(part));
     }
 }
 

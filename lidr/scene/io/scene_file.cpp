@@ -34,7 +34,8 @@ constexpr size_t maxMessageLength = 2000;
 // models, primitives, lights, generate), whatever their order in the file.
 class SceneReader {
 public:
-    SceneReader(const std::string& file, const std::string& baseDir) : file_(file), baseDir_(baseDir) {}
+    SceneReader(const std::string& file, const std::string& baseDir, const ObjImportOptions& objDefaults)
+        : file_(file), baseDir_(baseDir), objDefaults_(objDefaults) {}
 
     Scene read(const Json& document) {
         const Field root(document, "", file_);
@@ -121,7 +122,7 @@ private:
     }
 
     void readMaterial(const Field& field) {
-        field.expectObject({"name", "diffuse", "texture", "specular", "shininess", "opacity"});
+        field.expectObject({"name", "diffuse", "texture", "specular", "shininess", "opacity", "emissive"});
         Material material;
         material.name = field["name"].text();
         if (material.name.empty()) field["name"].fail("must not be empty");
@@ -133,6 +134,7 @@ private:
             if (!problem.empty()) field["texture"].fail(problem);
         }
         if (field.has("specular")) material.specular = color(field["specular"]);
+        if (field.has("emissive")) material.emissive = color(field["emissive"]);
         if (field.has("shininess")) material.shininess = positive(field["shininess"]);
         if (field.has("opacity")) {
             material.opacity = field["opacity"].number();
@@ -143,7 +145,9 @@ private:
     }
 
     void readModel(const Field& field) {
-        field.expectObject({"file", "translate", "rotate", "rotate_y", "scale", "material"});
+        field.expectObject({"file", "translate", "rotate", "rotate_y", "scale", "material", "smooth_normals"});
+        ObjImportOptions objOptions = objDefaults_;
+        if (field.has("smooth_normals")) objOptions.smoothNormals = field["smooth_normals"].boolean();
         glm::mat4 transform(1.0f);
         if (field.has("translate")) transform = glm::translate(transform, field["translate"].vec3());
         if (field.has("rotate") && field.has("rotate_y")) field.fail("give either \"rotate\" or \"rotate_y\", not both");
@@ -165,7 +169,7 @@ private:
             if (extension == ".gltf" || extension == ".glb")
                 appendGltf(scene_, path, transform, material);  // the scene file's camera stays the view
             else
-                appendObj(scene_, path, transform, material);
+                appendObj(scene_, path, transform, material, objOptions);
         } catch (const Error& error) {
             file.fail(error.what());
         }
@@ -324,14 +328,16 @@ private:
 
     const std::string& file_;
     const std::string baseDir_;
+    const ObjImportOptions objDefaults_;
     Scene scene_;
 };
 
 }  // namespace
 
-Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors) {
+Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors,
+                     const ObjImportOptions& objDefaults) {
     try {
-        return SceneReader(nameForErrors, baseDir).read(parseJsonWithPaths(jsonText, nameForErrors));
+        return SceneReader(nameForErrors, baseDir, objDefaults).read(parseJsonWithPaths(jsonText, nameForErrors));
     } catch (const Error& error) {
         const std::string message = error.what();
         if (message.size() <= maxMessageLength) throw;
@@ -341,7 +347,7 @@ Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, co
     }
 }
 
-Scene loadSceneFile(const std::string& path) {
+Scene loadSceneFile(const std::string& path, const ObjImportOptions& objDefaults) {
     std::error_code error;
     if (!fs::exists(path, error) && !error) throw Error(path + ": scene file not found");
     const std::string problem = fileProblem(path);
@@ -351,7 +357,7 @@ Scene loadSceneFile(const std::string& path) {
     std::ostringstream text;
     text << in.rdbuf();  // an empty file sets failbit on `text`; the parser then reports it
     if (in.bad()) throw Error(path + ": cannot read the scene file");
-    return parseSceneJson(text.str(), fs::path(path).parent_path().string(), path);
+    return parseSceneJson(text.str(), fs::path(path).parent_path().string(), path, objDefaults);
 }
 
 }  // namespace lidr

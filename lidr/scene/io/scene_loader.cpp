@@ -24,18 +24,18 @@ float farPlaneEnclosing(const Camera& camera, const glm::vec3& boundsMin, const 
 
 }  // namespace
 
-Scene loadScene(const std::string& path) {
+Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults) {
     const std::string extension = lowerCaseExtension(path);
     const std::string format = unsupportedModelFormat(path);
     if (!format.empty())
         throw Error(path + ": format not supported (" + format + "); lidr reads .json scene files, glTF (.gltf, .glb) "
                     "and OBJ (.obj) models");
-    if (extension != ".obj" && extension != ".gltf" && extension != ".glb") return loadSceneFile(path);
+    if (extension != ".obj" && extension != ".gltf" && extension != ".glb") return loadSceneFile(path, objDefaults);
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
     bool hasCamera = false;
     if (extension == ".obj") {
-        appendObj(scene, path, glm::mat4(1.0f));
+        appendObj(scene, path, glm::mat4(1.0f), -1, objDefaults);
     } else {
         const GltfContents contents = appendGltf(scene, path, glm::mat4(1.0f));
         hasCamera = contents.hasCamera;

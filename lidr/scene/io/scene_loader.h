@@ -15,6 +15,8 @@ namespace lidr {
 // Other model formats (.ply, .fbx, ...) are errors naming the format; anything else is read as a lidr JSON scene
 // file (doc/scene-format.md; usually .json). Extensions are matched without regard to case. The result is
 // validated (Scene::validate).
-Scene loadScene(const std::string& path);
+// `objDefaults` (smooth normals) applies to an .obj file, and to a scene file's OBJ models that do not say
+// otherwise.
+Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults = {});
 
 }  // namespace lidr
