@@ -1,6 +1,7 @@
 #include "bench_config.h"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <set>
 
@@ -51,7 +52,7 @@ std::string joinNames(const std::vector<std::string>& names) {
 std::string sceneNameHelp() {
     return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
            "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), heavy-T (the room with about T "
-           "triangles, e.g. heavy-250k, heavy-1m), file:PATH or a path ending in .json";
+           "triangles, e.g. heavy-250k, heavy-1m), file:PATH or a path ending in .json, .gltf, .glb or .obj";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed) {
@@ -97,11 +98,13 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
     std::string path;
     if (startsWith(name, "file:"))
         path = name.substr(5);
-    else if (name.size() > 5 && name.substr(name.size() - 5) == ".json")
-        path = name;
+    else
+        for (const char* extension : {".json", ".gltf", ".glb", ".obj"})
+            if (name.size() > std::strlen(extension) && name.compare(name.size() - std::strlen(extension), std::string::npos, extension) == 0)
+                path = name;
     if (path.empty()) throw Error("unknown scene '" + name + "' (valid: " + sceneNameHelp() + ")");
     if (!std::filesystem::exists(path)) throw Error("scene file '" + path + "' does not exist");
-    return loadSceneFile(path);
+    return loadScene(path);
 }
 
 // ---- configurations -------------------------------------------------------------------------------------

@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> sweeps;
     bool quick = false, full = false, noProgress = false, noPlots = false, dryRun = false, list = false;
     unsigned seed = 1;
-    app.add_option("--scenes", scenes, "Scenes: " + sceneNameHelp())->capture_default_str();
+    app.add_option("--scenes,--scene", scenes, "Scenes: " + sceneNameHelp())->capture_default_str();
     app.add_option("--modes", modes, "Render modes (default: all the library has)");
     app.add_option("--schemes", schemes, "Packing schemes for mode lidr (default: all the library has)");
     app.add_option("--budgets", budgets, "LIDR light slots per pixel")->capture_default_str();

@@ -29,7 +29,10 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 }  // namespace
 
 void SceneChoice::addOptions(CLI::App& app) {
-    app.add_option("--scene", sceneFile, "Scene file (JSON, see doc/scene-format.md); default: the built-in room");
+    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model; default: the built-in room");
+    app.add_flag("--smooth-normals", smoothNormals,
+                 "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
+                 "model may say otherwise with \"smooth_normals\")");
     app.add_option("--width", width, "Override the scene's width in pixels");
     app.add_option("--height", height, "Override the scene's height in pixels");
     app.add_option("--time", time, "Animation time in seconds, a finite number >= 0 (default: the scene's)");
@@ -51,7 +54,9 @@ Scene SceneChoice::load() const {
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
     } else {
-        scene = loadSceneFile(sceneFile);
+        ObjImportOptions objOptions;
+        objOptions.smoothNormals = smoothNormals;
+        scene = loadScene(sceneFile, objOptions);
         if (time) scene.time = float(*time);
     }
     if (width) scene.width = *width;

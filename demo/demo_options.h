@@ -17,6 +17,7 @@ struct SceneChoice {
     std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
     std::optional<double> time;  // unset: the scene's; set: a finite number of seconds >= 0
     unsigned seed = 1;
+    bool smoothNormals = false;  // OBJ faces without normals get smooth ones (ObjImportOptions)
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
 };

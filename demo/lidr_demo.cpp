@@ -119,13 +119,15 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
-                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time}};
+                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
+                        {"warnings", scene.warnings}};
     summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
+    for (const std::string& warning : scene.warnings) s << "warning    " << warning << "\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
     if (autoMode) {
@@ -235,7 +237,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
-                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time}};
+                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
+                        {"warnings", scene.warnings}};
     const AutoDecision& decision = stats.autoDecision;
     const int budget = renderer.scheme().config().budget;
     summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", budget},
@@ -317,6 +320,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
+    for (const std::string& warning : scene.warnings) s << "warning    " << warning << "\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")

@@ -28,7 +28,7 @@ else
 packages=(
   build-essential cmake pkg-config
   libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev libglfw3-dev
-  libstb-dev catch2 libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
+  libstb-dev catch2 libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
   gnuplot-nox
   libimgui-dev xvfb xauth
   clang libclang-rt-14-dev

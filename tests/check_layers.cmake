@@ -8,7 +8,7 @@ set(allowed_platform base gl platform)
 set(allowed_render base gl scene render)
 set(allowed_technique base gl scene render technique)
 set(allowed_modes base gl scene render technique modes)
-set(allowed_scene/io base gl scene render technique modes scene/io)
+set(allowed_scene/io base scene scene/io)
 set(allowed_eval base gl scene render technique eval)
 set(known base gl scene platform render technique modes scene/io eval)
 

@@ -124,3 +124,40 @@ execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT
 if(r EQUAL 0 OR NOT err MATCHES "--out: (cannot create folder|'[^']*' is not a folder).*a-file" OR out MATCHES "GL: ")
   message(FATAL_ERROR "lidr-demo --out <a file>: expected an early error naming --out, got ${r}\n${out}${err}")
 endif()
+
+# A glTF scene rendered directly (media/scenes/courtyard.gltf: 5 point lights, a camera, a BLEND glass pane).
+execute_process(COMMAND ${DEMO} --headless --scene ${SOURCE_DIR}/media/scenes/courtyard.gltf --width 240 --height 180
+                --frames 1 --out ${OUT}/gltf RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(NOT r EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --scene courtyard.gltf failed (${r})")
+endif()
+file(READ ${OUT}/gltf/summary.json summary)
+string(JSON lights GET "${summary}" scene lights)
+string(JSON name GET "${summary}" scene name)
+string(JSON warnings LENGTH "${summary}" scene warnings)
+string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
+string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+if(NOT lights EQUAL 5 OR NOT name STREQUAL "courtyard" OR NOT warnings EQUAL 0 OR whole_psnr LESS 50 OR NOT dropped EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --scene courtyard.gltf: ${lights} lights, name '${name}', ${warnings} warnings, "
+                      "whole-image PSNR ${whole_psnr}, dropped ${dropped}")
+endif()
+# A malformed glTF: a clear error naming the file, non-zero exit, nothing written.
+file(WRITE ${OUT}/broken.glb "glTF")
+execute_process(COMMAND ${DEMO} --headless --scene ${OUT}/broken.glb --frames 1 --out ${OUT}/broken
+                RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(r EQUAL 0 OR NOT err MATCHES "broken.glb: malformed glTF" OR EXISTS ${OUT}/broken/summary.json)
+  message(FATAL_ERROR "lidr-demo on a truncated .glb: exit ${r}, stderr '${err}'")
+endif()
+
+# Importer warnings reach the summary (stdout and summary.json): an OBJ whose .mtl is missing, in a scene file.
+file(WRITE ${OUT}/warn/quad.obj "mtllib missing.mtl\nv -2 0 -2\nv 2 0 -2\nv 2 0 2\nv -2 0 2\nusemtl stone\nf 1 4 3 2\n")
+file(WRITE ${OUT}/warn/scene.json "{\"models\": [{\"file\": \"quad.obj\"}], \"lights\": [{\"position\": [0, 1, 0], \"radius\": 3}]}")
+execute_process(COMMAND ${DEMO} --headless --scene ${OUT}/warn/scene.json --width 64 --height 48 --frames 1
+                --out ${OUT}/warn/out RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+file(READ ${OUT}/warn/out/summary.json summary)
+string(JSON warnings LENGTH "${summary}" scene warnings)
+if(NOT r EQUAL 0 OR warnings LESS 1 OR NOT out MATCHES "warning +[^\n]*quad.obj: Material file \\[ missing.mtl \\] not found")
+  message(FATAL_ERROR "lidr-demo with a missing .mtl: exit ${r}, ${warnings} warnings in summary.json, stdout lacks the warning")
+endif()

@@ -8,22 +8,6 @@
 
 namespace lidr {
 
-const std::vector<std::string>& renderModeNames() {
-    static const std::vector<std::string> names = {"lidr", "tiled", "forward-multipass", "forward-brute", "auto"};
-    return names;
-}
-
-bool isRenderModeName(const std::string& name) {
-    const auto& n = renderModeNames();
-    return std::find(n.begin(), n.end(), name) != n.end();
-}
-
-std::string renderModeList() {
-    std::string s;
-    for (const std::string& n : renderModeNames()) s += (s.empty() ? "" : ", ") + n;
-    return s;
-}
-
 std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInfo& info, const Scene& scene,
                                          int width, int height) {
     // The settings every mode shares come from the common fields.

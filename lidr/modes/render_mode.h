@@ -10,6 +10,7 @@
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/multipass_forward_renderer.h"
 #include "lidr/render/renderer.h"
+#include "lidr/scene/render_mode_names.h"  // renderModeNames(), isRenderModeName(), renderModeList()
 #include "lidr/scene/scene.h"
 #include "lidr/modes/tiled_renderer.h"
 
@@ -26,12 +27,6 @@ struct RenderModeOptions {
     bool transparency = true;           // draw transparent materials (forward-multipass never does)
     TimingMethod timingMethod = TimingMethod::Auto;
 };
-
-// The valid mode names, in the order above.
-const std::vector<std::string>& renderModeNames();
-bool isRenderModeName(const std::string& name);
-// "lidr, tiled, forward-multipass, forward-brute": for error messages and help texts.
-std::string renderModeList();
 
 // Builds the renderer for options.mode at width x height. Throws lidr::Error naming the valid modes for an
 // unknown name, and whatever the mode's constructor throws for bad settings (before any drawing).

@@ -53,15 +53,23 @@ GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
 }
 
 gl::Texture GpuScene::loadTexture(const Material& m) const {
-    if (m.diffuseTexture.empty()) return {};
+    if (m.diffuseTexture.empty() && !m.diffuseImage) return {};
     int w = 0, h = 0, n = 0;
-    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(m.diffuseTexture.c_str(), &w, &h, &n, 4), stbi_image_free);
-    if (!data)
-        throw Error("material '" + m.name + "': cannot load texture '" + m.diffuseTexture + "': " + stbi_failure_reason());
-    // stb_image rows run top to bottom; OBJ texture coordinates have v up, so flip rows on upload.
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(nullptr, stbi_image_free);
+    if (m.diffuseImage) {  // decoded by the importer (glTF)
+        w = m.diffuseImage->width;
+        h = m.diffuseImage->height;
+    } else {
+        data.reset(stbi_load(m.diffuseTexture.c_str(), &w, &h, &n, 4));
+        if (!data)
+            throw Error("material '" + m.name + "': cannot load texture '" + m.diffuseTexture + "': " + stbi_failure_reason());
+    }
+    const uint8_t* pixels = m.diffuseImage ? m.diffuseImage->pixels.data() : data.get();
+    // Image rows run top to bottom; OBJ texture coordinates (and glTF's, flipped on import) have v up, so flip
+    // rows on upload.
     std::vector<uint8_t> flipped(static_cast<size_t>(w) * h * 4);
     for (int y = 0; y < h; ++y)
-        std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], data.get() + static_cast<size_t>(h - 1 - y) * w * 4,
+        std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], pixels + static_cast<size_t>(h - 1 - y) * w * 4,
                     static_cast<size_t>(w) * 4);
     return gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(), GL_LINEAR_MIPMAP_LINEAR);
 }
@@ -165,6 +173,7 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
         program.set("uMaterialSpecular", m.specular);
         program.set("uMaterialShininess", m.shininess);
         program.set("uMaterialOpacity", m.opacity);
+        program.set("uMaterialEmissive", m.emissive);
         const gl::Texture& tex = textures_[b.material];
         program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {

@@ -1,5 +1,8 @@
 #include "lidr/scene/camera.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace lidr {
@@ -34,6 +37,20 @@ bool sphereMayBeVisible(const CameraMatrices& m, const glm::vec3& center, float 
         if ((glm::dot(glm::vec3(p), center) + p.w) / len < -radius) return false;
     }
     return true;
+}
+
+Camera cameraFramingBounds(const glm::vec3& boundsMin, const glm::vec3& boundsMax, float fovYDegrees) {
+    const glm::vec3 center = 0.5f * (boundsMin + boundsMax);
+    // A flat or point-like scene still gets a view of positive size.
+    const float radius = std::max(0.5f * glm::length(boundsMax - boundsMin), 1e-3f);
+    const float distance = 1.1f * radius / std::sin(glm::radians(0.5f * fovYDegrees));
+    Camera camera;
+    camera.fovYDegrees = fovYDegrees;
+    camera.target = center;
+    camera.position = center + distance * glm::normalize(glm::vec3(0.0f, 0.5f, 1.0f));
+    camera.nearPlane = std::max(0.5f * (distance - radius), 1e-3f * distance);
+    camera.farPlane = distance + 2.0f * radius;
+    return camera;
 }
 
 }  // namespace lidr

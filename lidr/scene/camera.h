@@ -22,4 +22,9 @@ glm::vec3 unprojectPixel(const CameraMatrices& m, int x, int y, float depth);
 // False only when the sphere lies wholly outside one of the six frustum planes (conservative).
 bool sphereMayBeVisible(const CameraMatrices& m, const glm::vec3& center, float radius);
 
+// The default view of a scene that brings no camera (an OBJ or glTF file alone): looking at the centre of the
+// box [boundsMin, boundsMax] from the front (+z) and above (direction (0, 0.5, 1)), far enough that the box's
+// bounding sphere fits the vertical field of view with 10% to spare; near and far planes enclose the sphere.
+Camera cameraFramingBounds(const glm::vec3& boundsMin, const glm::vec3& boundsMax, float fovYDegrees = 60.0f);
+
 }  // namespace lidr

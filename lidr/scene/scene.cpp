@@ -57,8 +57,15 @@ void validateMaterial(const Material& material, size_t index) {
     requireColor(item, "diffuse", material.diffuse);
     requireColor(item, "specular", material.specular);
     requirePositive(item, "shininess", material.shininess);
+    requireColor(item, "emissive", material.emissive);
     if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
         fail(item, "opacity must be in [0, 1], got " + str(material.opacity));
+    if (material.diffuseImage) {
+        const ImageRGBA8& image = *material.diffuseImage;
+        if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height) * 4)
+            fail(item, "texture image is " + std::to_string(image.width) + "x" + std::to_string(image.height) + " with " +
+                           std::to_string(image.pixels.size()) + " bytes");
+    }
 }
 
 void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
@@ -218,6 +225,28 @@ void Scene::validate(int maxResolution) const {
         fail("lightPaths", std::to_string(lightPaths.size()) + " paths for " + std::to_string(lights.size()) +
                                " lights; need none or one per light");
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
+}
+
+int findOrAddMaterial(Scene& scene, const Material& material) {
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& existing = scene.materials[i];
+        if (existing.name == material.name && existing.diffuse == material.diffuse &&
+            existing.diffuseTexture == material.diffuseTexture && existing.specular == material.specular &&
+            existing.shininess == material.shininess && existing.opacity == material.opacity &&
+            existing.diffuseImage == material.diffuseImage && existing.emissive == material.emissive)
+            return int(i);
+    }
+    scene.materials.push_back(material);
+    return int(scene.materials.size() - 1);
+}
+
+int findOrAddDefaultMaterial(Scene& scene) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == "default") return int(i);
+    Material material;
+    material.name = "default";
+    scene.materials.push_back(material);
+    return int(scene.materials.size() - 1);
 }
 
 void validateObject(const Mesh& mesh, const Material& material) {

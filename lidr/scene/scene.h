@@ -2,10 +2,13 @@
 // Scene data: what every render mode (LIDR, tiled, forward) draws. Geometry is stored in world space (model
 // transforms are applied when a scene is built), lights are evaluated for a time with Scene::lightsAt().
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "lidr/base/image.h"
 
 namespace lidr {
 
@@ -16,6 +19,10 @@ struct Material {
     glm::vec3 specular{0.25f};
     float shininess = 32.0f;
     float opacity = 1.0f;        // < 1: transparent, drawn after opaque geometry
+    glm::vec3 emissive{0.0f};    // light the surface gives off itself, added to the ambient term (MTL Ke, glTF emissive)
+    // The texture's pixels when the importer decoded them (glTF images, embedded ones included; rows top to
+    // bottom like a file): used instead of reading diffuseTexture, which then only names the image.
+    std::shared_ptr<const ImageRGBA8> diffuseImage{};
 };
 
 // One draw batch: triangles of one material, world space.
@@ -84,6 +91,9 @@ struct Scene {
     // transparent materials are drawn (after the opaque geometry, back to front).
     int msaaSamples = 0;
     bool transparency = true;
+    // What the importers read but could not honour as asked (a missing .mtl, a spot light, ...), one line
+    // each naming the file; tools print them (lidr-demo's summary).
+    std::vector<std::string> warnings;
 
     size_t triangleCount() const;
     glm::vec3 boundsMin() const;  // of the geometry
@@ -96,6 +106,13 @@ struct Scene {
     // maxLightRadius, more than maxSceneTriangles triangles.
     void validate(int maxResolution = 16384) const;
 };
+
+// The index of a material equal to `material` (name and every value), adding it if there is none: loading
+// the same model twice reuses its materials instead of adding copies.
+int findOrAddMaterial(Scene& scene, const Material& material);
+// Geometry without a material gets the scene's "default" material, which a scene file may define itself;
+// one with Material's defaults is added if the scene has none.
+int findOrAddDefaultMaterial(Scene& scene);
 
 glm::vec3 evaluatePath(const LightPath& path, const glm::vec3& restPosition, float t);
 

@@ -6,6 +6,7 @@ uniform vec3 uMaterialDiffuse;
 uniform vec3 uMaterialSpecular;
 uniform float uMaterialShininess;
 uniform float uMaterialOpacity;
+uniform vec3 uMaterialEmissive;
 uniform float uMaterialHasTexture;
 uniform sampler2D uMaterialTexture;
 
@@ -31,8 +32,9 @@ LidrSurface lidrSurface() {
     return s;
 }
 
+// Ambient light plus the material's own emission: the light-independent term every mode adds once per pixel.
 vec3 lidrAmbient(LidrSurface s) {
-    return uAmbient * s.albedo;
+    return uAmbient * s.albedo + uMaterialEmissive;
 }
 
 vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {

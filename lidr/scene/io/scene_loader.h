@@ -1,18 +1,22 @@
 #pragma once
-// Scene files (JSON) and OBJ models. Every problem in a file is an lidr::Error naming the file and field.
+// Scenes from files: the one entry point, loadScene(path), picks the reader by the file's extension. Every
+// problem in a file is an lidr::Error naming the file (and, for scene files, the field).
 #include <string>
 
 #include "lidr/scene/scene.h"
+#include "lidr/scene/io/gltf_importer.h"  // appendGltf
+#include "lidr/scene/io/obj_importer.h"   // appendObj
+#include "lidr/scene/io/scene_file.h"     // loadSceneFile, parseSceneJson
 
 namespace lidr {
 
-// Loads a JSON scene file (format: doc/scene-format.md). Relative model and texture paths resolve against
-// the file's folder. The result is validated (Scene::validate).
-Scene loadSceneFile(const std::string& path);
-Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors);
-
-// Appends the OBJ file's triangles (with its .mtl materials) to `scene`, transformed by `transform`.
-// `overrideMaterial` >= 0 replaces the file's materials with that scene material.
-void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial = -1);
+// .gltf / .glb: the glTF model with its point lights, seen by its first perspective camera, else by the default
+// view that frames its bounds (cameraFramingBounds). .obj: the model alone, no lights, seen by that default view.
+// Other model formats (.ply, .fbx, ...) are errors naming the format; anything else is read as a lidr JSON scene
+// file (doc/scene-format.md; usually .json). Extensions are matched without regard to case. The result is
+// validated (Scene::validate).
+// `objDefaults` (smooth normals) applies to an .obj file, and to a scene file's OBJ models that do not say
+// otherwise.
+Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults = {});
 
 }  // namespace lidr

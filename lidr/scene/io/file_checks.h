@@ -1,0 +1,33 @@
+#pragma once
+// Checks every importer makes on the files it is given, and the number formatting of their messages.
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace lidr {
+
+constexpr int maxTextureSide = 16384;  // the largest texture GL 2.1 contexts commonly offer
+
+// Empty for a regular file (symbolic links followed), else why it cannot be read as one: "not found" only
+// when nothing is there; "is a directory", "is not a regular file" (a device, a FIFO), or the system's text
+// for any other failure (a symbolic link loop, permissions).
+std::string fileProblem(const std::string& path);
+
+// Empty if stb_image can read the image's header and its size fits a texture, else what is wrong with it.
+std::string imageProblem(const std::string& path);
+
+// The name of a model format lidr does not import, by extension ("PLY", "FBX"), or empty (OBJ, glTF, unknown).
+std::string unsupportedModelFormat(const std::string& path);
+
+// Lower-case extension with its dot (".obj"), for dispatching on file types.
+std::string lowerCaseExtension(const std::string& path);
+
+// Numbers and vectors as messages show them.
+std::string str(double value);
+std::string str(const glm::vec3& v);
+bool isFinite(const glm::vec3& v);
+
+// A key or text from a file as shown in a message: at most `limit` characters.
+std::string clipped(const std::string& text, size_t limit = 80);
+
+}  // namespace lidr

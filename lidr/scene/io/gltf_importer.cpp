@@ -1,0 +1,517 @@
+#include "lidr/scene/io/gltf_importer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+// tinygltf's implementation is compiled here, once, against Debian's own nlohmann json and stb_image (libstb);
+// tinygltf only reads here, so stb_image_write is left out.
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_INCLUDE_JSON
+#define TINYGLTF_NO_INCLUDE_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#include <tiny_gltf.h>
+
+#include "lidr/base/error.h"
+#include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/mesh_split.h"
+
+namespace lidr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Node trees deeper than this are refused (a cycle would otherwise recurse without end).
+constexpr int maxNodeDepth = 256;
+
+// Images are decoded by lidr, not by tinygltf's loader: the size is checked before decoding, and every image
+// becomes RGBA8 (16-bit PNGs included).
+bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+               const unsigned char* bytes, int size, void*) {
+    int width = 0, height = 0, channels = 0;
+    const std::string name = "image " + std::to_string(index) + (image->uri.empty() ? "" : " '" + image->uri + "'");
+    if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+        const char* reason = stbi_failure_reason();
+        if (err) *err += name + " cannot be read (" + (reason ? reason : "unknown format") + ")";
+        return false;
+    }
+    if (width > maxTextureSide || height > maxTextureSide) {
+        if (err)
+            *err += name + " is " + std::to_string(width) + "x" + std::to_string(height) +
+                    ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
+        return false;
+    }
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load_from_memory(bytes, size, &width, &height, &channels, 4),
+                                                   stbi_image_free);
+    if (!data) {
+        const char* reason = stbi_failure_reason();
+        if (err) *err += name + " cannot be decoded (" + (reason ? reason : "unknown format") + ")";
+        return false;
+    }
+    image->width = width;
+    image->height = height;
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image.assign(data.get(), data.get() + size_t(width) * size_t(height) * 4);
+    return true;
+}
+
+glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
+    const float length = glm::length(v);
+    return std::isfinite(length) && length > 1e-20f ? v / length : fallback;
+}
+
+std::string trimmed(std::string text) {
+    text.erase(text.find_last_not_of(" \n") + 1);
+    return text;
+}
+
+class GltfReader {
+public:
+    GltfReader(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial)
+        : scene_(scene), path_(path), transform_(transform), overrideMaterial_(overrideMaterial) {}
+
+    GltfContents read() {
+        const std::string problem = fileProblem(path_);
+        if (!problem.empty()) fail("glTF file " + problem);
+        if (overrideMaterial_ >= int(scene_.materials.size())) fail("override material out of range");
+        load();
+        stem_ = fs::path(path_).stem().string();
+        for (const tinygltf::Mesh& mesh : model_.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives) checkMode(mesh, primitive);
+        std::vector<int> roots;
+        if (!model_.scenes.empty()) {
+            const int sceneIndex = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+            if (sceneIndex >= int(model_.scenes.size())) fail("scene " + std::to_string(sceneIndex) + " out of range");
+            roots = model_.scenes[size_t(sceneIndex)].nodes;
+        } else {  // no scenes: every node that is no other node's child is a root
+            std::vector<bool> isChild(model_.nodes.size(), false);
+            for (const tinygltf::Node& node : model_.nodes)
+                for (int child : node.children)
+                    if (child >= 0 && size_t(child) < isChild.size()) isChild[size_t(child)] = true;
+            for (size_t i = 0; i < model_.nodes.size(); ++i)
+                if (!isChild[i]) roots.push_back(int(i));
+        }
+        const size_t trianglesBefore = scene_.triangleCount();
+        for (int root : roots) visit(root, transform_, 0);
+        if (scene_.triangleCount() == trianglesBefore && contents_.lights == 0) fail("no triangles and no lights");
+        return contents_;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { throw Error(path_ + ": " + problem); }
+
+    void warn(const std::string& warning) { scene_.warnings.push_back(path_ + ": " + warning); }
+
+    void load() {
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(loadImage, nullptr);
+        std::string error, warning;
+        const bool binary = lowerCaseExtension(path_) == ".glb";
+        const bool ok = binary ? loader.LoadBinaryFromFile(&model_, &error, &warning, path_)
+                               : loader.LoadASCIIFromFile(&model_, &error, &warning, path_);
+        if (!ok) fail("malformed glTF: " + trimmed(error.empty() ? "tinygltf gave no reason" : error));
+        if (!trimmed(warning).empty()) warn(trimmed(warning));
+    }
+
+    void checkMode(const tinygltf::Mesh& mesh, const tinygltf::Primitive& primitive) const {
+        static const char* const names[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+        if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP)
+            fail("mesh '" + mesh.name + "': primitive mode " + std::to_string(primitive.mode) + " (" +
+                 names[primitive.mode] + ") is not triangles; only TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN can be drawn");
+        if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+            fail("mesh '" + mesh.name + "': unknown primitive mode " + std::to_string(primitive.mode));
+    }
+
+    static glm::mat4 localMatrix(const tinygltf::Node& node) {
+        if (node.matrix.size() == 16) {
+            glm::mat4 m;
+            for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);  // column-major
+            return m;
+        }
+        glm::mat4 m(1.0f);
+        if (node.translation.size() == 3)
+            m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+        if (node.rotation.size() == 4)  // glTF stores x, y, z, w; glm's constructor takes w first
+            m *= glm::mat4_cast(glm::normalize(
+                glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]))));
+        if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+        return m;
+    }
+
+    void visit(int nodeIndex, const glm::mat4& parent, int depth) {
+        if (nodeIndex < 0 || size_t(nodeIndex) >= model_.nodes.size())
+            fail("node " + std::to_string(nodeIndex) + " out of range (" + std::to_string(model_.nodes.size()) + " nodes)");
+        if (depth > maxNodeDepth)
+            fail("node hierarchy deeper than " + std::to_string(maxNodeDepth) + " levels (a node is its own ancestor?)");
+        const tinygltf::Node& node = model_.nodes[size_t(nodeIndex)];
+        const std::string name = "node " + std::to_string(nodeIndex) + (node.name.empty() ? "" : " '" + node.name + "'");
+        const glm::mat4 world = parent * localMatrix(node);
+        for (int i = 0; i < 16; ++i)
+            if (!std::isfinite(glm::value_ptr(world)[i])) fail(name + ": transform is not finite");
+        if (node.mesh >= 0) {
+            if (size_t(node.mesh) >= model_.meshes.size())
+                fail(name + ": mesh " + std::to_string(node.mesh) + " out of range");
+            const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+            for (size_t p = 0; p < mesh.primitives.size(); ++p) addPrimitive(mesh, node.mesh, p, world);
+        }
+        if (node.camera >= 0) readCamera(node, name, world);
+        const auto light = node.extensions.find("KHR_lights_punctual");
+        if (light != node.extensions.end() && light->second.Has("light")) readLight(light->second.Get("light"), name, world);
+        for (int child : node.children) visit(child, world, depth + 1);
+    }
+
+    // ---- geometry ----------------------------------------------------------------------------------------
+
+    // The bytes of element i of an accessor, checked against its buffer view and buffer.
+    struct AccessorView {
+        const unsigned char* data = nullptr;  // null: the accessor has no buffer view (all zeros)
+        size_t stride = 0, count = 0;
+        int componentType = 0, components = 0;
+        bool normalized = false;
+    };
+
+    AccessorView view(int accessorIndex, const std::string& what, std::initializer_list<int> types,
+                      std::initializer_list<int> componentTypes) const {
+        const std::string name = what + " accessor " + std::to_string(accessorIndex);
+        if (accessorIndex < 0 || size_t(accessorIndex) >= model_.accessors.size())
+            fail(what + " accessor " + std::to_string(accessorIndex) + " out of range (" +
+                 std::to_string(model_.accessors.size()) + " accessors)");
+        const tinygltf::Accessor& accessor = model_.accessors[size_t(accessorIndex)];
+        if (std::find(types.begin(), types.end(), accessor.type) == types.end())
+            fail(name + ": type " + std::to_string(accessor.type) + " is not the type " + what + " needs");
+        if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) == componentTypes.end())
+            fail(name + ": component type " + std::to_string(accessor.componentType) + " is not allowed for " + what);
+        if (accessor.sparse.isSparse) fail(name + ": sparse accessors are not supported");
+        AccessorView v;
+        v.count = accessor.count;
+        v.componentType = accessor.componentType;
+        v.components = tinygltf::GetNumComponentsInType(uint32_t(accessor.type));
+        v.normalized = accessor.normalized;
+        if (accessor.bufferView < 0) return v;
+        if (size_t(accessor.bufferView) >= model_.bufferViews.size())
+            fail(name + ": buffer view " + std::to_string(accessor.bufferView) + " out of range (" +
+                 std::to_string(model_.bufferViews.size()) + " buffer views)");
+        const tinygltf::BufferView& bufferView = model_.bufferViews[size_t(accessor.bufferView)];
+        if (bufferView.buffer < 0 || size_t(bufferView.buffer) >= model_.buffers.size())
+            fail(name + ": buffer " + std::to_string(bufferView.buffer) + " out of range (" +
+                 std::to_string(model_.buffers.size()) + " buffers)");
+        const tinygltf::Buffer& buffer = model_.buffers[size_t(bufferView.buffer)];
+        const size_t elementSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType))) * size_t(v.components);
+        v.stride = bufferView.byteStride ? bufferView.byteStride : elementSize;
+        if (bufferView.byteOffset > buffer.data.size() || bufferView.byteLength > buffer.data.size() - bufferView.byteOffset)
+            fail(name + ": buffer view " + std::to_string(accessor.bufferView) + " (bytes " +
+                 std::to_string(bufferView.byteOffset) + " + " + std::to_string(bufferView.byteLength) +
+                 ") lies outside buffer " + std::to_string(bufferView.buffer) + " (" + std::to_string(buffer.data.size()) +
+                 " bytes)");
+        // Overflow-safe: count and stride come from the file.
+        const size_t needed = v.count == 0 ? 0 : accessor.byteOffset + elementSize;
+        const bool fits = v.count == 0 ||
+                          (needed <= bufferView.byteLength && (v.count - 1) <= (bufferView.byteLength - needed) / v.stride);
+        if (!fits)
+            fail(name + ": " + std::to_string(v.count) + " elements from byte " + std::to_string(accessor.byteOffset) +
+                 " do not fit buffer view " + std::to_string(accessor.bufferView) + " (" +
+                 std::to_string(bufferView.byteLength) + " bytes)");
+        v.data = buffer.data.data() + bufferView.byteOffset + accessor.byteOffset;
+        return v;
+    }
+
+    static float component(const AccessorView& v, size_t element, int c) {
+        if (!v.data) return 0.0f;
+        const unsigned char* p = v.data + element * v.stride;
+        switch (v.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float f;
+            std::memcpy(&f, p + 4 * c, 4);
+            return f;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(p[c]) / (v.normalized ? 255.0f : 1.0f);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t s;
+            std::memcpy(&s, p + 2 * c, 2);
+            return float(s) / (v.normalized ? 65535.0f : 1.0f);
+        }
+        default: return 0.0f;
+        }
+    }
+
+    static uint32_t index(const AccessorView& v, size_t element) {
+        if (!v.data) return 0;
+        const unsigned char* p = v.data + element * v.stride;
+        if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return p[0];
+        if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+            uint16_t s;
+            std::memcpy(&s, p, 2);
+            return s;
+        }
+        uint32_t i;
+        std::memcpy(&i, p, 4);
+        return i;
+    }
+
+    void addPrimitive(const tinygltf::Mesh& mesh, int meshIndex, size_t primitiveIndex, const glm::mat4& world) {
+        const tinygltf::Primitive& primitive = mesh.primitives[primitiveIndex];
+        const std::string what = "mesh " + std::to_string(meshIndex) + (mesh.name.empty() ? "" : " '" + mesh.name + "'") +
+                                 " primitive " + std::to_string(primitiveIndex);
+        const auto attribute = [&](const char* name) {
+            const auto it = primitive.attributes.find(name);
+            return it == primitive.attributes.end() ? -1 : it->second;
+        };
+        if (attribute("POSITION") < 0) fail(what + ": no POSITION attribute");
+        const AccessorView positions =
+            view(attribute("POSITION"), what + " POSITION", {TINYGLTF_TYPE_VEC3}, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+        const bool hasNormals = attribute("NORMAL") >= 0;
+        const AccessorView normals = hasNormals ? view(attribute("NORMAL"), what + " NORMAL", {TINYGLTF_TYPE_VEC3},
+                                                       {TINYGLTF_COMPONENT_TYPE_FLOAT})
+                                                : AccessorView{};
+        const bool hasTexCoords = attribute("TEXCOORD_0") >= 0;
+        const AccessorView texCoords =
+            hasTexCoords ? view(attribute("TEXCOORD_0"), what + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
+                                {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
+                         : AccessorView{};
+        if (hasNormals && normals.count != positions.count)
+            fail(what + ": " + std::to_string(normals.count) + " normals for " + std::to_string(positions.count) + " positions");
+        if (hasTexCoords && texCoords.count != positions.count)
+            fail(what + ": " + std::to_string(texCoords.count) + " texture coordinates for " +
+                 std::to_string(positions.count) + " positions");
+
+        // The corner list: indices, or 0..count-1, then strips and fans unrolled into triangles.
+        std::vector<uint32_t> corners;
+        if (primitive.indices >= 0) {
+            const AccessorView indices = view(primitive.indices, what + " indices", {TINYGLTF_TYPE_SCALAR},
+                                              {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+            corners.resize(indices.count);
+            for (size_t i = 0; i < indices.count; ++i) {
+                corners[i] = index(indices, i);
+                if (corners[i] >= positions.count)
+                    fail(what + ": index " + std::to_string(corners[i]) + " (element " + std::to_string(i) +
+                         ") out of range (" + std::to_string(positions.count) + " vertices)");
+            }
+        } else {
+            corners.resize(positions.count);
+            for (size_t i = 0; i < corners.size(); ++i) corners[i] = uint32_t(i);
+        }
+        std::vector<uint32_t> triangles;
+        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            if (corners.size() % 3 != 0)
+                fail(what + ": " + std::to_string(corners.size()) + " corners is not a whole number of triangles");
+            triangles = std::move(corners);
+        } else {
+            for (size_t i = 2; i < corners.size(); ++i) {
+                if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+                    triangles.insert(triangles.end(), {corners[0], corners[i - 1], corners[i]});
+                else if (i % 2 == 0)
+                    triangles.insert(triangles.end(), {corners[i - 2], corners[i - 1], corners[i]});
+                else  // odd strip triangles swap two corners to keep the winding
+                    triangles.insert(triangles.end(), {corners[i - 1], corners[i - 2], corners[i]});
+            }
+        }
+        if (scene_.triangleCount() + triangles.size() / 3 > maxSceneTriangles)
+            fail("the scene would have " + std::to_string(scene_.triangleCount() + triangles.size() / 3) +
+                 " triangles; at most " + std::to_string(maxSceneTriangles) + " are supported");
+        if (triangles.empty()) return;
+
+        const glm::mat3 linear(world);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+        const bool mirrored = glm::determinant(linear) < 0.0f;  // keep triangles counter-clockwise from outside
+        Mesh out;
+        out.name = stem_ + "/" + (mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : mesh.name) +
+                   (mesh.primitives.size() > 1 ? "/" + std::to_string(primitiveIndex) : "");
+        out.material = materialFor(primitive.material);
+        const auto position = [&](uint32_t i) {
+            const glm::vec3 p(component(positions, i, 0), component(positions, i, 1), component(positions, i, 2));
+            if (!isFinite(p)) fail(what + ": position " + std::to_string(i) + " is not finite");
+            return glm::vec3(world * glm::vec4(p, 1.0f));
+        };
+        const auto texCoord = [&](uint32_t i) {
+            // glTF puts v = 0 at the image's top; lidr (like OBJ) at the bottom.
+            const glm::vec2 t(component(texCoords, i, 0), 1.0f - component(texCoords, i, 1));
+            if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail(what + ": texture coordinate " + std::to_string(i) + " is not finite");
+            return t;
+        };
+        if (hasNormals) {  // shared vertices, as the file has them
+            std::vector<uint32_t> remap(positions.count, ~0u);
+            for (size_t c = 0; c < triangles.size(); ++c) {
+                const size_t corner = mirrored ? (c - c % 3) + (3 - c % 3) % 3 : c;  // 0, 2, 1 when mirrored
+                const uint32_t source = triangles[corner];
+                if (remap[source] == ~0u) {
+                    remap[source] = uint32_t(out.positions.size());
+                    out.positions.push_back(position(source));
+                    const glm::vec3 n(component(normals, source, 0), component(normals, source, 1), component(normals, source, 2));
+                    if (!isFinite(n)) fail(what + ": normal " + std::to_string(source) + " is not finite");
+                    out.normals.push_back(normalizedOr(normalMatrix * n, glm::vec3(0.0f, 1.0f, 0.0f)));
+                    if (hasTexCoords) out.texCoords.push_back(texCoord(source));
+                }
+                out.indices.push_back(remap[source]);
+            }
+        } else {  // flat normals (the glTF specification's rule without NORMAL): three vertices per triangle
+            for (size_t t = 0; t < triangles.size(); t += 3) {
+                uint32_t source[3] = {triangles[t], triangles[t + 1], triangles[t + 2]};
+                if (mirrored) std::swap(source[1], source[2]);
+                const glm::vec3 p[3] = {position(source[0]), position(source[1]), position(source[2])};
+                const glm::vec3 normal = normalizedOr(glm::cross(p[1] - p[0], p[2] - p[0]), glm::vec3(0.0f, 1.0f, 0.0f));
+                for (int k = 0; k < 3; ++k) {
+                    out.indices.push_back(uint32_t(out.positions.size()));
+                    out.positions.push_back(p[k]);
+                    out.normals.push_back(normal);
+                    if (hasTexCoords) out.texCoords.push_back(texCoord(source[k]));
+                }
+            }
+        }
+        for (Mesh& part : splitMeshSpatially(std::move(out))) scene_.meshes.push_back(std::move(part));
+    }
+
+    // ---- materials -----------------------------------------------------------------------------------------
+
+    int materialFor(int gltfMaterial) {
+        if (overrideMaterial_ >= 0) return overrideMaterial_;
+        if (gltfMaterial < 0) return findOrAddDefaultMaterial(scene_);
+        if (size_t(gltfMaterial) >= model_.materials.size())
+            fail("material " + std::to_string(gltfMaterial) + " out of range (" + std::to_string(model_.materials.size()) +
+                 " materials)");
+        const auto known = sceneMaterialOf_.find(gltfMaterial);
+        if (known != sceneMaterialOf_.end()) return known->second;
+        const tinygltf::Material& source = model_.materials[size_t(gltfMaterial)];
+        const std::string name = "material " + std::to_string(gltfMaterial) + (source.name.empty() ? "" : " '" + source.name + "'");
+        const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+        Material material;
+        material.name = source.name.empty() ? stem_ + "/material " + std::to_string(gltfMaterial) : source.name;
+        glm::vec4 base(1.0f);
+        for (size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c) base[int(c)] = float(pbr.baseColorFactor[c]);
+        if (!(base.r >= 0 && base.g >= 0 && base.b >= 0 && base.a >= 0 && base.a <= 1 && isFinite(glm::vec3(base))))
+            fail(name + ": baseColorFactor must be finite with colour >= 0 and alpha in [0, 1]");
+        const float metallic = glm::clamp(float(pbr.metallicFactor), 0.0f, 1.0f);
+        const float roughness = glm::clamp(float(pbr.roughnessFactor), 0.0f, 1.0f);
+        material.diffuse = glm::vec3(base);
+        for (size_t c = 0; c < 3 && c < source.emissiveFactor.size(); ++c) material.emissive[int(c)] = float(source.emissiveFactor[c]);
+        if (!(isFinite(material.emissive) && glm::all(glm::greaterThanEqual(material.emissive, glm::vec3(0.0f)))))
+            fail(name + ": emissiveFactor must be finite and >= 0, got " + str(material.emissive));
+        // Blinn-Phong from metallic-roughness: the specular colour F0 (0.04 for dielectrics, the base colour for
+        // metals) fading out with roughness, and the exponent whose lobe width matches the roughness.
+        material.specular = glm::mix(glm::vec3(0.04f), glm::vec3(base), metallic) * (1.0f - roughness) * (1.0f - roughness);
+        const float r = std::max(roughness, 0.01f);
+        material.shininess = glm::clamp(2.0f / (r * r * r * r) - 2.0f, 1.0f, 1024.0f);
+        if (source.alphaMode == "BLEND") {
+            material.opacity = base.a;
+        } else if (source.alphaMode == "MASK") {
+            warn(name + ": alphaMode MASK is drawn opaque (lidr has no alpha test; alphaCutoff is not used)");
+        }
+        const int texture = pbr.baseColorTexture.index;
+        if (texture >= 0) {
+            if (size_t(texture) >= model_.textures.size())
+                fail(name + ": base colour texture " + std::to_string(texture) + " out of range (" +
+                     std::to_string(model_.textures.size()) + " textures)");
+            if (pbr.baseColorTexture.texCoord != 0)
+                warn(name + ": base colour texture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
+                     "; lidr reads TEXCOORD_0");
+            const int source = model_.textures[size_t(texture)].source;
+            if (source < 0 || size_t(source) >= model_.images.size())
+                fail(name + ": texture " + std::to_string(texture) + " has no image (source " + std::to_string(source) + ")");
+            const tinygltf::Image& image = model_.images[size_t(source)];
+            auto decoded = std::make_shared<ImageRGBA8>(image.width, image.height);
+            if (image.image.size() != decoded->pixels.size())
+                fail(name + ": image " + std::to_string(source) + " was not decoded to RGBA8");
+            decoded->pixels = image.image;
+            material.diffuseImage = std::move(decoded);
+            material.diffuseTexture = image.uri.rfind("data:", 0) == 0 || image.uri.empty()
+                                          ? path_ + "#image" + std::to_string(source)
+                                          : (fs::path(path_).parent_path() / image.uri).lexically_normal().string();
+        }
+        const int index = findOrAddMaterial(scene_, material);
+        sceneMaterialOf_[gltfMaterial] = index;
+        return index;
+    }
+
+    // ---- lights and cameras ----------------------------------------------------------------------------------
+
+    void readLight(const tinygltf::Value& value, const std::string& nodeName, const glm::mat4& world) {
+        if (!value.IsNumber() && !value.IsInt()) fail(nodeName + ": KHR_lights_punctual light is not an index");
+        const int lightIndex = value.GetNumberAsInt();
+        if (lightIndex < 0 || size_t(lightIndex) >= model_.lights.size())
+            fail(nodeName + ": light " + std::to_string(lightIndex) + " out of range (" + std::to_string(model_.lights.size()) +
+                 " lights)");
+        const tinygltf::Light& source = model_.lights[size_t(lightIndex)];
+        const std::string name = "light " + std::to_string(lightIndex) + (source.name.empty() ? "" : " '" + source.name + "'");
+        if (source.type != "point") {
+            warn(name + ": " + source.type + " lights are not supported (lidr draws point lights); left out");
+            return;
+        }
+        PointLight light;
+        glm::vec3 color(1.0f);
+        for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
+        light.color = color * float(source.intensity);
+        if (!(isFinite(light.color) && light.color.r >= 0 && light.color.g >= 0 && light.color.b >= 0))
+            fail(name + ": colour x intensity must be finite and >= 0, got " + str(light.color));
+        light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        // The node's scale scales the range (its largest axis: the light stays a sphere).
+        const glm::mat3 linear(world);
+        const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+        if (source.range > 0.0) {
+            light.radius = float(source.range) * scale;
+        } else {
+            light.radius = gltfLightRadiusWithoutRange(std::max({light.color.r, light.color.g, light.color.b}));
+        }
+        if (!(std::isfinite(light.radius) && light.radius > 0.0f && light.radius <= maxLightRadius))
+            fail(name + ": radius " + str(light.radius) + " is not in (0, " + str(maxLightRadius) + "]");
+        scene_.lights.push_back(light);
+        if (!scene_.lightPaths.empty()) scene_.lightPaths.emplace_back();
+        ++contents_.lights;
+    }
+
+    void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {
+        if (size_t(node.camera) >= model_.cameras.size())
+            fail(nodeName + ": camera " + std::to_string(node.camera) + " out of range");
+        const tinygltf::Camera& source = model_.cameras[size_t(node.camera)];
+        if (source.type != "perspective") {
+            warn("camera " + std::to_string(node.camera) + ": " + source.type + " cameras are not supported; left out");
+            return;
+        }
+        if (contents_.hasCamera) return;  // the first perspective camera is the view
+        Camera camera;
+        camera.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        // A glTF camera looks down its -z with +y up.
+        camera.target = camera.position + normalizedOr(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)), glm::vec3(0, 0, -1));
+        camera.up = normalizedOr(glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)), glm::vec3(0, 1, 0));
+        camera.fovYDegrees = glm::degrees(float(source.perspective.yfov));
+        camera.nearPlane = float(source.perspective.znear);
+        camera.farPlane = float(source.perspective.zfar);  // 0: infinite, replaced from the bounds by the caller
+        contents_.hasCamera = true;
+        contents_.camera = camera;
+    }
+
+    Scene& scene_;
+    const std::string& path_;
+    const glm::mat4 transform_;
+    const int overrideMaterial_;
+    tinygltf::Model model_;
+    std::string stem_;
+    std::map<int, int> sceneMaterialOf_;
+    GltfContents contents_;
+};
+
+}  // namespace
+
+float gltfLightRadiusWithoutRange(float brightestChannel) {
+    return glm::clamp(std::sqrt(256.0f * std::max(brightestChannel, 0.0f)), 0.01f, 1000.0f);
+}
+
+GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial) {
+    return GltfReader(scene, path, transform, overrideMaterial).read();
+}
+
+}  // namespace lidr

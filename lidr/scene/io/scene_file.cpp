@@ -1,0 +1,363 @@
+#include "lidr/scene/io/scene_file.h"
+
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "lidr/base/error.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/scene/primitives.h"
+#include "lidr/scene/render_mode_names.h"
+#include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/gltf_importer.h"
+#include "lidr/scene/io/json_fields.h"
+#include "lidr/scene/io/obj_importer.h"
+
+namespace lidr {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int maxResolution = 16384;
+constexpr int maxLights = int(maxSceneLights);
+constexpr int maxSegments = maxPrimitiveSegments;
+constexpr int maxSubdivisions = maxPrimitiveSubdivisions;
+// Longest error message a scene file gives; longer ones (a huge key or string echoed back) keep their start
+// and end.
+constexpr size_t maxMessageLength = 2000;
+
+// Reads one scene document into a Scene; the sections are applied in a fixed order (base, materials,
+// models, primitives, lights, generate), whatever their order in the file.
+class SceneReader {
+public:
+    SceneReader(const std::string& file, const std::string& baseDir, const ObjImportOptions& objDefaults)
+        : file_(file), baseDir_(baseDir), objDefaults_(objDefaults) {}
+
+    Scene read(const Json& document) {
+        const Field root(document, "", file_);
+        root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
+                           "ambient", "background", "materials", "models", "primitives", "lights", "generate",
+                           "msaa", "transparency", "mode"});
+        readBase(root);
+        if (root.has("name")) scene_.name = root["name"].text();
+        if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
+        if (root.has("resolution")) readResolution(root["resolution"]);
+        if (root.has("time")) scene_.time = root["time"].number();
+        if (root.has("mode")) {
+            scene_.renderMode = root["mode"].text();
+            if (!isRenderModeName(scene_.renderMode))
+                root["mode"].fail("unknown render mode '" + scene_.renderMode + "' (valid: " + renderModeList() + ")");
+        }
+        if (root.has("camera")) readCamera(root["camera"]);
+        if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
+        if (root.has("background")) scene_.backgroundColor = color(root["background"]);
+        if (root.has("msaa")) {
+            scene_.msaaSamples = int(root["msaa"].integer(0, 64));
+            if (scene_.msaaSamples != 0 && (scene_.msaaSamples < 2 || (scene_.msaaSamples & (scene_.msaaSamples - 1)) != 0))
+                root["msaa"].fail("must be 0 (off) or a power of two 2, 4, 8, ... 64, got " +
+                                  std::to_string(scene_.msaaSamples));
+        }
+        if (root.has("transparency")) scene_.transparency = root["transparency"].boolean();
+        if (root.has("materials"))
+            for (const Field& material : root["materials"].items()) readMaterial(material);
+        if (root.has("models"))
+            for (const Field& model : root["models"].items()) readModel(model);
+        if (root.has("primitives"))
+            for (const Field& primitive : root["primitives"].items()) readPrimitive(primitive);
+        // Paths stay one per light while reading; all-static scenes drop them at the end.
+        scene_.lightPaths.resize(scene_.lights.size());
+        if (root.has("lights"))
+            for (const Field& light : root["lights"].items()) readLight(light);
+        if (root.has("generate")) readGenerators(root["generate"]);
+        bool anyMoves = false;
+        for (const LightPath& path : scene_.lightPaths) anyMoves = anyMoves || path.kind != LightPath::Kind::Static;
+        if (!anyMoves) scene_.lightPaths.clear();
+
+        try {
+            scene_.validate(maxResolution);
+        } catch (const Error& error) {
+            throw Error(file_ + ": " + error.what());
+        }
+        return std::move(scene_);
+    }
+
+private:
+    void readBase(const Field& root) {
+        if (!root.has("base")) {
+            if (root.has("seed")) root["seed"].fail("only used with \"base\"");
+            if (root.has("base_lights")) root["base_lights"].fail("only used with \"base\"");
+            return;
+        }
+        const std::string base = root["base"].text();
+        if (base != "default-room") root["base"].fail("unknown base scene '" + base + "' (known: default-room)");
+        DefaultSceneOptions options;
+        if (root.has("seed")) options.seed = uint32_t(root["seed"].integer(0, std::numeric_limits<uint32_t>::max()));
+        scene_ = makeDefaultScene(options);
+        if (!(root.has("base_lights") && root["base_lights"].boolean())) {
+            scene_.lights.clear();
+            scene_.lightPaths.clear();
+        }
+    }
+
+    void readResolution(const Field& field) {
+        const std::vector<Field> size = field.items(2);
+        scene_.width = int(size[0].integer(1, maxResolution));
+        scene_.height = int(size[1].integer(1, maxResolution));
+    }
+
+    void readCamera(const Field& field) {
+        field.expectObject({"position", "target", "up", "fov", "near", "far"});
+        Camera& camera = scene_.camera;
+        if (field.has("position")) camera.position = field["position"].vec3();
+        if (field.has("target")) camera.target = field["target"].vec3();
+        if (field.has("up")) camera.up = field["up"].vec3();
+        if (field.has("fov")) camera.fovYDegrees = field["fov"].number();
+        if (field.has("near")) camera.nearPlane = field["near"].number();
+        if (field.has("far")) camera.farPlane = field["far"].number();
+        // Ranges and consistency are checked with the whole scene (Scene::validate names "camera").
+    }
+
+    void readMaterial(const Field& field) {
+        field.expectObject({"name", "diffuse", "texture", "specular", "shininess", "opacity", "emissive"});
+        Material material;
+        material.name = field["name"].text();
+        if (material.name.empty()) field["name"].fail("must not be empty");
+        if (findMaterial(material.name) >= 0) field["name"].fail("material '" + material.name + "' already exists");
+        if (field.has("diffuse")) material.diffuse = color(field["diffuse"]);
+        if (field.has("texture")) {
+            material.diffuseTexture = resolve(field["texture"].text());
+            const std::string problem = imageProblem(material.diffuseTexture);
+            if (!problem.empty()) field["texture"].fail(problem);
+        }
+        if (field.has("specular")) material.specular = color(field["specular"]);
+        if (field.has("emissive")) material.emissive = color(field["emissive"]);
+        if (field.has("shininess")) material.shininess = positive(field["shininess"]);
+        if (field.has("opacity")) {
+            material.opacity = field["opacity"].number();
+            if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+                field["opacity"].fail("must be in [0, 1], got " + str(material.opacity));
+        }
+        scene_.materials.push_back(material);
+    }
+
+    void readModel(const Field& field) {
+        field.expectObject({"file", "translate", "rotate", "rotate_y", "scale", "material", "smooth_normals"});
+        ObjImportOptions objOptions = objDefaults_;
+        if (field.has("smooth_normals")) objOptions.smoothNormals = field["smooth_normals"].boolean();
+        glm::mat4 transform(1.0f);
+        if (field.has("translate")) transform = glm::translate(transform, field["translate"].vec3());
+        if (field.has("rotate") && field.has("rotate_y")) field.fail("give either \"rotate\" or \"rotate_y\", not both");
+        if (field.has("rotate")) {
+            const std::vector<Field> values = field["rotate"].items(4);
+            const float angle = values[0].number();
+            const glm::vec3 axis(values[1].number(), values[2].number(), values[3].number());
+            if (glm::length(axis) == 0.0f) field["rotate"].fail("the axis must not be zero");
+            transform = glm::rotate(transform, glm::radians(angle), glm::normalize(axis));
+        }
+        if (field.has("rotate_y"))
+            transform = glm::rotate(transform, glm::radians(field["rotate_y"].number()), glm::vec3(0, 1, 0));
+        if (field.has("scale")) transform = glm::scale(transform, positiveVec3(field["scale"]));
+        const int material = field.has("material") ? materialIndex(field["material"]) : -1;
+        const Field file = field["file"];
+        try {
+            const std::string path = resolve(file.text());
+            const std::string extension = lowerCaseExtension(path);
+            if (extension == ".gltf" || extension == ".glb")
+                appendGltf(scene_, path, transform, material);  // the scene file's camera stays the view
+            else
+                appendObj(scene_, path, transform, material, objOptions);
+        } catch (const Error& error) {
+            file.fail(error.what());
+        }
+        checkTriangleCount(field);
+    }
+
+    void readPrimitive(const Field& field) {
+        const std::string shape = field["shape"].text();
+        const int material = field.has("material") ? materialIndex(field["material"]) : findOrAddDefaultMaterial(scene_);
+        const auto segments = [&](const char* key, int fallback) {
+            return field.has(key) ? int(field[key].integer(3, maxSegments)) : fallback;
+        };
+        const auto subdivisions = [&] {
+            return field.has("subdivisions") ? int(field["subdivisions"].integer(1, maxSubdivisions)) : 1;
+        };
+        if (shape == "box") {
+            field.expectObject({"shape", "material", "min", "max", "subdivisions"});
+            const glm::vec3 min = field["min"].vec3(), max = field["max"].vec3();
+            if (!(min.x < max.x && min.y < max.y && min.z < max.z))
+                field["max"].fail("must be greater than min " + str(min) + " on every axis, got " + str(max));
+            addBox(scene_, min, max, material, subdivisions());
+        } else if (shape == "plane") {
+            field.expectObject({"shape", "material", "center", "size", "subdivisions"});
+            const std::vector<Field> size = field["size"].items(2);
+            addPlane(scene_, field["center"].vec3(), {positive(size[0]), positive(size[1])}, material, subdivisions());
+        } else if (shape == "sphere") {
+            field.expectObject({"shape", "material", "center", "radius", "segments"});
+            addSphere(scene_, field["center"].vec3(), positive(field["radius"]), material, segments("segments", 16));
+        } else if (shape == "cylinder") {
+            field.expectObject({"shape", "material", "base", "radius", "height", "segments"});
+            addCylinder(scene_, field["base"].vec3(), positive(field["radius"]), positive(field["height"]), material,
+                        segments("segments", 16));
+        } else if (shape == "torus") {
+            field.expectObject(
+                {"shape", "material", "center", "major_radius", "minor_radius", "major_segments", "minor_segments"});
+            addTorus(scene_, field["center"].vec3(), positive(field["major_radius"]), positive(field["minor_radius"]),
+                     material, segments("major_segments", 24), segments("minor_segments", 12));
+        } else {
+            field["shape"].fail("unknown shape '" + shape + "' (known: box, plane, sphere, cylinder, torus)");
+        }
+        checkTriangleCount(field);
+    }
+
+    // After each primitive or model (each adds at most a few million triangles, see the limits), so a scene
+    // that asks for too many stops before the rest is built.
+    void checkTriangleCount(const Field& field) const {
+        const size_t count = scene_.triangleCount();
+        if (count > maxSceneTriangles)
+            field.fail("the scene now has " + std::to_string(count) + " triangles; at most " +
+                       std::to_string(maxSceneTriangles) + " are supported");
+    }
+
+    void readLight(const Field& field) {
+        field.expectObject({"position", "radius", "color", "priority", "path"});
+        PointLight light;
+        LightPath path;
+        if (field.has("path")) path = readPath(field["path"]);
+        if (path.kind == LightPath::Kind::Orbit) {
+            if (field.has("position"))
+                field["position"].fail("not used by orbit lights: they start on their orbit (see path)");
+            light.position = evaluatePath(path, glm::vec3(0.0f), 0.0f);
+        } else {
+            light.position = field["position"].vec3();
+        }
+        light.radius = positive(field["radius"]);
+        if (light.radius > maxLightRadius)
+            field["radius"].fail("radius " + str(light.radius) + " is too large (limit " + str(maxLightRadius) + ")");
+        if (field.has("color")) light.color = color(field["color"]);
+        if (field.has("priority")) light.priority = field["priority"].number();
+        scene_.lights.push_back(light);
+        scene_.lightPaths.push_back(path);
+    }
+
+    LightPath readPath(const Field& field) {
+        LightPath path;
+        const std::string kind = field["kind"].text();
+        if (kind == "static") {
+            field.expectObject({"kind"});
+        } else if (kind == "orbit") {
+            field.expectObject({"kind", "center", "radius", "angular_speed", "phase", "bob"});
+            path.kind = LightPath::Kind::Orbit;
+            path.center = field["center"].vec3();
+            path.orbitRadius = nonNegative(field["radius"]);
+            path.angularSpeed = field["angular_speed"].number();
+            if (field.has("phase")) path.phase = field["phase"].number();
+            if (field.has("bob")) path.bobAmplitude = field["bob"].number();
+        } else if (kind == "bounce") {
+            field.expectObject({"kind", "velocity", "box_min", "box_max"});
+            path.kind = LightPath::Kind::Bounce;
+            path.velocity = field["velocity"].vec3();
+            path.boxMin = field["box_min"].vec3();
+            path.boxMax = field["box_max"].vec3();
+            if (!glm::all(glm::lessThanEqual(path.boxMin, path.boxMax)))
+                field["box_max"].fail("must be >= box_min " + str(path.boxMin) + " on every axis, got " + str(path.boxMax));
+        } else {
+            field["kind"].fail("unknown path kind '" + kind + "' (known: static, orbit, bounce)");
+        }
+        return path;
+    }
+
+    // "generate" is one generator object or an array of them.
+    void readGenerators(const Field& field) {
+        if (field.isArray())
+            for (const Field& generator : field.items()) readGenerator(generator);
+        else
+            readGenerator(field);
+    }
+
+    void readGenerator(const Field& field) {
+        field.expectObject({"seed", "count", "bounds_min", "bounds_max", "radius_min", "radius_max", "intensity", "speed"});
+        LightGeneratorOptions options;
+        if (field.has("seed")) options.seed = uint32_t(field["seed"].integer(0, std::numeric_limits<uint32_t>::max()));
+        const Field count = field["count"];
+        options.count = int(count.integer(0, maxLights));
+        if (scene_.lights.size() + size_t(options.count) > size_t(maxLights))
+            count.fail(std::to_string(options.count) + " more lights would make " +
+                       std::to_string(scene_.lights.size() + size_t(options.count)) + "; at most " +
+                       std::to_string(maxLights) + " are supported");
+        options.boundsMin = field["bounds_min"].vec3();
+        options.boundsMax = field["bounds_max"].vec3();
+        if (!glm::all(glm::lessThanEqual(options.boundsMin, options.boundsMax)))
+            field["bounds_max"].fail("must be >= bounds_min " + str(options.boundsMin) + " on every axis, got " +
+                                     str(options.boundsMax));
+        if (field.has("radius_min")) options.radiusMin = positive(field["radius_min"]);
+        if (field.has("radius_max")) options.radiusMax = positive(field["radius_max"]);
+        if (options.radiusMax > maxLightRadius)
+            field["radius_max"].fail("radius " + str(options.radiusMax) + " is too large (limit " + str(maxLightRadius) + ")");
+        if (!isFinite(options.boundsMax - options.boundsMin) || !isFinite(options.boundsMin - glm::vec3(options.radiusMax)) ||
+            !isFinite(options.boundsMax + glm::vec3(options.radiusMax)))
+            field.fail("light generator bounds " + str(options.boundsMin) + " .. " + str(options.boundsMax) +
+                       " overflow float (their extent, or the bounds +- radius_max, is not finite)");
+        if (options.radiusMin > options.radiusMax)
+            field.fail("radius_min (" + str(options.radiusMin) + ") must be <= radius_max (" + str(options.radiusMax) + ")");
+        if (field.has("intensity")) options.intensity = nonNegative(field["intensity"]);
+        if (field.has("speed")) options.speed = nonNegative(field["speed"]);
+        generateLights(scene_, options);
+    }
+
+    int findMaterial(const std::string& name) const {
+        for (size_t i = 0; i < scene_.materials.size(); ++i)
+            if (scene_.materials[i].name == name) return int(i);
+        return -1;
+    }
+
+    int materialIndex(const Field& field) const {
+        const std::string name = field.text();
+        const int index = findMaterial(name);
+        if (index < 0) field.fail("unknown material '" + name + "'");
+        return index;
+    }
+
+    std::string resolve(const std::string& path) const {
+        if (path.empty() || fs::path(path).is_absolute() || baseDir_.empty()) return path;
+        return (fs::path(baseDir_) / path).lexically_normal().string();
+    }
+
+    const std::string& file_;
+    const std::string baseDir_;
+    const ObjImportOptions objDefaults_;
+    Scene scene_;
+};
+
+}  // namespace
+
+Scene parseSceneJson(const std::string& jsonText, const std::string& baseDir, const std::string& nameForErrors,
+                     const ObjImportOptions& objDefaults) {
+    try {
+        return SceneReader(nameForErrors, baseDir, objDefaults).read(parseJsonWithPaths(jsonText, nameForErrors));
+    } catch (const Error& error) {
+        const std::string message = error.what();
+        if (message.size() <= maxMessageLength) throw;
+        const size_t keep = maxMessageLength / 2;
+        throw Error(message.substr(0, keep) + " ...(" + std::to_string(message.size() - 2 * keep) +
+                    " characters left out)... " + message.substr(message.size() - keep));
+    }
+}
+
+Scene loadSceneFile(const std::string& path, const ObjImportOptions& objDefaults) {
+    std::error_code error;
+    if (!fs::exists(path, error) && !error) throw Error(path + ": scene file not found");
+    const std::string problem = fileProblem(path);
+    if (!problem.empty()) throw Error(path + ": scene file " + problem);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open the scene file");
+    std::ostringstream text;
+    text << in.rdbuf();  // an empty file sets failbit on `text`; the parser then reports it
+    if (in.bad()) throw Error(path + ": cannot read the scene file");
+    return parseSceneJson(text.str(), fs::path(path).parent_path().string(), path, objDefaults);
+}
+
+}  // namespace lidr

@@ -1,0 +1,459 @@
+// glTF 2.0 import (lidr/scene/io/gltf_importer.h): small files written by the tests themselves (JSON with a
+// base64 buffer, a separate .bin, or a .glb), checked for exact positions, lights, cameras, materials and errors;
+// and one glTF scene rendered against the same scene written as a lidr JSON file with an OBJ model.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "gl_test_context.h"
+#include "lidr/base/error.h"
+#include "lidr/eval/image_compare.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/scene/camera.h"
+#include "lidr/scene/io/scene_loader.h"
+
+namespace fs = std::filesystem;
+using Catch::Contains;
+using Json = nlohmann::json;
+
+namespace {
+
+class TempDir {
+public:
+    TempDir() {
+        static int counter = 0;
+        path_ = fs::temp_directory_path() / ("lidr-test-gltf-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        fs::remove_all(path_, ignored);
+    }
+    std::string write(const std::string& name, const std::string& content) const {
+        const std::string file = (path_ / name).string();
+        std::ofstream(file, std::ios::binary) << content;
+        return file;
+    }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    fs::path path_;
+};
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = uint32_t(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(bytes[i + 1]) << 8;
+        if (i + 2 < bytes.size()) v |= bytes[i + 2];
+        out += digits[(v >> 18) & 63];
+        out += digits[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
+    }
+    return out;
+}
+
+// A glTF document under construction: one binary buffer, accessors appended to it.
+struct GltfFile {
+    Json doc = Json{{"asset", {{"version", "2.0"}}}, {"buffers", Json::array()}, {"bufferViews", Json::array()},
+                    {"accessors", Json::array()}, {"meshes", Json::array()}, {"nodes", Json::array()},
+                    {"scenes", Json::array({Json{{"nodes", Json::array()}}})}, {"scene", 0}};
+    std::vector<unsigned char> bin;
+
+    int accessor(const void* data, size_t bytes, int componentType, const char* type, size_t count) {
+        while (bin.size() % 4) bin.push_back(0);
+        const size_t offset = bin.size();
+        bin.insert(bin.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
+        doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1}, {"componentType", componentType},
+                                    {"type", type}, {"count", count}});
+        return int(doc["accessors"].size() - 1);
+    }
+    int positions(const std::vector<glm::vec3>& p) { return accessor(p.data(), p.size() * 12, 5126, "VEC3", p.size()); }
+    int indices(const std::vector<uint16_t>& i) { return accessor(i.data(), i.size() * 2, 5123, "SCALAR", i.size()); }
+
+    // A mesh of one primitive; returns its index.
+    int mesh(Json primitive) {
+        doc["meshes"].push_back({{"primitives", Json::array({primitive})}});
+        return int(doc["meshes"].size() - 1);
+    }
+    int node(Json node, bool root) {
+        doc["nodes"].push_back(node);
+        const int index = int(doc["nodes"].size() - 1);
+        if (root) doc["scenes"][0]["nodes"].push_back(index);
+        return index;
+    }
+
+    std::string writeGltf(const TempDir& dir, const std::string& name) {
+        doc["buffers"] = Json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+        return dir.write(name, doc.dump());
+    }
+    std::string writeGlb(const TempDir& dir, const std::string& name) {
+        doc["buffers"] = Json::array({{{"byteLength", bin.size()}}});
+        std::string json = doc.dump();
+        while (json.size() % 4) json += ' ';
+        std::vector<unsigned char> binary = bin;
+        while (binary.size() % 4) binary.push_back(0);
+        std::string out;
+        const auto u32 = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+        out += "glTF";
+        u32(2);
+        u32(uint32_t(12 + 8 + json.size() + 8 + binary.size()));
+        u32(uint32_t(json.size()));
+        out += "JSON";
+        out += json;
+        u32(uint32_t(binary.size()));
+        out.append("BIN\0", 4);
+        out.append(reinterpret_cast<const char*>(binary.data()), binary.size());
+        return dir.write(name, out);
+    }
+};
+
+// One triangle (0,0,0) (1,0,0) (0,1,0), indexed, as mesh 0.
+GltfFile oneTriangle() {
+    GltfFile file;
+    const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int i = file.indices({0, 1, 2});
+    file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", i}});
+    return file;
+}
+
+void requireNear(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f) {
+    INFO("(" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y << ", " << b.z << ")");
+    REQUIRE(glm::length(a - b) <= tolerance);
+}
+
+}  // namespace
+
+TEST_CASE("glTF: node transforms are baked into world space", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    // parent: translate (10, 0, 0); child: rotate 90 degrees about +y (quaternion x, y, z, w), scale 2.
+    const int child = file.node({{"mesh", 0}, {"rotation", {0.0, std::sqrt(0.5), 0.0, std::sqrt(0.5)}}, {"scale", {2, 2, 2}}}, false);
+    file.node({{"translation", {10, 0, 0}}, {"children", {child}}}, true);
+    // and the mesh again under a matrix node (column-major: translate (0, 0, -5)).
+    file.node({{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -5, 1}}}, true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "tri.gltf"));
+    REQUIRE(scene.meshes.size() == 2);
+    const lidr::Mesh& rotated = scene.meshes[0];
+    REQUIRE(rotated.indices.size() == 3);
+    // (1,0,0) rotated 90 degrees about +y is (0,0,-1); scaled 2, moved by 10 in x.
+    requireNear(rotated.positions[rotated.indices[0]], {10, 0, 0});
+    requireNear(rotated.positions[rotated.indices[1]], {10, 0, -2});
+    requireNear(rotated.positions[rotated.indices[2]], {10, 2, 0});
+    // no NORMAL: flat normals, the face's (rotated +z is +x)
+    for (const glm::vec3& n : rotated.normals) requireNear(n, {1, 0, 0});
+    const lidr::Mesh& moved = scene.meshes[1];
+    requireNear(moved.positions[moved.indices[1]], {1, 0, -5});
+    CHECK(moved.name == "tri/mesh 0");
+    CHECK(scene.lights.empty());
+    CHECK(scene.warnings.empty());
+}
+
+TEST_CASE("glTF: a mirroring transform keeps triangles counter-clockwise; strips and non-indexed primitives", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file;
+    const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}});
+    const int n = file.positions({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    file.mesh({{"attributes", {{"POSITION", p}, {"NORMAL", n}}}, {"mode", 5}});  // TRIANGLE_STRIP, not indexed
+    file.node({{"mesh", 0}, {"scale", {-1, 1, 1}}}, true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "strip.gltf"));
+    REQUIRE(scene.meshes.size() == 1);
+    const lidr::Mesh& mesh = scene.meshes[0];
+    REQUIRE(mesh.triangleCount() == 2);
+    for (size_t t = 0; t < 2; ++t) {
+        const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+                        c = mesh.positions[mesh.indices[3 * t + 2]];
+        const glm::vec3 face = glm::cross(b - a, c - a);
+        // mirrored in x, the strip faces +z still (its given normals, mirrored through the normal matrix, too)
+        CHECK(face.z > 0.0f);
+    }
+    for (const glm::vec3& normal : mesh.normals) requireNear(normal, {0, 0, 1});
+}
+
+TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and directional are warnings", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 2.0}, {"range", 3.0}},
+        {{"type", "point"}, {"intensity", 4.0}},
+        {{"type", "spot"}, {"spot", Json::object()}},
+        {{"type", "directional"}}};
+    file.node({{"mesh", 0}}, true);
+    const auto lightNode = [&](int light, Json node) {
+        node["extensions"]["KHR_lights_punctual"]["light"] = light;
+        return node;
+    };
+    file.node(lightNode(0, {{"translation", {1, 2, 3}}, {"scale", {1, 2, 1}}}), true);
+    file.node(lightNode(1, {{"translation", {0, 5, 0}}}), true);
+    file.node(lightNode(2, Json::object()), true);
+    file.node(lightNode(3, Json::object()), true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "lights.gltf"));
+    REQUIRE(scene.lights.size() == 2);
+    requireNear(scene.lights[0].position, {1, 2, 3});
+    CHECK(scene.lights[0].radius == Approx(6.0f));  // range 3 x the node's largest scale, 2
+    requireNear(scene.lights[0].color, {2.0f, 1.0f, 0.5f});
+    requireNear(scene.lights[1].position, {0, 5, 0});
+    CHECK(scene.lights[1].radius == Approx(32.0f));  // no range: sqrt(256 x 4)
+    CHECK(lidr::gltfLightRadiusWithoutRange(1.0f) == Approx(16.0f));
+    CHECK(lidr::gltfLightRadiusWithoutRange(1e12f) == Approx(1000.0f));
+    CHECK(lidr::gltfLightRadiusWithoutRange(0.0f) == Approx(0.01f));
+    REQUIRE(scene.warnings.size() == 2);
+    CHECK_THAT(scene.warnings[0], Contains("lights.gltf") && Contains("spot lights are not supported"));
+    CHECK_THAT(scene.warnings[1], Contains("directional lights are not supported"));
+}
+
+TEST_CASE("glTF: the first perspective camera is the view, else the default view frames the bounds", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["cameras"] = {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.25}, {"zfar", 40}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.5}}}}};
+    file.node({{"mesh", 0}}, true);
+    file.node({{"camera", 0}}, true);
+    // rotated 90 degrees about +y: looks down -x
+    file.node({{"camera", 1}, {"translation", {5, 1, 0}}, {"rotation", {0.0, std::sqrt(0.5), 0.0, std::sqrt(0.5)}}}, true);
+    file.node({{"camera", 2}}, true);
+    {
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "cameras.gltf"));
+        requireNear(scene.camera.position, {5, 1, 0});
+        requireNear(scene.camera.target, {4, 1, 0});
+        requireNear(scene.camera.up, {0, 1, 0});
+        CHECK(scene.camera.fovYDegrees == Approx(glm::degrees(0.5f)));
+        CHECK(scene.camera.nearPlane == Approx(0.25f));
+        CHECK(scene.camera.farPlane == Approx(40.0f));
+        REQUIRE(scene.warnings.size() == 1);
+        CHECK_THAT(scene.warnings[0], Contains("orthographic cameras are not supported"));
+    }
+    SECTION("no zfar: a far plane past the bounds") {
+        file.doc["scenes"][0]["nodes"] = {0, 3};
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "infinite.gltf"));
+        CHECK(scene.camera.nearPlane == Approx(0.5f));
+        // farthest corner of the triangle's bounds from the origin: sqrt(2); 1.5 x that
+        CHECK(scene.camera.farPlane == Approx(1.5f * std::sqrt(2.0f)));
+    }
+    SECTION("no camera") {
+        file.doc["scenes"][0]["nodes"] = {0};
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "nocamera.gltf"));
+        const lidr::Camera expected = lidr::cameraFramingBounds({0, 0, 0}, {1, 1, 0});
+        requireNear(scene.camera.position, expected.position);
+        requireNear(scene.camera.target, {0.5f, 0.5f, 0.0f});
+        // the bounding sphere (radius sqrt(0.5)) fits the 60 degree field of view with 10% to spare
+        CHECK(glm::length(scene.camera.position - scene.camera.target) == Approx(1.1f * std::sqrt(0.5f) / 0.5f));
+        CHECK(scene.camera.nearPlane < glm::length(scene.camera.position - scene.camera.target) - std::sqrt(0.5f));
+        CHECK(scene.camera.farPlane > glm::length(scene.camera.position - scene.camera.target) + std::sqrt(0.5f));
+    }
+}
+
+TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with a warning, embedded texture", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file;
+    const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
+    const int t = file.accessor(uv.data(), uv.size() * 4, 5126, "VEC2", 3);
+    for (int m = 0; m < 3; ++m) file.mesh({{"attributes", {{"POSITION", p}, {"TEXCOORD_0", t}}}, {"material", m}});
+    // a 2x1 PNG: red, green (written by lidr, embedded as a data URI)
+    lidr::ImageRGBA8 image(2, 1);
+    const uint8_t pixels[8] = {255, 0, 0, 255, 0, 255, 0, 255};
+    std::memcpy(image.pixels.data(), pixels, 8);
+    lidr::writePng(dir.file("tex.png"), image);
+    std::ifstream in(dir.file("tex.png"), std::ios::binary);
+    const std::vector<unsigned char> png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    file.doc["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+    file.doc["textures"] = {{{"source", 0}}};
+    file.doc["materials"] = {
+        {{"name", "glass"}, {"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 0.5}}}}},
+        {{"name", "leaves"}, {"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.3}}}}},
+        {{"name", "painted"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
+    for (int m = 0; m < 3; ++m) file.node({{"mesh", m}}, true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "materials.gltf"));
+    REQUIRE(scene.meshes.size() == 3);
+    const lidr::Material& glass = scene.materials[size_t(scene.meshes[0].material)];
+    CHECK(glass.name == "glass");
+    requireNear(glass.diffuse, {0.2f, 0.4f, 0.6f});
+    CHECK(glass.opacity == 0.5f);  // transparent: drawn after the opaque geometry, blended
+    const lidr::Material& leaves = scene.materials[size_t(scene.meshes[1].material)];
+    CHECK(leaves.opacity == 1.0f);
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK_THAT(scene.warnings[0], Contains("'leaves'") && Contains("MASK is drawn opaque"));
+    const lidr::Material& painted = scene.materials[size_t(scene.meshes[2].material)];
+    REQUIRE(painted.diffuseImage);
+    REQUIRE(painted.diffuseImage->width == 2);
+    CHECK(std::memcmp(painted.diffuseImage->pixels.data(), pixels, 8) == 0);
+    requireNear(painted.specular, glm::vec3(0.04f * 0.25f));  // dielectric F0 x (1 - roughness)^2
+    CHECK(painted.shininess == Approx(30.0f));                  // 2 / 0.5^4 - 2
+    // texture coordinates: glTF's v runs down the image, lidr's up
+    const lidr::Mesh& mesh = scene.meshes[2];
+    CHECK(mesh.texCoords[mesh.indices[2]] == glm::vec2(0.0f, 0.0f));
+    CHECK(mesh.texCoords[mesh.indices[0]] == glm::vec2(0.0f, 1.0f));
+}
+
+TEST_CASE("glTF: a .glb and a .gltf with a separate .bin give the same scene", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.node({{"mesh", 0}, {"translation", {0, 0, 2}}}, true);
+    const lidr::Scene fromGltf = lidr::loadScene(file.writeGltf(dir, "model.gltf"));
+    const lidr::Scene fromGlb = lidr::loadScene(file.writeGlb(dir, "model.glb"));
+    dir.write("model.bin", std::string(file.bin.begin(), file.bin.end()));
+    file.doc["buffers"] = {{{"byteLength", file.bin.size()}, {"uri", "model.bin"}}};
+    const lidr::Scene fromBin = lidr::loadScene(dir.write("separate.gltf", file.doc.dump()));
+    for (const lidr::Scene* scene : {&fromGlb, &fromBin}) {
+        REQUIRE(scene->meshes.size() == 1);
+        CHECK(scene->meshes[0].positions == fromGltf.meshes[0].positions);
+        CHECK(scene->meshes[0].indices == fromGltf.meshes[0].indices);
+    }
+    requireNear(fromGlb.meshes[0].positions[fromGlb.meshes[0].indices[2]], {0, 1, 2});
+}
+
+TEST_CASE("glTF: malformed files are errors naming the file and the cause", "[gltf][cpu][bad-input]") {
+    TempDir dir;
+    const auto load = [&](GltfFile file, const std::string& name) { return lidr::loadScene(file.writeGltf(dir, name)); };
+    SECTION("index out of range") {
+        GltfFile file;
+        const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", file.indices({0, 1, 7})}});
+        file.node({{"mesh", 0}}, true);
+        REQUIRE_THROWS_WITH(load(file, "index.gltf"),
+                            Contains("index.gltf: ") && Contains("index 7 (element 2) out of range (3 vertices)"));
+    }
+    SECTION("accessor larger than its buffer view") {
+        GltfFile file = oneTriangle();
+        file.doc["accessors"][0]["count"] = 1000;
+        file.node({{"mesh", 0}}, true);
+        REQUIRE_THROWS_WITH(load(file, "count.gltf"),
+                            Contains("count.gltf: ") && Contains("POSITION accessor 0: 1000 elements from byte 0 do not fit buffer view 0 (36 bytes)"));
+    }
+    SECTION("accessor index out of range") {
+        GltfFile file = oneTriangle();
+        file.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9;
+        file.node({{"mesh", 0}}, true);
+        REQUIRE_THROWS_WITH(load(file, "accessor.gltf"), Contains("accessor 9 out of range (2 accessors)"));
+    }
+    SECTION("positions that are not float VEC3") {
+        GltfFile file = oneTriangle();
+        file.doc["accessors"][0]["type"] = "VEC2";
+        file.node({{"mesh", 0}}, true);
+        REQUIRE_THROWS_WITH(load(file, "type.gltf"), Contains("POSITION accessor 0: type"));
+    }
+    SECTION("missing buffer file") {
+        GltfFile file = oneTriangle();
+        file.node({{"mesh", 0}}, true);
+        file.doc["buffers"] = {{{"byteLength", file.bin.size()}, {"uri", "missing.bin"}}};
+        REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("nobuffer.gltf", file.doc.dump())),
+                            Contains("nobuffer.gltf: malformed glTF: ") && Contains("missing.bin"));
+    }
+    SECTION("lines are not triangles") {
+        GltfFile file = oneTriangle();
+        file.doc["meshes"][0]["primitives"][0]["mode"] = 1;
+        file.node({{"mesh", 0}}, true);
+        REQUIRE_THROWS_WITH(load(file, "lines.gltf"),
+                            Contains("lines.gltf: ") && Contains("primitive mode 1 (LINES) is not triangles"));
+    }
+    SECTION("truncated .glb") {
+        GltfFile file = oneTriangle();
+        file.node({{"mesh", 0}}, true);
+        const std::string whole = file.writeGlb(dir, "whole.glb");
+        std::ifstream in(whole, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        for (size_t keep : {size_t(4), size_t(20), bytes.size() - 10}) {
+            INFO("kept " << keep << " of " << bytes.size() << " bytes");
+            REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("cut.glb", bytes.substr(0, keep))),
+                                Contains("cut.glb: malformed glTF: "));
+        }
+    }
+    SECTION("not JSON") {
+        REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("text.gltf", "{\"asset\": ")), Contains("text.gltf: malformed glTF: "));
+    }
+    SECTION("a node that is its own child") {
+        GltfFile file = oneTriangle();
+        file.node({{"mesh", 0}, {"children", {0}}}, true);
+        REQUIRE_THROWS_WITH(load(file, "cycle.gltf"), Contains("cycle.gltf: ") && Contains("deeper than 256 levels"));
+    }
+    SECTION("missing file, other model formats") {
+        REQUIRE_THROWS_WITH(lidr::loadScene(dir.file("none.gltf")), Contains("none.gltf: glTF file not found"));
+        REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("x.ply", "ply")), Contains("x.ply: format not supported (PLY)"));
+    }
+}
+
+TEST_CASE("glTF: scene files reference glTF models like OBJ ones", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"range", 2.0}}};
+    file.node({{"mesh", 0}}, true);
+    file.node({{"translation", {0, 1, 0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}, true);
+    file.writeGltf(dir, "part.gltf");
+    const lidr::Scene scene = lidr::loadScene(dir.write("scene.json", R"({
+        "materials": [{"name": "red", "diffuse": [1, 0, 0]}],
+        "models": [{"file": "part.gltf", "translate": [5, 0, 0], "scale": 3, "material": "red"}],
+        "lights": [{"position": [0, 9, 0], "radius": 1}]})"));
+    REQUIRE(scene.meshes.size() == 1);
+    requireNear(scene.meshes[0].positions[scene.meshes[0].indices[1]], {8, 0, 0});
+    CHECK(scene.materials[size_t(scene.meshes[0].material)].name == "red");
+    REQUIRE(scene.lights.size() == 2);  // the model's light first (models come before lights)
+    requireNear(scene.lights[0].position, {5, 3, 0});
+    CHECK(scene.lights[0].radius == Approx(6.0f));
+    requireNear(scene.camera.position, lidr::Camera().position);  // the scene file's (default) camera
+}
+
+TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf]") {
+    TempDir dir;
+    // A floor quad and a box-like tent, with a red material, two point lights and a camera.
+    GltfFile file;
+    const int p = file.positions({{-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4}, {-1, 0, 0}, {1, 0, 0}, {0, 1.5f, 0.5f}});
+    const int i = file.indices({0, 2, 1, 0, 3, 2, 4, 5, 6});
+    file.doc["materials"] = {{{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}}};
+    file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", i}, {"material", 0}});
+    file.node({{"mesh", 0}}, true);
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"range", 5.0}},
+                                                              {{"type", "point"}, {"color", {0.2, 0.4, 1}}, {"range", 3.0}}};
+    file.node({{"translation", {0, 2, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}, true);
+    file.node({{"translation", {2, 0.5, -1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}, true);
+    file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", glm::radians(60.0)}, {"znear", 0.1}, {"zfar", 50}}}}};
+    // at (0, 4, 8) looking at the origin: rotate about +x by -atan(4/8)
+    const float angle = -std::atan(0.5f);
+    file.node({{"camera", 0}, {"translation", {0, 4, 8}}, {"rotation", {std::sin(angle / 2), 0.0, 0.0, std::cos(angle / 2)}}}, true);
+    lidr::Scene fromGltf = lidr::loadScene(file.writeGltf(dir, "tent.gltf"));
+
+    dir.write("tent.obj", "mtllib tent.mtl\nv -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\nv -1 0 0\nv 1 0 0\nv 0 1.5 0.5\n"
+                          "usemtl red\nf 1 3 2\nf 1 4 3\nf 5 6 7\n");
+    dir.write("tent.mtl", "newmtl red\nKd 0.8 0.2 0.2\nKs 0 0 0\nNs 1\n");
+    lidr::Scene fromJson = lidr::loadScene(dir.write("tent.json", R"({
+        "camera": {"position": [0, 4, 8], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 50},
+        "models": [{"file": "tent.obj"}],
+        "lights": [{"position": [0, 2, 1], "radius": 5, "color": [1, 0.9, 0.8]},
+                   {"position": [2, 0.5, -1], "radius": 3, "color": [0.2, 0.4, 1]}]})"));
+    for (lidr::Scene* scene : {&fromGltf, &fromJson}) {
+        scene->width = lidr::test::testWidth();
+        scene->height = lidr::test::testHeight();
+    }
+    // the OBJ's face normals and the glTF's flat normals are the same; so are the materials' terms
+    REQUIRE(fromGltf.materials[size_t(fromGltf.meshes[0].material)].specular == glm::vec3(0.0f));
+    const auto render = [&](const lidr::Scene& scene) {
+        lidr::RenderModeOptions options;
+        auto renderer = lidr::createRenderer(options, lidr::test::testGl(), scene, scene.width, scene.height);
+        renderer->render(scene.camera, scene.lightsAt(scene.time), {scene.ambient});
+        return renderer->targets().readColor();
+    };
+    const lidr::ImageRGBA8 a = render(fromGltf), b = render(fromJson);
+    const lidr::ImageError error = lidr::compareImages(a, b);
+    INFO("max " << error.maxAbsError << ", differing pixels " << error.differingPixels);
+    // The camera comes through a quaternion, so a few edge pixels may differ by rasterisation.
+    CHECK(error.maxAbsError <= 2);
+    CHECK(error.differingPixels <= long(a.width) * long(a.height) / 200);
+    // and the frame is not empty: the lights reach the red floor
+    size_t lit = 0;
+    for (size_t k = 0; k < a.pixels.size(); k += 4) lit += a.pixels[k] > 40;
+    CHECK(lit > size_t(a.width) * size_t(a.height) / 10);
+}
