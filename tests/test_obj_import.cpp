@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "temp_dir.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/image_compare.h"
@@ -22,28 +23,10 @@
 namespace fs = std::filesystem;
 using Catch::Contains;
 
+using lidr::test::TempDir;
+
 namespace {
 
-class TempDir {
-public:
-    TempDir() {
-        static int counter = 0;
-        path_ = fs::temp_directory_path() / ("lidr-test-obj-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string write(const std::string& name, const std::string& content) const {
-        const std::string file = (path_ / name).string();
-        std::ofstream(file, std::ios::binary) << content;
-        return file;
-    }
-
-private:
-    fs::path path_;
-};
 
 // Two unit quads side by side in the xz plane (4 triangles), as text for the `v` and `f` lines.
 const char* const twoQuads = "v 0 0 0\nv 1 0 0\nv 1 0 -1\nv 0 0 -1\nv 2 0 0\nv 2 0 -1\n";

@@ -13,6 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "temp_dir.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/primitives.h"
@@ -22,34 +23,13 @@
 namespace fs = std::filesystem;
 using Catch::Contains;
 
+using lidr::test::TempDir;
+
 namespace {
 
 std::string mediaPath(const std::string& relative) { return std::string(LIDR_SOURCE_DIR) + "/media/" + relative; }
 
 // A fresh folder under the system temp folder, removed with everything in it at the end of the test.
-class TempDir {
-public:
-    TempDir() {
-        static int counter = 0;
-        path_ = fs::temp_directory_path() /
-                ("lidr-test-scene-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    std::string write(const std::string& name, const std::string& content) const {
-        const std::string file = (path_ / name).string();
-        std::ofstream(file, std::ios::binary) << content;
-        return file;
-    }
-
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
 
 // A valid scene file with one box, plus `members` (a JSON fragment starting with a comma, or empty).
 std::string sceneWith(const std::string& members) {
