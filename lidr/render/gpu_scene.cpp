@@ -101,23 +101,15 @@ void GpuScene::placeBatch(Batch& b) const {
     }
 }
 
-const GpuScene::Batch* GpuScene::findBatch(ObjectId id) const {
-    for (const Batch& b : batches_)
-        if (b.id == id) return &b;
-    return nullptr;
-}
-
-GpuScene::Batch& GpuScene::batchFor(ObjectId id) {
-    for (Batch& b : batches_)
-        if (b.id == id) return b;
+size_t GpuScene::batchIndex(ObjectId id) const {
+    for (size_t i = 0; i < batches_.size(); ++i)
+        if (batches_[i].id == id) return i;
     throw Error("no object " + std::to_string(id) + " in the scene (ids: the Scene's mesh indices, then those addObject " +
                 "returned; removed ones and meshes without triangles do not exist)");
 }
 
-const glm::mat4& GpuScene::transform(ObjectId id) const { return const_cast<GpuScene*>(this)->batchFor(id).transform; }
-
 void GpuScene::setTransform(ObjectId id, const glm::mat4& objectToWorld) {
-    Batch& b = batchFor(id);
+    Batch& b = batches_[batchIndex(id)];
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(objectToWorld[c][r]))
@@ -152,13 +144,9 @@ ObjectId GpuScene::add(const Mesh& mesh, const Material& material) {
 }
 
 void GpuScene::remove(ObjectId id) {
-    batchFor(id);  // throws for an unknown id
-    for (auto it = batches_.begin(); it != batches_.end(); ++it)
-        if (it->id == id) {
-            triangles_ -= it->triangles;
-            batches_.erase(it);  // its material stays (other objects may share it)
-            return;
-        }
+    const auto it = batches_.begin() + long(batchIndex(id));
+    triangles_ -= it->triangles;
+    batches_.erase(it);  // its material stays (other objects may share it)
 }
 
 bool GpuScene::hasTransparent() const {

@@ -52,11 +52,8 @@ public:
     // material and returns its id; remove deletes one. Each throws lidr::Error (unknown id, a transform that is
     // not finite or not invertible, a bad mesh or material) before changing anything.
     void setTransform(ObjectId id, const glm::mat4& objectToWorld);
-    const glm::mat4& transform(ObjectId id) const;
     ObjectId add(const Mesh& mesh, const Material& material);
     void remove(ObjectId id);
-    bool contains(ObjectId id) const { return findBatch(id) != nullptr; }
-    ObjectId nextObjectId() const { return nextId_; }
 
 private:
     struct Batch {
@@ -74,8 +71,7 @@ private:
     Batch upload(const Mesh& mesh, DrawOrder order) const;
     gl::Texture loadTexture(const Material& m) const;
     void placeBatch(Batch& b) const;  // world centroid and bounds from the transform
-    const Batch* findBatch(ObjectId id) const;
-    Batch& batchFor(ObjectId id);
+    size_t batchIndex(ObjectId id) const;  // throws lidr::Error for an id that is not (or no longer) there
     void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
     void unbindGeometry() const;
     std::vector<Batch> batches_;

@@ -16,6 +16,8 @@ void Renderer::setObjectTransform(ObjectId id, const glm::mat4& objectToWorld) {
 }
 
 ObjectId Renderer::addObject(const Mesh& mesh, const Material& material) {
+    // Checked here first so that the mode's own refusal (checkObjectMaterial) never speaks for a bad value; each
+    // scene's add checks again, one pass over the mesh like its upload, so GpuScene stays safe on its own.
     validateObject(mesh, material);
     checkObjectMaterial(material);
     const std::vector<GpuScene*> scenes = gpuScenes();
