@@ -1,5 +1,7 @@
 #include "render_helpers.h"
 
+#include <catch2/catch.hpp>
+
 #include "gl_test_context.h"
 #include "lidr/scene/primitives.h"
 #include "lidr/modes/reference_renderer.h"
@@ -54,6 +56,18 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
     r.reference = reference.targets().readColor();
     r.evaluation = evaluateFrame(renderer, scene.camera, lights, r.lidr, r.reference);
     return r;
+}
+
+void requireExactWithinBudget(const FrameEvaluation& e, const std::string& what) {
+    long droppedWithinBudget = 0;
+    for (size_t p = 0; p < e.withinBudget.size(); ++p)
+        if (e.withinBudget[p]) droppedWithinBudget += e.lists.droppedPerPixel[p];
+    INFO(what << (what.empty() ? "" : ": ") << "within-budget max error " << e.errorWithinBudget.maxAbsError << ", PSNR "
+              << e.errorWithinBudget.psnr << ", invalid " << e.lists.invalidSlots << ", dropped within budget "
+              << droppedWithinBudget << ", over budget " << e.pixelsOverBudget);
+    REQUIRE(e.lists.invalidSlots == 0);
+    REQUIRE(droppedWithinBudget == 0);
+    REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
 }
 
 }  // namespace lidr::test

@@ -29,4 +29,9 @@ struct RenderResult {
 RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options);
 RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info);
 
+// The render tests' common bound, "exact within the budget": no corrupted slot anywhere; no light that touches a
+// surface missing where the pixel was marked by no more lights than the budget; those pixels equal the reference
+// within one 8-bit step (the same lights summed in another order). REQUIREs each (Catch2), naming `what`.
+void requireExactWithinBudget(const FrameEvaluation& e, const std::string& what = "");
+
 }  // namespace lidr::test

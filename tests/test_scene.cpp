@@ -678,15 +678,16 @@ TEST_CASE("scene files: bad input is an lidr::Error naming the problem", "[scene
         dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 5\n");
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "range.obj"}])")),
                             Contains("models[0].file") && Contains("range.obj") && Contains("out of range"));
-        dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
-        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "zero.obj"}])")),
-                            Contains("zero.obj") && Contains("malformed OBJ"));
-        dir.write("empty.obj", "# nothing here\nv 0 0 0\n");
-        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "empty.obj"}])")),
-                            Contains("empty.obj") && Contains("no triangles"));
-        dir.write("huge.obj", "v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-        REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "huge.obj"}])")),
-                            Contains("huge.obj") && Contains("not finite"));
+        struct Case {
+            const char *file, *content, *error;
+        };
+        for (const Case& c : {Case{"zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "malformed OBJ"},
+                              Case{"empty.obj", "# nothing here\nv 0 0 0\n", "no triangles"},
+                              Case{"huge.obj", "v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "not finite"}}) {
+            dir.write(c.file, c.content);
+            REQUIRE_THROWS_WITH(load(sceneWith(std::string(R"(, "models": [{"file": ")") + c.file + "\"}]")),
+                                Contains(c.file) && Contains(c.error));
+        }
     }
     SECTION("OBJ with a missing texture in its MTL") {
         dir.write("textured.obj", "mtllib textured.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
