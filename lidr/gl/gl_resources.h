@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/base/gl_types.h"
+#include "lidr/gl/bindings.h"
 
 namespace lidr::gl {
 
@@ -107,8 +108,5 @@ private:
     std::string name_;
     mutable std::unordered_map<std::string, GLint> uniforms_;
 };
-
-// Vertex attribute slots shared by every lidr program (bound before linking, so no queries are needed).
-enum Attribute : GLuint { kPosition = 0, kNormal = 1, kTexCoord = 2 };
 
 }  // namespace lidr::gl

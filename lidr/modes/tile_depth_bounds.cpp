@@ -151,8 +151,8 @@ void TileDepthBounds::runPass(const gl::Program& program, const gl::Texture& inp
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
     glViewport(0, 0, outW, outH);
     program.use();
-    input.bind(0);
-    program.set("uInput", 0);
+    input.bind(gl::kUnitReductionInput);
+    program.set("uInput", gl::kUnitReductionInput);
     program.set("uInputSize", glm::vec2(float(input.width()), float(input.height())));
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -190,11 +190,11 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     for (size_t c = 0; c < splitChains_.size(); ++c) {  // half-Z: needs the min/max tiles just reduced
         const gl::Program& p = splitHorizontal_[c];
         p.use();
-        chains_[0].tiles.bind(1);
-        p.set("uTileMin", 1);
+        chains_[0].tiles.bind(gl::kUnitTileDepthMin);
+        p.set("uTileMin", gl::kUnitTileDepthMin);
         if (chains_.size() > 1) {
-            chains_[1].tiles.bind(2);
-            p.set("uTileMax", 2);
+            chains_[1].tiles.bind(gl::kUnitTileDepthMax);
+            p.set("uTileMax", gl::kUnitTileDepthMax);
         }
         p.set("uTileGridSize", glm::vec2(float(tilesX_), float(tilesY_)));
         runPass(p, depthCopy_, splitChains_[c].columnsFbo, tilesX_, height_);

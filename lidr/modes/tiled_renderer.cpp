@@ -154,7 +154,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     targets_.resolve(timer_);
 
     applyRenderState(RenderState{});
-    for (int unit : {LightGridTextures::kUnitGrid, LightGridTextures::kUnitList}) {
+    for (int unit : {gl::kUnitTileGrid, gl::kUnitTileList}) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, 0);
     }

@@ -89,8 +89,8 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
         const gl::Texture& tex = textures_[b.material];
         program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {
-            tex.bind(kMaterialTextureUnit);
-            program.set("uMaterialTexture", kMaterialTextureUnit);
+            tex.bind(gl::kUnitMaterial);
+            program.set("uMaterialTexture", gl::kUnitMaterial);
         }
     }
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());

@@ -28,8 +28,8 @@ void FramePresenter::present(const RenderTargets& targets, GLuint framebuffer, i
     glViewport(x, y, width, height);
     applyRenderState(RenderState{});
     program_.use();
-    targets.color().bind(0);
-    program_.set("uFrame", 0);
+    targets.color().bind(gl::kUnitPresentedFrame);
+    program_.set("uFrame", gl::kUnitPresentedFrame);
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(gl::kPosition);

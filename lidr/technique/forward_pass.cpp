@@ -14,7 +14,7 @@ void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera
     program.set("uAmbient", shading.ambient);
     // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
     // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
-    program.set("uMaterialTexture", GpuScene::kMaterialTextureUnit);
+    program.set("uMaterialTexture", gl::kUnitMaterial);
 }
 
 namespace {
@@ -70,8 +70,8 @@ void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& i
     setShadingUniforms(program_, camera, shading);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
     for (int i = 0; i < indices.count(); ++i) {
-        indices.texture(i).bind(i);
-        program_.set(("uIndexTex" + std::to_string(i)).c_str(), i);
+        indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
+        program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
     table.bind(program_);
 }
@@ -79,7 +79,7 @@ void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& i
 void ForwardPass::unbindInputs(const IndexTargets& indices) const {
     applyRenderState(RenderState{});
     for (int i = 0; i < indices.count(); ++i) {
-        glActiveTexture(GL_TEXTURE0 + i);
+        glActiveTexture(GL_TEXTURE0 + gl::kUnitIndexTarget0 + i);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);

@@ -233,7 +233,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         if (depthTexture_) {
             // The shader volume tests read the pre-pass depth from a texture that is not attached to the
             // framebuffer they draw into (reading an attached one is a feedback loop).
-            depthTexture_.bind(0);
+            depthTexture_.bind(gl::kUnitDepthCopy);
             glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
             checkGl("depth copy for the volume tests");
         }

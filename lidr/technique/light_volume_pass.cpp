@@ -106,7 +106,7 @@ const gl::Program& LightVolumePass::batchProgramFor(int targetCount) const {
         p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
                                 buildShaderSource("light_volume_batch.vert", defs),
                                 buildShaderSource("light_volume_sphere.frag", defs),
-                                {{"aPosition", gl::kPosition}, {"aSlot", kSlotAttribute}});
+                                {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
     }
     return p;
 }
@@ -151,8 +151,8 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
         glEnableVertexAttribArray(gl::kPosition);
         glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-        glEnableVertexAttribArray(kSlotAttribute);
-        glVertexAttribPointer(kSlotAttribute, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+        glEnableVertexAttribArray(gl::kVolumeSlot);
+        glVertexAttribPointer(gl::kVolumeSlot, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
                               reinterpret_cast<const void*>(3 * sizeof(float)));
     } else {
         glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
@@ -205,7 +205,7 @@ void LightVolumePass::drawVolume(const VolumeLight& light) const {
     if (listSource_) {
         const size_t step = light.index - 1;
         if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
-        listSource_->steps[step]->bind(0);
+        listSource_->steps[step]->bind(gl::kUnitPixelListStep);
         glDrawArrays(GL_TRIANGLES, 0, 6);
     } else {
         const int level = detailFor(light);
@@ -243,9 +243,9 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     program.set("uViewProj", camera_.viewProjection);
     if (listSource_) {
         uploadColorTable(d, colors);
-        colorTable_.bind(1);
-        program.set("uStepIndices", 0);
-        program.set("uColorTable", 1);
+        colorTable_.bind(gl::kUnitPixelListColors);
+        program.set("uStepIndices", gl::kUnitPixelListStep);
+        program.set("uColorTable", gl::kUnitPixelListColors);
         program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
         program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
         program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
@@ -437,8 +437,8 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
     program.set("uRadiusScale", kSphereRadiusScale);
     program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
-    program.set("uDepth", 0);
-    depth_->bind(0);
+    program.set("uDepth", gl::kUnitDepthCopy);
+    depth_->bind(gl::kUnitDepthCopy);
     beginDraw(d);
 
     // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
@@ -491,7 +491,7 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
 }
 
 void LightVolumePass::end() {
-    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(kSlotAttribute);
+    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(gl::kVolumeSlot);
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

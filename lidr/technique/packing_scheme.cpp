@@ -65,7 +65,7 @@ void checkContextFor(const std::string& what, const GlInfo& info, int targets, i
         throw UnsupportedError(what + " writes " + std::to_string(drawTargets) + " targets at once; this context has " +
                                std::to_string(info.drawBuffers ? info.maxDrawBuffers : 1) +
                                " draw buffers (choose a smaller budget or width)");
-    const int units = std::max(LightTable::kUnitPosRadiusLow, GpuScene::kMaterialTextureUnit) + 1;
+    const int units = gl::kUnitHighestShading + 1;
     if (info.maxTextureUnits < units)
         throw UnsupportedError(what + ": the forward pass binds index textures and the light table on " +
                                std::to_string(units) + " texture units; this context has " +
