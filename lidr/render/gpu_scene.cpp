@@ -8,6 +8,7 @@
 #include <stb_image.h>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 
 namespace lidr {
 
@@ -82,15 +83,16 @@ bool GpuScene::hasTransparent() const {
 void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const {
     if (setMaterials) {
         const Material& m = materials_[b.material];
-        program.set("uMaterialDiffuse", m.diffuse);
-        program.set("uMaterialSpecular", m.specular);
-        program.set("uMaterialShininess", m.shininess);
-        program.set("uMaterialOpacity", m.opacity);
+        // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
+        program.setIfDeclared("uMaterialDiffuse", m.diffuse);
+        program.setIfDeclared("uMaterialSpecular", m.specular);
+        program.setIfDeclared("uMaterialShininess", m.shininess);
+        program.setIfDeclared("uMaterialOpacity", m.opacity);
         const gl::Texture& tex = textures_[b.material];
-        program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
+        program.setIfDeclared("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {
             tex.bind(gl::kUnitMaterial);
-            program.set("uMaterialTexture", gl::kUnitMaterial);
+            program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
         }
     }
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
@@ -104,7 +106,7 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     glVertexAttribPointer(gl::kTexCoord, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, texCoord)));
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());
-    glDrawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
+    StateCache::current().drawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
 void GpuScene::unbindGeometry() const {
