@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     app.add_option("--out", options.outDir, "Folder for screenshots (F12) and saved artefacts (F11)")->capture_default_str();
     app.add_option("--script", options.scriptFile, "Run a script of timed inputs and checks, then exit (doc/viewer.md)");
     app.add_flag("--hidden", options.hidden, "Open the window hidden (scripted runs)");
+    app.add_flag("--fixed-size", options.fixedSize,
+                 "Render at --width x --height whatever the window's size (default: the frame follows the window)");
     app.add_flag("--paused", options.startPaused, "Start with the light animation paused at the scene's time");
     try {
         app.parse(argc, argv);

@@ -90,6 +90,11 @@ grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$o
   fail "the settings sweep failed: $(tail -5 "$out/sweep.log")"
 echo "viewer.script: settings sweep: $(grep -c ' applied$' "$out/sweep.log" || true) applied, $(grep -c 'refused:' "$out/sweep.log") refused, no crash"
 
+# --fixed-size: the frame keeps its size when the window changes (it is scaled instead).
+printf 'resize 320 240\nwait 3\nexpect-size 160 120\n' > "$out/fixed-size.script"
+"${x[@]}" "$viewer" --width 160 --height 120 --paused --fixed-size --out "$out" --script "$out/fixed-size.script" \
+  >"$out/fixed-size.log" 2>&1 || fail "--fixed-size: $(tail -3 "$out/fixed-size.log")"
+
 # Without the override (the context's own GL version): switch modes, the UI drawn.
 unset MESA_GL_VERSION_OVERRIDE MESA_GLSL_VERSION_OVERRIDE
 sed "s|@OUT@|$out|g" "$here/viewer_native.script" > "$out/native.script"

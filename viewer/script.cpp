@@ -36,6 +36,9 @@ const std::map<std::string, VerbSpec>& verbs() {
         {"expect-refused", {0, 0, "expect-refused (the last setting change was refused, the viewer kept going)"}},
         {"expect-applied", {0, 0, "expect-applied (the last setting change was applied)"}},
         {"expect-file", {1, 1, "expect-file PATH"}},
+        {"resize", {2, 2, "resize WIDTH HEIGHT (the window; the frame follows unless --fixed-size)"}},
+        {"expect-size", {2, 2, "expect-size WIDTH HEIGHT (the rendered frame's size)"}},
+        {"expect-mode-views", {0, 0, "expect-mode-views (the debug views of the mode that drew the last frame are offered and computed)"}},
         {"quit", {0, 0, "quit"}},
     };
     return v;

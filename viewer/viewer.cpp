@@ -339,7 +339,7 @@ bool Viewer::viewAvailable(View v, std::string* why) const {
         if (why) *why = reason;
         return false;
     };
-    const bool lidrMode = dynamic_cast<const LidrRenderer*>(renderer_.get()) != nullptr;
+    const bool lidrMode = dynamic_cast<const LidrRenderer*>(&drawingRenderer()) != nullptr;
     switch (v) {
         case View::Frame:
         case View::Difference: return true;
@@ -350,7 +350,7 @@ bool Viewer::viewAvailable(View v, std::string* why) const {
             if (rc_.msaaPerSample) return no("per-sample index targets are multisample textures: they cannot be read back");
             return true;
         case View::TileHeatMap:
-            if (!dynamic_cast<const TiledRenderer*>(renderer_.get())) return no("the tile heat map is the tiled mode's");
+            if (!dynamic_cast<const TiledRenderer*>(&drawingRenderer())) return no("the tile heat map is the tiled mode's");
             return true;
     }
     return false;
@@ -460,8 +460,31 @@ void Viewer::renderFrame() {
         std::cerr << "lidr-viewer: " << status_ << std::endl;
         lightCount_ = std::min(lightCount_, maxLightsFor(rc_));
     }
-    if (auto* tiled = dynamic_cast<const TiledRenderer*>(renderer_.get()); tiled && view_ == View::TileHeatMap)
+    if (auto* tiled = dynamic_cast<const TiledRenderer*>(&drawingRenderer()); tiled && view_ == View::TileHeatMap)
         tileHeat_ = tiled->tileHeatMap(16);
+}
+
+const Renderer& Viewer::drawingRenderer() const {
+    if (const auto* autoMode = dynamic_cast<const AutoModeRenderer*>(renderer_.get())) return autoMode->lastRenderer();
+    return *renderer_;
+}
+
+void Viewer::followWindowSize(int fbw, int fbh) {
+    if (options_.fixedSize || fbw <= 0 || fbh <= 0) return;  // 0 x 0: minimised
+    if (fbw == width_ && fbh == height_) return;
+    if (fbw == refusedWidth_ && fbh == refusedHeight_) return;
+    const int oldWidth = width_, oldHeight = height_;
+    width_ = fbw;
+    height_ = fbh;
+    const std::string what = "window size " + std::to_string(fbw) + "x" + std::to_string(fbh);
+    if (apply(rc_, what)) {
+        refusedWidth_ = refusedHeight_ = 0;
+    } else {
+        width_ = oldWidth;
+        height_ = oldHeight;
+        refusedWidth_ = fbw;
+        refusedHeight_ = fbh;
+    }
 }
 
 void Viewer::computeViews() {
@@ -476,7 +499,7 @@ void Viewer::computeViews() {
     reference.reset();
     ev.error = compareImages(frame, ev.reference);
     ev.images[View::Difference] = differenceImage(frame, ev.reference);
-    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(renderer_.get()); lidr && !lidr->perSampleIndices()) {
+    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->perSampleIndices()) {
         const FrameEvaluation fe = evaluateFrame(*lidr, cam, lights, frame, ev.reference);
         const demo::LidrViews lv = demo::lidrViews(fe, width_, height_, lidr->scheme().config().budget);
         ev.images[View::IndexLists] = lv.indexLists;
@@ -490,7 +513,7 @@ void Viewer::computeViews() {
         ev.maxMarked = fe.maxMarked;
         ev.errorWithinBudget = fe.errorWithinBudget;
     }
-    if (const auto* tiled = dynamic_cast<const TiledRenderer*>(renderer_.get()))
+    if (const auto* tiled = dynamic_cast<const TiledRenderer*>(&drawingRenderer()))
         ev.images[View::TileHeatMap] = tiled->tileHeatMap(16);
     checkGl("viewer: computing the debug views");
     ev.valid = true;
@@ -673,7 +696,7 @@ void Viewer::uiStats() {
                         eval_.errorWithinBudget.maxAbsError,
                         std::isinf(eval_.errorWithinBudget.psnr) ? 999.0 : eval_.errorWithinBudget.psnr);
     }
-    const auto* lidrRenderer = dynamic_cast<const LidrRenderer*>(renderer_.get());
+    const auto* lidrRenderer = dynamic_cast<const LidrRenderer*>(&drawingRenderer());
     if (lidrRenderer) {
         const AutoDecision& d = st.autoDecision;
         const PackingConfig& c = lidrRenderer->scheme().config();
@@ -690,8 +713,8 @@ void Viewer::uiStats() {
         lidrRenderer ? indexBytesPerPixel(lidrRenderer->scheme().config().budget, lidrRenderer->scheme().config().indexBits) : 0,
         lidrRenderer && rc_.msaaPerSample);
     size_t table = 0;
-    if (auto* l = dynamic_cast<const LidrRenderer*>(renderer_.get())) table = l->lightTable().bytes();
-    if (auto* t = dynamic_cast<const TiledRenderer*>(renderer_.get())) table = t->lightTable().bytes();
+    if (auto* l = dynamic_cast<const LidrRenderer*>(&drawingRenderer())) table = l->lightTable().bytes();
+    if (auto* t = dynamic_cast<const TiledRenderer*>(&drawingRenderer())) table = t->lightTable().bytes();
     ImGui::Text("memory: targets %s (estimate), light data %s", bytesText(double(targets)).c_str(),
                 bytesText(double(renderer_->lightDataBytes())).c_str());
     if (table) ImGui::Text("light table %s", bytesText(double(table)).c_str());
@@ -788,7 +811,7 @@ void Viewer::saveAll(const std::string& dir) {
         std::replace(f.begin(), f.end(), '-', '_');
         writePng(path((f + ".png").c_str()), img);
     }
-    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(renderer_.get()); lidr && !lidr->perSampleIndices()) {
+    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->perSampleIndices()) {
         const auto lights = currentLights();
         FrameArtefacts a;
         a.indexTargets = lidr->readIndexTargets();
@@ -974,6 +997,34 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
     } else if (v == "expect-file") {
         if (!std::filesystem::is_regular_file(a.args[0]) || std::filesystem::file_size(a.args[0]) == 0)
             fail("no such file, or it is empty");
+    } else if (v == "resize") {
+        const int w = scriptInt(a, 0), h = scriptInt(a, 1);
+        if (w < 1 || h < 1) fail("the size must be positive");
+        glfwSetWindowSize(window_, w, h);
+    } else if (v == "expect-size") {
+        const RenderTargets& t = renderer_->targets();
+        std::cout << "lidr-viewer: " << a.text << ": frame " << t.width() << "x" << t.height() << ", window " << fbw
+                  << "x" << fbh << std::endl;
+        if (t.width() != scriptInt(a, 0) || t.height() != scriptInt(a, 1))
+            fail("the frame is " + std::to_string(t.width()) + "x" + std::to_string(t.height()));
+    } else if (v == "expect-mode-views") {
+        // In the automatic mode the views follow the candidate that drew the frame.
+        const Renderer& drawing = drawingRenderer();
+        const bool lidrDrew = dynamic_cast<const LidrRenderer*>(&drawing) != nullptr;
+        const bool tiledDrew = dynamic_cast<const TiledRenderer*>(&drawing) != nullptr;
+        std::cout << "lidr-viewer: " << a.text << ": " << renderer_->modeName() << " drew with " << drawing.modeName()
+                  << std::endl;
+        std::string why;
+        for (View view : {View::IndexLists, View::Overlap, View::Marked})
+            if (viewAvailable(view, &why) != (lidrDrew && !rc_.msaaPerSample))
+                fail(std::string("view ") + viewName(view) + (lidrDrew ? " not offered: " + why : " offered"));
+        if (viewAvailable(View::TileHeatMap, &why) != tiledDrew)
+            fail(std::string("the tile heat map ") + (tiledDrew ? "not offered: " + why : "offered"));
+        if (!eval_.valid || dirty_) fail("no up-to-date figures: add 'compute' first");
+        if (eval_.listsChecked != (lidrDrew && !rc_.msaaPerSample))
+            fail(lidrDrew ? "the index lists of the LIDR frame were not checked" : "index lists checked without LIDR");
+        if (lidrDrew && (eval_.images.count(View::IndexLists) == 0 || eval_.images.at(View::IndexLists).width != width_))
+            fail("no index-list image of the frame's size");
     } else if (v == "quit") {
         quit_ = true;
     }
@@ -1000,13 +1051,14 @@ int Viewer::run() {
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             processInput(dt);
+            int fbw = 0, fbh = 0;
+            glfwGetFramebufferSize(window_, &fbw, &fbh);
+            followWindowSize(fbw, fbh);
             renderFrame();
             if (computeRequested_ || (dirty_ && paused_ && view_ != View::Frame && view_ != View::TileHeatMap)) {
                 computeRequested_ = false;
                 computeViews();
             }
-            int fbw = 0, fbh = 0;
-            glfwGetFramebufferSize(window_, &fbw, &fbh);
             drawWindow(fbw, fbh);
             buildUi(fbw, fbh);
             ImGui::Render();

@@ -33,6 +33,7 @@ struct ViewerOptions {
     std::string scriptFile;             // empty: interactive
     bool hidden = false;                // an invisible window (tests; needs a GLX that renders to one)
     bool startPaused = false;
+    bool fixedSize = false;             // keep --width/--height when the window is resized (the frame is scaled)
 };
 
 class Viewer {
@@ -66,6 +67,11 @@ private:
     int maxLightsFor(const demo::RendererChoice& rc) const;
     std::vector<PointLight> currentLights() const;
     void renderFrame();
+    // The renderer that drew the last frame: the automatic mode's current candidate, else renderer_.
+    const Renderer& drawingRenderer() const;
+    // Re-renders at the window's framebuffer size when it changed (unless --fixed-size); a size the library
+    // refuses (target memory) keeps the old one, scaled, with the reason in the status line.
+    void followWindowSize(int fbw, int fbh);
     void drawWindow(int fbw, int fbh);
     const ImageRGBA8* shownView() const;  // the debug view's image on screen; nullptr: the frame
     void buildUi(int fbw, int fbh);
@@ -88,7 +94,8 @@ private:
     demo::RendererChoice initialChoice_, rc_;
     ViewerOptions options_;
     Scene scene_;
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0;          // the render size (follows the window unless --fixed-size)
+    int refusedWidth_ = 0, refusedHeight_ = 0;  // a window size the library refused, not tried again
     std::unique_ptr<GlContext> context_;
     GLFWwindow* window_ = nullptr;
     std::unique_ptr<Renderer> renderer_;

@@ -87,4 +87,15 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
     return stats_;
 }
 
+std::vector<GpuScene*> AutoModeRenderer::gpuScenes() {
+    std::vector<GpuScene*> all;
+    for (auto& r : renderers_)
+        for (GpuScene* s : r->gpuScenes()) all.push_back(s);
+    return all;
+}
+
+void AutoModeRenderer::checkObjectMaterial(const Material& material) const {
+    for (const auto& r : renderers_) r->checkObjectMaterial(material);
+}
+
 }  // namespace lidr

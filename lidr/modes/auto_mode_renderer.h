@@ -41,6 +41,11 @@ public:
     bool measuring() const { return chosen_ < 0; }
     // The renderer of a candidate, to inspect (e.g. the LidrRenderer's decisions).
     const Renderer& renderer(size_t candidate) const { return *renderers_[candidate]; }
+    // The candidate that drew the last frame (its index lists, tiles and decisions are that frame's).
+    const Renderer& lastRenderer() const { return *renderers_[size_t(last_)]; }
+
+    std::vector<GpuScene*> gpuScenes() override;
+    void checkObjectMaterial(const Material& material) const override;
 
 private:
     AutoModeOptions options_;

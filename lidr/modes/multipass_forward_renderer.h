@@ -48,6 +48,8 @@ public:
     }
     long meshDrawCalls() const { return meshDraws_; }  // light-pass mesh draws of the last frame
 
+    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
+
 private:
     MultipassOptions options_;
     GpuScene scene_;

@@ -15,7 +15,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
       targets_(info, width, height, msaaSamples),
       lightTable_(info, lightCapacity, forceFixedLightTable),
       timer_(info),
-      drawTransparent_(transparency && scene_.hasTransparent()),
+      transparency_(transparency),
       sampleShading_(sampleShading) {
     timer_.setEnabled(false);  // Renderer::setTiming turns it on
     if (sampleShading && !info.sampleShading)
@@ -63,7 +63,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
     timer_.end();
-    if (drawTransparent_) {
+    if (transparency_ && scene_.hasTransparent()) {
         timer_.begin("brute-force-transparent");
         RenderState t = transparentBlendState();  // the state every mode draws its layers with
         t.sampleShading = sampleShading_;

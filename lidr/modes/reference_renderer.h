@@ -29,6 +29,8 @@ public:
     }
     const char* timingMethod() const { return timer_.method(); }
 
+    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
+
 private:
     GpuScene scene_;
     RenderTargets targets_;
@@ -36,7 +38,7 @@ private:
     DepthPrepass depthPrepass_;
     gl::Program program_;
     FrameTimer timer_;
-    bool drawTransparent_ = false;
+    bool transparency_ = false;  // transparent meshes drawn where the scene has them (objects come and go)
     bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does
 };
 

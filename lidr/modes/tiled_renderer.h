@@ -81,6 +81,8 @@ public:
     // blue -> yellow up to `budget`, red past it; `transparent` shows the transparent lists.
     ImageRGBA8 tileHeatMap(int budget = 16, bool transparent = false) const;
 
+    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
+
 private:
     void buildProgram(int loopBound);
 

@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 
@@ -20,59 +21,137 @@ struct Vertex {
 };
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.materials) {
-    for (const Mesh& mesh : scene.meshes) {
+GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
+    std::vector<Vertex> vertices(mesh.positions.size());
+    glm::vec3 sum(0.0f);
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        std::memcpy(vertices[i].position, &mesh.positions[i], sizeof(float) * 3);
+        std::memcpy(vertices[i].normal, &mesh.normals[i], sizeof(float) * 3);
+        if (!mesh.texCoords.empty())
+            std::memcpy(vertices[i].texCoord, &mesh.texCoords[i], sizeof(float) * 2);
+        else
+            vertices[i].texCoord[0] = vertices[i].texCoord[1] = 0.0f;
+        sum += mesh.positions[i];
+    }
+    Batch b;
+    b.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(Vertex));
+    std::vector<uint32_t> reversed;
+    if (order == DrawOrder::Reversed) {  // triangles last to first, each keeping its winding
+        reversed.reserve(mesh.indices.size());
+        for (size_t t = mesh.triangleCount(); t-- > 0;)
+            reversed.insert(reversed.end(), mesh.indices.begin() + 3 * t, mesh.indices.begin() + 3 * t + 3);
+    }
+    const std::vector<uint32_t>& indices = order == DrawOrder::Reversed ? reversed : mesh.indices;
+    b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint32_t));
+    b.indexCount = static_cast<GLsizei>(indices.size());
+    b.triangles = mesh.triangleCount();
+    b.material = mesh.material;
+    b.objectCentroid = sum / float(std::max<size_t>(vertices.size(), 1));
+    b.objectMin = b.objectMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
+    for (const glm::vec3& p : mesh.positions) b.objectMin = glm::min(b.objectMin, p), b.objectMax = glm::max(b.objectMax, p);
+    placeBatch(b);
+    return b;
+}
+
+gl::Texture GpuScene::loadTexture(const Material& m) const {
+    if (m.diffuseTexture.empty()) return {};
+    int w = 0, h = 0, n = 0;
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(m.diffuseTexture.c_str(), &w, &h, &n, 4), stbi_image_free);
+    if (!data)
+        throw Error("material '" + m.name + "': cannot load texture '" + m.diffuseTexture + "': " + stbi_failure_reason());
+    // stb_image rows run top to bottom; OBJ texture coordinates have v up, so flip rows on upload.
+    std::vector<uint8_t> flipped(static_cast<size_t>(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], data.get() + static_cast<size_t>(h - 1 - y) * w * 4,
+                    static_cast<size_t>(w) * 4);
+    return gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(), GL_LINEAR_MIPMAP_LINEAR);
+}
+
+GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.materials), order_(order) {
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& mesh = scene.meshes[i];
         if (mesh.indices.empty()) continue;
-        std::vector<Vertex> vertices(mesh.positions.size());
-        glm::vec3 sum(0.0f);
-        for (size_t i = 0; i < vertices.size(); ++i) {
-            std::memcpy(vertices[i].position, &mesh.positions[i], sizeof(float) * 3);
-            std::memcpy(vertices[i].normal, &mesh.normals[i], sizeof(float) * 3);
-            if (!mesh.texCoords.empty())
-                std::memcpy(vertices[i].texCoord, &mesh.texCoords[i], sizeof(float) * 2);
-            else
-                vertices[i].texCoord[0] = vertices[i].texCoord[1] = 0.0f;
-            sum += mesh.positions[i];
-        }
-        Batch b;
-        b.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(Vertex));
-        std::vector<uint32_t> reversed;
-        if (order == DrawOrder::Reversed) {  // triangles last to first, each keeping its winding
-            reversed.reserve(mesh.indices.size());
-            for (size_t t = mesh.triangleCount(); t-- > 0;)
-                reversed.insert(reversed.end(), mesh.indices.begin() + 3 * t, mesh.indices.begin() + 3 * t + 3);
-        }
-        const std::vector<uint32_t>& indices = order == DrawOrder::Reversed ? reversed : mesh.indices;
-        b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint32_t));
-        b.indexCount = static_cast<GLsizei>(indices.size());
-        b.material = mesh.material;
-        b.centroid = sum / float(std::max<size_t>(vertices.size(), 1));
-        b.boundsMin = b.boundsMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
-        for (const glm::vec3& p : mesh.positions) b.boundsMin = glm::min(b.boundsMin, p), b.boundsMax = glm::max(b.boundsMax, p);
-        triangles_ += mesh.triangleCount();
+        Batch b = upload(mesh, order);
+        b.id = i;
+        triangles_ += b.triangles;
         batches_.push_back(std::move(b));
     }
+    nextId_ = scene.meshes.size();
     if (order == DrawOrder::Reversed) std::reverse(batches_.begin(), batches_.end());
-    for (const Material& m : materials_) {
-        if (m.diffuseTexture.empty()) {
-            textures_.emplace_back();
-            continue;
-        }
-        int w = 0, h = 0, n = 0;
-        std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(m.diffuseTexture.c_str(), &w, &h, &n, 4),
-                                                       stbi_image_free);
-        if (!data)
-            throw Error("material '" + m.name + "': cannot load texture '" + m.diffuseTexture +
-                        "': " + stbi_failure_reason());
-        // stb_image rows run top to bottom; OBJ texture coordinates have v up, so flip rows on upload.
-        std::vector<uint8_t> flipped(static_cast<size_t>(w) * h * 4);
-        for (int y = 0; y < h; ++y)
-            std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], data.get() + static_cast<size_t>(h - 1 - y) * w * 4,
-                        static_cast<size_t>(w) * 4);
-        textures_.push_back(gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(),
-                                                  GL_LINEAR_MIPMAP_LINEAR));
-    }
+    for (const Material& m : materials_) textures_.push_back(loadTexture(m));
     checkGl("GpuScene upload");
+}
+
+void GpuScene::placeBatch(Batch& b) const {
+    b.centroid = glm::vec3(b.transform * glm::vec4(b.objectCentroid, 1.0f));
+    // The world box of the object's box: its eight corners transformed.
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? b.objectMax.x : b.objectMin.x, (c & 2) ? b.objectMax.y : b.objectMin.y,
+                               (c & 4) ? b.objectMax.z : b.objectMin.z);
+        const glm::vec3 w(b.transform * glm::vec4(corner, 1.0f));
+        b.boundsMin = c ? glm::min(b.boundsMin, w) : w;
+        b.boundsMax = c ? glm::max(b.boundsMax, w) : w;
+    }
+}
+
+const GpuScene::Batch* GpuScene::findBatch(ObjectId id) const {
+    for (const Batch& b : batches_)
+        if (b.id == id) return &b;
+    return nullptr;
+}
+
+GpuScene::Batch& GpuScene::batchFor(ObjectId id) {
+    for (Batch& b : batches_)
+        if (b.id == id) return b;
+    throw Error("no object " + std::to_string(id) + " in the scene (ids: the Scene's mesh indices, then those addObject " +
+                "returned; removed ones and meshes without triangles do not exist)");
+}
+
+const glm::mat4& GpuScene::transform(ObjectId id) const { return const_cast<GpuScene*>(this)->batchFor(id).transform; }
+
+void GpuScene::setTransform(ObjectId id, const glm::mat4& objectToWorld) {
+    Batch& b = batchFor(id);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(objectToWorld[c][r]))
+                throw Error("object " + std::to_string(id) + ": the transform is not finite");
+    if (objectToWorld[0][3] != 0.0f || objectToWorld[1][3] != 0.0f || objectToWorld[2][3] != 0.0f || objectToWorld[3][3] != 1.0f)
+        throw Error("object " + std::to_string(id) + ": the transform must be affine (bottom row 0 0 0 1)");
+    const glm::mat3 linear(objectToWorld);
+    const float det = glm::determinant(linear);
+    if (!std::isfinite(det) || std::abs(det) < 1e-30f)
+        throw Error("object " + std::to_string(id) + ": the transform is not invertible (determinant " + std::to_string(det) + ")");
+    b.transform = objectToWorld;
+    b.normalMatrix = glm::transpose(glm::inverse(linear));
+    placeBatch(b);
+}
+
+ObjectId GpuScene::add(const Mesh& mesh, const Material& material) {
+    validateObject(mesh, material);
+    gl::Texture texture = loadTexture(material);
+    Mesh m = mesh;
+    m.material = int(materials_.size());
+    Batch b = upload(m, order_);
+    b.id = nextId_;
+    materials_.push_back(material);
+    textures_.push_back(std::move(texture));
+    triangles_ += b.triangles;
+    // Drawn after the objects already there (or before them, in reversed order): depth-EQUAL ties resolve as
+    // if the object had been the scene's last mesh.
+    if (order_ == DrawOrder::Reversed) batches_.insert(batches_.begin(), std::move(b));
+    else batches_.push_back(std::move(b));
+    checkGl("GpuScene::add");
+    return nextId_++;
+}
+
+void GpuScene::remove(ObjectId id) {
+    batchFor(id);  // throws for an unknown id
+    for (auto it = batches_.begin(); it != batches_.end(); ++it)
+        if (it->id == id) {
+            triangles_ -= it->triangles;
+            batches_.erase(it);  // its material stays (other objects may share it)
+            return;
+        }
 }
 
 bool GpuScene::hasTransparent() const {
@@ -95,6 +174,8 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
             program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
         }
     }
+    program.set("uModel", b.transform);
+    program.set("uNormalMatrix", b.normalMatrix);
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),

@@ -19,6 +19,10 @@ bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& bo
 // one fragment per pixel) draws in Reversed order to shade the same surface.
 enum class DrawOrder { AsGiven, Reversed };
 
+// An object is one of the Scene's meshes, named by its index in Scene::meshes, or one added later (the ids
+// continue from there and are never reused). Its geometry stays as uploaded; a transform places it in the world.
+using ObjectId = size_t;
+
 class GpuScene {
 public:
     GpuScene() = default;
@@ -42,20 +46,43 @@ public:
     bool batchTransparent(size_t batch) const { return materials_[size_t(batches_.at(batch).material)].opacity < 1.0f; }
     size_t triangleCount() const { return triangles_; }
 
+    // Dynamic scenes. setTransform places an object (object -> world; the Scene's meshes start at identity, their
+    // positions being world space); its bounds, used for light culling, follow. add uploads a mesh with its own
+    // material and returns its id; remove deletes one. Each throws lidr::Error (unknown id, a transform that is
+    // not finite or not invertible, a bad mesh or material) before changing anything.
+    void setTransform(ObjectId id, const glm::mat4& objectToWorld);
+    const glm::mat4& transform(ObjectId id) const;
+    ObjectId add(const Mesh& mesh, const Material& material);
+    void remove(ObjectId id);
+    bool contains(ObjectId id) const { return findBatch(id) != nullptr; }
+    ObjectId nextObjectId() const { return nextId_; }
+
 private:
     struct Batch {
+        ObjectId id = 0;
         gl::Buffer vertices, indices;
         GLsizei indexCount = 0;
+        size_t triangles = 0;
         int material = 0;
-        glm::vec3 centroid{0.0f};
+        glm::mat4 transform{1.0f};
+        glm::mat3 normalMatrix{1.0f};
+        glm::vec3 objectCentroid{0.0f}, objectMin{0.0f}, objectMax{0.0f};  // as uploaded
+        glm::vec3 centroid{0.0f};                                           // world, after the transform
         glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     };
+    Batch upload(const Mesh& mesh, DrawOrder order) const;
+    gl::Texture loadTexture(const Material& m) const;
+    void placeBatch(Batch& b) const;  // world centroid and bounds from the transform
+    const Batch* findBatch(ObjectId id) const;
+    Batch& batchFor(ObjectId id);
     void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
     void unbindGeometry() const;
     std::vector<Batch> batches_;
     std::vector<Material> materials_;
     std::vector<gl::Texture> textures_;  // one per material; empty texture when none
     size_t triangles_ = 0;
+    DrawOrder order_ = DrawOrder::AsGiven;
+    ObjectId nextId_ = 0;
 };
 
 }  // namespace lidr

@@ -1,11 +1,35 @@
 #include "lidr/render/renderer.h"
 
+#include "lidr/base/error.h"
+
 namespace lidr {
 
 double FrameStats::frameMilliseconds() const {
     double sum = 0.0;
     for (const PassTime& p : passes) sum += p.milliseconds;
     return sum;
+}
+
+void Renderer::setObjectTransform(ObjectId id, const glm::mat4& objectToWorld) {
+    // Every scene holds the same objects: the first one's checks stand for all, so a refusal changes nothing.
+    for (GpuScene* scene : gpuScenes()) scene->setTransform(id, objectToWorld);
+}
+
+ObjectId Renderer::addObject(const Mesh& mesh, const Material& material) {
+    validateObject(mesh, material);
+    checkObjectMaterial(material);
+    const std::vector<GpuScene*> scenes = gpuScenes();
+    ObjectId id = 0;
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const ObjectId got = scenes[i]->add(mesh, material);
+        if (i == 0) id = got;
+        else if (got != id) throw Error("addObject: the renderer's scenes disagree on object ids (a lidr bug)");
+    }
+    return id;
+}
+
+void Renderer::removeObject(ObjectId id) {
+    for (GpuScene* scene : gpuScenes()) scene->remove(id);
 }
 
 }  // namespace lidr

@@ -8,6 +8,7 @@
 #include "lidr/gl/frame_timer.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
+#include "lidr/render/gpu_scene.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
@@ -61,6 +62,20 @@ public:
     // frame or more later without stalling (FrameStats::timingLag), or, with waitForResults, this frame's
     // (stalls; lidr-demo and lidr-bench); on software rasterisers glFinish around each pass (gl/frame_timer.h).
     virtual void setTiming(bool on, bool waitForResults = false) = 0;
+
+    // Dynamic scenes (doc/embedding.md, "Moving, adding and removing objects"): without rebuilding the renderer.
+    // Objects are the Scene's meshes by index (at identity: their positions are world space) and those
+    // addObject returns. Lights need nothing of this: render() takes them every frame. Each throws lidr::Error
+    // (unknown id, a transform not finite, affine and invertible, a bad mesh or material, a transparent object
+    // for a renderer built without transparent layers) before changing anything.
+    void setObjectTransform(ObjectId id, const glm::mat4& objectToWorld);
+    ObjectId addObject(const Mesh& mesh, const Material& material);
+    void removeObject(ObjectId id);
+    // The GPU scenes this renderer draws, changed together by the three calls above (the automatic mode: every
+    // candidate's). For inspection; change objects through the calls above.
+    virtual std::vector<GpuScene*> gpuScenes() = 0;
+    // Throws lidr::Error where this renderer cannot draw an object of that material (addObject asks first).
+    virtual void checkObjectMaterial(const Material&) const {}
 
 protected:
     FrameStats stats_;

@@ -220,4 +220,12 @@ void Scene::validate(int maxResolution) const {
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
 }
 
+void validateObject(const Mesh& mesh, const Material& material) {
+    validateMaterial(material, 0);
+    Mesh m = mesh;
+    m.material = 0;
+    validateMesh(m, 0, 1);
+    if (mesh.indices.empty()) fail("mesh '" + mesh.name + "'", "has no triangles");
+}
+
 }  // namespace lidr

@@ -99,4 +99,9 @@ struct Scene {
 
 glm::vec3 evaluatePath(const LightPath& path, const glm::vec3& restPosition, float t);
 
+// Checks an object added to a renderer after construction (Renderer::addObject): the mesh as Scene::validate
+// checks a scene's meshes (its `material` index is ignored: the object brings its material) and the material.
+// Throws lidr::Error naming the problem.
+void validateObject(const Mesh& mesh, const Material& material);
+
 }  // namespace lidr

@@ -421,4 +421,13 @@ std::vector<uint8_t> LidrRenderer::readLightCounts() const {
     return s;
 }
 
+void LidrRenderer::checkObjectMaterial(const Material& material) const {
+    // The transparent layers' targets and lists are set up when the renderer is built, for a scene that has
+    // transparent meshes; a renderer built without them cannot take one later.
+    if (material.opacity < 1.0f && options_.transparency && !drawTransparent_)
+        throw Error("lidr: material '" + material.name + "' is transparent (opacity " + std::to_string(material.opacity) +
+                    ") but this renderer was built for a scene without transparent meshes; build it from a scene that has "
+                    "one (or with transparency off, which draws transparent objects not at all)");
+}
+
 }  // namespace lidr

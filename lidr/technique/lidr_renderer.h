@@ -98,6 +98,9 @@ public:
     // Lights in the order the volume pass draws them: priority high to low, then index low to high.
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
 
+    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
+    void checkObjectMaterial(const Material& material) const override;
+
 private:
     // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
     // seen; false when none can.

@@ -6,6 +6,8 @@ attribute vec3 aNormal;
 attribute vec2 aTexCoord;
 
 uniform mat4 uViewProj;
+uniform mat4 uModel;         // object -> world (identity for a Scene's meshes, whose positions are world space)
+uniform mat3 uNormalMatrix;  // inverse transpose of uModel's upper 3x3
 
 varying vec3 vWorldPos;
 varying vec3 vNormal;
@@ -14,8 +16,8 @@ varying vec2 vTexCoord;
 invariant gl_Position;
 
 void main() {
-    vWorldPos = aPosition;  // geometry is stored in world space
-    vNormal = aNormal;
+    vWorldPos = (uModel * vec4(aPosition, 1.0)).xyz;
+    vNormal = uNormalMatrix * aNormal;
     vTexCoord = aTexCoord;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    gl_Position = uViewProj * vec4(vWorldPos, 1.0);
 }
