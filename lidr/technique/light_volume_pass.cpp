@@ -235,7 +235,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     if (isShaderVolumeTest(test_) && !listSource_) return drawBatched(d, lights, colors);
     const gl::Program& program = programFor(d.targetCount);
     program.use();
-    program.set("uViewProj", camera_.viewProjection);
+    if (!listSource_) program.set("uViewProj", camera_.viewProjection);  // the pixel-list quads are in clip space
     if (listSource_) {
         uploadColorTable(d, colors);
         colorTable_.bind(gl::kUnitPixelListColors);
