@@ -87,7 +87,7 @@ const std::vector<std::string>& resultColumns() {
         "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
         "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "scene_triangles", "rounds",
         "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
-        "auto_index_bits", "auto_repacks"};
+        "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls"};
     return c;
 }
 
@@ -138,7 +138,9 @@ std::vector<std::string> csvCells(const Row& r) {
             r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : "", std::to_string(r.sceneTriangles),
             std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max),
             r.autoBudget ? std::to_string(r.autoBudget) : "", r.autoIndexBits ? std::to_string(r.autoIndexBits) : "",
-            r.autoBudget || r.autoIndexBits ? std::to_string(r.autoRepacks) : ""};
+            r.autoBudget || r.autoIndexBits ? std::to_string(r.autoRepacks) : "",
+            std::to_string(r.glCalls.stateCalls), std::to_string(r.glCalls.stateCallsSkipped),
+            std::to_string(r.glCalls.drawCalls)};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -176,6 +178,8 @@ nlohmann::json rowJson(const Row& r) {
     if (c.mode == "lidr") j["timing"]["light_volume_share"] = r.lightVolumeShare();
     j["light_data_bytes"] = r.lightDataBytes;
     j["drawn_lights"] = r.drawnLights;
+    j["gl_calls"] = {{"state_calls", r.glCalls.stateCalls}, {"state_calls_skipped", r.glCalls.stateCallsSkipped},
+                     {"draw_calls", r.glCalls.drawCalls}};
     if (!r.hasError)
         j["error"] = nullptr;  // a timing-only sweep: no reference rendered
     else

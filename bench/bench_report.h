@@ -11,6 +11,7 @@
 
 #include "bench_config.h"
 #include "lidr/eval/image_compare.h"
+#include "lidr/gl/gl_state.h"
 
 namespace lidr::bench {
 
@@ -36,6 +37,7 @@ struct Row {
     double lightVolumeMs = 0.0;        // median of the light-volume passes' sum (LIDR), else 0
     size_t lightDataBytes = 0;
     int drawnLights = 0;
+    GlCallCounters glCalls;            // the last measured frame's, through the state cache (lidr/gl/gl_state.h)
     // LIDR's automatic configuration, last measured frame: budget and width chosen, re-packs over all frames.
     int autoBudget = 0, autoIndexBits = 0, autoRepacks = 0;
     bool hasError = true;              // false: a timing-only sweep (SweepGroup::reference), no error columns

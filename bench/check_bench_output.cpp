@@ -137,6 +137,8 @@ int main(int argc, char** argv) {
             }
             if (!finiteNonNegative(row[c], v))
                 problem("results.csv row " + row[0] + ": " + columns[c] + " = '" + row[c] + "' is not a finite number >= 0");
+            if (columns[c] == "draw_calls" && v < 1)
+                problem("results.csv row " + row[0] + ": no draw call counted (the state cache's counters)");
             if (columns[c] == "frames") frames = v;
             if (columns[c] == "frame_ms_median") median = v;
             if (columns[c] == "frame_ms_min") lo = v;

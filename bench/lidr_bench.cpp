@@ -260,6 +260,7 @@ void fillTiming(Row& row, const Measured& m) {
     row.lightVolumeMs = Stat::of(vol).median;
     for (const std::string& p : order) row.passes.push_back({p, Stat::of(perPass[p])});
     row.drawnLights = m.frames.back().drawnLights;
+    row.glCalls = m.frames.back().glCalls;
     const AutoDecision& decision = m.frames.back().autoDecision;
     if (decision.autoBudget || decision.autoIndexBits) {
         row.autoBudget = decision.budget;

@@ -69,6 +69,21 @@ nlohmann::json errorJson(const ImageError& e) {
             {"pixels_over_1", e.pixelsOverThreshold}, {"compared_pixels", e.comparedPixels}};
 }
 
+// A frame's GL calls through the state cache (FrameStats::glCalls): summary.json's "gl_calls" and the text line.
+nlohmann::json glCallsJson(const GlCallCounters& c) {
+    return {{"state_calls", c.stateCalls}, {"state_calls_skipped", c.stateCallsSkipped}, {"draw_calls", c.drawCalls},
+            {"clears", c.clears}, {"program_binds", c.programBinds}, {"texture_binds", c.textureBinds},
+            {"framebuffer_binds", c.framebufferBinds}};
+}
+
+std::string glCallsLine(const GlCallCounters& c) {
+    std::ostringstream s;
+    s << "gl calls   " << c.stateCalls << " state calls (" << c.stateCallsSkipped << " skipped as redundant), "
+      << c.drawCalls << " draws, " << c.clears << " clears, " << c.programBinds << " program, " << c.textureBinds
+      << " texture, " << c.framebufferBinds << " framebuffer binds a frame\n";
+    return s.str();
+}
+
 std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
@@ -124,6 +139,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
+    summary["gl_calls"] = glCallsJson(stats.glCalls);
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
@@ -160,6 +176,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
+    s << glCallsLine(stats.glCalls);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
@@ -261,6 +278,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"measured_transparent_budget", decision.measuredTransparentBudget},
                        {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
+    summary["gl_calls"] = glCallsJson(stats.glCalls);
 
     if (renderer.perSampleIndices() && !dumpDir.empty())
         throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
@@ -343,6 +361,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                                                      : "budget " + std::to_string(decision.transparentBudget));
         s << "\n";
     }
+    s << glCallsLine(stats.glCalls);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";

@@ -1,11 +1,14 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/base/gl.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
 
 namespace lidr::gl {
@@ -31,7 +34,10 @@ void Object::reset() {
     switch (kind_) {
     case Kind::Texture: glDeleteTextures(1, &id_); break;
     case Kind::Renderbuffer: glDeleteRenderbuffers(1, &id_); break;
-    case Kind::Framebuffer: glDeleteFramebuffers(1, &id_); break;
+    case Kind::Framebuffer:
+        glDeleteFramebuffers(1, &id_);
+        StateCache::current().invalidate();  // GL binds framebuffer 0 if it was bound; its draw buffers go
+        break;
     case Kind::Buffer: glDeleteBuffers(1, &id_); break;
     case Kind::Program: glDeleteProgram(id_); break;
     case Kind::Query: glDeleteQueries(1, &id_); break;
@@ -80,6 +86,7 @@ Texture Texture::create2DMultisample(GLint internalFormat, int width, int height
 }
 
 void Texture::bind(int unit) const {
+    StateCache::current().countTextureBind();
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, id_);
 }
@@ -103,16 +110,16 @@ Framebuffer Framebuffer::create() {
     return f;
 }
 
-void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+void Framebuffer::bind() const { StateCache::current().bindFramebuffer(id_); }
 
 void Framebuffer::attachTexture(GLenum attachment, const Texture& t) {
-    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    StateCache::current().bindFramebuffer(id_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, t.samples() > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D,
                            t.id(), 0);
 }
 
 void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) {
-    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    StateCache::current().bindFramebuffer(id_);
     if (attachment == GL_DEPTH_STENCIL_ATTACHMENT && currentContextIsGles()) {
         // OpenGL ES 2.0 has no DEPTH_STENCIL_ATTACHMENT: a packed depth-stencil renderbuffer
         // (OES_packed_depth_stencil) is attached as depth and as stencil.
@@ -124,7 +131,7 @@ void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) 
 }
 
 void Framebuffer::checkComplete(const char* name) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, id_);
+    StateCache::current().bindFramebuffer(id_);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         char buf[160];
@@ -169,9 +176,58 @@ static GLuint compileShader(GLenum type, const std::string& glsl120, const std::
     return s;
 }
 
+namespace {
+// The names a GLSL source declares `uniform` (after include expansion; comments stripped first):
+// "uniform vec4 a, b[4];" gives a and b.
+void declaredUniforms(const std::string& source, std::vector<std::string>& out) {
+    std::string code;
+    code.reserve(source.size());
+    for (size_t i = 0; i < source.size(); ++i) {
+        if (source.compare(i, 2, "//") == 0) {
+            while (i < source.size() && source[i] != '\n') ++i;
+            code += '\n';
+        } else if (source.compare(i, 2, "/*") == 0) {
+            const size_t end = source.find("*/", i + 2);
+            i = end == std::string::npos ? source.size() : end + 1;
+            code += ' ';
+        } else {
+            code += source[i];
+        }
+    }
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (size_t at = code.find("uniform"); at != std::string::npos; at = code.find("uniform", at + 7)) {
+        if ((at > 0 && word(code[at - 1])) || (at + 7 < code.size() && word(code[at + 7]))) continue;
+        const size_t end = code.find(';', at);
+        if (end == std::string::npos) break;
+        // Drop array sizes, split the declarators; each one's last word is a name (the first also holds the type).
+        std::string decl;
+        int depth = 0;
+        for (size_t i = at + 7; i < end; ++i) {
+            if (code[i] == '[') ++depth;
+            if (depth == 0) decl += code[i];
+            if (code[i] == ']') --depth;
+        }
+        size_t start = 0;
+        for (;;) {
+            const size_t comma = decl.find(',', start);
+            std::string part = decl.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            size_t e = part.size();
+            while (e > 0 && !word(part[e - 1])) --e;
+            size_t b = e;
+            while (b > 0 && word(part[b - 1])) --b;
+            if (e > b) out.push_back(part.substr(b, e - b));
+            if (comma == std::string::npos) break;
+            start = comma + 1;
+        }
+    }
+}
+}  // namespace
+
 Program Program::create(const std::string& name, const std::string& vs, const std::string& fs,
                         const std::vector<std::pair<std::string, GLuint>>& attributes) {
     Program p;
+    declaredUniforms(vs, p.declared_);
+    declaredUniforms(fs, p.declared_);
     static_cast<Object&>(p) = Object(Kind::Program);
     p.name_ = name;
     GLuint v = compileShader(GL_VERTEX_SHADER, vs, name);
@@ -203,26 +259,48 @@ Program Program::create(const std::string& name, const std::string& vs, const st
     return p;
 }
 
-void Program::use() const { glUseProgram(id_); }
+void Program::use() const {
+    StateCache::current().countProgramBind();
+    glUseProgram(id_);
+}
 
-GLint Program::uniform(const char* n) const {
+bool Program::declares(const std::string& n) const {
+    return std::find(declared_.begin(), declared_.end(), n) != declared_.end();
+}
+
+GLint Program::location(const char* n) const {
     auto it = uniforms_.find(n);
     if (it != uniforms_.end()) return it->second;
+    if (!declares(n))
+        throw Error("program '" + name_ + "' has no uniform '" + n + "': none of its shaders declares it");
     GLint loc = glGetUniformLocation(id_, n);
     uniforms_.emplace(n, loc);
     return loc;
 }
 
-void Program::set(const char* n, int v) const { glUniform1i(uniform(n), v); }
-void Program::set(const char* n, float v) const { glUniform1f(uniform(n), v); }
-void Program::set(const char* n, const glm::vec2& v) const { glUniform2fv(uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec3& v) const { glUniform3fv(uniform(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::vec4& v) const { glUniform4fv(uniform(n), 1, glm::value_ptr(v)); }
+template <> void Uniform<int>::set(const int& v) const { glUniform1i(location_, v); }
+template <> void Uniform<float>::set(const float& v) const { glUniform1f(location_, v); }
+template <> void Uniform<glm::vec2>::set(const glm::vec2& v) const { glUniform2fv(location_, 1, glm::value_ptr(v)); }
+template <> void Uniform<glm::vec3>::set(const glm::vec3& v) const { glUniform3fv(location_, 1, glm::value_ptr(v)); }
+template <> void Uniform<glm::vec4>::set(const glm::vec4& v) const { glUniform4fv(location_, 1, glm::value_ptr(v)); }
+template <> void Uniform<glm::mat4>::set(const glm::mat4& v) const {
+    glUniformMatrix4fv(location_, 1, GL_FALSE, glm::value_ptr(v));
+}
+template <> void Uniform<float>::setArray(const float* v, int count) const { glUniform1fv(location_, count, v); }
+template <> void Uniform<glm::vec4>::setArray(const glm::vec4* v, int count) const {
+    glUniform4fv(location_, count, glm::value_ptr(v[0]));
+}
+
+void Program::set(const char* n, int v) const { glUniform1i(location(n), v); }
+void Program::set(const char* n, float v) const { glUniform1f(location(n), v); }
+void Program::set(const char* n, const glm::vec2& v) const { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec3& v) const { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec4& v) const { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::mat3& v) const {
-    glUniformMatrix3fv(uniform(n), 1, GL_FALSE, glm::value_ptr(v));
+    glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 void Program::set(const char* n, const glm::mat4& v) const {
-    glUniformMatrix4fv(uniform(n), 1, GL_FALSE, glm::value_ptr(v));
+    glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 
 }  // namespace lidr::gl

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/base/gl_types.h"
+#include "lidr/gl/bindings.h"
 
 namespace lidr::gl {
 
@@ -86,6 +87,32 @@ private:
     size_t bytes_ = 0;
 };
 
+// A uniform's location, looked up once (Program::uniform<T>), with a setter of its GLSL type. Looking up a
+// name that no shader of the program declares throws Error (a typo); a declared name the compiler optimised
+// away is location -1, and setting it does nothing, as in GL.
+template <typename T>
+class Uniform {
+public:
+    Uniform() = default;
+    void set(const T& v) const;
+    void setArray(const T* v, int count) const;  // uniform arrays: count elements from v
+    GLint location() const { return location_; }
+
+private:
+    friend class Program;
+    explicit Uniform(GLint location) : location_(location) {}
+    GLint location_ = -1;
+};
+
+template <> void Uniform<int>::set(const int& v) const;
+template <> void Uniform<float>::set(const float& v) const;
+template <> void Uniform<glm::vec2>::set(const glm::vec2& v) const;
+template <> void Uniform<glm::vec3>::set(const glm::vec3& v) const;
+template <> void Uniform<glm::vec4>::set(const glm::vec4& v) const;
+template <> void Uniform<glm::mat4>::set(const glm::mat4& v) const;
+template <> void Uniform<float>::setArray(const float* v, int count) const;
+template <> void Uniform<glm::vec4>::setArray(const glm::vec4* v, int count) const;
+
 class Program : public Object {
 public:
     Program() = default;
@@ -94,7 +121,20 @@ public:
                           const std::string& fragmentSource,
                           const std::vector<std::pair<std::string, GLuint>>& attributes);
     void use() const;
-    GLint uniform(const char* name) const;  // -1 when the compiler removed it; cached
+    // The location of `name` (-1 when the compiler removed it); throws Error when no shader declares it.
+    GLint location(const char* name) const;
+    template <typename T>
+    Uniform<T> uniform(const char* name) const {
+        return Uniform<T>(location(name));
+    }
+    bool declares(const std::string& uniformName) const;  // a `uniform` declaration in the program's sources
+    // Sets `name` only where the program declares it: lidr's shared shading and material uniforms, which a
+    // program's own material shader (LidrOptions::materialShader) may leave out.
+    template <typename T>
+    void setIfDeclared(const char* name, const T& v) const {
+        if (declares(name)) set(name, v);
+    }
+    // By name, for one-off values (the same check; typed handles are for what is set per draw).
     void set(const char* name, int v) const;
     void set(const char* name, float v) const;
     void set(const char* name, const glm::vec2& v) const;
@@ -106,10 +146,8 @@ public:
 
 private:
     std::string name_;
+    std::vector<std::string> declared_;  // uniform names the sources declare
     mutable std::unordered_map<std::string, GLint> uniforms_;
 };
-
-// Vertex attribute slots shared by every lidr program (bound before linking, so no queries are needed).
-enum Attribute : GLuint { kPosition = 0, kNormal = 1, kTexCoord = 2 };
 
 }  // namespace lidr::gl

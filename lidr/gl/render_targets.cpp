@@ -88,23 +88,21 @@ RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samp
         msaaFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, msaaDepthStencil_);
         msaaFbo_.checkComplete("scene colour MSAA");
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
 }
 
-void RenderTargets::bindColor() const {
-    if (samples_ > 0)
-        msaaFbo_.bind();
-    else
-        colorFbo_.bind();
-    drawToColorAttachment0();
-    glViewport(0, 0, width_, height_);
+PassDescription RenderTargets::colorPass(const ClearAction& clear) const {
+    return {samples_ > 0 ? msaaFbo_.id() : colorFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0},
+            clear};
 }
 
-void RenderTargets::bindSingleSample() const {
-    colorFbo_.bind();
-    drawToColorAttachment0();
-    glViewport(0, 0, width_, height_);
+PassDescription RenderTargets::singleSamplePass(const ClearAction& clear) const {
+    return {colorFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear};
 }
+
+void RenderTargets::bindColor() const { StateCache::current().beginPass(colorPass()); }
+
+void RenderTargets::bindSingleSample() const { StateCache::current().beginPass(singleSamplePass()); }
 
 void RenderTargets::resolve() const {
     if (samples_ == 0) return;
@@ -113,7 +111,7 @@ void RenderTargets::resolve() const {
     readFromColorAttachment0();
     drawToColorAttachment0();
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("MSAA resolve");
 }
 

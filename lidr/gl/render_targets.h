@@ -5,6 +5,7 @@
 // single-sample depth-stencil still serves the light-volume pass (LIDR's index texture is single-sample).
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/base/image.h"
 
 #include <string>
@@ -17,8 +18,12 @@ public:
     // Throws UnsupportedError for a context without FBOs or without the samples asked for, lidr::Error for
     // a size the driver cannot hold. samples: 0 (no MSAA) or 2..info.maxSamples.
     RenderTargets(const GlInfo& info, int width, int height, int samples = 0);
-    void bindColor() const;         // where shading goes: the MSAA FBO when samples > 0; viewport set
-    void bindSingleSample() const;  // the single-sample colour FBO with the shared depth-stencil
+    // Where shading goes: the MSAA FBO when samples > 0, the whole target, colour attachment 0; then `clear`.
+    PassDescription colorPass(const ClearAction& clear = {}) const;
+    // The single-sample colour FBO with the shared depth-stencil.
+    PassDescription singleSamplePass(const ClearAction& clear = {}) const;
+    void bindColor() const;         // StateCache::current().beginPass(colorPass()): no clear
+    void bindSingleSample() const;  // the same for singleSamplePass()
     void resolve() const;           // MSAA colour into color(); nothing without MSAA
     // resolve() timed as the "msaa-resolve" pass; nothing (and no pass) without MSAA.
     void resolve(class FrameTimer& timer) const;

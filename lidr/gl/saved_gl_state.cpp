@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "lidr/gl/gl_state.h"
+
 namespace lidr {
 
 namespace {
@@ -58,9 +60,13 @@ SavedGlState::SavedGlState() {
     sampleShading_ = f.sampleShading;
     multisampleTex_ = f.multisampleTexture;
     save();
+    StateCache::current().invalidate();  // the caller's state is unknown to lidr's cache
 }
 
-SavedGlState::~SavedGlState() { restore(); }
+SavedGlState::~SavedGlState() {
+    restore();
+    StateCache::current().invalidate();  // the caller's state is back, behind the cache's back
+}
 
 void SavedGlState::save() {
     // The caller's vertex array object stays bound: lidr's vertex setup changes its attributes 0..7 and

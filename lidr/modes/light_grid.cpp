@@ -187,11 +187,11 @@ void LightGridTextures::upload(const LightGrid& grid) {
 }
 
 void LightGridTextures::bind(const gl::Program& program, bool transparent) const {
-    (transparent ? transparentGrid_ : opaqueGrid_).bind(kUnitGrid);
-    list_.bind(kUnitList);
+    (transparent ? transparentGrid_ : opaqueGrid_).bind(gl::kUnitTileGrid);
+    list_.bind(gl::kUnitTileList);
     glActiveTexture(GL_TEXTURE0);
-    program.set("uTileGrid", kUnitGrid);
-    program.set("uLightList", kUnitList);
+    program.set("uTileGrid", gl::kUnitTileGrid);
+    program.set("uLightList", gl::kUnitTileList);
     program.set("uTileGridSize", glm::vec2(float(tilesX_), float(tilesY_)));
     program.set("uLightListRows", float(listRows_));
 }

@@ -84,7 +84,6 @@ private:
 class LightGridTextures {
 public:
     static constexpr int kListWidth = 1024;
-    static constexpr int kUnitGrid = 0, kUnitList = 1;  // the light table uses 8-10, materials 11
 
     LightGridTextures() = default;
     LightGridTextures(const GlInfo& info, int tilesX, int tilesY);

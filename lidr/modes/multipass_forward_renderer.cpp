@@ -50,6 +50,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     checkLightSpheres(lights, "forward-multipass");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
+    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = static_cast<int>(lights.size());
     meshDraws_ = 0;
@@ -66,16 +67,18 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     timer_.end();
 
     timer_.begin("ambient");
-    applyRenderState(RenderState{});
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    cache.clear(clear);
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
     // (1 for the ambient pass, then 2, 3, ... per light; cleared when they run out) lets one fragment per
     // pixel through: the first drawn. The scene is drawn in reverse order, so that is the fragment the
     // single-pass modes keep, the last drawn in scene order (lidr/render/gpu_scene.h).
     GLint stamp = 1;
-    applyRenderState(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
+    cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
     setShadingUniforms(ambient_, cam, shading);
     scene_.draw(ambient_, DrawFilter::Opaque, true);
@@ -88,7 +91,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     s.blendSrcAlpha = GL_ZERO, s.blendDstAlpha = GL_ONE;
     s.scissor = options_.scissor;
     s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
-    applyRenderState(s);  // the whole state once; per light only the scissor box and the stamp change below
+    cache.apply(s);  // per light only the scissor box and the stamp change below (the cache sets only those)
     light_.use();
     setShadingUniforms(light_, cam, shading);
     lightTable_.bind(light_);
@@ -115,15 +118,15 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         const float radius = l.radius + reach;
         glm::ivec4 rect;
         if (!spherePixelRect(cam, l.position, radius, rect)) continue;  // touches no pixel
-        if (options_.scissor) glScissor(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
+        if (options_.scissor) s.scissorBox = glm::ivec4(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
         if (++stamp > 255) {  // every stamp used since the last clear: start again from a clear stencil
-            glDisable(GL_SCISSOR_TEST);
-            glClearStencil(0);
-            glClear(GL_STENCIL_BUFFER_BIT);
-            if (options_.scissor) glEnable(GL_SCISSOR_TEST);
+            ClearAction clearStamps;
+            clearStamps.stencil = true;
+            cache.clear(clearStamps);
             stamp = 1;
         }
-        glStencilFunc(GL_NOTEQUAL, stamp, 0xFF);
+        s.stencil.ref = stamp;
+        cache.apply(s);
         light_.set("uLightIndex", float(i + 1));
         const int drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
             if (!options_.cullMeshes) return true;
@@ -136,11 +139,11 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         ++stats_.drawnLights;
     }
     stats_.volumeDrawCalls = meshDraws_;
-    applyRenderState(RenderState{});
+    cache.apply(RenderState{});
     timer_.end();
     targets_.resolve(timer_);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("MultipassForwardRenderer::render");
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();

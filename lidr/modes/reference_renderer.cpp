@@ -33,6 +33,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));
     stats_ = FrameStats{};
+    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = stats_.drawnLights = static_cast<int>(lights.size());
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
@@ -46,14 +47,16 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     timer_.end();
 
     timer_.begin("brute-force");
-    applyRenderState(RenderState{});
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    cache.clear(clear);
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_EQUAL;
     s.sampleShading = sampleShading_;
-    applyRenderState(s);
+    cache.apply(s);
     program_.use();
     setShadingUniforms(program_, cam, shading);
     program_.set("uLightCount", float(lights.size()));
@@ -64,13 +67,13 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
         timer_.begin("brute-force-transparent");
         RenderState t = transparentBlendState();  // the state every mode draws its layers with
         t.sampleShading = sampleShading_;
-        applyRenderState(t);
+        cache.apply(t);
         scene_.drawTransparentSorted(program_, cam.eye);
         timer_.end();
     }
-    applyRenderState(RenderState{});
+    cache.apply(RenderState{});
     targets_.resolve(timer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("reference render");
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();

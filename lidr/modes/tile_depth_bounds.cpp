@@ -54,7 +54,7 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
             c.columnsFbo.checkComplete("tile depth reduction (columns)");
             c.tilesFbo.checkComplete("tile depth reduction (tiles)");
         }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
 
     prepassProgram_ = gl::Program::create("tile-prez", buildShaderSource("geometry.vert"),
                                           buildShaderSource("depth_to_color.frag"), geometryAttributes());
@@ -106,7 +106,7 @@ void TileDepthBounds::createTargets(const gl::Renderbuffer& depthStencil) {
         chains_.push_back(makeChain());
         if (halfZ_) splitChains_.push_back(makeChain());
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("TileDepthBounds targets");
 }
 
@@ -126,35 +126,31 @@ size_t TileDepthBounds::bytes() const {
 }
 
 void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camera) const {
-    prepassFbo_.bind();
-    drawToColorAttachment0();
-    glViewport(0, 0, width_, height_);
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = clear.depth = clear.stencil = true;
+    clear.colorValue = glm::vec4(1.0f);  // depth 1 (the far plane) in both formats
+    cache.beginPass({prepassFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
-    applyRenderState(s);  // masks open for the clear
-    setClearDepth(1.0f);
-    glClearStencil(0);
-    glClearColor(1.0f, 1.0f, 1.0f, 1.0f);  // depth 1 (the far plane) in both formats
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    cache.apply(s);
     prepassProgram_.use();
     prepassProgram_.set("uViewProj", camera.viewProjection);
     scene.draw(prepassProgram_, DrawFilter::Opaque, false);
-    applyRenderState(RenderState{});
+    cache.apply(RenderState{});
     checkGl("tile pre-Z");
 }
 
 void TileDepthBounds::runPass(const gl::Program& program, const gl::Texture& input, const gl::Framebuffer& output,
                               int outW, int outH) const {
-    output.bind();
-    drawToColorAttachment0();
-    glViewport(0, 0, outW, outH);
+    StateCache::current().beginPass({output.id(), glm::ivec4(0, 0, outW, outH), {GL_COLOR_ATTACHMENT0}, {}});
     program.use();
-    input.bind(0);
-    program.set("uInput", 0);
+    input.bind(gl::kUnitReductionInput);
+    program.set("uInput", gl::kUnitReductionInput);
     program.set("uInputSize", glm::vec2(float(input.width()), float(input.height())));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
 }
 
 std::vector<float> TileDepthBounds::readChain(const Chain& chain, int component) const {
@@ -179,7 +175,7 @@ std::vector<float> TileDepthBounds::readChain(const Chain& chain, int component)
 }
 
 std::vector<TileDepthRange> TileDepthBounds::reduce() const {
-    applyRenderState(RenderState{});
+    StateCache::current().apply(RenderState{});
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -190,11 +186,11 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     for (size_t c = 0; c < splitChains_.size(); ++c) {  // half-Z: needs the min/max tiles just reduced
         const gl::Program& p = splitHorizontal_[c];
         p.use();
-        chains_[0].tiles.bind(1);
-        p.set("uTileMin", 1);
+        chains_[0].tiles.bind(gl::kUnitTileDepthMin);
+        p.set("uTileMin", gl::kUnitTileDepthMin);
         if (chains_.size() > 1) {
-            chains_[1].tiles.bind(2);
-            p.set("uTileMax", 2);
+            chains_[1].tiles.bind(gl::kUnitTileDepthMax);
+            p.set("uTileMax", gl::kUnitTileDepthMax);
         }
         p.set("uTileGridSize", glm::vec2(float(tilesX_), float(tilesY_)));
         runPass(p, depthCopy_, splitChains_[c].columnsFbo, tilesX_, height_);
@@ -202,7 +198,7 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     }
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    for (int unit : {2, 1, 0}) {
+    for (int unit : {gl::kUnitTileDepthMax, gl::kUnitTileDepthMin, gl::kUnitReductionInput}) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
@@ -222,7 +218,7 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
             out[t].nearMaxDepth = nearMaxs[t];
         }
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("tile depth reduction");
     return out;
 }

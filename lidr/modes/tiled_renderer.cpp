@@ -82,6 +82,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     checkLightSpheres(lights, "tiled");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
+    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = static_cast<int>(lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
@@ -126,24 +127,22 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     timer_.end();
 
     timer_.begin("tiled-forward");
-    targets_.bindColor();
-    applyRenderState(RenderState{});
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    clear.depth = clear.stencil = !options_.preZ;  // without pre-Z this pass writes its own depth
+    cache.beginPass(targets_.colorPass(clear));
     RenderState s;
     s.depthTest = true;
     if (options_.preZ) {
-        glClear(GL_COLOR_BUFFER_BIT);
         s.depthFunc = GL_EQUAL;  // the pre-Z depth: one shaded fragment per pixel
         s.depthWrite = false;
     } else {
-        s.depthWrite = true;  // masks open for the clear
-        applyRenderState(s);
-        setClearDepth(1.0f);
-        glClearStencil(0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        s.depthWrite = true;
         s.depthFunc = GL_LEQUAL;  // the last fragment at the nearest depth stays, as with the pre-Z and EQUAL
     }
-    applyRenderState(s);
+    cache.apply(s);
     program_.use();
     setShadingUniforms(program_, cam, shading);
     lightTable_.bind(program_);
@@ -153,21 +152,20 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
 
     if (transparent) {
         timer_.begin("tiled-transparent");
-        applyRenderState(transparentBlendState());  // back to front over the opaque depth, no depth writes
+        cache.apply(transparentBlendState());  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program_, true);
         scene_.drawTransparentSorted(program_, cam.eye);
         timer_.end();
     }
-    applyRenderState(RenderState{});  // no scissor or masks on the resolve blit
+    cache.apply(RenderState{});  // no scissor or masks on the resolve blit
     targets_.resolve(timer_);
 
-    applyRenderState(RenderState{});
-    for (int unit : {LightGridTextures::kUnitGrid, LightGridTextures::kUnitList}) {
+    for (int unit : {gl::kUnitTileGrid, gl::kUnitTileList}) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("TiledRenderer::render");
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();

@@ -18,21 +18,20 @@ DepthPrepass::DepthPrepass()
                                    buildShaderSource("depth_only.frag"), geometryAttributes())) {}
 
 void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) const {
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.depth = clear.stencil = true;
+    cache.clear(clear);
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
-    s.stencil.writeMask = 0xFF;
-    applyRenderState(s);  // masks open for the clear
-    setClearDepth(1.0f);
-    glClearStencil(0);
-    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     s.colorMask = glm::bvec4(false);
-    applyRenderState(s);
+    cache.apply(s);
     program_.use();
     program_.set("uViewProj", camera.viewProjection);
     scene.draw(program_, DrawFilter::Opaque, false);
-    applyRenderState(RenderState{});
+    cache.apply(RenderState{});
     checkGl("depth pre-pass");
 }
 

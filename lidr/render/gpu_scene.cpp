@@ -9,6 +9,7 @@
 #include <stb_image.h>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 
 namespace lidr {
 
@@ -157,16 +158,17 @@ bool GpuScene::hasTransparent() const {
 void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const {
     if (setMaterials) {
         const Material& m = materials_[b.material];
-        program.set("uMaterialDiffuse", m.diffuse);
-        program.set("uMaterialSpecular", m.specular);
-        program.set("uMaterialShininess", m.shininess);
-        program.set("uMaterialOpacity", m.opacity);
-        program.set("uMaterialEmissive", m.emissive);
+        // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
+        program.setIfDeclared("uMaterialDiffuse", m.diffuse);
+        program.setIfDeclared("uMaterialSpecular", m.specular);
+        program.setIfDeclared("uMaterialShininess", m.shininess);
+        program.setIfDeclared("uMaterialOpacity", m.opacity);
+        program.setIfDeclared("uMaterialEmissive", m.emissive);
         const gl::Texture& tex = textures_[b.material];
-        program.set("uMaterialHasTexture", tex ? 1.0f : 0.0f);
+        program.setIfDeclared("uMaterialHasTexture", tex ? 1.0f : 0.0f);
         if (tex) {
-            tex.bind(kMaterialTextureUnit);
-            program.set("uMaterialTexture", kMaterialTextureUnit);
+            tex.bind(gl::kUnitMaterial);
+            program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
         }
     }
     program.set("uModel", b.transform);
@@ -182,7 +184,7 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     glVertexAttribPointer(gl::kTexCoord, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, texCoord)));
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());
-    glDrawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
+    StateCache::current().drawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
 }
 
 void GpuScene::unbindGeometry() const {

@@ -25,7 +25,6 @@ using ObjectId = size_t;
 
 class GpuScene {
 public:
-    static constexpr int kMaterialTextureUnit = 11;  // above the index targets (0-7) and the light table (8-10)
     GpuScene() = default;
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene, DrawOrder order = DrawOrder::AsGiven);

@@ -115,14 +115,14 @@ void LightTable::update(const std::vector<PointLight>& lights) {
 
 void LightTable::bind(const gl::Program& program) const {
     const TextureSet& set = sets_[current_];
-    set.posRadius.bind(kUnitPosRadius);
-    set.color.bind(kUnitColor);
-    program.set("uLightPosRadius", kUnitPosRadius);
-    program.set("uLightColor", kUnitColor);
+    set.posRadius.bind(gl::kUnitLightPosRadius);
+    set.color.bind(gl::kUnitLightColor);
+    program.set("uLightPosRadius", gl::kUnitLightPosRadius);
+    program.set("uLightColor", gl::kUnitLightColor);
     program.set("uLightTableRows", float(rows_));
     if (format_ == LightTableFormat::Fixed16) {
-        set.posRadiusLow.bind(kUnitPosRadiusLow);
-        program.set("uLightPosRadiusLow", kUnitPosRadiusLow);
+        set.posRadiusLow.bind(gl::kUnitLightPosRadiusLow);
+        program.set("uLightPosRadiusLow", gl::kUnitLightPosRadiusLow);
         program.set("uLightBoundsMin", boundsMin_);
         program.set("uLightBoundsExtent", boundsExtent_);
         program.set("uLightRadiusScale", radiusScale_);

@@ -18,8 +18,6 @@ enum class LightTableFormat { Float, Fixed16 };
 class LightTable {
 public:
     static constexpr int kWidth = 256;
-    // Units above the (up to 8) light-index textures, which take units 0..7.
-    static constexpr int kUnitPosRadius = 8, kUnitColor = 9, kUnitPosRadiusLow = 10;
 
     LightTable() = default;
     // Room for `capacity` lights (plus the null light). Fixed16 is chosen when the context has no float

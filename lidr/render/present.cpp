@@ -24,16 +24,16 @@ void FramePresenter::present(const RenderTargets& targets, GLuint framebuffer, i
     if (width <= 0 || height <= 0)
         throw Error("presentFrame: empty rectangle " + std::to_string(width) + "x" + std::to_string(height));
     SavedGlState saved;
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glViewport(x, y, width, height);
-    applyRenderState(RenderState{});
+    StateCache& cache = StateCache::current();
+    cache.beginPass({framebuffer, glm::ivec4(x, y, width, height), {}, {}});  // the caller's draw buffers
+    cache.apply(RenderState{});
     program_.use();
-    targets.color().bind(0);
-    program_.set("uFrame", 0);
+    targets.color().bind(gl::kUnitPresentedFrame);
+    program_.set("uFrame", gl::kUnitPresentedFrame);
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(gl::kPosition);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    cache.drawArrays(GL_TRIANGLES, 0, 3);
     checkGl("presentFrame");
 }
 

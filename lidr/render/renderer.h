@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lidr/gl/frame_timer.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/scene/scene.h"
@@ -39,6 +40,7 @@ struct FrameStats {
     int sceneLights = 0;
     int drawnLights = 0;  // lights the frame used after culling
     long volumeDrawCalls = 0;
+    GlCallCounters glCalls;  // what the frame asked of GL: state calls issued and skipped, draws, binds (gl_state.h)
     int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
     bool transparentVolumePassSkipped = false;  // LIDR: no transparent surface in view, no pass drawn
     AutoDecision autoDecision;

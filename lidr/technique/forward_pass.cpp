@@ -10,11 +10,11 @@ namespace lidr {
 
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
     program.set("uViewProj", camera.viewProjection);
-    program.set("uEyePosition", camera.eye);
-    program.set("uAmbient", shading.ambient);
+    program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
+    program.setIfDeclared("uAmbient", shading.ambient);
     // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
     // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
-    program.set("uMaterialTexture", GpuScene::kMaterialTextureUnit);
+    program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
 }
 
 namespace {
@@ -70,16 +70,16 @@ void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& i
     setShadingUniforms(program_, camera, shading);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
     for (int i = 0; i < indices.count(); ++i) {
-        indices.texture(i).bind(i);
-        program_.set(("uIndexTex" + std::to_string(i)).c_str(), i);
+        indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
+        program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
     table.bind(program_);
 }
 
 void ForwardPass::unbindInputs(const IndexTargets& indices) const {
-    applyRenderState(RenderState{});
+    StateCache::current().apply(RenderState{});
     for (int i = 0; i < indices.count(); ++i) {
-        glActiveTexture(GL_TEXTURE0 + i);
+        glActiveTexture(GL_TEXTURE0 + gl::kUnitIndexTarget0 + i);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
@@ -88,26 +88,21 @@ void ForwardPass::unbindInputs(const IndexTargets& indices) const {
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
                       bool afterPrepass) const {
-    targets.bindColor();
-    RenderState clear;
-    clear.depthWrite = !afterPrepass;  // masks open for the depth clear
-    applyRenderState(clear);
-    glClearColor(shading.background.r, shading.background.g, shading.background.b, 1.0f);
-    if (afterPrepass) {
-        glClear(GL_COLOR_BUFFER_BIT);
-    } else {
-        // No pre-pass depth here: the MSAA target never had one, the single-sample one holds the volume
-        // pass's cleared depth. Either way this pass writes its own.
-        setClearDepth(1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
+    // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
+    clear.depth = !afterPrepass;
+    cache.beginPass(targets.colorPass(clear));
     RenderState s;
     s.depthTest = true;
     // Either way the last fragment drawn at the nearest depth is the one left (lidr/render/gpu_scene.h: DrawOrder).
     s.depthFunc = afterPrepass ? GL_EQUAL : GL_LEQUAL;
     s.depthWrite = !afterPrepass;
     s.sampleShading = perSample_;
-    applyRenderState(s);
+    cache.apply(s);
     bindInputs(targets, indices, table, camera, shading);
     scene.draw(program_, DrawFilter::Opaque, true);
     unbindInputs(indices);
@@ -117,10 +112,11 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
 void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                                  const LightTable& table, const CameraMatrices& camera,
                                  const ShadingParameters& shading) const {
-    targets.bindColor();
+    StateCache& cache = StateCache::current();
+    cache.beginPass(targets.colorPass());
     RenderState s = transparentBlendState();
     s.sampleShading = perSample_;
-    applyRenderState(s);
+    cache.apply(s);
     bindInputs(targets, indices, table, camera, shading);
     scene.drawTransparentSorted(program_, camera.eye);
     unbindInputs(indices);

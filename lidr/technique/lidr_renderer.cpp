@@ -142,7 +142,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             depthTextureFbo_ = gl::Framebuffer::create();
             depthTextureFbo_.attachTexture(GL_DEPTH_ATTACHMENT, depthTexture_);
             depthTextureFbo_.checkComplete("pre-pass depth texture (OpenGL ES)");
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            StateCache::current().bindFramebuffer(0);
         }
     }
     selectVariant(first.budget, first.indexBits);
@@ -215,6 +215,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
                     " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     stats_ = FrameStats{};
+    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = static_cast<int>(lights.size());
 
@@ -265,18 +266,16 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
                 targets_.bindSingleSample();
                 checkGl("pre-pass depth texture for the volume tests (OpenGL ES)");
             } else {
-                depthTexture_.bind(0);
+                depthTexture_.bind(gl::kUnitDepthCopy);
                 glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
                 checkGl("depth copy for the volume tests");
             }
         }
         timer_.end();
     } else {
-        RenderState clearable;
-        clearable.depthWrite = true;
-        applyRenderState(clearable);
-        setClearDepth(1.0f);
-        glClear(GL_DEPTH_BUFFER_BIT);
+        ClearAction clear;
+        clear.depth = true;
+        StateCache::current().clear(clear);
     }
 
     // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
@@ -326,7 +325,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
 
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     checkGl("LidrRenderer::render");
     return stats_;
 }
@@ -443,7 +442,7 @@ std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
         glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
         out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     return out;
 }
 
@@ -461,7 +460,7 @@ std::vector<uint8_t> LidrRenderer::readLightCounts() const {
     std::vector<uint8_t> s = targets_.readStencil();
     const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
     for (uint8_t& v : s) v &= mask;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
     return s;
 }
 

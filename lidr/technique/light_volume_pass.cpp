@@ -51,7 +51,7 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
             fromFbos_.push_back(std::move(f));
         }
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    StateCache::current().bindFramebuffer(0);
 }
 
 const gl::Framebuffer& IndexTargets::framebufferFrom(int first) const {
@@ -120,7 +120,7 @@ const gl::Program& LightVolumePass::batchProgramFor(int targetCount) const {
         p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
                                 buildShaderSource("light_volume_batch.vert", defs),
                                 buildShaderSource("light_volume_sphere.frag", defs),
-                                {{"aPosition", gl::kPosition}, {"aSlot", kSlotAttribute}});
+                                {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
     }
     return p;
 }
@@ -151,22 +151,19 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
     targets_ = &targets;
     camera_ = camera;
     drawCalls_ = 0;
-    targets.framebuffer().bind();
-    std::vector<GLenum> all;
-    for (int i = 0; i < targets.count(); ++i) all.push_back(GL_COLOR_ATTACHMENT0 + i);
-    if (!gles_ || maxDrawTargets_ > 1) glDrawBuffers(static_cast<GLsizei>(all.size()), all.data());
-    glViewport(0, 0, targets.width(), targets.height());
-    applyRenderState(RenderState{});  // all masks open for the clear
-    glClearColor(0, 0, 0, 0);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    PassDescription pass{targets.framebuffer().id(), glm::ivec4(0, 0, targets.width(), targets.height()), {}, {}};
+    // OpenGL ES without EXT_draw_buffers draws to COLOR_ATTACHMENT0 only: its draw buffers are left as they are.
+    if (!gles_ || maxDrawTargets_ > 1)
+        for (int i = 0; i < targets.count(); ++i) pass.drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + i);
+    pass.clear.color = pass.clear.stencil = true;  // index 0 (the null light) everywhere, no light counted
+    StateCache::current().beginPass(pass);
     if (isShaderVolumeTest(test_) && !listSource_) {
         glBindBuffer(GL_ARRAY_BUFFER, batchVertices_.id());
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
         glEnableVertexAttribArray(gl::kPosition);
         glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-        glEnableVertexAttribArray(kSlotAttribute);
-        glVertexAttribPointer(kSlotAttribute, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+        glEnableVertexAttribArray(gl::kVolumeSlot);
+        glVertexAttribPointer(gl::kVolumeSlot, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
                               reinterpret_cast<const void*>(3 * sizeof(float)));
     } else {
         glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
@@ -219,12 +216,12 @@ void LightVolumePass::drawVolume(const VolumeLight& light) const {
     if (listSource_) {
         const size_t step = light.index - 1;
         if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
-        listSource_->steps[step]->bind(0);
-        glDrawArrays(GL_TRIANGLES, 0, 6);
+        listSource_->steps[step]->bind(gl::kUnitPixelListStep);
+        StateCache::current().drawArrays(GL_TRIANGLES, 0, 6);
     } else {
         const int level = detailFor(light);
-        glDrawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
-                       reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
+        StateCache::current().drawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
+                                           reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
     }
     ++drawCalls_;
 }
@@ -254,20 +251,25 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     if (isShaderVolumeTest(test_) && !listSource_) return drawBatched(d, lights, colors);
     const gl::Program& program = programFor(d.targetCount);
     program.use();
-    program.set("uViewProj", camera_.viewProjection);
+    if (!listSource_) program.set("uViewProj", camera_.viewProjection);  // the pixel-list quads are in clip space
     if (listSource_) {
         uploadColorTable(d, colors);
-        colorTable_.bind(1);
-        program.set("uStepIndices", 0);
-        program.set("uColorTable", 1);
+        colorTable_.bind(gl::kUnitPixelListColors);
+        program.set("uStepIndices", gl::kUnitPixelListStep);
+        program.set("uColorTable", gl::kUnitPixelListColors);
         program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
         program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
         program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
     }
     beginDraw(d);
-    const GLint posLoc = listSource_ ? -1 : program.uniform("uLightPosRadius");
-    const GLint colorLoc = listSource_ ? -1 : program.uniform("uIndexColor");
-    const GLint clampLoc = listSource_ ? -1 : program.uniform("uClampToFar");
+    // Per light: looked up once per draw, set through typed handles (the pixel-list program has none of them).
+    gl::Uniform<glm::vec4> posRadiusUniform, indexColorUniform;
+    gl::Uniform<float> clampUniform;
+    if (!listSource_) {
+        posRadiusUniform = program.uniform<glm::vec4>("uLightPosRadius");
+        indexColorUniform = program.uniform<glm::vec4>("uIndexColor");
+        clampUniform = program.uniform<float>("uClampToFar");
+    }
 
     // The volume test proper: back faces (cull front) at or behind the surface.
     RenderState inside = backFaceState(d);
@@ -348,7 +350,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     };
 
     enum Choice { kInside, kInsideNoDepth, kFront };
-    int applied = -1;  // re-applied only when the choice changes
+    StateCache& cache = StateCache::current();  // sets per light only what differs from the last draw
     // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
     auto stateFor = [&](int choice, const RenderState& base) {
         RenderState st = base;
@@ -363,41 +365,36 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     for (const VolumeLight& l : lights) {
         const bool clampToFar = marksWholeFootprint(l);
         if (!listSource_) {
-            glUniform4fv(posLoc, 1, glm::value_ptr(l.posRadius));
+            posRadiusUniform.set(l.posRadius);
             const IndexColors c = colors(l.index);
-            glUniform4fv(colorLoc, d.targetCount, glm::value_ptr(c[0]));
-            glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+            indexColorUniform.setArray(c.data(), d.targetCount);
+            clampUniform.set(clampToFar ? 1.0f : 0.0f);
         }
         if (test_ == VolumeTest::ExactStencil) {
-            applyRenderState(mark);
+            cache.apply(mark);
             drawVolume(l);
-            applyRenderState(clampToFar ? insideNoDepth : inside);
+            cache.apply(clampToFar ? insideNoDepth : inside);
             drawVolume(l);
             RenderState c2 = count;
             if (clampToFar) c2.depthFunc = GL_ALWAYS;
-            applyRenderState(c2);
+            cache.apply(c2);
             drawVolume(l);
-            applyRenderState(unmark);
+            cache.apply(unmark);
             drawVolume(l);
-            applied = -1;
             continue;
         }
         int want = clampToFar ? kInsideNoDepth : kInside;
         if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
         if (separateCount) {
             if (d.writesColor()) {
-                applyRenderState(stateFor(want, inside));
+                cache.apply(stateFor(want, inside));
                 drawVolume(l);
             }
-            applyRenderState(stateFor(want, count));
+            cache.apply(stateFor(want, count));
             drawVolume(l);
-            applied = -1;
             continue;
         }
-        if (want != applied) {
-            applyRenderState(stateFor(want, inside));
-            applied = want;
-        }
+        cache.apply(stateFor(want, inside));
         drawVolume(l);
     }
     checkGl(("light-volume draw '" + d.name + "'").c_str());
@@ -424,22 +421,21 @@ void LightVolumePass::beginDraw(const VolumeDraw& d) {
     if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
         (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
         throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
+    StateCache& cache = StateCache::current();
     if (d.restartCount) {
-        RenderState clear;  // stencil only
-        clear.colorMask = glm::bvec4(false);
-        applyRenderState(clear);
-        glClearStencil(0);
-        glClear(GL_STENCIL_BUFFER_BIT);
+        ClearAction clear;
+        clear.stencil = true;
+        cache.clear(clear);
     }
     std::vector<GLenum> buffers;
     if (gles_) {  // gl_FragData[i] goes to COLOR_ATTACHMENTi only: the targets from firstTarget on start at 0
         targets_->framebufferFrom(d.firstTarget).bind();
         for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + i);
-        if (maxDrawTargets_ > 1) glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+        if (maxDrawTargets_ > 1) cache.setDrawBuffers(buffers);
         return;
     }
     for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
-    glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+    cache.setDrawBuffers(buffers);
 }
 
 void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
@@ -457,8 +453,8 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
     program.set("uRadiusScale", kSphereRadiusScale);
     program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
-    program.set("uDepth", 0);
-    depth_->bind(0);
+    program.set("uDepth", gl::kUnitDepthCopy);
+    depth_->bind(gl::kUnitDepthCopy);
     beginDraw(d);
 
     // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
@@ -481,10 +477,11 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
     noPreTest.depthTest = false;
 
     const int batch = batchFor(d.targetCount);
-    const GLint lightsLoc = program.uniform("uLights"), colorsLoc = program.uniform("uIndexColors"),
-                clampLoc = program.uniform("uClampToFar");
+    const auto lightsUniform = program.uniform<glm::vec4>("uLights");
+    const auto colorsUniform = program.uniform<glm::vec4>("uIndexColors");
+    const auto clampUniform = program.uniform<float>("uClampToFar");
     std::vector<glm::vec4> lightData(static_cast<size_t>(batch)), colorData(static_cast<size_t>(batch) * d.targetCount);
-    int applied = -1;
+    StateCache& cache = StateCache::current();
     for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
         const size_t n = std::min(lights.size() - first, size_t(batch));
         bool clampToFar = false;
@@ -495,27 +492,23 @@ void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeL
             for (int t = 0; t < d.targetCount; ++t) colorData[i * size_t(d.targetCount) + size_t(t)] = c[size_t(t)];
             clampToFar = clampToFar || (!depthClamp_ && reachesFarPlane(l));
         }
-        glUniform4fv(lightsLoc, GLsizei(n), glm::value_ptr(lightData[0]));
-        glUniform4fv(colorsLoc, GLsizei(n) * d.targetCount, glm::value_ptr(colorData[0]));
-        glUniform1f(clampLoc, clampToFar ? 1.0f : 0.0f);
+        lightsUniform.setArray(lightData.data(), int(n));
+        colorsUniform.setArray(colorData.data(), int(n) * d.targetCount);
+        clampUniform.set(clampToFar ? 1.0f : 0.0f);
         // Without depth clamp, vertices pulled onto the far plane break the pre-test (never the shader's).
-        const int want = preTest && !clampToFar ? 1 : 0;
-        if (want != applied) {
-            applyRenderState(want ? st : noPreTest);
-            applied = want;
-        }
-        glDrawElements(GL_TRIANGLES, GLsizei(n) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+        cache.apply(preTest && !clampToFar ? st : noPreTest);
+        cache.drawElements(GL_TRIANGLES, GLsizei(n) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
         ++drawCalls_;
     }
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }
 
 void LightVolumePass::end() {
-    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(kSlotAttribute);
+    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(gl::kVolumeSlot);
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-    applyRenderState(RenderState{});
+    StateCache::current().apply(RenderState{});
     targets_ = nullptr;
     checkGl("light-volume pass end");
 }

@@ -155,7 +155,6 @@ private:
     bool reachesFarPlane(const VolumeLight& light) const;  // the drawn mesh reaches the far plane
     int batchFor(int targetCount) const;  // lights per draw for this many targets
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
-    static constexpr GLuint kSlotAttribute = 3;
     void drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
                      const std::function<IndexColors(uint32_t)>& colors);
     const gl::Program& batchProgramFor(int targetCount) const;

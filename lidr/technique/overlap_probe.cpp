@@ -61,13 +61,13 @@ void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, con
     for (int i = 0; i < kThresholds; ++i) {
         if (!(which & (1u << i))) continue;
         s.stencil.ref = kThreshold[size_t(i)];
-        applyRenderState(s);
+        StateCache::current().apply(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
         scene.draw(meshProgram_, filter, false);
         glEndQuery(GL_SAMPLES_PASSED);
         ++drawCalls_;
     }
-    applyRenderState(RenderState{});
+    StateCache::current().apply(RenderState{});
     issued_ = which;
     checkGl("OverlapProbe::issueOverMeshes");
 }
@@ -81,9 +81,9 @@ void OverlapProbe::issue(unsigned which, const glm::ivec4* scissor) {
     for (int i = 0; i < kThresholds; ++i) {
         if (!(which & (1u << i))) continue;
         s.stencil.ref = kThreshold[size_t(i)];
-        applyRenderState(s);
+        StateCache::current().apply(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
         glEndQuery(GL_SAMPLES_PASSED);
         ++drawCalls_;
     }

@@ -67,7 +67,7 @@ void checkContextFor(const std::string& what, const GlInfo& info, int targets, i
                                std::to_string(info.drawBuffers ? info.maxDrawBuffers : 1) +
                                " draw buffers (choose a smaller budget or width)" +
                                (info.gles && !info.drawBuffers ? "; OpenGL ES 2.0 has one without EXT_draw_buffers" : ""));
-    const int units = std::max(LightTable::kUnitPosRadiusLow, GpuScene::kMaterialTextureUnit) + 1;
+    const int units = gl::kUnitHighestShading + 1;
     if (info.maxTextureUnits < units)
         throw UnsupportedError(what + ": the forward pass binds index textures and the light table on " +
                                std::to_string(units) + " texture units; this context has " +

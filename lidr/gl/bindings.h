@@ -1,0 +1,45 @@
+#pragma once
+// Every texture unit and vertex attribute slot lidr's programs use, in one place. A unit is shared only by
+// passes that never run in the same draw; every sampler of one program has its own unit (two sampler types
+// on one unit make draws fail, so unused samplers are pointed at their own units too).
+#include "lidr/base/gl_types.h"
+
+namespace lidr::gl {
+
+enum TextureUnit : int {
+    // LIDR forward pass: index target i on unit kUnitIndexTarget0 + i (up to 8: units 0..7).
+    kUnitIndexTarget0 = 0,
+    kUnitIndexTargetLast = 7,
+    // Light volume pass, sphere tests: the copy of the pre-pass depth.
+    kUnitDepthCopy = 0,
+    // Light volume pass, pixel lists (tests/): the list step and the colour table.
+    kUnitPixelListStep = 0,
+    kUnitPixelListColors = 1,
+    // Tiled forward: the tile grid and the light list (lidr/modes/light_grid.h).
+    kUnitTileGrid = 0,
+    kUnitTileList = 1,
+    // Tile depth bounds: the reduction input, then the min and max tile textures of the depth-bounds pass.
+    kUnitReductionInput = 0,
+    kUnitTileDepthMin = 1,
+    kUnitTileDepthMax = 2,
+    // Every shading pass: the light table (lidr/render/light_table.h) above the index targets.
+    kUnitLightPosRadius = 8,
+    kUnitLightColor = 9,
+    kUnitLightPosRadiusLow = 10,
+    // Every shading pass: the material's texture.
+    kUnitMaterial = 11,
+    // FramePresenter: the frame.
+    kUnitPresentedFrame = 0,
+    // The highest unit a shading pass binds (capability checks).
+    kUnitHighestShading = kUnitMaterial,
+};
+
+// Vertex attribute slots, bound before linking (no queries needed).
+enum Attribute : GLuint {
+    kPosition = 0,
+    kNormal = 1,
+    kTexCoord = 2,
+    kVolumeSlot = 3,  // light volume batches: the copy a vertex belongs to (lidr/technique/light_volume_pass.h)
+};
+
+}  // namespace lidr::gl
