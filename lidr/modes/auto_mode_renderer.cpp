@@ -53,7 +53,7 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
         const double change = std::abs(double(visible - lightsAtChoice_)) / std::max(1.0, double(lightsAtChoice_));
         if (framesSinceChoice_ >= options_.remeasureFrames || change > options_.lightChange) {
             chosen_ = -1;
-            trialCandidate_ = trialFrame_ = 0;
+            trial_ = 0;
             reason_ = "measuring";
         }
     }
@@ -63,26 +63,29 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
         return stats_;
     }
 
-    // A trial frame: the candidate's whole frame between two glFinish calls.
-    last_ = trialCandidate_;
+    // A trial frame: the candidate's whole frame between two glFinish calls. The candidates take turns (A B C,
+    // A B C, ...), so that a machine whose speed drifts during the trial (a shared CPU, a GPU's clocks) slows
+    // them alike; each one's first turn is its warm-up (shader compiles, first uploads), the best of the rest
+    // counts.
+    const int n = int(candidates_.size());
+    const int candidate = trial_ % n, turn = trial_ / n;
+    last_ = candidate;
     glFinish();
     const double start = nowMilliseconds();
-    stats_ = renderers_[size_t(trialCandidate_)]->render(camera, lights, shading);
+    stats_ = renderers_[size_t(candidate)]->render(camera, lights, shading);
     glFinish();
     const double ms = nowMilliseconds() - start;
-    if (trialFrame_ == 1 || (trialFrame_ > 1 && ms < bestMs_[size_t(trialCandidate_)])) bestMs_[size_t(trialCandidate_)] = ms;
-    if (++trialFrame_ == options_.trialFrames) {
-        trialFrame_ = 0;
-        if (++trialCandidate_ == int(candidates_.size())) {
-            chosen_ = int(std::min_element(bestMs_.begin(), bestMs_.end()) - bestMs_.begin());
-            framesSinceChoice_ = 0;
-            lightsAtChoice_ = visible;
-            std::ostringstream why;
-            why << candidates_[size_t(chosen_)] << " fastest in trial frames:";
-            for (size_t c = 0; c < candidates_.size(); ++c) why << " " << candidates_[c] << " " << bestMs_[c] << " ms";
-            why << " (" << visible << " lights in view)";
-            reason_ = why.str();
-        }
+    if (turn == 1 || (turn > 1 && ms < bestMs_[size_t(candidate)])) bestMs_[size_t(candidate)] = ms;
+    if (++trial_ == n * options_.trialFrames) {
+        trial_ = 0;
+        chosen_ = int(std::min_element(bestMs_.begin(), bestMs_.end()) - bestMs_.begin());
+        framesSinceChoice_ = 0;
+        lightsAtChoice_ = visible;
+        std::ostringstream why;
+        why << candidates_[size_t(chosen_)] << " fastest in trial frames:";
+        for (size_t c = 0; c < candidates_.size(); ++c) why << " " << candidates_[c] << " " << bestMs_[c] << " ms";
+        why << " (" << visible << " lights in view)";
+        reason_ = why.str();
     }
     return stats_;
 }

@@ -5,7 +5,7 @@
 //
 // A cost model calibrated once would be wrong on the next machine (llvmpipe and a discrete GPU rank the modes
 // differently, doc/benchmarks.md), so the model is the machine itself: each candidate renders a few trial
-// frames timed with glFinish, the fastest is kept. Trial frames are ordinary frames (every candidate draws the
+// frames timed with glFinish, taking turns, and the fastest is kept. Trial frames are ordinary frames (every candidate draws the
 // same image), so nothing is wasted but the glFinish.
 #include <memory>
 #include <string>
@@ -53,7 +53,7 @@ private:
     std::vector<std::unique_ptr<Renderer>> renderers_;
     std::vector<double> bestMs_;
     int chosen_ = -1, last_ = 0;
-    int trialCandidate_ = 0, trialFrame_ = 0;
+    int trial_ = 0;  // trial frames drawn in this measurement (candidates in turn)
     int framesSinceChoice_ = 0, lightsAtChoice_ = 0;
     std::string reason_ = "measuring";
 };
