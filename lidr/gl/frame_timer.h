@@ -31,8 +31,10 @@ public:
     static constexpr int kRingFrames = 4;
     FrameTimer() = default;
     explicit FrameTimer(const GlInfo& info, TimingMethod method = TimingMethod::Auto);
+    // Passes are timed through TimedPass (below), which pairs these two.
     void begin(const std::string& pass);
     void end();
+    bool passOpen() const { return open_; }
     // Pass times (see above) and the start of a new frame. Empty when timing is off, or when no earlier
     // frame's GPU queries have answered yet.
     std::vector<PassTime> collect();
@@ -59,6 +61,27 @@ private:
     std::vector<std::string> names_;  // this frame's passes (CPU method)
     std::vector<double> cpuMs_;
     double cpuStart_ = 0.0;
+};
+
+// One timed pass: begun at construction, ended by end() or when the scope closes, whichever comes first. A pass
+// that throws therefore cannot leave the timer open (the next frame's begin() would refuse), and a pass's time
+// cannot be left unended by an early return.
+class TimedPass {
+public:
+    TimedPass(FrameTimer& timer, const std::string& pass) : timer_(&timer) { timer.begin(pass); }
+    ~TimedPass() {
+        if (timer_ && timer_->passOpen()) timer_->end();  // end() throws only when no pass is open
+    }
+    void end() {
+        FrameTimer* t = timer_;
+        timer_ = nullptr;
+        if (t) t->end();
+    }
+    TimedPass(const TimedPass&) = delete;
+    TimedPass& operator=(const TimedPass&) = delete;
+
+private:
+    FrameTimer* timer_;
 };
 
 double nowMilliseconds();  // steady clock

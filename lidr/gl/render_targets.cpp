@@ -117,9 +117,8 @@ void RenderTargets::resolve() const {
 
 void RenderTargets::resolve(FrameTimer& timer) const {
     if (samples_ == 0) return;
-    timer.begin("msaa-resolve");
+    TimedPass msaaResolveTime(timer, "msaa-resolve");
     resolve();
-    timer.end();
 }
 
 ImageRGBA8 RenderTargets::readColor() const {

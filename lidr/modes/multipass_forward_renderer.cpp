@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "lidr/base/error.h"
-#include "lidr/technique/forward_pass.h"
+#include "lidr/render/shading_pass.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
 #include "lidr/scene/sphere_bounds.h"
@@ -55,23 +55,20 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     stats_.sceneLights = static_cast<int>(lights.size());
     meshDraws_ = 0;
 
-    timer_.begin("light-table");
+    TimedPass lightTableTime(timer_, "light-table");
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
     lightTable_.update(lights);
-    timer_.end();
+    lightTableTime.end();
 
-    timer_.begin("depth-prepass");
+    TimedPass depthPrepassTime(timer_, "depth-prepass");
     targets_.bindColor();
     depthPrepass_.run(scene_, cam);
-    timer_.end();
+    depthPrepassTime.end();
 
-    timer_.begin("ambient");
+    TimedPass ambientTime(timer_, "ambient");
+    beginOpaqueShading(targets_, shading, true);
     StateCache& cache = StateCache::current();
-    ClearAction clear;
-    clear.color = true;
-    clear.colorValue = glm::vec4(shading.background, 1.0f);
-    cache.clear(clear);
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
     // (1 for the ambient pass, then 2, 3, ... per light; cleared when they run out) lets one fragment per
@@ -82,9 +79,9 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     ambient_.use();
     setShadingUniforms(ambient_, cam, shading);
     scene_.draw(ambient_, DrawFilter::Opaque, true);
-    timer_.end();
+    ambientTime.end();
 
-    timer_.begin("light-passes");
+    TimedPass lightPassesTime(timer_, "light-passes");
     RenderState s = onceAtPrepassDepth(stamp);
     s.blend = true;
     s.blendSrcRgb = s.blendDstRgb = GL_ONE;  // add this light's term
@@ -140,7 +137,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     }
     stats_.volumeDrawCalls = meshDraws_;
     cache.apply(RenderState{});
-    timer_.end();
+    lightPassesTime.end();
     targets_.resolve(timer_);
 
     StateCache::current().bindFramebuffer(0);

@@ -37,43 +37,30 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = stats_.drawnLights = static_cast<int>(lights.size());
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    timer_.begin("light-table");
+    TimedPass lightTableTime(timer_, "light-table");
     lightTable_.update(lights);
-    timer_.end();
+    lightTableTime.end();
 
-    timer_.begin("depth-prepass");
+    TimedPass depthPrepassTime(timer_, "depth-prepass");
     targets_.bindColor();  // the MSAA target when multisampled: the reference has no index pass to feed
     depthPrepass_.run(scene_, cam);
-    timer_.end();
+    depthPrepassTime.end();
 
-    timer_.begin("brute-force");
-    StateCache& cache = StateCache::current();
-    ClearAction clear;
-    clear.color = true;
-    clear.colorValue = glm::vec4(shading.background, 1.0f);
-    cache.clear(clear);
-    RenderState s;
-    s.depthTest = true;
-    s.depthFunc = GL_EQUAL;
-    s.sampleShading = sampleShading_;
-    cache.apply(s);
-    program_.use();
-    setShadingUniforms(program_, cam, shading);
+    TimedPass bruteForceTime(timer_, "brute-force");
+    beginOpaqueShading(targets_, shading, true, sampleShading_);
+    useShadingProgram(program_, cam, shading, lightTable_);
     program_.set("uLightCount", float(lights.size()));
-    lightTable_.bind(program_);
     scene_.draw(program_, DrawFilter::Opaque, true);
-    timer_.end();
+    bruteForceTime.end();
     if (transparency_ && scene_.hasTransparent()) {
-        timer_.begin("brute-force-transparent");
-        RenderState t = transparentBlendState();  // the state every mode draws its layers with
-        t.sampleShading = sampleShading_;
-        cache.apply(t);
+        TimedPass bruteForceTransparentTime(timer_, "brute-force-transparent");
+        beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
         scene_.drawTransparentSorted(program_, cam.eye);
-        timer_.end();
     }
+    StateCache& cache = StateCache::current();
     cache.apply(RenderState{});
     targets_.resolve(timer_);
-    StateCache::current().bindFramebuffer(0);
+    cache.bindFramebuffer(0);
     checkGl("reference render");
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();

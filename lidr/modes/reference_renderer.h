@@ -3,7 +3,7 @@
 // the same depth pre-pass. It is the accuracy reference for every other mode, and the "forward-brute"
 // baseline.
 #include "lidr/render/depth_prepass.h"
-#include "lidr/technique/forward_pass.h"
+#include "lidr/render/shading_pass.h"
 #include "lidr/gl/frame_timer.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/light_table.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "lidr/base/error.h"
-#include "lidr/technique/forward_pass.h"
+#include "lidr/render/shading_pass.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
 #include "lidr/scene/sphere_bounds.h"
@@ -87,30 +87,29 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     stats_.sceneLights = static_cast<int>(lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
-    timer_.begin("light-table");
+    TimedPass lightTableTime(timer_, "light-table");
     if (static_cast<int>(lights.size()) > lightTable_.capacity()) {  // grow rather than refuse
         lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
     }
     lightTable_.update(lights);
-    timer_.end();
+    lightTableTime.end();
 
-    timer_.begin("depth-prepass");
+    TimedPass depthPrepassTime(timer_, "depth-prepass");
     if (depthBounds_) {
         depthBounds_->prepass(scene_, cam);
     } else if (options_.preZ) {
         targets_.bindColor();
         depthPrepass_.run(scene_, cam);
     }
-    timer_.end();
+    depthPrepassTime.end();
 
     tileDepth_.clear();
     if (depthBounds_) {
-        timer_.begin("tile-depth-reduce");
+        TimedPass tileDepthReduceTime(timer_, "tile-depth-reduce");
         tileDepth_ = depthBounds_->reduce();
-        timer_.end();
     }
 
-    timer_.begin("light-grid");
+    TimedPass lightGridTime(timer_, "light-grid");
     const double assignStart = nowMilliseconds();
     const float reach = lightTable_.reachError();
     grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
@@ -124,39 +123,22 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     }
     stats_.drawnLights = gs.assignedLights;
     const double assignMs = nowMilliseconds() - assignStart;
-    timer_.end();
+    lightGridTime.end();
 
-    timer_.begin("tiled-forward");
-    StateCache& cache = StateCache::current();
-    ClearAction clear;
-    clear.color = true;
-    clear.colorValue = glm::vec4(shading.background, 1.0f);
-    clear.depth = clear.stencil = !options_.preZ;  // without pre-Z this pass writes its own depth
-    cache.beginPass(targets_.colorPass(clear));
-    RenderState s;
-    s.depthTest = true;
-    if (options_.preZ) {
-        s.depthFunc = GL_EQUAL;  // the pre-Z depth: one shaded fragment per pixel
-        s.depthWrite = false;
-    } else {
-        s.depthWrite = true;
-        s.depthFunc = GL_LEQUAL;  // the last fragment at the nearest depth stays, as with the pre-Z and EQUAL
-    }
-    cache.apply(s);
-    program_.use();
-    setShadingUniforms(program_, cam, shading);
-    lightTable_.bind(program_);
+    TimedPass tiledForwardTime(timer_, "tiled-forward");
+    beginOpaqueShading(targets_, shading, options_.preZ);
+    useShadingProgram(program_, cam, shading, lightTable_);
     gridTextures_.bind(program_, false);
     scene_.draw(program_, DrawFilter::Opaque, true);
-    timer_.end();
+    tiledForwardTime.end();
 
     if (transparent) {
-        timer_.begin("tiled-transparent");
-        cache.apply(transparentBlendState());  // back to front over the opaque depth, no depth writes
+        TimedPass tiledTransparentTime(timer_, "tiled-transparent");
+        beginTransparentShading();  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program_, true);
         scene_.drawTransparentSorted(program_, cam.eye);
-        timer_.end();
     }
+    StateCache& cache = StateCache::current();
     cache.apply(RenderState{});  // no scissor or masks on the resolve blit
     targets_.resolve(timer_);
 
@@ -165,7 +147,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
-    StateCache::current().bindFramebuffer(0);
+    cache.bindFramebuffer(0);
     checkGl("TiledRenderer::render");
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();

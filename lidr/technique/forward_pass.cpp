@@ -8,15 +8,6 @@
 
 namespace lidr {
 
-void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
-    program.set("uViewProj", camera.viewProjection);
-    program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
-    program.setIfDeclared("uAmbient", shading.ambient);
-    // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
-    // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
-    program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
-}
-
 namespace {
 // Per-sample index reads need texelFetch on sampler2DMS (GLSL 1.50) and gl_SampleID (ARB_sample_shading);
 // the compatibility profile keeps every GLSL 1.20 construct the shaders use.
@@ -51,29 +42,14 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
                                    vertex, fragment, geometryAttributes());
 }
 
-RenderState transparentBlendState() {
-    RenderState s;
-    s.depthTest = true;
-    s.depthFunc = GL_LEQUAL;
-    s.depthWrite = false;
-    s.blend = true;
-    s.blendSrcRgb = GL_SRC_ALPHA;
-    s.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
-    s.blendSrcAlpha = GL_ZERO;  // keep the opaque alpha of 1
-    s.blendDstAlpha = GL_ONE;
-    return s;
-}
-
 void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
                              const CameraMatrices& camera, const ShadingParameters& shading) const {
-    program_.use();
-    setShadingUniforms(program_, camera, shading);
+    useShadingProgram(program_, camera, shading, table);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
     for (int i = 0; i < indices.count(); ++i) {
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
         program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
-    table.bind(program_);
 }
 
 void ForwardPass::unbindInputs(const IndexTargets& indices) const {
@@ -88,21 +64,9 @@ void ForwardPass::unbindInputs(const IndexTargets& indices) const {
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
                       bool afterPrepass) const {
-    StateCache& cache = StateCache::current();
-    ClearAction clear;
-    clear.color = true;
-    clear.colorValue = glm::vec4(shading.background, 1.0f);
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
-    clear.depth = !afterPrepass;
-    cache.beginPass(targets.colorPass(clear));
-    RenderState s;
-    s.depthTest = true;
-    // Either way the last fragment drawn at the nearest depth is the one left (lidr/render/gpu_scene.h: DrawOrder).
-    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LEQUAL;
-    s.depthWrite = !afterPrepass;
-    s.sampleShading = perSample_;
-    cache.apply(s);
+    beginOpaqueShading(targets, shading, afterPrepass, perSample_);
     bindInputs(targets, indices, table, camera, shading);
     scene.draw(program_, DrawFilter::Opaque, true);
     unbindInputs(indices);
@@ -112,11 +76,8 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
 void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                                  const LightTable& table, const CameraMatrices& camera,
                                  const ShadingParameters& shading) const {
-    StateCache& cache = StateCache::current();
-    cache.beginPass(targets.colorPass());
-    RenderState s = transparentBlendState();
-    s.sampleShading = perSample_;
-    cache.apply(s);
+    StateCache::current().beginPass(targets.colorPass());
+    beginTransparentShading(perSample_);
     bindInputs(targets, indices, table, camera, shading);
     scene.drawTransparentSorted(program_, camera.eye);
     unbindInputs(indices);

@@ -9,6 +9,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shading_pass.h"
 
 namespace lidr {
 
@@ -40,12 +41,5 @@ private:
     gl::Program program_;
     bool perSample_ = false;
 };
-
-// The state transparent layers are drawn with, in every mode: over the opaque depth, no depth writes,
-// source-alpha blending, destination alpha kept.
-RenderState transparentBlendState();
-
-// Sets the per-frame uniforms of shading.glsl (eye, ambient).
-void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
 
 }  // namespace lidr

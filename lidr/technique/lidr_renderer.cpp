@@ -219,7 +219,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     stats_.timingMethod = timer_.method();
     stats_.sceneLights = static_cast<int>(lights.size());
 
-    timer_.begin("light-table");
+    TimedPass lightTableTime(timer_, "light-table");
     // Lights that cannot touch a visible surface get no index: outside the view frustum, or touching no
     // mesh's bounds. With an automatic width the rest are numbered 1..n in draw order and only they go into
     // the light table.
@@ -247,7 +247,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
     selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
     selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
-    timer_.end();
+    lightTableTime.end();
 
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
@@ -255,7 +255,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     else
         targets_.bindSingleSample();
     if (options_.depthPrepass) {
-        timer_.begin("depth-prepass");
+        TimedPass depthPrepassTime(timer_, "depth-prepass");
         depthPrepass_.run(scene_, cam);
         if (depthTexture_) {
             // The shader volume tests read the pre-pass depth from a texture that is not attached to the
@@ -271,7 +271,6 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
                 checkGl("depth copy for the volume tests");
             }
         }
-        timer_.end();
     } else {
         ClearAction clear;
         clear.depth = true;
@@ -306,20 +305,18 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
 
     const bool multisampled = targets_.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
-        timer_.begin("msaa-depth-prepass");
+        TimedPass msaaDepthPrepassTime(timer_, "msaa-depth-prepass");
         targets_.bindColor();
         depthPrepass_.run(scene_, cam);
-        timer_.end();
     }
 
-    timer_.begin("forward");
+    TimedPass forwardTime(timer_, "forward");
     current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass);
-    timer_.end();
+    forwardTime.end();
 
     if (drawTransparent_) {
-        timer_.begin("forward-transparent");
+        TimedPass forwardTransparentTime(timer_, "forward-transparent");
         currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
-        timer_.end();
     }
     targets_.resolve(timer_);
 
@@ -369,7 +366,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
                 if (reachesTransparentMesh(v)) reaching.push_back(v);
         stats_.transparentVolumeLights = static_cast<int>(reaching.size());
         stats_.transparentVolumePassSkipped = reaching.empty();
-        timer_.begin("light-volumes-transparent");
+        TimedPass lightVolumesTransparentTime(timer_, "light-volumes-transparent");
         transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
         if (!reaching.empty()) {
             const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
@@ -381,15 +378,13 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
         } else {
             transparentVolumePass_.end();
         }
-        timer_.end();
     }
 
-    timer_.begin("light-volumes");
+    TimedPass lightVolumesTime(timer_, "light-volumes");
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumePass_.end();
     if (measure) measured(nullptr);
-    timer_.end();
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {

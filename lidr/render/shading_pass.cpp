@@ -1,0 +1,59 @@
+#include "lidr/render/shading_pass.h"
+#include "lidr/base/gl.h"
+
+#include "lidr/gl/bindings.h"
+
+namespace lidr {
+
+void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& shading, bool afterPrepass,
+                        bool sampleShading) {
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    clear.depth = clear.stencil = !afterPrepass;  // without a pre-pass this pass writes its own depth
+    cache.beginPass(targets.colorPass(clear));
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = afterPrepass ? GL_EQUAL : GL_LEQUAL;
+    s.depthWrite = !afterPrepass;
+    s.sampleShading = sampleShading;
+    cache.apply(s);
+}
+
+RenderState transparentBlendState() {
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_LEQUAL;
+    s.depthWrite = false;
+    s.blend = true;
+    s.blendSrcRgb = GL_SRC_ALPHA;
+    s.blendDstRgb = GL_ONE_MINUS_SRC_ALPHA;
+    s.blendSrcAlpha = GL_ZERO;  // keep the opaque alpha of 1
+    s.blendDstAlpha = GL_ONE;
+    return s;
+}
+
+void beginTransparentShading(bool sampleShading) {
+    RenderState s = transparentBlendState();
+    s.sampleShading = sampleShading;
+    StateCache::current().apply(s);
+}
+
+void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
+    program.set("uViewProj", camera.viewProjection);
+    program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
+    program.setIfDeclared("uAmbient", shading.ambient);
+    // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
+    // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
+    program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
+}
+
+void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
+                       const LightTable& table) {
+    program.use();
+    setShadingUniforms(program, camera, shading);
+    table.bind(program);
+}
+
+}  // namespace lidr

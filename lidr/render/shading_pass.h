@@ -1,0 +1,33 @@
+#pragma once
+// The shading pass every mode shares once it knows its lights (LIDR's forward pass, tiled forward, the
+// reference, multi-pass's ambient pass): where surfaces are shaded, with which depth test, and the per-frame
+// uniforms of shading.glsl. Each mode then binds its own light lists and draws.
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/render_targets.h"
+#include "lidr/render/light_table.h"
+#include "lidr/render/renderer.h"
+#include "lidr/scene/camera.h"
+
+namespace lidr {
+
+// Begins the opaque shading pass in targets.colorPass(): colour cleared to the background; depth EQUAL against
+// the pre-pass depth (one shaded fragment per pixel), or, where that target had no pre-pass, depth and stencil
+// cleared and LEQUAL with depth writes, so that, as with EQUAL, the last fragment drawn at the nearest depth
+// stays (lidr/render/gpu_scene.h: DrawOrder). sampleShading: every sample shaded (the per-sample MSAA paths).
+void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& shading, bool afterPrepass,
+                        bool sampleShading = false);
+
+// The state transparent layers are drawn with, in every mode: over the opaque depth, no depth writes,
+// source-alpha blending, destination alpha kept.
+RenderState transparentBlendState();
+// Applies transparentBlendState() (with per-sample shading as asked) for the layers drawn next.
+void beginTransparentShading(bool sampleShading = false);
+
+// Sets the per-frame uniforms of shading.glsl (eye, ambient, the material texture's unit).
+void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
+// Uses the program, sets shading.glsl's uniforms and binds the light table to it.
+void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
+                       const LightTable& table);
+
+}  // namespace lidr
