@@ -502,3 +502,23 @@ TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a r
     // One set of queries per ring slot at most: the other slots' sets.
     CHECK(gl::liveGlObjects() - objects <= (FrameTimer::kRingFrames - 1) * static_cast<int>(names.size()));
 }
+
+TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on with the next pass", "[embed][timing]") {
+    testContext();
+    FrameTimer timer(testGl(), TimingMethod::CpuFinish);
+    auto failingPass = [&] {
+        TimedPass time(timer, "failing");
+        throw Error("the pass failed");
+    };
+    REQUIRE_THROWS_AS(failingPass(), Error);
+    CHECK_FALSE(timer.passOpen());
+    {
+        TimedPass time(timer, "ended-early");
+        time.end();  // ended once: the scope's end does nothing more
+        CHECK_FALSE(timer.passOpen());
+    }
+    { TimedPass time(timer, "next"); }
+    std::vector<std::string> names;
+    for (const PassTime& p : timer.collect()) names.push_back(p.pass);
+    CHECK(names == std::vector<std::string>{"failing", "ended-early", "next"});
+}
