@@ -21,7 +21,7 @@ std::string perSampleVersion(std::string source) {
 
 ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
                          const std::string& materialShader)
-    : perSample_(perSample) {
+    : perSample_(perSample), maxLights_(scheme.config().budget) {
     ShaderDefines defines = table.defines();
     for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
     if (perSample) {
@@ -45,6 +45,7 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
 void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
                              const CameraMatrices& camera, const ShadingParameters& shading) const {
     useShadingProgram(program_, camera, shading, table);
+    program_.setIfDeclared("uLidrMaxLights", maxLights_);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
     for (int i = 0; i < indices.count(); ++i) {
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);

@@ -40,6 +40,7 @@ private:
     void unbindInputs(const IndexTargets& indices) const;
     gl::Program program_;
     bool perSample_ = false;
+    int maxLights_ = 0;
 };
 
 }  // namespace lidr

@@ -8,7 +8,10 @@
 //       ... light.position, light.radius, light.color ...
 //   }
 //
-// LIDR_MAX_LIGHTS is the budget (slots a pixel holds); the bounded loop is what GL 2.1 hardware compiles.
+// LIDR_MAX_LIGHTS is the budget (slots a pixel holds); the bounded loop is what GL 2.1 hardware compiles. On
+// desktop GL it is a uniform int (lidr sets it): a bound the compiler cannot see keeps the loop a loop. Unrolled
+// (Mesa unrolls short constant loops), a SIMD rasteriser runs every iteration under a mask however short the
+// pixel's list: budget 4 cost twice budget 8 on llvmpipe (doc/benchmarks.md). GLSL ES 1.00 wants a constant.
 // Attenuation is the material's business: lidr's own is clamp(1 - d^2 / r^2, 0, 1) (lidrShadeLight in
 // shading.glsl, which also gives the surface varyings, material uniforms and Blinn-Phong).
 // lidr fills uInvViewportSize, the index textures uIndexTex0.. and the light table (light_table.glsl); the
@@ -25,7 +28,12 @@
 #include "light_table.glsl"
 #include "lidr_unpack.glsl"
 
+#ifdef GL_ES
 #define LIDR_MAX_LIGHTS LIDR_SLOTS
+#else
+uniform int uLidrMaxLights;  // LIDR_SLOTS
+#define LIDR_MAX_LIGHTS uLidrMaxLights
+#endif
 
 uniform vec2 uInvViewportSize;
 
@@ -45,33 +53,46 @@ void lidrBeginLights() {
     lidrSlotsLeft = float(LIDR_SLOTS);
 }
 
+void lidrSetLight(out LidrLight light, vec2 index) {
+    vec4 posRadius;
+    vec3 color;
+    lidrFetchLight(index, posRadius, color);
+    light.position = posRadius.xyz;
+    light.radius = posRadius.w;
+    light.color = color;
+    light.index = index.x + 256.0 * index.y;
+    light.indexBytes = index;
+}
+
 bool lidrNextLight(out LidrLight light) {
     light.position = vec3(0.0);
     light.radius = 0.0;
     light.color = vec3(0.0);
     light.index = 0.0;
     light.indexBytes = vec2(0.0);
+#ifdef LIDR_NULL_ENDS_LIST
+    // One slot per call, no inner loop (unrolled inside the caller's loop it would run LIDR_SLOTS times).
+    if (lidrSlotsLeft < 0.5) return false;
+    lidrSlotsLeft -= 1.0;
+    vec2 next = lidrUnpackNext();
+    if (next.x + next.y < 0.5) {
+        lidrSlotsLeft = 0.0;  // the first empty slot ends the list
+        return false;
+    }
+    lidrSetLight(light, next);
+    return true;
+#else
     for (int slot = 0; slot < LIDR_SLOTS; ++slot) {
         if (lidrSlotsLeft < 0.5) return false;
         lidrSlotsLeft -= 1.0;
         // The index as its two bytes (low, high), (0, 0) for an empty slot: never one float, which fp16
         // fragments cannot hold above 2048; the light table is read at texel (low, high).
         vec2 index = lidrUnpackNext();
-        if (index.x + index.y >= 0.5) {
-            vec4 posRadius;
-            vec3 color;
-            lidrFetchLight(index, posRadius, color);
-            light.position = posRadius.xyz;
-            light.radius = posRadius.w;
-            light.color = color;
-            light.index = index.x + 256.0 * index.y;
-            light.indexBytes = index;
+        if (index.x + index.y >= 0.5) {  // an empty slot is skipped: a later one may hold a light
+            lidrSetLight(light, index);
             return true;
         }
-#ifdef LIDR_NULL_ENDS_LIST
-        lidrSlotsLeft = 0.0;  // the first empty slot ends the list
-        return false;
-#endif
     }
     return false;
+#endif
 }
