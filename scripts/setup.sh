@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # lidr set-up on Debian 12: installs what is missing (apt-get, as root), builds, then runs one job.
 #   bash scripts/setup.sh demo   render the default scene headless into out/ (images + summary)
-#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OSMesa, demo, viewer,
-#                                examples, package), then the AddressSanitizer + UBSan build's subset and the fuzz
-#                                smoke runs (clang)
+#   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OpenGL ES 2.0, OSMesa,
+#                                demo, viewer, examples, package), then the AddressSanitizer + UBSan build's subset
+#                                and the fuzz smoke runs (clang), then the WebGL 1 page's test (as the web job)
 #   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
 #   bash scripts/setup.sh web    the WebGL 1 page (emscripten) into build-web/web/, then its test in headless
 #                                Chromium (CTest web.chromium; doc/web.md)
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out),
 #   SANITIZE_BUILD_DIR (default build-sanitize), SANITIZE=0 skips the sanitizer build and fuzz runs (test job),
-#   WEB_BUILD_DIR (default build-web).
+#   WEB_BUILD_DIR (default build-web), WEB=0 skips the WebGL 1 page and its browser test (test job).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,10 +20,11 @@ case "$job" in
 esac
 
 # Debian 12 packages only; nothing is downloaded at build time.
+# emscripten 3.1.6 ships its system libraries prebuilt in a frozen cache (EM_CACHE stays unset); node-acorn
+# comes with it (its optimising link steps need NODE_PATH=/usr/share/nodejs when Node.js is not Debian's).
+web_packages=(cmake emscripten chromium python3)
 if [ "$job" = web ]; then
-  # emscripten 3.1.6 ships its system libraries prebuilt in a frozen cache (EM_CACHE stays unset); node-acorn
-  # comes with it (its optimising link steps need NODE_PATH=/usr/share/nodejs when Node.js is not Debian's).
-  packages=(cmake emscripten chromium python3)
+  packages=("${web_packages[@]}")
 else
 packages=(
   build-essential cmake pkg-config
@@ -33,6 +34,7 @@ packages=(
   libimgui-dev xvfb xauth
   clang libclang-rt-14-dev
 )
+if [ "$job" = test ] && [ "${WEB:-1}" != 0 ]; then packages+=("${web_packages[@]}"); fi
 fi
 # Optional: OSMesa (lidr::lidr_osmesa, suite.osmesa) only where the distribution still has it (not Mesa 25.1+).
 optional=(libosmesa6-dev)
@@ -56,13 +58,16 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 jobs="${JOBS:-$(nproc)}"
-if [ "$job" = web ]; then
-  # The page and its test only: the library's web layers, web/lidr_web.cpp, CTest web.chromium (doc/web.md).
-  web_build="${WEB_BUILD_DIR:-build-web}"
+# The page and its test only: the library's web layers, web/lidr_web.cpp, CTest web.chromium (doc/web.md).
+web_build_and_test() {
+  local web_build="${WEB_BUILD_DIR:-build-web}"
   export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
   emcmake cmake -S . -B "$web_build" -DCMAKE_BUILD_TYPE=Release -DLIDR_WEB=ON >/dev/null
   cmake --build "$web_build" -j "$jobs"
-  ctest --test-dir "$web_build" --output-on-failure
+  ctest --test-dir "$web_build" --output-on-failure --no-tests=error
+}
+if [ "$job" = web ]; then
+  web_build_and_test
   exit 0
 fi
 
@@ -88,6 +93,9 @@ case "$job" in
         -DLIDR_BUILD_DEMO=OFF -DLIDR_BUILD_EXAMPLES=OFF -DLIDR_WITH_OSMESA=OFF >/dev/null
       cmake --build "$sanitize_build" -j "$jobs"
       ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs"
+    fi
+    if [ "${WEB:-1}" != 0 ]; then
+      web_build_and_test
     fi
     ;;
 esac
