@@ -10,26 +10,6 @@
 
 namespace lidr {
 
-const char* volumeTestName(VolumeTest t) {
-    switch (t) {
-    case VolumeTest::BackFace: return "backface";
-    case VolumeTest::ExactStencil: return "exact";
-    case VolumeTest::FrontFace: return "frontface";
-    case VolumeTest::Sphere: return "sphere";
-    case VolumeTest::SphereRay: return "sphere-ray";
-    }
-    return "?";
-}
-
-VolumeTest parseVolumeTest(const std::string& name) {
-    if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
-    if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
-    if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
-    if (name == "sphere") return VolumeTest::Sphere;
-    if (name == "sphere-ray") return VolumeTest::SphereRay;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface, sphere, sphere-ray)");
-}
-
 IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
     : width_(width), height_(height), samples_(samples) {
     if (count < 1 || count > kMaxIndexTargets)

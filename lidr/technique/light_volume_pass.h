@@ -12,27 +12,9 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/technique/light_volume_mesh.h"
+#include "lidr/technique/volume_draw_plan.h"
 
 namespace lidr {
-
-enum class VolumeTest {
-    BackFace,      // back faces, depth GEQUAL: cheap; also marks surfaces in front of a light (wastes slots)
-    ExactStencil,  // per light: front faces mark the pixels in front of the volume in stencil, then back
-                   // faces GEQUAL where unmarked: exactly the surfaces inside the volume
-    FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
-                   // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
-    // The shader tests: the fragment shader reads a copy of the pre-pass depth and discards what the light's
-    // true sphere does not reach, so the stencil sees real marks only; lights go in batches of many per draw.
-    Sphere,        // the surface point lies inside the sphere: exactly the lights that shade the pixel
-    SphereRay,     // the eye ray between the near plane and the surface meets the sphere: the front-face lists
-                   // of transparent layers and MSAA edge samples, exactly
-};
-// True for the tests decided in the fragment shader (they need the pre-pass depth as a texture).
-inline bool isShaderVolumeTest(VolumeTest t) { return t == VolumeTest::Sphere || t == VolumeTest::SphereRay; }
-// True for the tests that mark every light crossing the eye ray before the surface (front-face lists).
-inline bool isFrontFaceVolumeTest(VolumeTest t) { return t == VolumeTest::FrontFace || t == VolumeTest::SphereRay; }
-const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface", "sphere", "sphere-ray"
 
 constexpr int kMaxIndexTargets = 8;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
@@ -67,25 +49,6 @@ private:
     gl::Framebuffer fbo_;
     std::vector<gl::Framebuffer> fromFbos_;  // OpenGL ES: [k - 1] has targets k.. at attachments 0..
     int width_ = 0, height_ = 0, samples_ = 0;
-};
-
-// One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.
-struct VolumeDraw {
-    std::string name = "light-volumes";
-    int firstTarget = 0, targetCount = 1;  // written together (draw buffers) when targetCount > 1
-    glm::bvec4 colorMask{true, true, true, true};
-    bool blend = false;
-    GLenum blendEquation = glc::kFuncAdd;
-    GLenum blendSrc = glc::kOne, blendDst = glc::kZero;
-    glm::vec4 blendColor{0.0f};
-    // Stencil rank window. rankCount > 0: a light writes only where it is the rankFirst-th ..
-    // (rankFirst + rankCount - 1)-th light (0-based, in draw order) to mark the pixel in this draw. rankCount is
-    // a power of two and rankFirst a multiple of it: the test is a masked GL_EQUAL on the count. rankCount 0:
-    // every marking light writes. Either way the stencil counts every light that marks the pixel (saturating),
-    // so lights past the window are counted, not written.
-    int rankFirst = 0, rankCount = 0;
-    bool restartCount = false;  // clear the count first: a further pass over the same lights ranks them anew
-    bool writesColor() const { return colorMask.r || colorMask.g || colorMask.b || colorMask.a; }
 };
 
 // Test hook: instead of light volumes, "light" j (VolumeLight::index = j + 1) is a full-target quad that marks
