@@ -188,22 +188,7 @@ bool LightVolumePass::reachesFarPlane(const VolumeLight& l) const {
 }
 
 bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
-    if (depthClamp_ || listSource_ || isShaderVolumeTest(test_)) return false;
-    return reachesFarPlane(l);
-}
-
-void LightVolumePass::drawVolume(const VolumeLight& light) const {
-    if (listSource_) {
-        const size_t step = light.index - 1;
-        if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
-        listSource_->steps[step]->bind(gl::kUnitPixelListStep);
-        StateCache::current().drawArrays(GL_TRIANGLES, 0, 6);
-    } else {
-        const int level = detailFor(light);
-        StateCache::current().drawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
-                                           reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
-    }
-    ++drawCalls_;
+    return !listSource_ && volumeMarksWholeFootprint(test_, depthClamp_, reachesFarPlane(l));
 }
 
 // The test hook's colour table: row block t (rows t*R .. t*R+R-1, R = rows per target) holds target t's colour
@@ -228,11 +213,80 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
     if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
         throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
-    if (isShaderVolumeTest(test_) && !listSource_) return drawBatched(d, lights, colors);
-    const gl::Program& program = programFor(d.targetCount);
+    if (isShaderVolumeTest(test_) && listSource_) throw Error("pixel lists stand in for the stencil tests' volumes");
+    std::vector<VolumeLightFacts> facts;
+    facts.reserve(lights.size());
+    for (const VolumeLight& l : lights) facts.push_back(factsFor(l));
+    VolumePlanContext context;
+    context.test = test_;
+    context.depthClamp = depthClamp_;
+    context.gles = gles_;
+    context.drawBuffers = maxDrawTargets_ > 1;
+    context.batchSize = isShaderVolumeTest(test_) ? batchFor(d.targetCount) : 1;
+    context.scissor = scissor_;
+    const VolumeDrawPlan plan = planVolumeDraw(d, context, facts);
+
+    StateCache& cache = StateCache::current();  // sets per step only what differs from the last
+    if (plan.restartCount) {
+        ClearAction clear;
+        clear.stencil = true;
+        cache.clear(clear);
+    }
+    if (plan.framebufferFrom >= 0) targets_->framebufferFrom(plan.framebufferFrom).bind();
+    if (!plan.drawBuffers.empty()) cache.setDrawBuffers(plan.drawBuffers);
+    beginSteps(d, plan, colors);
+    for (const VolumeStep& step : plan.steps) {
+        cache.apply(plan.stateOf(step));
+        drawStep(step, lights, colors);
+    }
+    countBits_ = plan.countBits;
+    checkGl(("light-volume draw '" + d.name + "'").c_str());
+}
+
+VolumeLightFacts LightVolumePass::factsFor(const VolumeLight& l) const {
+    VolumeLightFacts f;
+    if (listSource_) return f;
+    f.detail = detailFor(l);
+    f.reachesFarPlane = reachesFarPlane(l);
+    // A volume reaching in front of the near plane (or holding the camera) has its front faces clipped there.
+    if (test_ == VolumeTest::FrontFace)
+        f.reachesNearPlane = glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) -
+                                 l.posRadius.w * outsideRadiusFor(l) <=
+                             camera_.nearPlane * 1.001f;
+    return f;
+}
+
+void LightVolumePass::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan,
+                                 const std::function<IndexColors(uint32_t)>& colors) {
+    stepProgram_ = plan.program;
+    stepTargets_ = plan.programTargets;
+    if (plan.program == VolumeProgram::Batch) {
+        const gl::Program& program = batchProgramFor(plan.programTargets);
+        program.use();
+        program.set("uViewProj", camera_.viewProjection);
+        program.set("uView", camera_.view);
+        // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
+        // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
+        const glm::mat4& P = camera_.projection;
+        if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the sphere volume tests need a perspective projection");
+        program.set("uDepthToDistance", glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)));
+        program.set("uNearPlane", camera_.nearPlane);
+        program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
+        program.set("uRadiusScale", kSphereRadiusScale);
+        program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
+        program.set("uDepth", gl::kUnitDepthCopy);
+        depth_->bind(gl::kUnitDepthCopy);
+        lightsUniform_ = program.uniform<glm::vec4>("uLights");
+        colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");
+        clampUniform_ = program.uniform<float>("uClampToFar");
+        const size_t batch = size_t(batchFor(plan.programTargets));
+        lightData_.resize(batch);
+        colorData_.resize(batch * size_t(plan.programTargets));
+        return;
+    }
+    const gl::Program& program = programFor(plan.programTargets);
     program.use();
-    if (!listSource_) program.set("uViewProj", camera_.viewProjection);  // the pixel-list quads are in clip space
-    if (listSource_) {
+    if (listSource_) {  // the pixel-list quads are in clip space
         uploadColorTable(d, colors);
         colorTable_.bind(gl::kUnitPixelListColors);
         program.set("uStepIndices", gl::kUnitPixelListStep);
@@ -240,247 +294,53 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
         program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
         program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
-    }
-    beginDraw(d);
-    // Per light: looked up once per draw, set through typed handles (the pixel-list program has none of them).
-    gl::Uniform<glm::vec4> posRadiusUniform, indexColorUniform;
-    gl::Uniform<float> clampUniform;
-    if (!listSource_) {
-        posRadiusUniform = program.uniform<glm::vec4>("uLightPosRadius");
-        indexColorUniform = program.uniform<glm::vec4>("uIndexColor");
-        clampUniform = program.uniform<float>("uClampToFar");
-    }
-
-    // The volume test proper: back faces (cull front) at or behind the surface.
-    RenderState inside = backFaceState(d);
-    inside.depthTest = true;
-
-    RenderState mark, count, unmark;
-    // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
-    // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
-    const bool window = d.rankCount > 0;
-    const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
-    // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
-    // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
-    // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
-    // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
-    // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
-    bool separateCount = false;
-    if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
-        inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-        inside.stencil.ref = d.rankFirst;
-        inside.stencil.readMask = windowMask;
-        if (window) {
-            separateCount = true;
-            inside.stencil.writeMask = 0;
-            count = inside;
-            count.colorMask = glm::bvec4(false);
-            count.blend = false;
-            count.stencil.func = GL_ALWAYS;
-            count.stencil.depthPass = GL_INCR;  // saturates at 255
-            count.stencil.writeMask = 0xFF;
-        } else {
-            inside.stencil.depthPass = GL_INCR;
-        }
-        countBits_ = 8;
-    } else {
-        // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
-        // bits 0..6 count the lights that really contain the surface.
-        mark.depthTest = true;
-        mark.depthFunc = GL_GREATER;  // front face behind the surface: surface in front of the light
-        mark.depthClamp = depthClamp_;
-        mark.cull = true;
-        mark.cullFace = GL_BACK;
-        mark.colorMask = glm::bvec4(false);
-        mark.stencilTest = true;
-        mark.stencil.func = GL_ALWAYS;
-        mark.stencil.ref = 0x80;
-        mark.stencil.depthPass = GL_REPLACE;
-        mark.stencil.writeMask = 0x80;
-        applyScissor(mark);
-        unmark = mark;
-        unmark.stencil.ref = 0;
-        // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
-        inside.stencil.func = window ? GL_EQUAL : GL_GREATER;
-        inside.stencil.ref = window ? d.rankFirst : 0x80;
-        inside.stencil.readMask = windowMask;
-        inside.stencil.writeMask = 0;
-        count = inside;
-        count.colorMask = glm::bvec4(false);
-        count.blend = false;
-        count.stencil.func = GL_GREATER;
-        count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
-        count.stencil.readMask = 0xFF;
-        count.stencil.depthPass = GL_INCR;
-        count.stencil.writeMask = 0x7F;
-        countBits_ = 7;
-    }
-
-    // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
-    // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
-    // (conservative: the whole footprint is marked).
-    auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
-    RenderState insideNoDepth = inside;
-    insideNoDepth.depthFunc = GL_ALWAYS;
-    // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
-    // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
-    // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
-    auto reachesNear = [&](const VolumeLight& l) {
-        return depthOf(l) - l.posRadius.w * outsideRadiusFor(l) <= camera_.nearPlane * 1.001f;
-    };
-
-    enum Choice { kInside, kInsideNoDepth, kFront };
-    StateCache& cache = StateCache::current();  // sets per light only what differs from the last draw
-    // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
-    auto stateFor = [&](int choice, const RenderState& base) {
-        RenderState st = base;
-        if (choice == kInsideNoDepth) {
-            st.depthFunc = GL_ALWAYS;
-        } else if (choice == kFront) {
-            st.depthFunc = GL_LEQUAL;
-            st.cullFace = GL_BACK;
-        }
-        return st;
-    };
-    for (const VolumeLight& l : lights) {
-        const bool clampToFar = marksWholeFootprint(l);
-        if (!listSource_) {
-            posRadiusUniform.set(l.posRadius);
-            const IndexColors c = colors(l.index);
-            indexColorUniform.setArray(c.data(), d.targetCount);
-            clampUniform.set(clampToFar ? 1.0f : 0.0f);
-        }
-        if (test_ == VolumeTest::ExactStencil) {
-            cache.apply(mark);
-            drawVolume(l);
-            cache.apply(clampToFar ? insideNoDepth : inside);
-            drawVolume(l);
-            RenderState c2 = count;
-            if (clampToFar) c2.depthFunc = GL_ALWAYS;
-            cache.apply(c2);
-            drawVolume(l);
-            cache.apply(unmark);
-            drawVolume(l);
-            continue;
-        }
-        int want = clampToFar ? kInsideNoDepth : kInside;
-        if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
-        if (separateCount) {
-            if (d.writesColor()) {
-                cache.apply(stateFor(want, inside));
-                drawVolume(l);
-            }
-            cache.apply(stateFor(want, count));
-            drawVolume(l);
-            continue;
-        }
-        cache.apply(stateFor(want, inside));
-        drawVolume(l);
-    }
-    checkGl(("light-volume draw '" + d.name + "'").c_str());
-}
-
-RenderState LightVolumePass::backFaceState(const VolumeDraw& d) const {
-    RenderState s;
-    s.depthFunc = GL_GEQUAL;
-    s.depthClamp = depthClamp_;  // back faces past the far plane still mark the pixels in front of them
-    s.cull = true;
-    s.cullFace = GL_FRONT;
-    s.colorMask = d.colorMask;
-    s.blend = d.blend;
-    s.blendEquation = d.blendEquation;
-    s.blendSrcRgb = s.blendSrcAlpha = d.blendSrc;
-    s.blendDstRgb = s.blendDstAlpha = d.blendDst;
-    s.blendColor = d.blendColor;
-    s.stencilTest = true;
-    applyScissor(s);
-    return s;
-}
-
-void LightVolumePass::beginDraw(const VolumeDraw& d) {
-    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
-        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
-        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
-    StateCache& cache = StateCache::current();
-    if (d.restartCount) {
-        ClearAction clear;
-        clear.stencil = true;
-        cache.clear(clear);
-    }
-    std::vector<GLenum> buffers;
-    if (gles_) {  // gl_FragData[i] goes to COLOR_ATTACHMENTi only: the targets from firstTarget on start at 0
-        targets_->framebufferFrom(d.firstTarget).bind();
-        for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + i);
-        if (maxDrawTargets_ > 1) cache.setDrawBuffers(buffers);
         return;
     }
-    for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
-    cache.setDrawBuffers(buffers);
+    program.set("uViewProj", camera_.viewProjection);
+    // Per light: looked up once per draw, set through typed handles.
+    lightsUniform_ = program.uniform<glm::vec4>("uLightPosRadius");
+    colorsUniform_ = program.uniform<glm::vec4>("uIndexColor");
+    clampUniform_ = program.uniform<float>("uClampToFar");
 }
 
-void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                                  const std::function<IndexColors(uint32_t)>& colors) {
-    const gl::Program& program = batchProgramFor(d.targetCount);
-    program.use();
-    program.set("uViewProj", camera_.viewProjection);
-    program.set("uView", camera_.view);
-    // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
-    // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
-    const glm::mat4& P = camera_.projection;
-    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the sphere volume tests need a perspective projection");
-    program.set("uDepthToDistance", glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)));
-    program.set("uNearPlane", camera_.nearPlane);
-    program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
-    program.set("uRadiusScale", kSphereRadiusScale);
-    program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
-    program.set("uDepth", gl::kUnitDepthCopy);
-    depth_->bind(gl::kUnitDepthCopy);
-    beginDraw(d);
-
-    // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
-    // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
-    // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
-    // one draw does what the stencil tests need a count draw for.
-    RenderState st = backFaceState(d);
-    // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
-    // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
-    const bool preTest = test_ == VolumeTest::Sphere;
-    st.depthTest = preTest;
-    const bool window = d.rankCount > 0;
-    st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-    st.stencil.ref = d.rankFirst;
-    st.stencil.readMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
-    st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
-    st.stencil.writeMask = 0xFF;
-    countBits_ = 8;
-    RenderState noPreTest = st;
-    noPreTest.depthTest = false;
-
-    const int batch = batchFor(d.targetCount);
-    const auto lightsUniform = program.uniform<glm::vec4>("uLights");
-    const auto colorsUniform = program.uniform<glm::vec4>("uIndexColors");
-    const auto clampUniform = program.uniform<float>("uClampToFar");
-    std::vector<glm::vec4> lightData(static_cast<size_t>(batch)), colorData(static_cast<size_t>(batch) * d.targetCount);
+void LightVolumePass::drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                               const std::function<IndexColors(uint32_t)>& colors) {
     StateCache& cache = StateCache::current();
-    for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
-        const size_t n = std::min(lights.size() - first, size_t(batch));
-        bool clampToFar = false;
-        for (size_t i = 0; i < n; ++i) {
-            const VolumeLight& l = lights[first + i];
-            lightData[i] = l.posRadius;
-            const IndexColors c = colors(l.index);
-            for (int t = 0; t < d.targetCount; ++t) colorData[i * size_t(d.targetCount) + size_t(t)] = c[size_t(t)];
-            clampToFar = clampToFar || (!depthClamp_ && reachesFarPlane(l));
-        }
-        lightsUniform.setArray(lightData.data(), int(n));
-        colorsUniform.setArray(colorData.data(), int(n) * d.targetCount);
-        clampUniform.set(clampToFar ? 1.0f : 0.0f);
-        // Without depth clamp, vertices pulled onto the far plane break the pre-test (never the shader's).
-        cache.apply(preTest && !clampToFar ? st : noPreTest);
-        cache.drawElements(GL_TRIANGLES, GLsizei(n) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+    if (listSource_) {
+        const size_t index = lights[size_t(step.firstLight)].index;
+        if (index == 0 || index - 1 >= listSource_->steps.size()) throw Error("pixel-list step out of range");
+        listSource_->steps[index - 1]->bind(gl::kUnitPixelListStep);
+        cache.drawArrays(GL_TRIANGLES, 0, 6);
         ++drawCalls_;
+        return;
     }
-    checkGl(("light-volume draw '" + d.name + "'").c_str());
+    const int targets = stepTargets_;
+    const bool batch = stepProgram_ == VolumeProgram::Batch;
+    if (step.loadLights) {
+        if (batch) {
+            for (int i = 0; i < step.lightCount; ++i) {
+                const VolumeLight& l = lights[size_t(step.firstLight + i)];
+                lightData_[size_t(i)] = l.posRadius;
+                const IndexColors c = colors(l.index);
+                for (int t = 0; t < targets; ++t) colorData_[size_t(i * targets + t)] = c[size_t(t)];
+            }
+            lightsUniform_.setArray(lightData_.data(), step.lightCount);
+            colorsUniform_.setArray(colorData_.data(), step.lightCount * targets);
+        } else {
+            const VolumeLight& l = lights[size_t(step.firstLight)];
+            lightsUniform_.set(l.posRadius);
+            const IndexColors c = colors(l.index);
+            colorsUniform_.setArray(c.data(), targets);
+        }
+        clampUniform_.set(step.clampToFar ? 1.0f : 0.0f);
+    }
+    if (batch) {
+        cache.drawElements(GL_TRIANGLES, GLsizei(step.lightCount) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+    } else {
+        cache.drawElements(GL_TRIANGLES, indexCount_[step.detail], GL_UNSIGNED_SHORT,
+                           reinterpret_cast<const void*>(size_t(firstIndex_[step.detail]) * sizeof(uint16_t)));
+    }
+    ++drawCalls_;
 }
 
 void LightVolumePass::end() {

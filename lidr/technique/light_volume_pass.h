@@ -112,16 +112,15 @@ public:
     static constexpr float kSphereDepthSteps = 3.0f;
 
 private:
-    void beginDraw(const VolumeDraw& d);
-    // Back faces, depth GEQUAL (test off), the draw's colour and blend state, stencil on, the scissor.
-    RenderState backFaceState(const VolumeDraw& d) const;  // checks the rank window, restarts the count, selects draw buffers
+    VolumeLightFacts factsFor(const VolumeLight& light) const;
     bool reachesFarPlane(const VolumeLight& light) const;  // the drawn mesh reaches the far plane
     int batchFor(int targetCount) const;  // lights per draw for this many targets
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
-    void drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                     const std::function<IndexColors(uint32_t)>& colors);
+    // A plan's program and per-draw uniforms, then each step's light uniforms and draw call.
+    void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const std::function<IndexColors(uint32_t)>& colors);
+    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                  const std::function<IndexColors(uint32_t)>& colors);
     const gl::Program& batchProgramFor(int targetCount) const;
-    void drawVolume(const VolumeLight& light) const;
     const gl::Program& programFor(int targetCount) const;
     void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
     VolumeTest test_ = VolumeTest::BackFace;
@@ -141,10 +140,12 @@ private:
     mutable std::vector<gl::Program> batchPrograms_;
     const gl::Texture* depth_ = nullptr;
     glm::ivec4 scissor_{-1};  // z < 0: none
-    void applyScissor(RenderState& s) const {
-        s.scissor = scissor_.z >= 0;
-        s.scissorBox = scissor_;
-    }
+    // The current plan's program and its per-step uniforms (one light, or a batch's arrays).
+    VolumeProgram stepProgram_ = VolumeProgram::PerLight;
+    int stepTargets_ = 1;
+    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
+    gl::Uniform<float> clampUniform_;
+    std::vector<glm::vec4> lightData_, colorData_;
     int maxDrawTargets_ = 1;
     gl::Buffer quad_;
     gl::Texture colorTable_;
