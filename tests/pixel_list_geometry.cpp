@@ -86,7 +86,8 @@ void PixelListGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& pl
     program.set("uTableHeight", float((source_->maxIndex / 256 + 1) * d.targetCount));
 }
 
-void PixelListGeometry::drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights, const IndexColorsFor&) {
+void PixelListGeometry::drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                                 const IndexColorsFor&) {
     const uint32_t index = lights[size_t(step.firstLight)].index;
     if (index == 0 || index - 1 >= source_->steps.size()) throw Error("pixel-list step out of range");
     source_->steps[index - 1]->bind(gl::kUnitPixelListStep);

@@ -32,7 +32,8 @@ public:
     void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;
     void end() override;
     void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) override;
-    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors) override;
+    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                  const IndexColorsFor& colors) override;
 
 private:
     const gl::Program& programFor(int targetCount);

@@ -81,8 +81,9 @@ const gl::Program& LightVolumeGeometry::programFor(int targetCount) const {
     gl::Program& p = programs_[size_t(targetCount - 1)];
     if (!p) {
         const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        p = gl::Program::create("light_volume-" + std::to_string(targetCount), buildShaderSource("light_volume.vert", defs),
-                                buildShaderSource("light_volume.frag", defs), {{"aPosition", gl::kPosition}});
+        p = gl::Program::create("light_volume-" + std::to_string(targetCount),
+                                buildShaderSource("light_volume.vert", defs), buildShaderSource("light_volume.frag", defs),
+                                {{"aPosition", gl::kPosition}});
     }
     return p;
 }

@@ -46,7 +46,8 @@ public:
     // Before a plan's steps: its program and the uniforms of the whole draw.
     virtual void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) = 0;
     // One step (its state is applied): the lights' uniforms where step.loadLights, then the draw call.
-    virtual void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors) = 0;
+    virtual void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                          const IndexColorsFor& colors) = 0;
 };
 
 class LightVolumeGeometry final : public VolumeGeometry {
@@ -59,7 +60,8 @@ public:
     void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;
     void end() override;
     void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) override;
-    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors) override;
+    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                  const IndexColorsFor& colors) override;
 
     // The mesh drawn for a light (0 = 20 faces, 1 = 80, 2 = 320) and its relative vertex distance; the shader
     // tests' outsideRadiusFor is kSphereRadiusScale, what they mark, whatever mesh they draw.

@@ -61,12 +61,8 @@ bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
     return volumeMarksWholeFootprint(test_, depthClamp_, geometry().factsFor(l, camera_).reachesFarPlane);
 }
 
-void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                           const IndexColorsFor& colors) {
-    if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
-    if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
-        throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
-    VolumeGeometry& geometry = activeGeometry();
+VolumeDrawPlan LightVolumePass::planFor(const VolumeDraw& d, const std::vector<VolumeLight>& lights) const {
+    const VolumeGeometry& geometry = this->geometry();
     std::vector<VolumeLightFacts> facts;
     facts.reserve(lights.size());
     for (const VolumeLight& l : lights) facts.push_back(geometry.factsFor(l, camera_));
@@ -77,8 +73,15 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     context.drawBuffers = maxDrawTargets_ > 1;
     context.batchSize = geometry.batchFor(d.targetCount);
     context.scissor = scissor_;
-    const VolumeDrawPlan plan = planVolumeDraw(d, context, facts);
+    return planVolumeDraw(d, context, facts);
+}
 
+void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors) {
+    if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
+    if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
+        throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
+    const VolumeDrawPlan plan = planFor(d, lights);
+    VolumeGeometry& geometry = activeGeometry();
     StateCache& cache = StateCache::current();  // sets per step only what differs from the last
     if (plan.restartCount) {
         ClearAction clear;

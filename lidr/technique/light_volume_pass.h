@@ -55,6 +55,8 @@ public:
     // Draws each light's volume with the sub-pass's state (planVolumeDraw); colors(index) gives the value per
     // target.
     void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors);
+    // The plan draw() runs for these lights (the camera and scissor of the current pass); CPU only.
+    VolumeDrawPlan planFor(const VolumeDraw& d, const std::vector<VolumeLight>& lights) const;
     void end();
     // Limits the following draws to a pixel rectangle (x, y, width, height; GL window coordinates), e.g. where
     // transparent geometry can be; nullptr: the whole target.
