@@ -20,6 +20,7 @@
 #include "lidr/gl/shader_source.h"
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/scene/default_scene.h"
+#include "pixel_list_geometry.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -93,7 +94,7 @@ TEST_CASE("GLSL ES 1.00 from the GLSL 1.20 sources: a new header, the rest byte 
     REQUIRE_THROWS_WITH(glslEs100FromGlsl120("#version 150\nvoid main() {}\n", ShaderStage::Fragment, "ms.frag"),
                         Contains("ms.frag") && Contains("GLSL 150") && Contains("GLSL ES 1.00"));
     // gl_FragDepth (the pixel-list test hook) is EXT_frag_depth's.
-    const std::string depth = glslEs100FromGlsl120(buildShaderSource("pixel_list_volume.frag", {{"LIDR_DRAW_TARGETS", "1"}}),
+    const std::string depth = glslEs100FromGlsl120(testShaderSource("pixel_list_volume.frag", {{"LIDR_DRAW_TARGETS", "1"}}),
                                                    ShaderStage::Fragment, "pixel_list_volume.frag");
     REQUIRE_THAT(depth, Contains("#extension GL_EXT_frag_depth : require\n") && Contains("gl_FragDepthEXT = "));
     REQUIRE_THAT(depth, !Contains("gl_FragDepth ="));

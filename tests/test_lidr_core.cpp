@@ -366,6 +366,41 @@ TEST_CASE("volume detail: coarse volumes for lights small on screen, same result
     CHECK(detail.volumeOutsideRadius() == detail.outsideRadiusFor(small));  // the bound covers every volume
 }
 
+TEST_CASE("the volume pass draws its plan: a draw call per step, the mesh the pass chose", "[lidr][volume-plan]") {
+    testContext();
+    const Scene floor = floorScene();
+    const CameraMatrices cam = cameraMatrices(floor.camera, floor.width, floor.height);
+    gl::Renderbuffer depthStencil = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, floor.width, floor.height);
+    PackingConfig config;
+    config.scheme = "bitshift";
+    config.budget = 16;  // two rank windows, the second restarting the count
+    config.indexBits = 8;
+    const auto scheme = createPackingScheme(config, testGl());
+    IndexTargets targets(scheme->targetCount(), floor.width, floor.height, depthStencil);
+    const std::vector<VolumeLight> lights = {{1, glm::vec4(-10.0f, 0.2f, -10.0f, 0.05f)},
+                                             {2, glm::vec4(0.0f, 1.0f, 0.0f, 6.0f)},
+                                             {3, glm::vec4(2.0f, 0.5f, 1.0f, 2.0f)}};
+    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace}) {
+        INFO(volumeTestName(test));
+        LightVolumePass pass(testGl(), test, true);
+        pass.begin(targets, cam);
+        size_t steps = 0;
+        for (const SchemeDraw& sd : scheme->plan(lights, &pass)) {
+            const VolumeDrawPlan plan = pass.planFor(sd.draw, sd.lights);
+            for (const VolumeStep& step : plan.steps)
+                CHECK(step.detail == pass.detailFor(sd.lights[size_t(step.firstLight)]));
+            steps += plan.steps.size();
+            pass.draw(sd.draw, sd.lights, sd.colors);
+        }
+        pass.end();
+        glUseProgram(0);  // the pass's program dies with it: a later frame's SavedGlState would restore a dead name
+        // Two windows, three lights: a colour and a count draw per light, four draws with the exact test.
+        CHECK(steps == 2 * 3 * (test == VolumeTest::ExactStencil ? 4 : 2));
+        CHECK(pass.drawCalls() == long(steps));
+    }
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
 TEST_CASE("volume detail on many small lights: same results within the budget", "[lidr][detail][slow]") {
     // Rendered: many small lights, every scheme's list check and the image within the budget as without it,
     // and the coarse volumes really drawn (they mark more pixels than the 320-face ones).

@@ -1,8 +1,8 @@
 // Shader-unpack tests: index lists go through each scheme's REAL volume draws (blend, colour masks, stencil
-// rank windows, both volume tests) via the light-volume pass's pixel-list hook, one list per pixel; the index
-// targets are then decoded by the scheme's REAL unpack shader. Checked per pixel: the bytes against the CPU
-// blend/stencil model, the stencil count against the list length, the shader's slots against the CPU unpack
-// model, and the kept lights against the truth (the first `budget` lights in draw order).
+// rank windows, both volume tests) via the light-volume pass drawing pixel lists (pixel_list_geometry.h), one
+// list per pixel; the index targets are then decoded by the scheme's REAL unpack shader. Checked per pixel:
+// the bytes against the CPU blend/stencil model, the stencil count against the list length, the shader's slots
+// against the CPU unpack model, and the kept lights against the truth (the first `budget` lights in draw order).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "pixel_list_geometry.h"
 #include "lidr/base/gl.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_resources.h"
@@ -88,7 +89,9 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     auto& cached = passes[test];
     if (!cached) cached = std::make_unique<LightVolumePass>(testGl(), test);
     LightVolumePass& pass = *cached;
-    pass.setPixelListSource(&source);
+    static PixelListGeometry geometry(testGl());
+    geometry.setSource(&source);
+    pass.setGeometry(&geometry);
     targets.framebuffer().bind();
     RenderState depthClear;
     depthClear.depthWrite = true;
@@ -104,7 +107,7 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     for (size_t j = 0; j < steps; ++j) lights.push_back({uint32_t(j + 1), glm::vec4(0.0f, 0.0f, -10.0f, 1.0f)});
     scheme.encode(pass, lights);
     pass.end();
-    pass.setPixelListSource(nullptr);
+    pass.setGeometry(nullptr);
 
     UnpackRun run;
     run.width = width;
@@ -136,7 +139,7 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     gl::Program& probe = probes[scheme.describe()];
     if (!probe)
         probe = gl::Program::create(
-            "unpack-probe-" + scheme.name(), buildShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
+            "unpack-probe-" + scheme.name(), testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
             buildShaderSource("unpack_probe.frag", scheme.unpackDefines(), {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
             {{"aPosition", gl::kPosition}});
     gl::Texture out = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);

@@ -12,7 +12,7 @@ enum TextureUnit : int {
     kUnitIndexTargetLast = 7,
     // Light volume pass, sphere tests: the copy of the pre-pass depth.
     kUnitDepthCopy = 0,
-    // Light volume pass, pixel lists (tests/): the list step and the colour table.
+    // Light volume pass drawing pixel lists (tests/pixel_list_geometry.h): the list step and the colour table.
     kUnitPixelListStep = 0,
     kUnitPixelListColors = 1,
     // Tiled forward: the tile grid and the light list (lidr/modes/light_grid.h).

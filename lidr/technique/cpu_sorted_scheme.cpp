@@ -39,7 +39,7 @@ CpuSortedScheme::CpuSortedScheme(const PackingConfig& config, const GlInfo& info
 }
 
 bool CpuSortedScheme::mayShareAPixel(const VolumeLight& a, const VolumeLight& b, const LightVolumePass& pass) {
-    if (pass.drawingPixelLists()) return true;  // the test hook marks every pixel of a list with every step
+    if (!pass.geometry().marksWithinLightFootprints()) return true;  // e.g. a test's per-pixel lists
     const float outsideA = pass.outsideRadiusFor(a), outsideB = pass.outsideRadiusFor(b);  // the volumes drawn
     const CameraMatrices& cam = pass.camera();
     if (!screenFootprint(cam, a.posRadius, outsideA).overlaps(screenFootprint(cam, b.posRadius, outsideB))) return false;

@@ -3,32 +3,9 @@
 
 #include <algorithm>
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "lidr/base/error.h"
-#include "lidr/gl/shader_source.h"
 
 namespace lidr {
-
-const char* volumeTestName(VolumeTest t) {
-    switch (t) {
-    case VolumeTest::BackFace: return "backface";
-    case VolumeTest::ExactStencil: return "exact";
-    case VolumeTest::FrontFace: return "frontface";
-    case VolumeTest::Sphere: return "sphere";
-    case VolumeTest::SphereRay: return "sphere-ray";
-    }
-    return "?";
-}
-
-VolumeTest parseVolumeTest(const std::string& name) {
-    if (name == "backface" || name == "back-face") return VolumeTest::BackFace;
-    if (name == "exact" || name == "exact-stencil") return VolumeTest::ExactStencil;
-    if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
-    if (name == "sphere") return VolumeTest::Sphere;
-    if (name == "sphere-ray") return VolumeTest::SphereRay;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface, sphere, sphere-ray)");
-}
 
 IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
     : width_(width), height_(height), samples_(samples) {
@@ -62,92 +39,12 @@ const gl::Framebuffer& IndexTargets::framebufferFrom(int first) const {
 size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail)
-    : test_(test), depthClamp_(info.depthClamp), gles_(info.gles), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
-    std::vector<glm::vec3> positions;
-    std::vector<uint16_t> indices;
-    for (int level = 0; level < kDetailLevels; ++level) {
-        meshes_[level] = makeLightVolumeMesh(level);
-        const auto base = static_cast<uint16_t>(positions.size());  // GL 2.1 has no base vertex: offset here
-        firstIndex_[level] = static_cast<GLsizei>(indices.size());
-        indexCount_[level] = static_cast<GLsizei>(meshes_[level].indices.size());
-        positions.insert(positions.end(), meshes_[level].positions.begin(), meshes_[level].positions.end());
-        for (uint16_t i : meshes_[level].indices) indices.push_back(static_cast<uint16_t>(base + i));
-    }
-    vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
-    indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
-    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
-    programs_.resize(kMaxIndexTargets);
-    listPrograms_.resize(kMaxIndexTargets);
-    batchPrograms_.resize(kMaxIndexTargets);
-    if (isShaderVolumeTest(test)) {
-        // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
-        // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
-        // its extra fill costs less than their vertices (doc/benchmarks.md).
-        const LightVolumeMesh& mesh = meshes_[batchLevel_];
-        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 2;  // one target
-        batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
-        std::vector<glm::vec4> copies;
-        std::vector<uint16_t> copyIndices;
-        copies.reserve(mesh.positions.size() * size_t(batch_));
-        copyIndices.reserve(mesh.indices.size() * size_t(batch_));
-        for (int slot = 0; slot < batch_; ++slot) {
-            const auto base = static_cast<uint16_t>(copies.size());
-            for (const glm::vec3& p : mesh.positions) copies.emplace_back(p, float(slot));
-            for (uint16_t i : mesh.indices) copyIndices.push_back(static_cast<uint16_t>(base + i));
-        }
-        batchCopyIndices_ = static_cast<GLsizei>(mesh.indices.size());
-        batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
-        batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
-        maxVertexUniformVectors_ = info.maxVertexUniformVectors;
-    }
-}
-
-int LightVolumePass::batchFor(int targetCount) const {
-    return std::max(1, std::min(batch_, (maxVertexUniformVectors_ - kReservedVertexUniforms) / (1 + targetCount)));
-}
-
-const gl::Program& LightVolumePass::batchProgramFor(int targetCount) const {
-    if (targetCount != 1 && targetCount != 2 && targetCount != 4)
-        throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " + std::to_string(targetCount));
-    if (targetCount > maxDrawTargets_)
-        throw UnsupportedError("writing " + std::to_string(targetCount) +
-                               " index targets at once needs that many draw buffers");
-    gl::Program& p = batchPrograms_[size_t(targetCount - 1)];
-    if (!p) {
-        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
-                              {"LIDR_BATCH", std::to_string(batchFor(targetCount))}};
-        if (test_ == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-        p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
-                                buildShaderSource("light_volume_batch.vert", defs),
-                                buildShaderSource("light_volume_sphere.frag", defs),
-                                {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
-    }
-    return p;
-}
-
-const gl::Program& LightVolumePass::programFor(int targetCount) const {
-    if (targetCount < 1 || targetCount > maxDrawTargets_)
-        throw UnsupportedError("writing " + std::to_string(targetCount) +
-                               " index targets at once needs that many draw buffers");
-    gl::Program& p = (listSource_ ? listPrograms_ : programs_)[size_t(targetCount - 1)];
-    if (!p) {
-        const std::string base = listSource_ ? "pixel_list_volume" : "light_volume";
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        p = gl::Program::create(base + "-" + std::to_string(targetCount), buildShaderSource(base + ".vert", defs),
-                                buildShaderSource(base + ".frag", defs), {{"aPosition", gl::kPosition}});
-    }
-    return p;
-}
+    : test_(test), depthClamp_(info.depthClamp), gles_(info.gles),
+      maxDrawTargets_(std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1)),
+      volumes_(info, test, volumeDetail) {}
 
 void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera, const gl::Texture* depth) {
-    if (isShaderVolumeTest(test_) && !listSource_ && !(depth && *depth))
-        throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the pre-pass depth as a texture");
-    depth_ = depth;
-    if (listSource_ && !quad_) {
-        // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
-        const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
-        quad_ = gl::Buffer::create(GL_ARRAY_BUFFER, q, sizeof(q));
-    }
+    activeGeometry().begin(camera, glm::ivec2(targets.width(), targets.height()), depth);
     targets_ = &targets;
     camera_ = camera;
     drawCalls_ = 0;
@@ -157,357 +54,54 @@ void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& c
         for (int i = 0; i < targets.count(); ++i) pass.drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + i);
     pass.clear.color = pass.clear.stencil = true;  // index 0 (the null light) everywhere, no light counted
     StateCache::current().beginPass(pass);
-    if (isShaderVolumeTest(test_) && !listSource_) {
-        glBindBuffer(GL_ARRAY_BUFFER, batchVertices_.id());
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
-        glEnableVertexAttribArray(gl::kPosition);
-        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-        glEnableVertexAttribArray(gl::kVolumeSlot);
-        glVertexAttribPointer(gl::kVolumeSlot, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
-                              reinterpret_cast<const void*>(3 * sizeof(float)));
-    } else {
-        glBindBuffer(GL_ARRAY_BUFFER, listSource_ ? quad_.id() : vertices_.id());
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
-        glEnableVertexAttribArray(gl::kPosition);
-        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    }
     checkGl("light-volume pass begin");
 }
 
-int LightVolumePass::detailFor(const VolumeLight& l) const {
-    const int finest = kDetailLevels - 1;
-    if (isShaderVolumeTest(test_)) return batchLevel_;
-    if (coarsest_ == finest) return finest;
-    // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
-    // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
-    // Near, behind or far off-axis: the finest volume.
-    const glm::vec3 toCentre = glm::vec3(l.posRadius) - camera_.eye;
-    const float distance = glm::length(toCentre), radius = l.posRadius.w;
-    if (!(distance - radius * meshes_[0].outsideRadius > camera_.nearPlane * 1.5f)) return finest;
-    const float cosOff = glm::dot(toCentre, camera_.forward) / distance;
-    if (!(cosOff > 0.2f)) return finest;
-    const float focal = camera_.projection[1][1] * 0.5f * float(camera_.height);
-    const float sinA = radius / distance;
-    const float pixels = focal * sinA / std::sqrt(std::max(1e-6f, 1.0f - sinA * sinA)) / (cosOff * cosOff);
-    // The coarsest volume whose reach past the finest one's stays under a pixel.
-    for (int level = coarsest_; level < finest; ++level)
-        if ((meshes_[level].outsideRadius - meshes_[finest].outsideRadius) * pixels <= 1.0f) return level;
-    return finest;
-}
-
-float LightVolumePass::outsideRadiusFor(const VolumeLight& light) const {
-    // The shader tests mark exactly what the sphere (times kSphereRadiusScale) reaches, whatever mesh is drawn.
-    if (isShaderVolumeTest(test_) && !listSource_) return kSphereRadiusScale;
-    return meshes_[size_t(detailFor(light))].outsideRadius;
-}
-
-bool LightVolumePass::reachesFarPlane(const VolumeLight& l) const {
-    return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward) +
-               l.posRadius.w * meshes_[size_t(detailFor(l))].outsideRadius >=
-           camera_.farPlane * 0.999f;
-}
-
 bool LightVolumePass::marksWholeFootprint(const VolumeLight& l) const {
-    if (depthClamp_ || listSource_ || isShaderVolumeTest(test_)) return false;
-    return reachesFarPlane(l);
+    return volumeMarksWholeFootprint(test_, depthClamp_, geometry().factsFor(l, camera_).reachesFarPlane);
 }
 
-void LightVolumePass::drawVolume(const VolumeLight& light) const {
-    if (listSource_) {
-        const size_t step = light.index - 1;
-        if (light.index == 0 || step >= listSource_->steps.size()) throw Error("pixel-list step out of range");
-        listSource_->steps[step]->bind(gl::kUnitPixelListStep);
-        StateCache::current().drawArrays(GL_TRIANGLES, 0, 6);
-    } else {
-        const int level = detailFor(light);
-        StateCache::current().drawElements(GL_TRIANGLES, indexCount_[level], GL_UNSIGNED_SHORT,
-                                           reinterpret_cast<const void*>(size_t(firstIndex_[level]) * sizeof(uint16_t)));
-    }
-    ++drawCalls_;
+VolumeDrawPlan LightVolumePass::planFor(const VolumeDraw& d, const std::vector<VolumeLight>& lights) const {
+    const VolumeGeometry& geometry = this->geometry();
+    std::vector<VolumeLightFacts> facts;
+    facts.reserve(lights.size());
+    for (const VolumeLight& l : lights) facts.push_back(geometry.factsFor(l, camera_));
+    VolumePlanContext context;
+    context.test = test_;
+    context.depthClamp = depthClamp_;
+    context.gles = gles_;
+    context.drawBuffers = maxDrawTargets_ > 1;
+    context.batchSize = geometry.batchFor(d.targetCount);
+    context.scissor = scissor_;
+    return planVolumeDraw(d, context, facts);
 }
 
-// The test hook's colour table: row block t (rows t*R .. t*R+R-1, R = rows per target) holds target t's colour
-// of index i at texel (i mod 256, t*R + i/256), exactly the bytes the colors callback asks for.
-void LightVolumePass::uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors) {
-    const int rows = static_cast<int>(listSource_->maxIndex / 256 + 1);
-    const int height = rows * d.targetCount;
-    std::vector<uint8_t> texels(size_t(256) * height * 4, 0);
-    for (uint32_t i = 0; i <= listSource_->maxIndex; ++i) {
-        const IndexColors c = colors(i);
-        for (int t = 0; t < d.targetCount; ++t)
-            for (int ch = 0; ch < 4; ++ch) {
-                const float v = std::clamp(c[t][ch], 0.0f, 1.0f) * 255.0f;
-                texels[((size_t(t) * rows + i / 256) * 256 + i % 256) * 4 + ch] = static_cast<uint8_t>(std::lround(v));
-            }
-    }
-    colorTable_ = gl::Texture::create2D(GL_RGBA8, 256, height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-}
-
-void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                           const std::function<IndexColors(uint32_t)>& colors) {
+void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors) {
     if (!targets_) throw Error("LightVolumePass::draw outside begin/end");
     if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
         throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
-    if (isShaderVolumeTest(test_) && !listSource_) return drawBatched(d, lights, colors);
-    const gl::Program& program = programFor(d.targetCount);
-    program.use();
-    if (!listSource_) program.set("uViewProj", camera_.viewProjection);  // the pixel-list quads are in clip space
-    if (listSource_) {
-        uploadColorTable(d, colors);
-        colorTable_.bind(gl::kUnitPixelListColors);
-        program.set("uStepIndices", gl::kUnitPixelListStep);
-        program.set("uColorTable", gl::kUnitPixelListColors);
-        program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
-        program.set("uTableRowsPerTarget", float(listSource_->maxIndex / 256 + 1));
-        program.set("uTableHeight", float((listSource_->maxIndex / 256 + 1) * d.targetCount));
-    }
-    beginDraw(d);
-    // Per light: looked up once per draw, set through typed handles (the pixel-list program has none of them).
-    gl::Uniform<glm::vec4> posRadiusUniform, indexColorUniform;
-    gl::Uniform<float> clampUniform;
-    if (!listSource_) {
-        posRadiusUniform = program.uniform<glm::vec4>("uLightPosRadius");
-        indexColorUniform = program.uniform<glm::vec4>("uIndexColor");
-        clampUniform = program.uniform<float>("uClampToFar");
-    }
-
-    // The volume test proper: back faces (cull front) at or behind the surface.
-    RenderState inside = backFaceState(d);
-    inside.depthTest = true;
-
-    RenderState mark, count, unmark;
-    // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
-    // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
-    const bool window = d.rankCount > 0;
-    const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
-    // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
-    // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
-    // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
-    // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
-    // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
-    bool separateCount = false;
-    if (test_ == VolumeTest::BackFace || test_ == VolumeTest::FrontFace) {
-        inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-        inside.stencil.ref = d.rankFirst;
-        inside.stencil.readMask = windowMask;
-        if (window) {
-            separateCount = true;
-            inside.stencil.writeMask = 0;
-            count = inside;
-            count.colorMask = glm::bvec4(false);
-            count.blend = false;
-            count.stencil.func = GL_ALWAYS;
-            count.stencil.depthPass = GL_INCR;  // saturates at 255
-            count.stencil.writeMask = 0xFF;
-        } else {
-            inside.stencil.depthPass = GL_INCR;
-        }
-        countBits_ = 8;
-    } else {
-        // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
-        // bits 0..6 count the lights that really contain the surface.
-        mark.depthTest = true;
-        mark.depthFunc = GL_GREATER;  // front face behind the surface: surface in front of the light
-        mark.depthClamp = depthClamp_;
-        mark.cull = true;
-        mark.cullFace = GL_BACK;
-        mark.colorMask = glm::bvec4(false);
-        mark.stencilTest = true;
-        mark.stencil.func = GL_ALWAYS;
-        mark.stencil.ref = 0x80;
-        mark.stencil.depthPass = GL_REPLACE;
-        mark.stencil.writeMask = 0x80;
-        applyScissor(mark);
-        unmark = mark;
-        unmark.stencil.ref = 0;
-        // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
-        inside.stencil.func = window ? GL_EQUAL : GL_GREATER;
-        inside.stencil.ref = window ? d.rankFirst : 0x80;
-        inside.stencil.readMask = windowMask;
-        inside.stencil.writeMask = 0;
-        count = inside;
-        count.colorMask = glm::bvec4(false);
-        count.blend = false;
-        count.stencil.func = GL_GREATER;
-        count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
-        count.stencil.readMask = 0xFF;
-        count.stencil.depthPass = GL_INCR;
-        count.stencil.writeMask = 0x7F;
-        countBits_ = 7;
-    }
-
-    // Without depth clamp, a back face beyond the far plane would be clipped and would not mark the pixels
-    // in front of it: such lights are pulled onto the far plane in the vertex shader and skip the depth test
-    // (conservative: the whole footprint is marked).
-    auto depthOf = [&](const VolumeLight& l) { return glm::dot(glm::vec3(l.posRadius) - camera_.eye, camera_.forward); };
-    RenderState insideNoDepth = inside;
-    insideNoDepth.depthFunc = GL_ALWAYS;
-    // Front-face test: front faces at or before the surface. A volume reaching in front of the near plane
-    // (or holding the camera) has its front faces clipped there; it is drawn by its back faces without a
-    // depth test instead, which marks every ray that is inside the volume anywhere past the near plane.
-    auto reachesNear = [&](const VolumeLight& l) {
-        return depthOf(l) - l.posRadius.w * outsideRadiusFor(l) <= camera_.nearPlane * 1.001f;
-    };
-
-    enum Choice { kInside, kInsideNoDepth, kFront };
-    StateCache& cache = StateCache::current();  // sets per light only what differs from the last draw
-    // The state of a draw of the chosen kind, from a base (the colour draw or the count draw).
-    auto stateFor = [&](int choice, const RenderState& base) {
-        RenderState st = base;
-        if (choice == kInsideNoDepth) {
-            st.depthFunc = GL_ALWAYS;
-        } else if (choice == kFront) {
-            st.depthFunc = GL_LEQUAL;
-            st.cullFace = GL_BACK;
-        }
-        return st;
-    };
-    for (const VolumeLight& l : lights) {
-        const bool clampToFar = marksWholeFootprint(l);
-        if (!listSource_) {
-            posRadiusUniform.set(l.posRadius);
-            const IndexColors c = colors(l.index);
-            indexColorUniform.setArray(c.data(), d.targetCount);
-            clampUniform.set(clampToFar ? 1.0f : 0.0f);
-        }
-        if (test_ == VolumeTest::ExactStencil) {
-            cache.apply(mark);
-            drawVolume(l);
-            cache.apply(clampToFar ? insideNoDepth : inside);
-            drawVolume(l);
-            RenderState c2 = count;
-            if (clampToFar) c2.depthFunc = GL_ALWAYS;
-            cache.apply(c2);
-            drawVolume(l);
-            cache.apply(unmark);
-            drawVolume(l);
-            continue;
-        }
-        int want = clampToFar ? kInsideNoDepth : kInside;
-        if (test_ == VolumeTest::FrontFace) want = (!listSource_ && reachesNear(l)) ? kInsideNoDepth : kFront;
-        if (separateCount) {
-            if (d.writesColor()) {
-                cache.apply(stateFor(want, inside));
-                drawVolume(l);
-            }
-            cache.apply(stateFor(want, count));
-            drawVolume(l);
-            continue;
-        }
-        cache.apply(stateFor(want, inside));
-        drawVolume(l);
-    }
-    checkGl(("light-volume draw '" + d.name + "'").c_str());
-}
-
-RenderState LightVolumePass::backFaceState(const VolumeDraw& d) const {
-    RenderState s;
-    s.depthFunc = GL_GEQUAL;
-    s.depthClamp = depthClamp_;  // back faces past the far plane still mark the pixels in front of them
-    s.cull = true;
-    s.cullFace = GL_FRONT;
-    s.colorMask = d.colorMask;
-    s.blend = d.blend;
-    s.blendEquation = d.blendEquation;
-    s.blendSrcRgb = s.blendSrcAlpha = d.blendSrc;
-    s.blendDstRgb = s.blendDstAlpha = d.blendDst;
-    s.blendColor = d.blendColor;
-    s.stencilTest = true;
-    applyScissor(s);
-    return s;
-}
-
-void LightVolumePass::beginDraw(const VolumeDraw& d) {
-    if (d.rankCount < 0 || (d.rankCount & (d.rankCount - 1)) != 0 || d.rankCount > 64 ||
-        (d.rankCount > 0 && d.rankFirst % d.rankCount != 0) || d.rankFirst < 0 || d.rankFirst + d.rankCount > 64)
-        throw Error("volume draw '" + d.name + "': a rank window is a power of two, aligned, below 64");
-    StateCache& cache = StateCache::current();
-    if (d.restartCount) {
+    const VolumeDrawPlan plan = planFor(d, lights);
+    VolumeGeometry& geometry = activeGeometry();
+    StateCache& cache = StateCache::current();  // sets per step only what differs from the last
+    if (plan.restartCount) {
         ClearAction clear;
         clear.stencil = true;
         cache.clear(clear);
     }
-    std::vector<GLenum> buffers;
-    if (gles_) {  // gl_FragData[i] goes to COLOR_ATTACHMENTi only: the targets from firstTarget on start at 0
-        targets_->framebufferFrom(d.firstTarget).bind();
-        for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + i);
-        if (maxDrawTargets_ > 1) cache.setDrawBuffers(buffers);
-        return;
-    }
-    for (int i = 0; i < d.targetCount; ++i) buffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
-    cache.setDrawBuffers(buffers);
-}
-
-void LightVolumePass::drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                                  const std::function<IndexColors(uint32_t)>& colors) {
-    const gl::Program& program = batchProgramFor(d.targetCount);
-    program.use();
-    program.set("uViewProj", camera_.viewProjection);
-    program.set("uView", camera_.view);
-    // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
-    // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
-    const glm::mat4& P = camera_.projection;
-    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the sphere volume tests need a perspective projection");
-    program.set("uDepthToDistance", glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)));
-    program.set("uNearPlane", camera_.nearPlane);
-    program.set("uInvTargetSize", glm::vec2(1.0f / targets_->width(), 1.0f / targets_->height()));
-    program.set("uRadiusScale", kSphereRadiusScale);
-    program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
-    program.set("uDepth", gl::kUnitDepthCopy);
-    depth_->bind(gl::kUnitDepthCopy);
-    beginDraw(d);
-
-    // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
-    // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
-    // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
-    // one draw does what the stencil tests need a count draw for.
-    RenderState st = backFaceState(d);
-    // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
-    // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
-    const bool preTest = test_ == VolumeTest::Sphere;
-    st.depthTest = preTest;
-    const bool window = d.rankCount > 0;
-    st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-    st.stencil.ref = d.rankFirst;
-    st.stencil.readMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
-    st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
-    st.stencil.writeMask = 0xFF;
-    countBits_ = 8;
-    RenderState noPreTest = st;
-    noPreTest.depthTest = false;
-
-    const int batch = batchFor(d.targetCount);
-    const auto lightsUniform = program.uniform<glm::vec4>("uLights");
-    const auto colorsUniform = program.uniform<glm::vec4>("uIndexColors");
-    const auto clampUniform = program.uniform<float>("uClampToFar");
-    std::vector<glm::vec4> lightData(static_cast<size_t>(batch)), colorData(static_cast<size_t>(batch) * d.targetCount);
-    StateCache& cache = StateCache::current();
-    for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
-        const size_t n = std::min(lights.size() - first, size_t(batch));
-        bool clampToFar = false;
-        for (size_t i = 0; i < n; ++i) {
-            const VolumeLight& l = lights[first + i];
-            lightData[i] = l.posRadius;
-            const IndexColors c = colors(l.index);
-            for (int t = 0; t < d.targetCount; ++t) colorData[i * size_t(d.targetCount) + size_t(t)] = c[size_t(t)];
-            clampToFar = clampToFar || (!depthClamp_ && reachesFarPlane(l));
-        }
-        lightsUniform.setArray(lightData.data(), int(n));
-        colorsUniform.setArray(colorData.data(), int(n) * d.targetCount);
-        clampUniform.set(clampToFar ? 1.0f : 0.0f);
-        // Without depth clamp, vertices pulled onto the far plane break the pre-test (never the shader's).
-        cache.apply(preTest && !clampToFar ? st : noPreTest);
-        cache.drawElements(GL_TRIANGLES, GLsizei(n) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+    if (plan.framebufferFrom >= 0) targets_->framebufferFrom(plan.framebufferFrom).bind();
+    if (!plan.drawBuffers.empty()) cache.setDrawBuffers(plan.drawBuffers);
+    geometry.beginSteps(d, plan, colors);
+    for (const VolumeStep& step : plan.steps) {
+        cache.apply(plan.stateOf(step));
+        geometry.drawStep(step, lights, colors);
         ++drawCalls_;
     }
+    countBits_ = plan.countBits;
     checkGl(("light-volume draw '" + d.name + "'").c_str());
 }
 
 void LightVolumePass::end() {
-    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(gl::kVolumeSlot);
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    activeGeometry().end();
     StateCache::current().apply(RenderState{});
     targets_ = nullptr;
     checkGl("light-volume pass end");

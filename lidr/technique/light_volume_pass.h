@@ -1,9 +1,8 @@
 #pragma once
 // Pass 2 of LIDR: light volumes rasterised into the RGBA8 light-index targets. The pass owns the volume test
 // (which pixels a light marks) and the stencil bookkeeping; the packing scheme owns what is written there
-// (colour, blend state, slot limits) and calls draw() once per sub-pass.
-#include <array>
-#include <functional>
+// (colour, blend state, slot limits) and calls draw() once per sub-pass. Which state each draw takes is
+// planned on the CPU (volume_draw_plan.h); what is drawn is the geometry's (light_volume_geometry.h).
 #include <string>
 #include <vector>
 
@@ -11,37 +10,10 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
-#include "lidr/technique/light_volume_mesh.h"
+#include "lidr/technique/light_volume_geometry.h"
+#include "lidr/technique/volume_draw_plan.h"
 
 namespace lidr {
-
-enum class VolumeTest {
-    BackFace,      // back faces, depth GEQUAL: cheap; also marks surfaces in front of a light (wastes slots)
-    ExactStencil,  // per light: front faces mark the pixels in front of the volume in stencil, then back
-                   // faces GEQUAL where unmarked: exactly the surfaces inside the volume
-    FrontFace,     // front faces, depth LEQUAL: every light whose volume crosses the eye ray in front of the
-                   // opaque surface, so transparent surfaces and MSAA edge samples in front find their lights
-    // The shader tests: the fragment shader reads a copy of the pre-pass depth and discards what the light's
-    // true sphere does not reach, so the stencil sees real marks only; lights go in batches of many per draw.
-    Sphere,        // the surface point lies inside the sphere: exactly the lights that shade the pixel
-    SphereRay,     // the eye ray between the near plane and the surface meets the sphere: the front-face lists
-                   // of transparent layers and MSAA edge samples, exactly
-};
-// True for the tests decided in the fragment shader (they need the pre-pass depth as a texture).
-inline bool isShaderVolumeTest(VolumeTest t) { return t == VolumeTest::Sphere || t == VolumeTest::SphereRay; }
-// True for the tests that mark every light crossing the eye ray before the surface (front-face lists).
-inline bool isFrontFaceVolumeTest(VolumeTest t) { return t == VolumeTest::FrontFace || t == VolumeTest::SphereRay; }
-const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface", "sphere", "sphere-ray"
-
-constexpr int kMaxIndexTargets = 8;
-using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
-
-// A light as the volume pass sees it: its 1-based index and where it is.
-struct VolumeLight {
-    uint32_t index = 0;
-    glm::vec4 posRadius{0.0f};
-};
 
 // The index textures of one frame plus the FBO that renders into them (depth-stencil shared with the scene).
 class IndexTargets {
@@ -69,35 +41,6 @@ private:
     int width_ = 0, height_ = 0, samples_ = 0;
 };
 
-// One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.
-struct VolumeDraw {
-    std::string name = "light-volumes";
-    int firstTarget = 0, targetCount = 1;  // written together (draw buffers) when targetCount > 1
-    glm::bvec4 colorMask{true, true, true, true};
-    bool blend = false;
-    GLenum blendEquation = glc::kFuncAdd;
-    GLenum blendSrc = glc::kOne, blendDst = glc::kZero;
-    glm::vec4 blendColor{0.0f};
-    // Stencil rank window. rankCount > 0: a light writes only where it is the rankFirst-th ..
-    // (rankFirst + rankCount - 1)-th light (0-based, in draw order) to mark the pixel in this draw. rankCount is
-    // a power of two and rankFirst a multiple of it: the test is a masked GL_EQUAL on the count. rankCount 0:
-    // every marking light writes. Either way the stencil counts every light that marks the pixel (saturating),
-    // so lights past the window are counted, not written.
-    int rankFirst = 0, rankCount = 0;
-    bool restartCount = false;  // clear the count first: a further pass over the same lights ranks them anew
-    bool writesColor() const { return colorMask.r || colorMask.g || colorMask.b || colorMask.a; }
-};
-
-// Test hook: instead of light volumes, "light" j (VolumeLight::index = j + 1) is a full-target quad that marks
-// exactly the pixels whose list has a j-th entry, and writes the colours of THAT entry's index (looked up in a
-// table the pass fills from the draw's colors callback). Through it any per-pixel index lists go through the
-// real blend and stencil state of a scheme's draws. The quad is a back face; clear depth to 0.5: list entries
-// pass the depth test, "decoy" entries (B = 255: a volume in front of the surface) fail it.
-struct PixelListSource {
-    std::vector<const gl::Texture*> steps;  // RGBA8, target-sized: R, G = index low, high byte (0: none); B decoy
-    uint32_t maxIndex = 255;                // colour table covers indices 0..maxIndex
-};
-
 class LightVolumePass {
 public:
     LightVolumePass() = default;
@@ -109,87 +52,56 @@ public:
     // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil. The shader tests
     // read `depth`, a single-sample depth texture of the pre-pass (not attached to the targets).
     void begin(const IndexTargets& targets, const CameraMatrices& camera, const gl::Texture* depth = nullptr);
-    // Draws each light's volume with the sub-pass's state; colors(index) gives the value per target.
-    void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-              const std::function<IndexColors(uint32_t index)>& colors);
+    // Draws each light's volume with the sub-pass's state (planVolumeDraw); colors(index) gives the value per
+    // target.
+    void draw(const VolumeDraw& d, const std::vector<VolumeLight>& lights, const IndexColorsFor& colors);
+    // The plan draw() runs for these lights (the camera and scissor of the current pass); CPU only.
+    VolumeDrawPlan planFor(const VolumeDraw& d, const std::vector<VolumeLight>& lights) const;
     void end();
     // Limits the following draws to a pixel rectangle (x, y, width, height; GL window coordinates), e.g. where
     // transparent geometry can be; nullptr: the whole target.
     void setScissor(const glm::ivec4* box) { scissor_ = box ? *box : glm::ivec4(-1); }
-    // Draws the lights that follow through the pixel-list test hook (nullptr: light volumes again).
-    void setPixelListSource(const PixelListSource* source) { listSource_ = source; }
+    // Draws the passes that follow (from begin() to end()) with another geometry, which outlives them; nullptr:
+    // the lights' volumes again. Tests draw exact per-pixel lists this way (tests/pixel_list_geometry.h).
+    void setGeometry(VolumeGeometry* geometry) { geometry_ = geometry; }
+    const VolumeGeometry& geometry() const {
+        return geometry_ ? *geometry_ : static_cast<const VolumeGeometry&>(volumes_);
+    }
 
     VolumeTest test() const { return test_; }
     const CameraMatrices& camera() const { return camera_; }
-    bool drawingPixelLists() const { return listSource_ != nullptr; }
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
     // plane): it then marks its whole screen footprint.
     bool marksWholeFootprint(const VolumeLight& light) const;
     // The largest relative vertex distance of the volumes this pass may draw (a bound for CPU models).
-    float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
+    float volumeOutsideRadius() const { return volumes_.volumeOutsideRadius(); }
     // The volume mesh drawn for `light` in the current pass (0 = 20 faces, 1 = 80, 2 = 320) and its relative
     // vertex distance: a function of the light and the camera alone, the same for every use in a frame.
-    int detailFor(const VolumeLight& light) const;
+    int detailFor(const VolumeLight& light) const { return volumes_.detailFor(light, camera_); }
     // The shader tests: kSphereRadiusScale, what they mark, whatever mesh they draw.
-    float outsideRadiusFor(const VolumeLight& light) const;
+    float outsideRadiusFor(const VolumeLight& light) const { return volumes_.outsideRadiusFor(light, camera_); }
     // Stencil bits that count lights per pixel after the pass (0 if the last draw kept no count).
     int stencilCountBits() const { return countBits_; }
     long drawCalls() const { return drawCalls_; }
     float meshOutsideRadius() const { return volumeOutsideRadius(); }
     // Lights per draw of the shader tests (from the vertex uniform limit); 1 for the stencil tests.
-    int batchSize() const { return batch_; }
-    // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
-    // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
-    static constexpr float kSphereRadiusScale = 1.0005f;
-    // The sphere tests treat the pixel's surface as anywhere within this many steps of the 24-bit depth copy
-    // (light_volume_sphere.frag): the stored depth is the true depth within half a step, and rebuilding distance
-    // from it in fp32 costs about one more. Negligible at ordinary near/far ratios (about 1 mm at 20 m for near
-    // 0.1 m), it keeps a light whose sphere the true surface reaches from being lost where depth precision is
-    // coarse (far/near 1e5 and up: doc/stability.md).
-    static constexpr float kSphereDepthSteps = 3.0f;
+    int batchSize() const { return volumes_.batchSize(); }
+    static constexpr float kSphereRadiusScale = LightVolumeGeometry::kSphereRadiusScale;
+    static constexpr float kSphereDepthSteps = LightVolumeGeometry::kSphereDepthSteps;
 
 private:
-    void beginDraw(const VolumeDraw& d);
-    // Back faces, depth GEQUAL (test off), the draw's colour and blend state, stencil on, the scissor.
-    RenderState backFaceState(const VolumeDraw& d) const;  // checks the rank window, restarts the count, selects draw buffers
-    bool reachesFarPlane(const VolumeLight& light) const;  // the drawn mesh reaches the far plane
-    int batchFor(int targetCount) const;  // lights per draw for this many targets
-    static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
-    void drawBatched(const VolumeDraw& d, const std::vector<VolumeLight>& lights,
-                     const std::function<IndexColors(uint32_t)>& colors);
-    const gl::Program& batchProgramFor(int targetCount) const;
-    void drawVolume(const VolumeLight& light) const;
-    const gl::Program& programFor(int targetCount) const;
-    void uploadColorTable(const VolumeDraw& d, const std::function<IndexColors(uint32_t)>& colors);
+    VolumeGeometry& activeGeometry() { return geometry_ ? *geometry_ : static_cast<VolumeGeometry&>(volumes_); }
     VolumeTest test_ = VolumeTest::BackFace;
     bool depthClamp_ = false;
     bool gles_ = false;  // OpenGL ES: draw buffers by framebufferFrom, glDrawBuffers only with EXT_draw_buffers
-    static constexpr int kDetailLevels = 3;
-    LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
-    GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
-    int coarsest_ = kDetailLevels - 1;      // 0 with volumeDetail, else the finest only
-    gl::Buffer vertices_, indices_;
-    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
-    mutable std::vector<gl::Program> programs_, listPrograms_;  // listPrograms_: the test hook's
-    // Shader tests: batch_ copies of the batchLevel_ volume mesh, each vertex (x, y, z, slot).
-    int batch_ = 1, batchLevel_ = 0, maxVertexUniformVectors_ = 128;
-    GLsizei batchCopyIndices_ = 0;
-    gl::Buffer batchVertices_, batchIndices_;
-    mutable std::vector<gl::Program> batchPrograms_;
-    const gl::Texture* depth_ = nullptr;
-    glm::ivec4 scissor_{-1};  // z < 0: none
-    void applyScissor(RenderState& s) const {
-        s.scissor = scissor_.z >= 0;
-        s.scissorBox = scissor_;
-    }
     int maxDrawTargets_ = 1;
-    gl::Buffer quad_;
-    gl::Texture colorTable_;
-    const PixelListSource* listSource_ = nullptr;
+    LightVolumeGeometry volumes_;
+    VolumeGeometry* geometry_ = nullptr;  // setGeometry's, else volumes_
+    glm::ivec4 scissor_{-1};  // z < 0: none
     const IndexTargets* targets_ = nullptr;
     CameraMatrices camera_;
     int countBits_ = 0;
-    mutable long drawCalls_ = 0;
+    long drawCalls_ = 0;
 };
 
 }  // namespace lidr

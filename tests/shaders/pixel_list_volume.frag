@@ -1,8 +1,8 @@
 #version 120
-// Test hook of the light-volume pass (PixelListSource): this draw stands for step j of every pixel's index
-// list. A pixel whose list has no j-th entry is not marked (discard: no colour, no stencil operation); one
-// that has it writes the colours the scheme gives that index, from a table the pass fills from the scheme's
-// own colour callback. Blend and stencil state are the scheme's draw's own. Clear depth to 0.5.
+// The light-volume pass's pixel-list geometry (tests/pixel_list_geometry.h): this draw stands for step j of
+// every pixel's index list. A pixel whose list has no j-th entry is not marked (discard: no colour, no stencil
+// operation); one that has it writes the colours the scheme gives that index, from a table filled from the
+// scheme's own colour callback. Blend and stencil state are the scheme's draw's own. Clear depth to 0.5.
 uniform sampler2D uStepIndices;  // R = index low byte, G = high byte (0: no fragment); B = 1: a decoy
 uniform sampler2D uColorTable;   // target t, index i: texel (i mod 256, t * rowsPerTarget + i / 256)
 uniform vec2 uInvTargetSize;

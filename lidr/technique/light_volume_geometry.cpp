@@ -1,0 +1,231 @@
+#include "lidr/technique/light_volume_geometry.h"
+#include "lidr/base/gl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+
+namespace lidr {
+
+LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail)
+    : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+    std::vector<glm::vec3> positions;
+    std::vector<uint16_t> indices;
+    for (int level = 0; level < kDetailLevels; ++level) {
+        meshes_[level] = makeLightVolumeMesh(level);
+        const auto base = static_cast<uint16_t>(positions.size());  // GL 2.1 has no base vertex: offset here
+        firstIndex_[level] = static_cast<GLsizei>(indices.size());
+        indexCount_[level] = static_cast<GLsizei>(meshes_[level].indices.size());
+        positions.insert(positions.end(), meshes_[level].positions.begin(), meshes_[level].positions.end());
+        for (uint16_t i : meshes_[level].indices) indices.push_back(static_cast<uint16_t>(base + i));
+    }
+    vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
+    indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
+    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
+    programs_.resize(kMaxIndexTargets);
+    batchPrograms_.resize(kMaxIndexTargets);
+    if (isShaderVolumeTest(test)) {
+        // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
+        // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
+        // its extra fill costs less than their vertices (doc/benchmarks.md).
+        const LightVolumeMesh& mesh = meshes_[batchLevel_];
+        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 2;  // one target
+        batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
+        std::vector<glm::vec4> copies;
+        std::vector<uint16_t> copyIndices;
+        copies.reserve(mesh.positions.size() * size_t(batch_));
+        copyIndices.reserve(mesh.indices.size() * size_t(batch_));
+        for (int slot = 0; slot < batch_; ++slot) {
+            const auto base = static_cast<uint16_t>(copies.size());
+            for (const glm::vec3& p : mesh.positions) copies.emplace_back(p, float(slot));
+            for (uint16_t i : mesh.indices) copyIndices.push_back(static_cast<uint16_t>(base + i));
+        }
+        batchCopyIndices_ = static_cast<GLsizei>(mesh.indices.size());
+        batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
+        batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
+        maxVertexUniformVectors_ = info.maxVertexUniformVectors;
+    }
+}
+
+int LightVolumeGeometry::batchFor(int targetCount) const {
+    return std::max(1, std::min(batch_, (maxVertexUniformVectors_ - kReservedVertexUniforms) / (1 + targetCount)));
+}
+
+const gl::Program& LightVolumeGeometry::batchProgramFor(int targetCount) const {
+    if (targetCount != 1 && targetCount != 2 && targetCount != 4)
+        throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " + std::to_string(targetCount));
+    if (targetCount > maxDrawTargets_)
+        throw UnsupportedError("writing " + std::to_string(targetCount) +
+                               " index targets at once needs that many draw buffers");
+    gl::Program& p = batchPrograms_[size_t(targetCount - 1)];
+    if (!p) {
+        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
+                              {"LIDR_BATCH", std::to_string(batchFor(targetCount))}};
+        if (test_ == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+        p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
+                                buildShaderSource("light_volume_batch.vert", defs),
+                                buildShaderSource("light_volume_sphere.frag", defs),
+                                {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
+    }
+    return p;
+}
+
+const gl::Program& LightVolumeGeometry::programFor(int targetCount) const {
+    if (targetCount < 1 || targetCount > maxDrawTargets_)
+        throw UnsupportedError("writing " + std::to_string(targetCount) +
+                               " index targets at once needs that many draw buffers");
+    gl::Program& p = programs_[size_t(targetCount - 1)];
+    if (!p) {
+        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        p = gl::Program::create("light_volume-" + std::to_string(targetCount),
+                                buildShaderSource("light_volume.vert", defs), buildShaderSource("light_volume.frag", defs),
+                                {{"aPosition", gl::kPosition}});
+    }
+    return p;
+}
+
+int LightVolumeGeometry::detailFor(const VolumeLight& l, const CameraMatrices& camera) const {
+    const int finest = kDetailLevels - 1;
+    if (isShaderVolumeTest(test_)) return batchLevel_;
+    if (coarsest_ == finest) return finest;
+    // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
+    // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
+    // Near, behind or far off-axis: the finest volume.
+    const glm::vec3 toCentre = glm::vec3(l.posRadius) - camera.eye;
+    const float distance = glm::length(toCentre), radius = l.posRadius.w;
+    if (!(distance - radius * meshes_[0].outsideRadius > camera.nearPlane * 1.5f)) return finest;
+    const float cosOff = glm::dot(toCentre, camera.forward) / distance;
+    if (!(cosOff > 0.2f)) return finest;
+    const float focal = camera.projection[1][1] * 0.5f * float(camera.height);
+    const float sinA = radius / distance;
+    const float pixels = focal * sinA / std::sqrt(std::max(1e-6f, 1.0f - sinA * sinA)) / (cosOff * cosOff);
+    // The coarsest volume whose reach past the finest one's stays under a pixel.
+    for (int level = coarsest_; level < finest; ++level)
+        if ((meshes_[level].outsideRadius - meshes_[finest].outsideRadius) * pixels <= 1.0f) return level;
+    return finest;
+}
+
+float LightVolumeGeometry::outsideRadiusFor(const VolumeLight& light, const CameraMatrices& camera) const {
+    // The shader tests mark exactly what the sphere (times kSphereRadiusScale) reaches, whatever mesh is drawn.
+    if (isShaderVolumeTest(test_)) return kSphereRadiusScale;
+    return meshes_[size_t(detailFor(light, camera))].outsideRadius;
+}
+
+bool LightVolumeGeometry::reachesFarPlane(const VolumeLight& l, const CameraMatrices& camera) const {
+    return glm::dot(glm::vec3(l.posRadius) - camera.eye, camera.forward) +
+               l.posRadius.w * meshes_[size_t(detailFor(l, camera))].outsideRadius >=
+           camera.farPlane * 0.999f;
+}
+
+VolumeLightFacts LightVolumeGeometry::factsFor(const VolumeLight& l, const CameraMatrices& camera) const {
+    VolumeLightFacts f;
+    f.detail = detailFor(l, camera);
+    f.reachesFarPlane = reachesFarPlane(l, camera);
+    // A volume reaching in front of the near plane (or holding the camera) has its front faces clipped there.
+    if (test_ == VolumeTest::FrontFace)
+        f.reachesNearPlane = glm::dot(glm::vec3(l.posRadius) - camera.eye, camera.forward) -
+                                 l.posRadius.w * outsideRadiusFor(l, camera) <=
+                             camera.nearPlane * 1.001f;
+    return f;
+}
+
+void LightVolumeGeometry::begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) {
+    if (isShaderVolumeTest(test_) && !(depth && *depth))
+        throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the pre-pass depth as a texture");
+    camera_ = camera;
+    targetSize_ = targetSize;
+    depth_ = depth;
+    if (isShaderVolumeTest(test_)) {
+        glBindBuffer(GL_ARRAY_BUFFER, batchVertices_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
+        glEnableVertexAttribArray(gl::kPosition);
+        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+        glEnableVertexAttribArray(gl::kVolumeSlot);
+        glVertexAttribPointer(gl::kVolumeSlot, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+                              reinterpret_cast<const void*>(3 * sizeof(float)));
+    } else {
+        glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+        glEnableVertexAttribArray(gl::kPosition);
+        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    }
+}
+
+void LightVolumeGeometry::end() {
+    if (isShaderVolumeTest(test_)) glDisableVertexAttribArray(gl::kVolumeSlot);
+    glDisableVertexAttribArray(gl::kPosition);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& plan, const IndexColorsFor&) {
+    program_ = plan.program;
+    targets_ = plan.programTargets;
+    if (plan.program == VolumeProgram::PerLight) {
+        const gl::Program& program = programFor(plan.programTargets);
+        program.use();
+        program.set("uViewProj", camera_.viewProjection);
+        // Per light: looked up once per draw, set through typed handles.
+        lightsUniform_ = program.uniform<glm::vec4>("uLightPosRadius");
+        colorsUniform_ = program.uniform<glm::vec4>("uIndexColor");
+        clampUniform_ = program.uniform<float>("uClampToFar");
+        return;
+    }
+    const gl::Program& program = batchProgramFor(plan.programTargets);
+    program.use();
+    program.set("uViewProj", camera_.viewProjection);
+    program.set("uView", camera_.view);
+    // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
+    // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
+    const glm::mat4& P = camera_.projection;
+    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the sphere volume tests need a perspective projection");
+    program.set("uDepthToDistance", glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)));
+    program.set("uNearPlane", camera_.nearPlane);
+    program.set("uInvTargetSize", 1.0f / glm::vec2(targetSize_));
+    program.set("uRadiusScale", kSphereRadiusScale);
+    program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
+    program.set("uDepth", gl::kUnitDepthCopy);
+    depth_->bind(gl::kUnitDepthCopy);
+    lightsUniform_ = program.uniform<glm::vec4>("uLights");
+    colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");
+    clampUniform_ = program.uniform<float>("uClampToFar");
+    const size_t batch = size_t(batchFor(plan.programTargets));
+    lightData_.resize(batch);
+    colorData_.resize(batch * size_t(plan.programTargets));
+}
+
+void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                                   const IndexColorsFor& colors) {
+    const bool batch = program_ == VolumeProgram::Batch;
+    if (step.loadLights) {
+        if (batch) {
+            for (int i = 0; i < step.lightCount; ++i) {
+                const VolumeLight& l = lights[size_t(step.firstLight + i)];
+                lightData_[size_t(i)] = l.posRadius;
+                const IndexColors c = colors(l.index);
+                for (int t = 0; t < targets_; ++t) colorData_[size_t(i * targets_ + t)] = c[size_t(t)];
+            }
+            lightsUniform_.setArray(lightData_.data(), step.lightCount);
+            colorsUniform_.setArray(colorData_.data(), step.lightCount * targets_);
+        } else {
+            const VolumeLight& l = lights[size_t(step.firstLight)];
+            lightsUniform_.set(l.posRadius);
+            const IndexColors c = colors(l.index);
+            colorsUniform_.setArray(c.data(), targets_);
+        }
+        clampUniform_.set(step.clampToFar ? 1.0f : 0.0f);
+    }
+    StateCache& cache = StateCache::current();
+    if (batch) {
+        cache.drawElements(GL_TRIANGLES, GLsizei(step.lightCount) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
+    } else {
+        cache.drawElements(GL_TRIANGLES, indexCount_[step.detail], GL_UNSIGNED_SHORT,
+                           reinterpret_cast<const void*>(size_t(firstIndex_[step.detail]) * sizeof(uint16_t)));
+    }
+}
+
+}  // namespace lidr

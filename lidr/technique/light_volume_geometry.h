@@ -1,0 +1,115 @@
+#pragma once
+// What the light-volume pass draws for the steps of its plan (volume_draw_plan.h). VolumeGeometry is the
+// strategy; LightVolumeGeometry, the pass's own, draws the lights' volumes (one mesh per light for the stencil
+// tests, batches of them for the shader tests). A test substitutes its own geometry (tests/pixel_list_geometry.h
+// draws exact per-pixel light lists) and gets the scheme's real draw state without a branch in the pass.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lidr/gl/gl_info.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/scene/camera.h"
+#include "lidr/technique/light_volume_mesh.h"
+#include "lidr/technique/volume_draw_plan.h"
+
+namespace lidr {
+
+constexpr int kMaxIndexTargets = 8;
+using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
+// The value a light's index writes to each target of a draw.
+using IndexColorsFor = std::function<IndexColors(uint32_t index)>;
+
+// A light as the volume pass sees it: its 1-based index and where it is.
+struct VolumeLight {
+    uint32_t index = 0;
+    glm::vec4 posRadius{0.0f};
+};
+
+class VolumeGeometry {
+public:
+    virtual ~VolumeGeometry() = default;
+    // What the plan needs to know about a light seen from `camera`.
+    virtual VolumeLightFacts factsFor(const VolumeLight& light, const CameraMatrices& camera) const = 0;
+    // False where a light may mark pixels outside its sphere's screen footprint (any two lights may then share
+    // a pixel: CPU sorting cannot group them).
+    virtual bool marksWithinLightFootprints() const { return true; }
+    // Lights per draw of a batched plan (VolumeProgram::Batch) writing this many targets.
+    virtual int batchFor(int /*targetCount*/) const { return 1; }
+    // The pass's begin() and end(): vertex buffers and attributes. targetSize: the index targets' in pixels;
+    // depth: the pre-pass depth copy (the shader tests read it).
+    virtual void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) = 0;
+    virtual void end() = 0;
+    // Before a plan's steps: its program and the uniforms of the whole draw.
+    virtual void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) = 0;
+    // One step (its state is applied): the lights' uniforms where step.loadLights, then the draw call.
+    virtual void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                          const IndexColorsFor& colors) = 0;
+};
+
+class LightVolumeGeometry final : public VolumeGeometry {
+public:
+    LightVolumeGeometry() = default;
+    // volumeDetail: see LightVolumePass.
+    LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail);
+
+    VolumeLightFacts factsFor(const VolumeLight& light, const CameraMatrices& camera) const override;
+    void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;
+    void end() override;
+    void beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) override;
+    void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
+                  const IndexColorsFor& colors) override;
+
+    // The mesh drawn for a light (0 = 20 faces, 1 = 80, 2 = 320) and its relative vertex distance; the shader
+    // tests' outsideRadiusFor is kSphereRadiusScale, what they mark, whatever mesh they draw.
+    int detailFor(const VolumeLight& light, const CameraMatrices& camera) const;
+    float outsideRadiusFor(const VolumeLight& light, const CameraMatrices& camera) const;
+    float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
+    int batchSize() const { return batch_; }
+    int batchFor(int targetCount) const override;
+
+    // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
+    // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
+    static constexpr float kSphereRadiusScale = 1.0005f;
+    // The sphere tests treat the pixel's surface as anywhere within this many steps of the 24-bit depth copy
+    // (light_volume_sphere.frag): the stored depth is the true depth within half a step, and rebuilding distance
+    // from it in fp32 costs about one more. Negligible at ordinary near/far ratios (about 1 mm at 20 m for near
+    // 0.1 m), it keeps a light whose sphere the true surface reaches from being lost where depth precision is
+    // coarse (far/near 1e5 and up: doc/stability.md).
+    static constexpr float kSphereDepthSteps = 3.0f;
+
+private:
+    bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
+    const gl::Program& programFor(int targetCount) const;
+    const gl::Program& batchProgramFor(int targetCount) const;
+    static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
+    static constexpr int kDetailLevels = 3;
+
+    VolumeTest test_ = VolumeTest::BackFace;
+    int maxDrawTargets_ = 1;
+    LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
+    GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
+    int coarsest_ = kDetailLevels - 1;  // 0 with volumeDetail, else the finest only
+    gl::Buffer vertices_, indices_;
+    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
+    mutable std::vector<gl::Program> programs_;
+    // Shader tests: batch_ copies of the batchLevel_ volume mesh, each vertex (x, y, z, slot).
+    int batch_ = 1, batchLevel_ = 0, maxVertexUniformVectors_ = 128;
+    GLsizei batchCopyIndices_ = 0;
+    gl::Buffer batchVertices_, batchIndices_;
+    mutable std::vector<gl::Program> batchPrograms_;
+    // The frame (begin()) and the current plan's program and per-step uniforms (one light, or a batch's arrays).
+    CameraMatrices camera_;
+    glm::ivec2 targetSize_{1};
+    const gl::Texture* depth_ = nullptr;
+    VolumeProgram program_ = VolumeProgram::PerLight;
+    int targets_ = 1;
+    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
+    gl::Uniform<float> clampUniform_;
+    std::vector<glm::vec4> lightData_, colorData_;
+};
+
+}  // namespace lidr

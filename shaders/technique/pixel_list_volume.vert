@@ -1,8 +1,0 @@
-#version 120
-// Test hook of the light-volume pass (PixelListSource): a full-target quad instead of a light volume.
-// Wound clockwise, so the volume test sees a back face; the fragment shader sets the depth.
-attribute vec3 aPosition;
-
-void main() {
-    gl_Position = vec4(aPosition.xy, 0.0, 1.0);
-}
