@@ -128,6 +128,16 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
                 out << line;
             }
         }
+        // Each budget's renderer was destroyed before the next was built, as the page's controls do: nothing of
+        // theirs (a deleted buffer still named by an attribute, a deleted program) may leave a GL error behind.
+        const GLenum leftover = glGetError();
+        if (leftover != GL_NO_ERROR) {
+            allPassed = false;
+            char line[160];
+            std::snprintf(line, sizeof line, "FAIL a GL error (0x%04x) was left after renderers were destroyed and built\n",
+                          unsigned(leftover));
+            out << line;
+        }
         result.passed = allPassed;
         out << (allPassed ? "PASS" : "FAIL") << ": LIDR in WebGL 1 against the CPU truth and the reference ("
             << info.renderer << ")";
