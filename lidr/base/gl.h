@@ -28,6 +28,15 @@ inline void setClearDepth(float depth) {
 }
 // glDrawBuffer / glReadBuffer are desktop only; an ES 2.0 FBO draws to and reads from COLOR_ATTACHMENT0 (more
 // draw targets go through glDrawBuffers, EXT_draw_buffers), so there these do nothing for attachment 0.
+// Whether glDrawBuffers may be called: GLEW's loaded entry point, or always in the web build (where it is a
+// function, whose address would always be true).
+inline bool hasDrawBuffersEntryPoint() {
+#ifdef __EMSCRIPTEN__
+    return true;
+#else
+    return glDrawBuffers != nullptr;
+#endif
+}
 inline void drawToColorAttachment0() {
     if (!currentContextIsGles()) glDrawBuffer(GL_COLOR_ATTACHMENT0);
 }

@@ -105,7 +105,7 @@ static GlInfo esContextGlInfo(GlInfo info) {
     GLint range[2] = {0, 0}, precision = 0;
     glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
     info.fragmentHighp = precision >= 23;  // fp32; ES 2.0 lets highp be absent in fragment shaders (precision 0)
-    info.drawBuffers = hasExtension("GL_EXT_draw_buffers") && glDrawBuffers;
+    info.drawBuffers = hasExtension("GL_EXT_draw_buffers") && hasDrawBuffersEntryPoint();
     info.multisampleFbo = false;
     info.maxSamples = 0;
     info.multisampleTexture = info.sampleShading = false;
@@ -159,7 +159,7 @@ GlInfo currentContextGlInfo(const std::string& backendName) {
     info.timerQuery = (hasExtension("GL_ARB_timer_query") && glGetQueryObjectui64v) ||
                        (hasExtension("GL_EXT_timer_query") && glGetQueryObjectui64vEXT);
     info.depthClamp = hasExtension("GL_ARB_depth_clamp") || hasExtension("GL_NV_depth_clamp");
-    info.drawBuffers = glDrawBuffers != nullptr;
+    info.drawBuffers = hasDrawBuffersEntryPoint();
     info.multisampleFbo = (gl30 || hasExtension("GL_EXT_framebuffer_multisample") ||
                             hasExtension("GL_ARB_framebuffer_object")) && glRenderbufferStorageMultisample;
     if (info.multisampleFbo) glGetIntegerv(GL_MAX_SAMPLES, &info.maxSamples);

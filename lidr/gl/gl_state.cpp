@@ -28,7 +28,7 @@ const StateCache::Api& StateCache::api() {
     if (!apiKnown_) {
         api_.gles = currentContextIsGles();
         const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-        api_.drawBuffers = !api_.gles || (ext && std::strstr(ext, "GL_EXT_draw_buffers") && glDrawBuffers);
+        api_.drawBuffers = !api_.gles || (ext && std::strstr(ext, "GL_EXT_draw_buffers") && hasDrawBuffersEntryPoint());
         apiKnown_ = true;
     }
     return api_;

@@ -37,7 +37,6 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
     : format_(info.textureFloat && !forcePacked ? DepthReductionFormat::Float32 : DepthReductionFormat::PackedRGBA8),
       width_(width),
       height_(height),
-      tileSize_(tileSize),
       halfZ_(halfZ) {
     const LightGrid shape(width, height, tileSize);  // validates the tile size
     tilesX_ = shape.tilesX();

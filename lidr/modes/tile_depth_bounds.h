@@ -53,7 +53,7 @@ private:
     std::vector<float> readChain(const Chain& chain, int component) const;  // one value per tile, [0, 1]
 
     DepthReductionFormat format_;
-    int width_, height_, tileSize_, tilesX_, tilesY_;
+    int width_, height_, tilesX_, tilesY_;
     gl::Texture depthCopy_;
     gl::Framebuffer prepassFbo_;
     std::vector<Chain> chains_;  // float: one (min and max together); packed: min, then max
