@@ -104,16 +104,23 @@ void requireGlHolds(const RenderState& s) {
     checkGl("state cache test: glGet");
 }
 
+// The unusual state applied through a cache that knows nothing: every field is set. Returns the counters from
+// before that apply (the tests measure what follows against them).
+GlCallCounters applyUnusualToUnknownCache(StateCache& cache) {
+    cache.invalidate();
+    const GlCallCounters start = cache.counters();
+    cache.apply(unusualState());
+    return start;
+}
+
 }  // namespace
 
 TEST_CASE("the state cache skips a repeated state and applies only a changed field", "[state]") {
     testContext();
     const StencilTarget target;
     StateCache& cache = StateCache::current();
-    cache.invalidate();
     const RenderState s = unusualState();
-    const GlCallCounters start = cache.counters();
-    cache.apply(s);
+    const GlCallCounters start = applyUnusualToUnknownCache(cache);
     const GlCallCounters first = cache.counters() - start;
     CHECK(first.stateCallsSkipped == 0);  // nothing known: every field set
     CHECK(first.stateCalls >= 16);  // 17 where the context has depth clamp
@@ -147,10 +154,8 @@ TEST_CASE("invalidating the state cache re-applies every field, and GL then hold
     testContext();
     const StencilTarget target;
     StateCache& cache = StateCache::current();
-    cache.invalidate();
     const RenderState s = unusualState();
-    const GlCallCounters start = cache.counters();
-    cache.apply(s);
+    const GlCallCounters start = applyUnusualToUnknownCache(cache);
     const long fullCost = (cache.counters() - start).stateCalls;
     // Behind the cache's back, as a caller's drawing between two frames would.
     glDisable(GL_DEPTH_TEST);
