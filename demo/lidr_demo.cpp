@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iomanip>
 #include <map>
 #include <optional>
 
@@ -84,6 +85,36 @@ std::string glCallsLine(const GlCallCounters& c) {
     return s.str();
 }
 
+// The last frame's passes: draws, state calls and fragment shader invocations each (FrameTimer; fragments only
+// where the context has ARB_pipeline_statistics_query).
+nlohmann::json passCountsJson(const std::vector<PassTime>& passes) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const PassTime& p : passes) {
+        j.push_back({{"pass", p.pass}, {"draw_calls", p.drawCalls}, {"state_calls", p.stateCalls}});
+        if (p.fragments >= 0) j.back()["fragments"] = p.fragments;
+    }
+    return j;
+}
+
+std::string passCountsLine(const std::vector<PassTime>& passes) {
+    if (passes.empty()) return "";
+    std::ostringstream s;
+    s << "per pass  ";
+    bool counted = false;
+    for (const PassTime& p : passes) {
+        s << " " << p.pass << ": " << p.drawCalls << " draws, " << p.stateCalls << " state calls";
+        if (p.fragments >= 0) {
+            s << ", " << std::fixed << std::setprecision(3) << double(p.fragments) * 1e-6 << std::defaultfloat
+              << " M fragments";
+            counted = true;
+        }
+        s << ";";
+    }
+    s << (counted ? " (fragments: fragment shader invocations)\n"
+                  : " (fragments not counted: no ARB_pipeline_statistics_query)\n");
+    return s.str();
+}
+
 std::string path(const std::string& dir, const std::string& file) {
     return (std::filesystem::path(dir) / file).string();
 }
@@ -140,6 +171,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
+    summary["pass_counts"] = passCountsJson(stats.passes);
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
@@ -176,7 +208,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
-    s << glCallsLine(stats.glCalls);
+    s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
@@ -279,6 +311,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
+    summary["pass_counts"] = passCountsJson(stats.passes);
 
     if (renderer.perSampleIndices() && !dumpDir.empty())
         throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
@@ -361,7 +394,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                                                      : "budget " + std::to_string(decision.transparentBudget));
         s << "\n";
     }
-    s << glCallsLine(stats.glCalls);
+    s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
