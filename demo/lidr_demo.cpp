@@ -388,13 +388,13 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
 
 int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
 #if LIDR_HAVE_GLFW
-    Scene scene = sceneChoice.load();
-    demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
     ContextOptions co = rc.contextOptions();
     if (co.backend != ContextBackend::Auto && co.backend != ContextBackend::Glfw && co.backend != ContextBackend::GlfwGles2)
         throw Error("--window opens a GLFW window: --context must be glfw, glfw-gles2 (OpenGL ES 2.0) or auto, got '" +
                     rc.context + "'");
     if (co.backend == ContextBackend::Auto) co.backend = ContextBackend::Glfw;
+    Scene scene = sceneChoice.load();
+    demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
     co.visibleWindow = true;
     co.windowWidth = scene.width;
     co.windowHeight = scene.height;
