@@ -29,6 +29,7 @@
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/present.h"
 #include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -420,10 +421,13 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
 
 int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
 #if LIDR_HAVE_GLFW
+    ContextOptions co = rc.contextOptions();
+    if (co.backend != ContextBackend::Auto && co.backend != ContextBackend::Glfw && co.backend != ContextBackend::GlfwGles2)
+        throw Error("--window opens a GLFW window: --context must be glfw, glfw-gles2 (OpenGL ES 2.0) or auto, got '" +
+                    rc.context + "'");
+    if (co.backend == ContextBackend::Auto) co.backend = ContextBackend::Glfw;
     Scene scene = sceneChoice.load();
     demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
-    ContextOptions co = rc.contextOptions();
-    co.backend = ContextBackend::Glfw;
     co.visibleWindow = true;
     co.windowWidth = scene.width;
     co.windowHeight = scene.height;
@@ -435,18 +439,25 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
+    // ES 2.0 has no glBlitFramebuffer: the frame goes to the window as one textured triangle there.
+    std::optional<FramePresenter> presenter;
+    if (context->info().gles) presenter.emplace();
     const double start = glfwGetTime();
     double lastReport = start;
     int framesSinceReport = 0;
     while (!context->shouldClose()) {
         const double now = glfwGetTime();
         const FrameStats& st = renderer->render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer->targets().colorFramebuffer().id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
-        glBlitFramebuffer(0, 0, scene.width, scene.height, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (presenter) {
+            if (fw > 0 && fh > 0) presenter->present(renderer->targets(), 0, 0, 0, fw, fh);
+        } else {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer->targets().colorFramebuffer().id());
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, scene.width, scene.height, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        }
         context->swapBuffers();
         context->pollEvents();
         if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
