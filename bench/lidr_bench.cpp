@@ -410,7 +410,7 @@ int main(int argc, char** argv) {
                 throw Error(text.str());
             }
         };
-        finiteIn("--max-seconds", settings.maxSeconds, 0.0, 3600.0);
+        finiteIn("--max-seconds", settings.maxSeconds, 0.001, 36000.0);  // as the option's range says
         finiteIn("--warmup-ms", settings.warmupMs, 0.0, 60000.0);
         // ---- the sweep, from a preset or the lists -------------------------------------------------------
         std::vector<SweepGroup> groups;
