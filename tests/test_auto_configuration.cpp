@@ -78,6 +78,42 @@ TEST_CASE("auto: the budget follows the measured need, re-packs on overflow, nev
     REQUIRE_THROWS_WITH(AutoConfiguration(3, 0), Catch::Contains("1, 2, 4, 8 or 16"));
 }
 
+TEST_CASE("auto: narrowing is asked every few frames; each answer stands for the frames since the last",
+          "[auto][cpu]") {
+    AutoConfiguration a(16, 8, 4);
+    REQUIRE(a.asksNarrowing());  // the first frame asks everything
+    REQUIRE(a.observeNeed(8, true) == 8);  // first measurement above the initial 4: re-packed
+    // Frames 1-3 ask only "over 8"; the need they report is the budget ("fits, less unknown").
+    for (int f = 1; f <= 3; ++f) {
+        REQUIRE_FALSE(a.asksNarrowing());
+        REQUIRE(a.observeNeed(8, false) == 0);
+        REQUIRE(a.budget() == 8);
+    }
+    REQUIRE(a.asksNarrowing());          // frame 4
+    REQUIRE(a.observeNeed(2, true) == 0);  // fits 4 (the probe's "over half"): stands for frames 1-4
+    REQUIRE(a.budget() == 8);
+    for (int f = 5; f <= 7; ++f) {
+        REQUIRE_FALSE(a.asksNarrowing());
+        REQUIRE(a.observeNeed(8, false) == 0);  // unknown below: neither counts nor restarts
+        REQUIRE(a.budget() == 8);
+    }
+    REQUIRE(a.asksNarrowing());
+    REQUIRE(a.observeNeed(4, true) == 0);  // frames 5-8: eight frames that fit 4
+    REQUIRE(a.budget() == 4);
+    // An overflow between two answers is re-packed in its own frame and restarts the count.
+    REQUIRE_FALSE(a.asksNarrowing());
+    REQUIRE(a.observeNeed(8, false) == 8);
+    REQUIRE(a.budget() == 8);
+    for (int f = 0; f < 2; ++f) {
+        REQUIRE_FALSE(a.asksNarrowing());
+        REQUIRE(a.observeNeed(8, false) == 0);
+    }
+    REQUIRE(a.asksNarrowing());  // every fourth frame: the cadence goes on
+    REQUIRE(a.observeNeed(4, true) == 0);
+    REQUIRE(a.budget() == 8);  // three frames fit 4 since the overflow, not eight
+    REQUIRE_THROWS_WITH(AutoConfiguration(16, 8, 0), Catch::Contains("narrowing interval"));
+}
+
 TEST_CASE("auto: the smallest budget no pixel exceeds, from the probe's counts", "[auto][cpu]") {
     using A = std::array<long, OverlapProbe::kThresholds>;
     REQUIRE(OverlapProbe::smallestBudget(A{0, 0, 0, 0, 0}) == 1);
@@ -204,6 +240,7 @@ TEST_CASE("auto: frames follow the scene without dropping a light, and narrow on
     const Scene eight = controlledScene(8), two = controlledScene(2);
     LidrOptions options;
     options.autoHoldFrames = 3;
+    options.autoNarrowingInterval = 1;  // every frame asks (the default asks every 4th: the next test)
     LidrRenderer renderer(testGl(), eight, options, eight.width, eight.height);
     ReferenceRenderer reference(testGl(), eight, eight.width, eight.height, 255);
     const ShadingParameters shading{eight.ambient, eight.backgroundColor};

@@ -6,10 +6,12 @@
 
 namespace lidr {
 
-AutoConfiguration::AutoConfiguration(int maxBudget, int holdFrames) : maxBudget_(maxBudget), holdFrames_(holdFrames) {
+AutoConfiguration::AutoConfiguration(int maxBudget, int holdFrames, int narrowingInterval)
+    : maxBudget_(maxBudget), holdFrames_(holdFrames), narrowingInterval_(narrowingInterval) {
     if (maxBudget < 1 || maxBudget > 16 || (maxBudget & (maxBudget - 1)) != 0)
         throw Error("automatic budget: the largest budget must be 1, 2, 4, 8 or 16, got " + std::to_string(maxBudget));
     if (holdFrames < 0) throw Error("automatic configuration: hold frames must be >= 0");
+    if (narrowingInterval < 1) throw Error("automatic configuration: the narrowing interval must be >= 1 frame");
     budget_ = std::min(kInitialBudget, maxBudget_);
 }
 
@@ -36,23 +38,30 @@ int AutoConfiguration::chooseIndexBits(int visibleLights) {
     return bits_;
 }
 
-int AutoConfiguration::observeNeed(int need) {
+int AutoConfiguration::observeNeed(int need, bool narrowingAsked) {
+    const int framesAnswered = ++framesUncounted_;  // the frames this frame's narrowing answer stands for
+    framesSinceNarrowing_ = narrowingAsked ? 0 : framesSinceNarrowing_ + 1;
     const bool overflow = need == 0 || need > budget_;
     const int target = need == 0 ? maxBudget_ : std::min(need, maxBudget_);
     if (!measured_) {
         measured_ = true;
+        framesUncounted_ = 0;
         const int repack = overflow && target > budget_ ? target : 0;
         budget_ = target;
         return repack;
     }
     if (target >= budget_) {
+        if (!narrowingAsked && !overflow) return 0;  // fits; whether less would have is unknown
         budgetLowFrames_ = 0;
+        framesUncounted_ = 0;
         const int repack = overflow && target > budget_ ? target : 0;
         budget_ = target;
         return repack;
     }
     budgetLowMax_ = budgetLowFrames_ == 0 ? target : std::max(budgetLowMax_, target);
-    if (++budgetLowFrames_ >= holdFrames_) {
+    budgetLowFrames_ += framesAnswered;
+    framesUncounted_ = 0;
+    if (budgetLowFrames_ >= holdFrames_) {
         budget_ = budgetLowMax_;
         budgetLowFrames_ = 0;
     }

@@ -69,6 +69,8 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
                     " needs a fixed budget (1, 2, 4, 8 or 16)");
     if (o.autoHoldFrames < 0 || o.autoHoldFrames > 100000)
         throw Error("autoHoldFrames must be in [0, 100000], got " + std::to_string(o.autoHoldFrames));
+    if (o.autoNarrowingInterval < 1 || o.autoNarrowingInterval > 100000)
+        throw Error("autoNarrowingInterval must be in [1, 100000], got " + std::to_string(o.autoNarrowingInterval));
     const int sceneLights = static_cast<int>(scene.lights.size());
     if (c.indexBits == PackingConfig::kAuto) {
         if (sceneLights > 65535)
@@ -119,11 +121,12 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         const int widest = options_.packing.autoIndexBits()
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
                                : first.indexBits;
-        auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames);
+        auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames,
+                                  options_.autoNarrowingInterval);
         autoTransparent_ = auto_;
         probe_ = OverlapProbe(info);
     } else {
-        auto_ = autoTransparent_ = AutoConfiguration(16, options_.autoHoldFrames);
+        auto_ = autoTransparent_ = AutoConfiguration(16, options_.autoHoldFrames, options_.autoNarrowingInterval);
     }
     timer_.setEnabled(options_.timing);
     drawTransparent_ = options_.transparency && scene_.hasTransparent();
@@ -292,8 +295,9 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         if (!autoBudget) break;
         decision.measuredBudget = need;
         decision.measuredTransparentBudget = std::max(needTransparent, 0);
-        const int repack = auto_.observeNeed(need);
-        const int repackTransparent = needTransparent >= 0 ? autoTransparent_.observeNeed(needTransparent) : 0;
+        const int repack = auto_.observeNeed(need, narrowingAsked_);
+        const int repackTransparent =
+            needTransparent >= 0 ? autoTransparent_.observeNeed(needTransparent, narrowingAskedTransparent_) : 0;
         if (repack == 0 && repackTransparent == 0) break;
         ++decision.repacks;  // both passes again: the main pass's stencil counts must be the last ones drawn
         if (repack) selectVariant(repack, bits);
@@ -338,8 +342,8 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     need = 1;
     needTransparent = -1;
     pixelsAbove_.fill(0);
-    // Steady frames ask two questions: over the budget (re-pack), over half of it (may narrow). Only an
-    // overflowing frame asks how far over, and a renderer's first frame asks everything at once.
+    // Steady frames ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may
+    // narrow). Only an overflowing frame asks how far over, and a renderer's first frame asks everything at once.
     auto measured = [&](const glm::ivec4* transparentArea) {
         const AutoConfiguration& a = transparentArea ? autoTransparent_ : auto_;
         const int budget = (transparentArea ? currentTransparent_ : current_)->scheme->config().budget;
@@ -350,7 +354,11 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
                 probe_.issue(which);
             return probe_.pixelsAbove();
         };
-        auto above = probe(a.measured() ? OverlapProbe::aroundBudget(budget) : OverlapProbe::kAll);
+        const bool narrowing = a.asksNarrowing();
+        (transparentArea ? narrowingAskedTransparent_ : narrowingAsked_) = narrowing;
+        auto above = probe(!a.measured() ? OverlapProbe::kAll
+                           : narrowing   ? OverlapProbe::aroundBudget(budget)
+                                         : OverlapProbe::atBudget(budget));
         if (OverlapProbe::smallestBudget(above) < 0) {
             const auto more = probe(OverlapProbe::aboveBudget(budget));
             for (size_t i = 0; i < above.size(); ++i)

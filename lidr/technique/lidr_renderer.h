@@ -29,6 +29,9 @@ struct LidrOptions {
     PackingConfig packing;
     // Automatic choices widen at once and narrow after this many frames in a row that fit the narrower one.
     int autoHoldFrames = AutoConfiguration::kDefaultHoldFrames;
+    // ... and ask whether a smaller budget would do only every this many frames (the overlap probe's second
+    // full-screen test; every frame still asks whether it overflows, so nothing is dropped for it).
+    int autoNarrowingInterval = AutoConfiguration::kDefaultNarrowingInterval;
     VolumeTest volumeTest = VolumeTest::Sphere;  // exact, batched (LightVolumePass)
     bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
     int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
@@ -140,6 +143,7 @@ private:
     AutoConfiguration auto_, autoTransparent_;
     OverlapProbe probe_;
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
+    bool narrowingAsked_ = true, narrowingAskedTransparent_ = true;  // the last measurement asked below the budget
     std::vector<uint32_t> frameLights_;
     GpuScene scene_;
     RenderTargets targets_;

@@ -43,6 +43,13 @@ unsigned OverlapProbe::aroundBudget(int budget) {
     return m;
 }
 
+unsigned OverlapProbe::atBudget(int budget) {
+    unsigned m = 0;
+    for (int i = 0; i < kThresholds; ++i)
+        if (kThreshold[size_t(i)] == budget) m |= 1u << i;
+    return m;
+}
+
 unsigned OverlapProbe::aboveBudget(int budget) {
     unsigned m = 0;
     for (int i = 0; i < kThresholds; ++i)

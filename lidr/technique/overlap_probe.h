@@ -24,6 +24,8 @@ public:
     static constexpr unsigned kAll = (1u << kThresholds) - 1u;
     // The thresholds that tell whether `budget` was too small or twice what was needed: budget / 2 and budget.
     static unsigned aroundBudget(int budget);
+    // Only the threshold that tells whether `budget` was too small.
+    static unsigned atBudget(int budget);
     // The thresholds above `budget` (to find how much more an overflowing frame needs).
     static unsigned aboveBudget(int budget);
     // Issues the queries of the thresholds in `which` (bit i: kThreshold[i]) over the bound framebuffer (its
