@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
 #include "lidr/base/gl.h"
@@ -146,41 +147,42 @@ TEST_CASE("the OpenGL ES 2.0 context: capabilities from its extensions, no deskt
 TEST_CASE("ES 2.0: bit-shift at budgets 1, 2, 4 in one RGBA8 target keeps exactly the top-priority lights and "
           "matches the reference", "[.gles2][render]") {
     const GlInfo& info = requireEs2();
-    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
-    for (int budget : {1, 2, 4})
-        for (int k : {1, 2, 4, 8}) {
-            ControlledOverlapOptions o;
-            o.overlap = k;
-            o.maxLights = 255;
-            o.width = 192;
-            o.height = 144;
-            const Scene scene = makeControlledOverlapScene(o);
-            LidrOptions options;
-            options.packing = {"bitshift", budget, 8};
-            options.volumeTest = test;
-            const RenderResult r = renderAndEvaluate(scene, options, info);
-            const FrameEvaluation& e = r.evaluation;
-            INFO(volumeTestName(test) << " bit-shift budget " << budget << ", k " << k << ": invalid "
-                                      << e.lists.invalidSlots << ", within-budget max error "
-                                      << e.errorWithinBudget.maxAbsError << ", PSNR " << e.errorWithinBudget.psnr);
-            REQUIRE(r.indexTargets.size() == 1);  // one RGBA8 target
-            REQUIRE(e.lists.invalidSlots == 0);
-            REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
-            long clusterPixels = 0;
-            for (size_t p = 0; p < e.marked.size(); ++p) {
-                const int touching = e.truth.count(p);
-                if (touching == 0) continue;
-                ++clusterPixels;
-                INFO("pixel " << p);
-                REQUIRE(touching == k);
-                REQUIRE(e.marked[p] == k);  // GPU stencil count = CPU truth
-                const int kept = std::min(k, budget);
-                REQUIRE(int(e.lists.decoded[p].size()) == kept);  // exact lists: the kept highest priorities
-                for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(k - kept));
-                REQUIRE(e.lists.droppedPerPixel[p] == k - kept);
-            }
-            CHECK(clusterPixels > 40);
+    const ConfigCase c = GENERATE(from_range(
+        withOverlaps(withVolumeTests(packingCases({1, 2, 4}, {8}, {"bitshift"}), {VolumeTest::Sphere, VolumeTest::BackFace}),
+                     [](const ConfigCase&) { return std::vector<int>{1, 2, 4, 8}; })));
+    DYNAMIC_SECTION(c.name) {
+        const int budget = c.packing.budget, k = c.overlap;
+        ControlledOverlapOptions o;
+        o.overlap = k;
+        o.maxLights = 255;
+        o.width = 192;
+        o.height = 144;
+        const Scene scene = makeControlledOverlapScene(o);
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = c.volumeTest;
+        const RenderResult r = renderAndEvaluate(scene, options, info);
+        const FrameEvaluation& e = r.evaluation;
+        INFO(c.name << ": invalid " << e.lists.invalidSlots << ", within-budget max error "
+                    << e.errorWithinBudget.maxAbsError << ", PSNR " << e.errorWithinBudget.psnr);
+        REQUIRE(r.indexTargets.size() == 1);  // one RGBA8 target
+        REQUIRE(e.lists.invalidSlots == 0);
+        REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
+        long clusterPixels = 0;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            const int touching = e.truth.count(p);
+            if (touching == 0) continue;
+            ++clusterPixels;
+            INFO("pixel " << p);
+            REQUIRE(touching == k);
+            REQUIRE(e.marked[p] == k);  // GPU stencil count = CPU truth
+            const int kept = std::min(k, budget);
+            REQUIRE(int(e.lists.decoded[p].size()) == kept);  // exact lists: the kept highest priorities
+            for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(k - kept));
+            REQUIRE(e.lists.droppedPerPixel[p] == k - kept);
         }
+        CHECK(clusterPixels > 40);
+    }
 }
 
 TEST_CASE("ES 2.0: the default room at budget 4 against the brute-force reference", "[.gles2][render]") {

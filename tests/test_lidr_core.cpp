@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/gl.h"
 #include "lidr/eval/bench_scenes.h"
@@ -55,8 +56,11 @@ TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh]
 
 TEST_CASE("bit-shift CPU model: every index in every slot decodes back, newest first", "[bitshift][cpu]") {
     GlInfo noContext;
-    for (auto [bits, budget] : {std::pair{4, 1}, {4, 2}, {4, 4}, {4, 8}, {8, 1}, {8, 2}, {8, 4}, {16, 1}, {16, 2}}) {
-        BitShiftScheme scheme({"bitshift", budget, bits}, noContext);
+    const ConfigCase c = GENERATE(from_range(
+        packingCasesFor({{4, 1}, {4, 2}, {4, 4}, {4, 8}, {8, 1}, {8, 2}, {8, 4}, {16, 1}, {16, 2}}, {"bitshift"})));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        BitShiftScheme scheme(c.packing, noContext);
         const uint32_t maxIndex = scheme.maxLights();
         for (int slot = 0; slot < budget; ++slot) {
             for (uint32_t index = 1; index <= maxIndex; index += (bits == 16 ? 97 : 1)) {
@@ -405,22 +409,21 @@ TEST_CASE("volume detail on many small lights: same results within the budget", 
     // Rendered: many small lights, every scheme's list check and the image within the budget as without it,
     // and the coarse volumes really drawn (they mark more pixels than the 320-face ones).
     const Scene many = makeManyLightScene(1024, ManyLightView::TopDown, 320, 240);
-    for (const char* scheme : {"bitshift", "cpu-sorted"}) {
-        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::FrontFace}) {
-            LidrOptions o;
-            o.packing = {scheme, 4, 16};
-            o.volumeTest = test;
-            o.transparency = false;
-            LidrOptions fine = o;
-            o.volumeDetail = true;
-            INFO(scheme << ", " << volumeTestName(test));
-            const RenderResult coarse = renderAndEvaluate(many, o);
-            const RenderResult reference = renderAndEvaluate(many, fine);
-            requireMatchesReference(coarse);
-            const auto& m = coarse.evaluation.marked;
-            const auto& f = reference.evaluation.marked;
-            CHECK(std::accumulate(m.begin(), m.end(), 0L) > std::accumulate(f.begin(), f.end(), 0L));
-        }
+    const ConfigCase c = GENERATE(from_range(withVolumeTests(packingCases({4}, {16}, {"bitshift", "cpu-sorted"}),
+                                                             {VolumeTest::BackFace, VolumeTest::FrontFace})));
+    DYNAMIC_SECTION(c.name) {
+        LidrOptions o;
+        o.packing = c.packing;
+        o.volumeTest = c.volumeTest;
+        o.transparency = false;
+        LidrOptions fine = o;
+        o.volumeDetail = true;
+        const RenderResult coarse = renderAndEvaluate(many, o);
+        const RenderResult reference = renderAndEvaluate(many, fine);
+        requireMatchesReference(coarse);
+        const auto& m = coarse.evaluation.marked;
+        const auto& f = reference.evaluation.marked;
+        CHECK(std::accumulate(m.begin(), m.end(), 0L) > std::accumulate(f.begin(), f.end(), 0L));
     }
 }
 
