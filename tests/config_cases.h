@@ -27,16 +27,17 @@ struct ConfigCase {
     int overlap = 0;         // controlled-overlap scenes: the lights on every lit pixel (0: not part of the case)
 };
 
-inline ConfigCase packingCase(const std::string& scheme, int budget, int indexBits) {
-    return {scheme + " budget " + std::to_string(budget) + ", " + std::to_string(indexBits) + "-bit",
+inline ConfigCase packingCase(PackingSchemeKind scheme, int budget, int indexBits) {
+    return {std::string(packingSchemeName(scheme)) + " budget " + std::to_string(budget) + ", " +
+                std::to_string(indexBits) + "-bit",
             {scheme, budget, indexBits}};
 }
 
 // Each scheme with each (index width, budget) pair, scheme by scheme.
 inline std::vector<ConfigCase> packingCasesFor(const std::vector<std::pair<int, int>>& widthBudgets,
-                                               const std::vector<std::string>& schemes = packingSchemeNames()) {
+                                               const std::vector<PackingSchemeKind>& schemes = packingSchemes()) {
     std::vector<ConfigCase> cases;
-    for (const std::string& scheme : schemes)
+    for (PackingSchemeKind scheme : schemes)
         for (const auto& [bits, budget] : widthBudgets) cases.push_back(packingCase(scheme, budget, bits));
     return cases;
 }
@@ -44,7 +45,7 @@ inline std::vector<ConfigCase> packingCasesFor(const std::vector<std::pair<int, 
 // Each scheme x index width x budget: scheme, then width, then budget.
 inline std::vector<ConfigCase> packingCases(const std::vector<int>& budgets = kBudgets,
                                             const std::vector<int>& widths = kIndexWidths,
-                                            const std::vector<std::string>& schemes = packingSchemeNames()) {
+                                            const std::vector<PackingSchemeKind>& schemes = packingSchemes()) {
     std::vector<std::pair<int, int>> widthBudgets;
     for (int bits : widths)
         for (int budget : budgets) widthBudgets.emplace_back(bits, budget);

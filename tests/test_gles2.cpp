@@ -148,7 +148,7 @@ TEST_CASE("ES 2.0: bit-shift at budgets 1, 2, 4 in one RGBA8 target keeps exactl
           "matches the reference", "[.gles2][render]") {
     const GlInfo& info = requireEs2();
     const ConfigCase c = GENERATE(from_range(
-        withOverlaps(withVolumeTests(packingCases({1, 2, 4}, {8}, {"bitshift"}), {VolumeTest::Sphere, VolumeTest::BackFace}),
+        withOverlaps(withVolumeTests(packingCases({1, 2, 4}, {8}, {PackingSchemeKind::BitShift}), {VolumeTest::Sphere, VolumeTest::BackFace}),
                      [](const ConfigCase&) { return std::vector<int>{1, 2, 4, 8}; })));
     DYNAMIC_SECTION(c.name) {
         const int budget = c.packing.budget, k = c.overlap;
@@ -191,7 +191,7 @@ TEST_CASE("ES 2.0: the default room at budget 4 against the brute-force referenc
     scene.width = testWidth();
     scene.height = testHeight();
     LidrOptions options;
-    options.packing = {"bitshift", 4, PackingConfig::kAuto};
+    options.packing = {PackingSchemeKind::BitShift, 4, PackingConfig::kAuto};
     const RenderResult r = renderAndEvaluate(scene, options, info);
     const FrameEvaluation& e = r.evaluation;
     requireExactWithinBudget(e, "ES 2.0 room, bit-shift budget 4");
@@ -209,20 +209,20 @@ TEST_CASE("ES 2.0 refuses what it lacks before drawing, naming the missing featu
     auto make = [&](const GlInfo& info, const LidrOptions& options) { LidrRenderer(info, scene, options, w, h); };
 
     LidrOptions maxStencil;
-    maxStencil.packing = {"max-stencil", 4, 8};
+    maxStencil.packing = {PackingSchemeKind::MaxStencil, 4, 8};
     GlInfo noMinMax = es;
     noMinMax.blendMinMax = false;
     REQUIRE_THROWS_AS(make(noMinMax, maxStencil), UnsupportedError);
     REQUIRE_THROWS_WITH(make(noMinMax, maxStencil), Contains("EXT_blend_minmax"));
 
     LidrOptions twoTargets;
-    twoTargets.packing = {"bitshift", 8, 8};
+    twoTargets.packing = {PackingSchemeKind::BitShift, 8, 8};
     GlInfo noDrawBuffers = es;
     noDrawBuffers.drawBuffers = false;
     noDrawBuffers.maxDrawBuffers = noDrawBuffers.maxColorAttachments = 1;
     REQUIRE_THROWS_WITH(make(noDrawBuffers, twoTargets), Contains("EXT_draw_buffers"));
     LidrOptions oneTarget;
-    oneTarget.packing = {"bitshift", 4, 8};
+    oneTarget.packing = {PackingSchemeKind::BitShift, 4, 8};
     REQUIRE_NOTHROW(make(noDrawBuffers, oneTarget));  // the paper's main case needs none
 
     GlInfo noDepthTexture = es;

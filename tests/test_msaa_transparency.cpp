@@ -184,7 +184,7 @@ TEST_CASE("the default room with MSAA and glass in front-face mode", "[msaa][tra
     LidrOptions o;
     o.volumeTest = VolumeTest::FrontFace;
     o.msaaSamples = samples >= 2 ? samples : 0;
-    o.packing = {"bitshift", 4, 8};  // the bound below was stated for this budget
+    o.packing = {PackingSchemeKind::BitShift, 4, 8};  // the bound below was stated for this budget
     const RenderResult r = renderAndEvaluate(scene, o);
     requireNeverBrighter(r);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);

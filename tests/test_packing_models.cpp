@@ -279,7 +279,7 @@ TEST_CASE("fp16: every 16-bit index decodes exactly in every slot, as two bytes 
 TEST_CASE("bit-shift within its slots is exact on every blend hardware variant; an uncapped overflow corrupts "
           "kept indices under round-to-nearest", "[packing][bitshift][cpu]") {
     SECTION("within the slots, every width and budget") {
-        const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, kIndexWidths, {"bitshift"})));
+        const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, kIndexWidths, {PackingSchemeKind::BitShift})));
         DYNAMIC_SECTION(c.name) {
             const int budget = c.packing.budget, bits = c.packing.indexBits;
             const BitShiftScheme s(c.packing, fullContext());
@@ -301,7 +301,7 @@ TEST_CASE("bit-shift within its slots is exact on every blend hardware variant; 
     SECTION("an uncapped overflow") {
         // Without the stencil window, a fifth light into 2-bit groups (budget 4) shifts the oldest group out;
         // round-to-nearest carries its top bit into the kept bits.
-        const BitShiftScheme s({"bitshift", 4, 8}, fullContext());
+        const BitShiftScheme s({PackingSchemeKind::BitShift, 4, 8}, fullContext());
         int corrupted = 0;
         for (uint32_t oldest = 1; oldest < 256; ++oldest) {
             std::vector<uint32_t> list = {oldest, 17, 34, 51, 68};
@@ -320,7 +320,7 @@ TEST_CASE("bit-shift within its slots is exact on every blend hardware variant; 
 
 TEST_CASE("MAX scheme: an unlit pixel and a one-light window decode to null slots, never 255 or a duplicate",
           "[packing][max-stencil][cpu]") {
-    const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, {8}, {"max-stencil"})));
+    const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, {8}, {PackingSchemeKind::MaxStencil})));
     DYNAMIC_SECTION(c.name) {
         const MaxStencilScheme s(c.packing, fullContext());
         const std::vector<uint8_t> unlit(size_t(s.targetCount()) * 4, 0);
@@ -343,34 +343,34 @@ TEST_CASE("configurations: targets, passes, memory per pixel, and refusal of wha
         {{4, 1}, 1}, {{4, 2}, 1}, {{4, 4}, 1}, {{4, 8}, 1}, {{4, 16}, 2}, {{8, 1}, 1}, {{8, 2}, 1}, {{8, 4}, 1},
         {{8, 8}, 2}, {{8, 16}, 4}, {{16, 1}, 1}, {{16, 2}, 1}, {{16, 4}, 2}, {{16, 8}, 4}, {{16, 16}, 8}};
     for (const auto& [key, targets] : bitshiftTargets) {
-        const BitShiftScheme s({"bitshift", key.second, key.first}, full);
+        const BitShiftScheme s({PackingSchemeKind::BitShift, key.second, key.first}, full);
         INFO(s.describe());
         CHECK(s.targetCount() == targets);
         CHECK(s.geometryPasses() == (key.second == 16 ? 2 : 1));
         CHECK(s.indexBytes(100, 10) == size_t(targets) * 4000);
     }
-    CHECK(MaxStencilScheme({"max-stencil", 4, 8}, full).geometryPasses() == 2);  // the paper's two passes
-    CHECK(MaxStencilScheme({"max-stencil", 16, 8}, full).targetCount() == 4);
-    CHECK(MaxStencilScheme({"max-stencil", 16, 16}, full).geometryPasses() == 16);
-    CHECK(CpuSortedScheme({"cpu-sorted", 16, 4}, full).targetCount() == 2);
-    CHECK(CpuSortedScheme({"cpu-sorted", 16, 16}, full).targetCount() == 8);
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 4, 8}, full).geometryPasses() == 2);  // the paper's two passes
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 16, 8}, full).targetCount() == 4);
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 16, 16}, full).geometryPasses() == 16);
+    CHECK(CpuSortedScheme({PackingSchemeKind::CpuSorted, 16, 4}, full).targetCount() == 2);
+    CHECK(CpuSortedScheme({PackingSchemeKind::CpuSorted, 16, 16}, full).targetCount() == 8);
 
-    for (const std::string& name : packingSchemeNames()) {
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 3, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 32, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 4, 12}, full), Catch::Contains("4, 8 or 16"));
+    for (PackingSchemeKind scheme : packingSchemes()) {
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 3, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 32, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 4, 12}, full), Catch::Contains("4, 8 or 16"));
         GlInfo fewAttachments = full;
         fewAttachments.maxColorAttachments = 4;
-        REQUIRE_THROWS_AS(createPackingScheme({name, 16, 16}, fewAttachments), UnsupportedError);
-        REQUIRE_NOTHROW(createPackingScheme({name, 8, 8}, fewAttachments));
+        REQUIRE_THROWS_AS(createPackingScheme({scheme, 16, 16}, fewAttachments), UnsupportedError);
+        REQUIRE_NOTHROW(createPackingScheme({scheme, 8, 8}, fewAttachments));
         GlInfo fewUnits = full;
         fewUnits.maxTextureUnits = 8;
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 1, 8}, fewUnits), Catch::Contains("texture units"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 1, 8}, fewUnits), Catch::Contains("texture units"));
     }
     GlInfo oneDrawBuffer = full;
     oneDrawBuffer.maxDrawBuffers = 1;
-    REQUIRE_THROWS_WITH(createPackingScheme({"bitshift", 8, 8}, oneDrawBuffer), Catch::Contains("draw buffers"));
-    REQUIRE_NOTHROW(createPackingScheme({"max-stencil", 16, 16}, oneDrawBuffer));  // one target per draw
-    REQUIRE_THROWS_WITH(createPackingScheme({"nonsense", 4, 8}, full),
+    REQUIRE_THROWS_WITH(createPackingScheme({PackingSchemeKind::BitShift, 8, 8}, oneDrawBuffer), Catch::Contains("draw buffers"));
+    REQUIRE_NOTHROW(createPackingScheme({PackingSchemeKind::MaxStencil, 16, 16}, oneDrawBuffer));  // one target per draw
+    REQUIRE_THROWS_WITH(parsePackingScheme("nonsense"),
                         Catch::Contains("bitshift") && Catch::Contains("max-stencil") && Catch::Contains("cpu-sorted"));
 }

@@ -128,7 +128,7 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
         // CPU sorting drops whole lights from the transparent layers' front-face lists too, where the
         // evaluation's within-budget mask (a conservative CPU count of front-face marks) cannot see it:
         // its opaque frame is checked here, transparency in the transparency tests.
-        options.transparency = c.packing.scheme != "cpu-sorted";
+        options.transparency = c.packing.scheme != PackingSchemeKind::CpuSorted;
         const RenderResult r = renderAndEvaluate(scene, options);
         requireCorrectFrame(r, c.name);
         CHECK(r.evaluation.lists.slotsUsed > 0);
@@ -153,10 +153,10 @@ TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][
         }
         LidrOptions options;
         options.packing = c.packing;
-        options.transparency = c.packing.scheme != "cpu-sorted";  // see the test above
+        options.transparency = c.packing.scheme != PackingSchemeKind::CpuSorted;  // see the test above
         const RenderResult r = renderAndEvaluate(s, options);
         requireCorrectFrame(r, c.name);
-        if (c.packing.budget == 16 && c.packing.scheme != "cpu-sorted") CHECK(r.evaluation.pixelsOverBudget == 0);
+        if (c.packing.budget == 16 && c.packing.scheme != PackingSchemeKind::CpuSorted) CHECK(r.evaluation.pixelsOverBudget == 0);
     }
 }
 
@@ -168,7 +168,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
 
     // What the back-face test does: light 2, behind the wall, marks the wall where light 1 lights it.
     LidrOptions backface;
-    backface.packing = {"bitshift", 4, 8};
+    backface.packing = {PackingSchemeKind::BitShift, 4, 8};
     backface.volumeTest = VolumeTest::BackFace;
     const RenderResult rb = renderAndEvaluate(scene, backface);
     long doubleMarkedOneTouching = 0;
@@ -180,7 +180,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
     // exact test it does not (both in group 0, nothing dropped).
     for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
         LidrOptions sorted;
-        sorted.packing = {"cpu-sorted", 1, 8};
+        sorted.packing = {PackingSchemeKind::CpuSorted, 1, 8};
         sorted.volumeTest = test;
         const RenderResult r = renderAndEvaluate(scene, sorted);
         requireCorrectFrame(r, std::string("cpu-sorted budget 1, ") + volumeTestName(test));
@@ -219,7 +219,7 @@ TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", 
         IndexTargets targets(1, 4, 4, ds);
         LightVolumePass pass(testGl(), test);
         pass.begin(targets, cam);  // camera and test for the grouping
-        const CpuSortedScheme s({"cpu-sorted", 4, 8}, testGl());
+        const CpuSortedScheme s({PackingSchemeKind::CpuSorted, 4, 8}, testGl());
         const std::vector<int> groups = s.assignGroups(volumes, &pass);
         REQUIRE(groups == s.assignGroups(volumes, &pass));
         int dropped = 0;

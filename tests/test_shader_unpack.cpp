@@ -140,7 +140,7 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
     gl::Program& probe = probes[scheme.describe()];
     if (!probe)
         probe = gl::Program::create(
-            "unpack-probe-" + scheme.name(), testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
+            std::string("unpack-probe-") + packingSchemeName(scheme.config().scheme), testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
             buildShaderSource("unpack_probe.frag", scheme.unpackDefines(), {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
             {{"aPosition", gl::kPosition}});
     gl::Texture out = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
