@@ -92,7 +92,8 @@ const std::vector<std::string>& resultColumns() {
 }
 
 const std::vector<std::string>& passColumns() {
-    static const std::vector<std::string> c{"id", "scene", "config", "pass", "ms_median", "ms_min", "ms_max"};
+    static const std::vector<std::string> c{"id",     "scene",  "config",     "pass",        "ms_median",
+                                            "ms_min", "ms_max", "draw_calls", "state_calls", "fragments"};
     return c;
 }
 
@@ -168,7 +169,11 @@ nlohmann::json rowJson(const Row& r) {
     j["timing"] = {{"method", r.timingMethod}, {"warmup_frames", r.warmupFrames}, {"frames", r.frames},
                    {"frame_ms", statJson(r.frameMs)}, {"wall_ms", statJson(r.wallMs)}};
     nlohmann::json passes = nlohmann::json::array();
-    for (const PassStat& p : r.passes) passes.push_back({{"pass", p.pass}, {"ms", statJson(p.ms)}});
+    for (const PassStat& p : r.passes) {
+        passes.push_back({{"pass", p.pass}, {"ms", statJson(p.ms)}, {"draw_calls", p.drawCalls},
+                          {"state_calls", p.stateCalls}});
+        if (p.fragments >= 0) passes.back()["fragments"] = p.fragments;
+    }
     j["timing"]["passes"] = passes;
     j["timing"]["rounds"] = r.rounds;
     j["timing"]["round_frame_ms"] = r.roundMs;
@@ -232,7 +237,9 @@ void ReportWriter::add(const Row& row, const RunInfo& info) {
     csv_ << std::endl;  // flushed: an interrupted or killed sweep keeps its rows
     for (const PassStat& p : row.passes)
         passesCsv_ << row.id << "," << field(row.run.scene) << "," << field(row.run.config.key()) << "," << field(p.pass)
-                   << "," << num(p.ms.median) << "," << num(p.ms.min) << "," << num(p.ms.max) << "\n";
+                   << "," << num(p.ms.median) << "," << num(p.ms.min) << "," << num(p.ms.max) << "," << p.drawCalls
+                   << "," << p.stateCalls << "," << (p.fragments >= 0 ? std::to_string(p.fragments) : std::string())
+                   << "\n";
     passesCsv_.flush();
     if (!csv_ || !passesCsv_) throw Error("writing the CSV files in '" + dir_ + "' failed");
     writeJson(info);

@@ -23,6 +23,9 @@ struct Stat {
 struct PassStat {
     std::string pass;
     Stat ms;
+    // The last measured frame's: draws and state calls in the pass, fragment shader invocations (-1: not counted,
+    // the context has no ARB_pipeline_statistics_query).
+    long drawCalls = 0, stateCalls = 0, fragments = -1;
 };
 
 struct Row {

@@ -258,7 +258,12 @@ void fillTiming(Row& row, const Measured& m) {
     row.frameMs = Stat::of(frame);
     row.wallMs = Stat::of(m.wallMs);
     row.lightVolumeMs = Stat::of(vol).median;
-    for (const std::string& p : order) row.passes.push_back({p, Stat::of(perPass[p])});
+    for (const std::string& p : order) {
+        PassStat stat{p, Stat::of(perPass[p])};
+        for (const PassTime& last : m.frames.back().passes)
+            if (last.pass == p) stat.drawCalls = last.drawCalls, stat.stateCalls = last.stateCalls, stat.fragments = last.fragments;
+        row.passes.push_back(stat);
+    }
     row.drawnLights = m.frames.back().drawnLights;
     row.glCalls = m.frames.back().glCalls;
     const AutoDecision& decision = m.frames.back().autoDecision;

@@ -93,7 +93,7 @@ void RendererChoice::addOptions(CLI::App& app) {
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
     app.add_flag("--volume-detail", volumeDetail,
                  "Coarser light volumes (20 / 80 faces) for lights small on screen (LidrOptions::volumeDetail)");
-    app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, osmesa (env LIDR_CONTEXT)");
+    app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; --window: glfw or glfw-gles2)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
 }

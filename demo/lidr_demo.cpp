@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iomanip>
 #include <map>
 #include <optional>
 
@@ -28,6 +29,7 @@
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/present.h"
 #include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -81,6 +83,36 @@ std::string glCallsLine(const GlCallCounters& c) {
     s << "gl calls   " << c.stateCalls << " state calls (" << c.stateCallsSkipped << " skipped as redundant), "
       << c.drawCalls << " draws, " << c.clears << " clears, " << c.programBinds << " program, " << c.textureBinds
       << " texture, " << c.framebufferBinds << " framebuffer binds a frame\n";
+    return s.str();
+}
+
+// The last frame's passes: draws, state calls and fragment shader invocations each (FrameTimer; fragments only
+// where the context has ARB_pipeline_statistics_query).
+nlohmann::json passCountsJson(const std::vector<PassTime>& passes) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const PassTime& p : passes) {
+        j.push_back({{"pass", p.pass}, {"draw_calls", p.drawCalls}, {"state_calls", p.stateCalls}});
+        if (p.fragments >= 0) j.back()["fragments"] = p.fragments;
+    }
+    return j;
+}
+
+std::string passCountsLine(const std::vector<PassTime>& passes) {
+    if (passes.empty()) return "";
+    std::ostringstream s;
+    s << "per pass  ";
+    bool counted = false;
+    for (const PassTime& p : passes) {
+        s << " " << p.pass << ": " << p.drawCalls << " draws, " << p.stateCalls << " state calls";
+        if (p.fragments >= 0) {
+            s << ", " << std::fixed << std::setprecision(3) << double(p.fragments) * 1e-6 << std::defaultfloat
+              << " M fragments";
+            counted = true;
+        }
+        s << ";";
+    }
+    s << (counted ? " (fragments: fragment shader invocations)\n"
+                  : " (fragments not counted: no ARB_pipeline_statistics_query)\n");
     return s.str();
 }
 
@@ -140,6 +172,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
+    summary["pass_counts"] = passCountsJson(stats.passes);
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
@@ -176,7 +209,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
-    s << glCallsLine(stats.glCalls);
+    s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
@@ -279,6 +312,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
+    summary["pass_counts"] = passCountsJson(stats.passes);
 
     if (renderer.options().perSampleIndices && !dumpDir.empty())
         throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
@@ -361,7 +395,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                                                      : "budget " + std::to_string(decision.transparentBudget));
         s << "\n";
     }
-    s << glCallsLine(stats.glCalls);
+    s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();
     s << "\n";
@@ -387,10 +421,13 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
 
 int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
 #if LIDR_HAVE_GLFW
+    ContextOptions co = rc.contextOptions();
+    if (co.backend != ContextBackend::Auto && co.backend != ContextBackend::Glfw && co.backend != ContextBackend::GlfwGles2)
+        throw Error("--window opens a GLFW window: --context must be glfw, glfw-gles2 (OpenGL ES 2.0) or auto, got '" +
+                    rc.context + "'");
+    if (co.backend == ContextBackend::Auto) co.backend = ContextBackend::Glfw;
     Scene scene = sceneChoice.load();
     demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
-    ContextOptions co = rc.contextOptions();
-    co.backend = ContextBackend::Glfw;
     co.visibleWindow = true;
     co.windowWidth = scene.width;
     co.windowHeight = scene.height;
@@ -402,18 +439,25 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
+    // ES 2.0 has no glBlitFramebuffer: the frame goes to the window as one textured triangle there.
+    std::optional<FramePresenter> presenter;
+    if (context->info().gles) presenter.emplace();
     const double start = glfwGetTime();
     double lastReport = start;
     int framesSinceReport = 0;
     while (!context->shouldClose()) {
         const double now = glfwGetTime();
         const FrameStats& st = renderer->render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer->targets().colorFramebuffer().id());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
-        glBlitFramebuffer(0, 0, scene.width, scene.height, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (presenter) {
+            if (fw > 0 && fh > 0) presenter->present(renderer->targets(), 0, 0, 0, fw, fh);
+        } else {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, renderer->targets().colorFramebuffer().id());
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, scene.width, scene.height, 0, 0, fw, fh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        }
         context->swapBuffers();
         context->pollEvents();
         if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;

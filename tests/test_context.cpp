@@ -49,7 +49,7 @@ TEST_CASE("lidr offers EGL, lidr_osmesa offers only OSMesa", "[context]") {
 TEST_CASE("a backend the linked library does not offer is refused, naming it and why", "[context]") {
     testContext();  // the refusal below must leave the test context alone
     for (ContextBackend b : {ContextBackend::EglSurfaceless, ContextBackend::EglDevice, ContextBackend::EglGles2,
-                             ContextBackend::Glfw, ContextBackend::OSMesa}) {
+                             ContextBackend::Glfw, ContextBackend::GlfwGles2, ContextBackend::OSMesa}) {
         if (offered(b)) continue;
         ContextOptions options;
         options.backend = b;

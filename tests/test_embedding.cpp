@@ -522,3 +522,117 @@ TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on wit
     for (const PassTime& p : timer.collect()) names.push_back(p.pass);
     CHECK(names == std::vector<std::string>{"failing", "ended-early", "next"});
 }
+
+TEST_CASE("a measuring frame counts each pass's draws, state calls and fragments", "[embed][timing]") {
+    testContext();
+    const Scene scene = litFloorScene();
+    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
+
+    // An application's frames (timing without waiting) never count fragments.
+    renderer.setTiming(true, false);
+    for (int frame = 0; frame < 3; ++frame)
+        for (const PassTime& p : renderer.render(scene.camera, lights, shading).passes) CHECK(p.fragments == -1);
+
+    renderer.setTiming(true, true);
+    const FrameStats& stats = renderer.render(scene.camera, lights, shading);
+    REQUIRE_FALSE(stats.passes.empty());
+    long draws = 0, stateCalls = 0;
+    const PassTime *prepass = nullptr, *volumes = nullptr, *forward = nullptr;
+    for (const PassTime& p : stats.passes) {
+        INFO("pass " << p.pass);
+        CHECK(p.drawCalls >= 0);
+        CHECK(p.stateCalls >= 0);
+        CHECK((p.fragments >= 0) == testGl().pipelineStatistics);
+        draws += p.drawCalls;
+        stateCalls += p.stateCalls;
+        if (p.pass == "depth-prepass") prepass = &p;
+        if (p.pass == "light-volumes") volumes = &p;
+        if (p.pass == "forward") forward = &p;
+    }
+    CHECK(draws <= stats.glCalls.drawCalls);
+    CHECK(stateCalls <= stats.glCalls.stateCalls);
+    REQUIRE(prepass);
+    REQUIRE(volumes);
+    REQUIRE(forward);
+    CHECK(prepass->drawCalls >= 1);
+    CHECK(volumes->drawCalls >= stats.volumeDrawCalls);  // the volumes, and the overlap probe's triangles
+    CHECK(stats.volumeDrawCalls >= 1);
+    if (!testGl().pipelineStatistics) {
+        WARN("no ARB_pipeline_statistics_query: fragments not counted");
+        return;
+    }
+    // The pre-pass and the forward pass draw the same opaque meshes (the forward pass with depth EQUAL): at least
+    // every covered pixel each, never more in the forward pass; the light table is an upload, no fragment.
+    const ImageFloat depth = renderer.targets().readDepth();
+    long covered = 0;
+    for (float d : depth.pixels) covered += d < 1.0f ? 1 : 0;
+    REQUIRE(covered > 0);
+    CHECK(prepass->fragments >= covered);
+    CHECK(forward->fragments >= covered);
+    CHECK(forward->fragments <= prepass->fragments);
+    CHECK(volumes->fragments > 0);
+    for (const PassTime& p : stats.passes)
+        if (p.pass == "light-table") CHECK(p.fragments == 0);
+}
+
+// Implementations may shade more than the covered pixels along triangle edges (llvmpipe counts 2,304 for a 64x32
+// viewport-filling triangle), never fewer; a pass without draws shades nothing.
+TEST_CASE("a pass's fragment count is its fragment shader invocations, within bounds for known draws", "[embed][timing]") {
+    testContext();
+    if (!testGl().pipelineStatistics) {
+        WARN("no ARB_pipeline_statistics_query: fragments not counted");
+        return;
+    }
+    const int width = 64, height = 32;
+    gl::Texture color = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
+    gl::Framebuffer fbo = gl::Framebuffer::create();
+    fbo.bind();
+    fbo.attachTexture(GL_COLOR_ATTACHMENT0, color);
+    const float triangle[6] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // covers the viewport
+    gl::Buffer vertices = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    gl::Program program =
+        gl::Program::create("fill", "#version 120\nattribute vec2 p;\nvoid main() { gl_Position = vec4(p, 0.0, 1.0); }\n",
+                            "#version 120\nvoid main() { gl_FragColor = vec4(1.0); }\n", {{"p", 0}});
+    StateCache& cache = StateCache::current();
+    cache.invalidate();
+    cache.apply(RenderState{});
+    program.use();
+    glBindBuffer(GL_ARRAY_BUFFER, vertices.id());
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+
+    FrameTimer timer(testGl(), TimingMethod::CpuFinish);
+    timer.setWaitForResults(true);
+    {
+        TimedPass pass(timer, "full");
+        cache.setViewport({0, 0, width, height});
+        cache.drawArrays(GL_TRIANGLES, 0, 3);
+    }
+    { TimedPass pass(timer, "nothing"); }
+    {
+        TimedPass pass(timer, "two-quarters");
+        cache.setViewport({0, 0, width / 2, height / 2});
+        cache.drawArrays(GL_TRIANGLES, 0, 3);
+        cache.setViewport({width / 2, height / 2, width / 2, height / 2});
+        cache.drawArrays(GL_TRIANGLES, 0, 3);
+    }
+    const std::vector<PassTime> passes = timer.collect();
+    glDisableVertexAttribArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    cache.invalidate();
+    REQUIRE(passes.size() == 3);
+    CHECK(passes[0].drawCalls == 1);
+    CHECK(passes[0].fragments >= width * height);
+    CHECK(passes[0].fragments <= width * height * 5 / 4);
+    CHECK(passes[1].drawCalls == 0);
+    CHECK(passes[1].stateCalls == 0);
+    CHECK(passes[1].fragments == 0);
+    CHECK(passes[2].drawCalls == 2);
+    CHECK(passes[2].fragments >= width * height / 2);
+    CHECK(passes[2].fragments <= width * height * 3 / 4);
+    checkGl("fragment count test");
+}

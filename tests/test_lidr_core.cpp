@@ -15,6 +15,7 @@
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_resources.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/technique/light_volume_mesh.h"
 #include "lidr/modes/reference_renderer.h"
 #include "render_helpers.h"
@@ -346,6 +347,62 @@ TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     LidrRenderer renderer(testGl(), scene, eightBit, scene.width, scene.height);
     std::vector<PointLight> tooMany(300, light(glm::vec3(0.0f), 1.0f));
     REQUIRE_THROWS_WITH(renderer.render(scene.camera, tooMany, {}), Catch::Contains("300 lights"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
+namespace {
+// What the context answers for lidr's 16-bit depth: a DEPTH_COMPONENT16 + STENCIL_INDEX8 renderbuffer pair
+// beside an RGBA8 colour texture (GL has no packed 16-bit depth-stencil format).
+GLenum depth16StencilStatus() {
+    testContext();
+    const gl::Texture color = gl::Texture::create2D(GL_RGBA8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE);
+    const gl::Renderbuffer depth = gl::Renderbuffer::create(GL_DEPTH_COMPONENT16, 4, 4);
+    const gl::Renderbuffer stencil = gl::Renderbuffer::create(GL_STENCIL_INDEX8, 4, 4);
+    gl::Framebuffer f = gl::Framebuffer::create();
+    f.attachTexture(GL_COLOR_ATTACHMENT0, color);
+    f.attachRenderbuffer(GL_DEPTH_ATTACHMENT, depth);
+    f.attachRenderbuffer(GL_STENCIL_ATTACHMENT, stencil);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    StateCache::current().bindFramebuffer(0);
+    return status;
+}
+}  // namespace
+
+TEST_CASE("16-bit depth: other depth bits are refused; a driver that refuses D16 + S8 is named before any work",
+          "[lidr][depth16][bad-input]") {
+    testContext();
+    Scene scene = floorScene();
+    scene.lights = {light(glm::vec3(0.0f, 1.0f, 0.0f), 3.0f), light(glm::vec3(2.0f, 0.5f, 1.0f), 2.5f)};
+    const int before = gl::liveGlObjects();
+    LidrOptions o;
+    o.depthBits = 20;
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height),
+                        Catch::Contains("depth bits must be 16 or 24, got 20"));
+    REQUIRE(gl::liveGlObjects() == before);
+    o.depthBits = 16;
+    const GLenum status = depth16StencilStatus();
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        // Mesa's Gallium drivers (llvmpipe, softpipe; desktop GL and ES 2.0) answer GL_FRAMEBUFFER_UNSUPPORTED.
+        INFO("D16 + S8 status 0x" << std::hex << status);
+        REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, o, scene.width, scene.height), UnsupportedError);
+        REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height),
+                            Catch::Contains("DEPTH_COMPONENT16") && Catch::Contains("STENCIL_INDEX8") &&
+                                Catch::Contains(status == GL_FRAMEBUFFER_UNSUPPORTED ? "GL_FRAMEBUFFER_UNSUPPORTED"
+                                                                                     : "0x") &&
+                                Catch::Contains("24-bit depth"));
+        REQUIRE(gl::liveGlObjects() == before);  // the probe's objects are gone, nothing else was made
+        REQUIRE(glGetError() == GL_NO_ERROR);
+        return;
+    }
+    // A driver that holds the pair: the frame is drawn with 16-bit depth and is exact within the budget.
+    for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil, VolumeTest::BackFace}) {
+        o.volumeTest = test;
+        const RenderResult r = renderAndEvaluate(scene, o);
+        requireExactWithinBudget(r.evaluation, std::string("16-bit depth, ") + volumeTestName(test));
+    }
+    LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
+    renderer.render(scene.camera, scene.lights, {});
+    REQUIRE(renderer.targets().depthBits() == 16);
     REQUIRE(glGetError() == GL_NO_ERROR);
 }
 

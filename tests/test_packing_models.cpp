@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <cmath>
 #include <random>
+#include <regex>
+#include <string>
 #include <map>
 #include <set>
 
@@ -16,6 +18,7 @@
 #include "lidr/technique/max_stencil_scheme.h"
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/base/shader_float.h"
+#include "lidr/gl/shader_source.h"
 #include "config_cases.h"
 
 using namespace lidr;
@@ -109,6 +112,65 @@ TEST_CASE("lidrBytes: every fp16 and every fp24 read within +-0.45 step gives th
         INFO(floatPrecisionName(p) << ": " << reads << " reads");
         CHECK(reads > 256 * (p == FloatPrecision::Fp16 ? 4 : 200));
     }
+}
+
+TEST_CASE("the GLSL ES text lidr emits for mediump fragments is the fp16 model's lidrBytes, step for step",
+          "[packing][precision][fp16][cpu]") {
+    // The forward pass's fragment shader exactly as an ES 2.0 context compiles it (gl::Program makes the same
+    // call): the proofs above hold for the GPU only if this text is the arithmetic the model runs.
+    const std::string es = glslEs100FromGlsl120(
+        buildShaderSource("lidr_forward.frag", {{"LIDR_SLOTS", "4"}}, {{"lidr_unpack.glsl", "unpack_bitshift.glsl"}}),
+        ShaderStage::Fragment, "lidr_forward.frag");
+    // 1. Without GL_FRAGMENT_PRECISION_HIGH the default float precision is mediump and LIDR_FRAGMENT_FP16 is set.
+    const size_t high = es.find("#ifdef GL_FRAGMENT_PRECISION_HIGH\n");
+    REQUIRE(high != std::string::npos);
+    const size_t otherwise = es.find("#else\n", high), endif = es.find("#endif\n", otherwise);
+    REQUIRE((otherwise != std::string::npos && endif != std::string::npos));
+    const std::string mediumBranch = es.substr(otherwise, endif - otherwise);
+    REQUIRE(mediumBranch.find("precision mediump float;") != std::string::npos);
+    REQUIRE(mediumBranch.find("#define LIDR_FRAGMENT_FP16 1") != std::string::npos);
+    const std::regex precisionStatement(R"(precision\s+(lowp|mediump|highp)\s+float\s*;)");
+    REQUIRE_FALSE(std::regex_search(es.substr(endif), precisionStatement));  // no later statement overrides it
+    // 2. lidrBytes as compiled with LIDR_FRAGMENT_FP16: the #else of lidr_bytes.glsl's #ifndef, parsed.
+    const size_t guard = es.find("#ifndef LIDR_FRAGMENT_FP16");
+    REQUIRE(guard != std::string::npos);
+    const size_t from = es.find("#else", guard), to = es.find("#endif", from);
+    REQUIRE((from != std::string::npos && to != std::string::npos));
+    const std::string body = es.substr(from, to - from);
+    const std::regex stepLine(R"(bit = step\(vec4\(([0-9.]+)\), x\);\s*(?:x -= bit \* ([0-9.]+);)?\s*b \+= bit(?: \* ([0-9.]+))?;)");
+    struct Step {
+        double threshold, value, weight;
+    };
+    std::vector<Step> steps;
+    for (auto m = std::sregex_iterator(body.begin(), body.end(), stepLine); m != std::sregex_iterator(); ++m)
+        steps.push_back({std::stod((*m)[1]), (*m)[2].matched ? std::stod((*m)[2]) : 0.0,
+                         (*m)[3].matched ? std::stod((*m)[3]) : 1.0});
+    size_t assignments = 0;
+    for (size_t p = body.find("bit = "); p != std::string::npos; p = body.find("bit = ", p + 1)) ++assignments;
+    REQUIRE(assignments == 8);  // every step of the emitted function was parsed
+    REQUIRE(steps.size() == 8);
+    for (int i = 0; i < 8; ++i) {
+        const int j = 7 - i;  // most significant bit first
+        INFO("bit " << j);
+        CHECK(steps[size_t(i)].threshold == lidrBytesThreshold(j));
+        CHECK(steps[size_t(i)].value == (j == 0 ? 0.0 : lidrBytesValue(j)));  // bit 0 subtracts nothing
+        CHECK(steps[size_t(i)].weight == double(1 << j));
+    }
+    // 3. The parsed text run in fp16 gives the model's byte for every fp16 read in [0, 1] (and so, by the
+    //    proofs above, the exact byte for every read within +-0.45 step).
+    const FloatPrecision p = FloatPrecision::Fp16;
+    long reads = 0;
+    for (double x = 0.0; x <= 1.0; x = nextUp(x, p), ++reads) {
+        ShaderFloat r(x, p), b(0.0, p);
+        for (const Step& s : steps) {
+            const ShaderFloat bit = stepOf(roundToPrecision(s.threshold, p), r);
+            if (s.value != 0.0) r = r - bit * ShaderFloat(s.value, p);
+            b = b + bit * ShaderFloat(s.weight, p);
+        }
+        const double model = lidrBytes(ShaderFloat(x, p)).v;
+        if (b.v != model) FAIL("read " << x << ": the emitted text gives " << b.v << ", the model " << model);
+    }
+    CHECK(reads > 11000);  // 0 and every fp16 number from 2^-11 (below the smallest threshold, 2^-9) to 1
 }
 
 TEST_CASE("lidrBytes: fp32 reads within +-0.45 step give the exact byte (interval ends, every breakpoint's "

@@ -48,7 +48,9 @@ std::vector<uint8_t> readRaw(int w, int h, GLenum format, int channels) {
     return raw;
 }
 
-UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& lists) {
+// bitByBitBytes: the unpack shader compiled with LIDR_FRAGMENT_FP16, the byte decode an ES context without
+// fragment highp takes (lidr_bytes.glsl's bit-by-bit path), whatever the context's precision.
+UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& lists, bool bitByBitBytes = false) {
     testContext();
     const int width = std::min<int>(1024, std::max<int>(1, static_cast<int>(lists.size())));
     const int height = static_cast<int>((lists.size() + width - 1) / width);
@@ -137,12 +139,16 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
 
     // Decode with the real unpack shader, two slots per draw.
     static std::map<std::string, gl::Program> probes;  // one per configuration
-    gl::Program& probe = probes[scheme.describe()];
-    if (!probe)
+    gl::Program& probe = probes[scheme.describe() + (bitByBitBytes ? ", bit-by-bit bytes" : "")];
+    if (!probe) {
+        ShaderDefines defines = scheme.unpackDefines();
+        if (bitByBitBytes) defines.push_back({"LIDR_FRAGMENT_FP16", "1"});
         probe = gl::Program::create(
-            std::string("unpack-probe-") + packingSchemeName(scheme.config().scheme), testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
-            buildShaderSource("unpack_probe.frag", scheme.unpackDefines(), {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
+            std::string("unpack-probe-") + packingSchemeName(scheme.config().scheme),
+            testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
+            buildShaderSource("unpack_probe.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
             {{"aPosition", gl::kPosition}});
+    }
     gl::Texture out = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
     gl::Framebuffer fbo = gl::Framebuffer::create();
     fbo.attachTexture(GL_COLOR_ATTACHMENT0, out);
@@ -232,9 +238,10 @@ Mismatches checkRun(const PackingScheme& scheme, VolumeTest test, const Lists& l
     return m;
 }
 
-void runAndCheck(const PackingScheme& scheme, VolumeTest test, const Lists& lists, const char* what) {
+void runAndCheck(const PackingScheme& scheme, VolumeTest test, const Lists& lists, const char* what,
+                 bool bitByBitBytes = false) {
     const auto t0 = std::chrono::steady_clock::now();
-    const UnpackRun run = runLists(scheme, test, lists);
+    const UnpackRun run = runLists(scheme, test, lists, bitByBitBytes);
     const Mismatches m = checkRun(scheme, test, lists, run);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (std::getenv("LIDR_TEST_TIMING"))
@@ -368,6 +375,26 @@ TEST_CASE("shader unpack: every index in every slot, every pair, every order; al
         // Overflowing lists through the exact test's stencil bookkeeping.
         runAndCheck(*scheme, VolumeTest::ExactStencil, randomLists(*scheme, soft ? 500 : 4000, budget + 4, 7u + budget),
                     "random overflowing lists (exact test)");
+    }
+}
+
+// The byte decode of mediump (ES without fragment highp: LIDR_FRAGMENT_FP16) has no GPU here that computes fp16
+// (llvmpipe has highp; SwiftShader computes mediump in fp32, doc/web.md), so its fp16 exactness is the CPU
+// model's proof ([precision]). This runs that branch's GLSL through the driver's compiler and the real unpack
+// shaders, in the driver's own precision: every byte value in every channel of every target, decoded exactly.
+TEST_CASE("shader unpack with the mediump byte decode (LIDR_FRAGMENT_FP16): every index in every slot; all "
+          "schemes, budgets, widths", "[unpack][gpu]") {
+    const bool soft = isSoftpipe();
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        Lists slotLists = everyIndexInEverySlot(*scheme, false);
+        if (soft && slotLists.size() > 4096) {
+            Lists thin;
+            for (size_t i = 0; i < slotLists.size(); i += 5) thin.push_back(slotLists[i]);
+            slotLists = thin;
+        }
+        runAndCheck(*scheme, VolumeTest::BackFace, slotLists, "every index in every slot, bit-by-bit bytes", true);
     }
 }
 

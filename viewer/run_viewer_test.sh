@@ -95,6 +95,29 @@ printf 'resize 320 240\nwait 3\nexpect-size 160 120\n' > "$out/fixed-size.script
 "${x[@]}" "$viewer" --width 160 --height 120 --paused --fixed-size --out "$out" --script "$out/fixed-size.script" \
   >"$out/fixed-size.log" 2>&1 || fail "--fixed-size: $(tail -3 "$out/fixed-size.log")"
 
+# OpenGL ES 2.0 (--context glfw-gles2: a GLFW window through EGL, MESA_GLES_VERSION_OVERRIDE=2.0 for a true
+# ES 2.0 with GLSL ES 1.00): the ES demo's images, the views, the UI, ES's refusals reverted, the sweep.
+es=(env -u MESA_GL_VERSION_OVERRIDE -u MESA_GLSL_VERSION_OVERRIDE MESA_GLES_VERSION_OVERRIDE=2.0)
+for mode in lidr tiled forward-multipass; do
+  bounds=(); [ "$mode" = tiled ] && bounds=(--no-depth-bounds)  # ES refuses tile depth bounds
+  "${es[@]}" "$demo" --context egl-gles2 --headless "${size[@]}" --frames 1 --mode "$mode" "${bounds[@]}" \
+    --out "$out/demo-gles2-$mode" >"$out/demo-gles2-$mode.log" 2>&1 ||
+    fail "lidr-demo --context egl-gles2 --mode $mode failed: $(cat "$out/demo-gles2-$mode.log")"
+done
+sed "s|@OUT@|$out|g" "$here/viewer_gles2.script" > "$out/gles2.script"
+echo "viewer.script: ${x[*]} lidr-viewer --context glfw-gles2 --script $out/gles2.script (OpenGL ES 2.0)"
+"${x[@]}" "${es[@]}" "$viewer" --context glfw-gles2 "${size[@]}" --paused --out "$out" --script "$out/gles2.script" \
+  >"$out/gles2.log" 2>&1 || fail "the OpenGL ES 2.0 run failed: $(tail -5 "$out/gles2.log")"
+grep -q "^GL: .*OpenGL ES 2\.0" "$out/gles2.log" || fail "--context glfw-gles2 did not give OpenGL ES 2.0: $(grep '^GL:' "$out/gles2.log")"
+grep -q "^GL: backend glfw-gles2, " "$out/gles2.log" || fail "the ES run's backend is not glfw-gles2: $(grep '^GL:' "$out/gles2.log")"
+for f in gles2-shot.png gles2-capture/screenshot.png gles2-capture/frame.png gles2-capture/reference.png \
+         gles2-capture/index_lists.png gles2-capture/state.json gles2-capture/dump/index_target0.png; do
+  [ -s "$out/$f" ] || fail "the ES 2.0 run did not write $f"
+done
+"${x[@]}" "${es[@]}" "$viewer" --context glfw-gles2 --width 160 --height 120 --paused --out "$out" \
+  --script "$out/sweep.script" >"$out/gles2-sweep.log" 2>&1 || fail "the ES 2.0 settings sweep failed: $(tail -5 "$out/gles2-sweep.log")"
+echo "viewer.script: ES 2.0 settings sweep: $(grep -c ' applied$' "$out/gles2-sweep.log" || true) applied, $(grep -c 'refused:' "$out/gles2-sweep.log") refused, no crash"
+
 # Without the override (the context's own GL version): switch modes, the UI drawn.
 unset MESA_GL_VERSION_OVERRIDE MESA_GLSL_VERSION_OVERRIDE
 sed "s|@OUT@|$out|g" "$here/viewer_native.script" > "$out/native.script"

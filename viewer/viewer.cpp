@@ -18,11 +18,13 @@
 #include <nlohmann/json.hpp>
 
 #include "frame_views.h"
+#include "imgui_es2.h"
 #include "lidr/base/error.h"
 #include "lidr/eval/artefacts.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/modes/auto_mode_renderer.h"
+#include "lidr/render/present.h"
 
 namespace lidr::viewer {
 namespace {
@@ -75,11 +77,14 @@ void keyCallback(GLFWwindow* w, int key, int /*scancode*/, int action, int mods)
     if (auto* v = static_cast<Viewer*>(glfwGetWindowUserPointer(w))) v->onKeyPress(key, mods);
 }
 
-// What the ImGui OpenGL2 backend (fixed function, client-side arrays) needs after lidr's passes.
-void resetStateForWindow(int fbw, int fbh) {
+// What the ImGui OpenGL2 backend (fixed function, client-side arrays) and the ES 2.0 one (imgui_es2.h) need
+// after lidr's passes. ES 2.0 has no glDrawBuffer / glReadBuffer: the window's framebuffer is its back buffer.
+void resetStateForWindow(int fbw, int fbh, bool gles) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDrawBuffer(GL_BACK);
-    glReadBuffer(GL_BACK);
+    if (!gles) {
+        glDrawBuffer(GL_BACK);
+        glReadBuffer(GL_BACK);
+    }
     glViewport(0, 0, fbw, fbh);
     glUseProgram(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -125,8 +130,9 @@ const char* viewName(View v) {
 
 Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice& rc, const ViewerOptions& options)
     : sceneChoice_(sceneChoice), options_(options) {
-    if (rc.context != "auto" && rc.context != "glfw")
-        throw Error("lidr-viewer draws into a window: --context must be glfw (or auto), got '" + rc.context + "'");
+    if (rc.context != "auto" && rc.context != "glfw" && rc.context != "glfw-gles2")
+        throw Error("lidr-viewer draws into a window: --context must be glfw, glfw-gles2 (OpenGL ES 2.0) or auto, got '" +
+                    rc.context + "'");
     if (!options_.scriptFile.empty()) script_ = parseScript(options_.scriptFile);
     scene_ = sceneChoice.load();
     width_ = scene_.width;
@@ -147,13 +153,14 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     lightCount_ = int(scene_.lights.size());
 
     ContextOptions co;
-    co.backend = ContextBackend::Glfw;
+    co.backend = rc.context == "glfw-gles2" ? ContextBackend::GlfwGles2 : ContextBackend::Glfw;
     co.visibleWindow = !options_.hidden;
     co.windowWidth = width_;
     co.windowHeight = height_;
     co.windowTitle = "lidr-viewer";
     context_ = GlContext::create(co);
     window_ = static_cast<GLFWwindow*>(context_->nativeWindow());
+    gles_ = context_->info().gles;
     std::cout << "GL: " << context_->info().summary() << std::endl;
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, keyCallback);  // before ImGui's, which chains to it
@@ -165,15 +172,24 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working folder
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
-    ImGui_ImplOpenGL2_Init();
+    if (gles_) {
+        es2Ui_ = std::make_unique<ImGuiEs2Renderer>();
+        presenter_ = std::make_unique<FramePresenter>();
+    } else {
+        ImGui_ImplOpenGL2_Init();
+    }
     checkGl("viewer: starting Dear ImGui");
 }
 
 Viewer::~Viewer() {
     renderer_.reset();
     if (viewTexture_) glDeleteTextures(1, &viewTexture_);
+    presenter_.reset();
     if (ImGui::GetCurrentContext()) {
-        ImGui_ImplOpenGL2_Shutdown();
+        if (es2Ui_)
+            es2Ui_.reset();
+        else
+            ImGui_ImplOpenGL2_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
     }
@@ -523,7 +539,7 @@ void Viewer::computeViews() {
 
 ImageRGBA8 Viewer::readWindow(int fbw, int fbh) const {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
+    if (!gles_) glReadBuffer(GL_BACK);
     return readPixelsRGBA8(fbw, fbh);
 }
 
@@ -535,7 +551,7 @@ const ImageRGBA8* Viewer::shownView() const {
 }
 
 void Viewer::drawWindow(int fbw, int fbh) {
-    resetStateForWindow(fbw, fbh);
+    resetStateForWindow(fbw, fbh, gles_);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     const ImageRGBA8* image = shownView();
@@ -549,8 +565,8 @@ void Viewer::drawWindow(int fbw, int fbh) {
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                         image->pixels.data());
+            glTexImage2D(GL_TEXTURE_2D, 0, gles_ ? GL_RGBA : GL_RGBA8, image->width, image->height, 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, image->pixels.data());  // ES 2.0: the unsized format
             uploadedView_ = view_;
             uploadedFrame_ = stamp;
         }
@@ -559,6 +575,10 @@ void Viewer::drawWindow(int fbw, int fbh) {
         // Rows are stored top to bottom, so texture row 0 is the image's top: uv (0, 0) at the top left.
         ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(intptr_t(viewTexture_)), ImVec2(0, 0),
                                                  ImVec2(float(fbw), float(fbh)));
+    } else if (gles_) {
+        // ES 2.0 has no blit: one textured triangle (the same size copies pixel for pixel, another scales by
+        // the nearest texel).
+        presenter_->present(renderer_->targets(), 0, 0, 0, fbw, fbh);
     } else {
         const RenderTargets& t = renderer_->targets();
         glBindFramebuffer(GL_READ_FRAMEBUFFER, t.colorFramebuffer().id());
@@ -1047,7 +1067,7 @@ int Viewer::run() {
             // Scripted runs advance a fixed step per frame, so what they check does not depend on speed.
             const float dt = scripted ? kStepSeconds : float(std::min(0.1, now - last));
             last = now;
-            ImGui_ImplOpenGL2_NewFrame();
+            if (!gles_) ImGui_ImplOpenGL2_NewFrame();  // (the ES renderer made its font texture at the start)
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             processInput(dt);
@@ -1062,8 +1082,11 @@ int Viewer::run() {
             drawWindow(fbw, fbh);
             buildUi(fbw, fbh);
             ImGui::Render();
-            resetStateForWindow(fbw, fbh);
-            ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+            resetStateForWindow(fbw, fbh, gles_);
+            if (es2Ui_)
+                es2Ui_->render(ImGui::GetDrawData(), fbw, fbh);
+            else
+                ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
             checkGl("viewer: drawing the UI");
             if (pendingScreenshot_) {
                 char name[64];

@@ -22,7 +22,13 @@
 
 struct GLFWwindow;
 
+namespace lidr {
+class FramePresenter;
+}
+
 namespace lidr::viewer {
+
+class ImGuiEs2Renderer;
 
 enum class View { Frame, Difference, IndexLists, Overlap, Marked, TileHeatMap };
 constexpr int kViewCount = 6;
@@ -38,7 +44,8 @@ struct ViewerOptions {
 
 class Viewer {
 public:
-    // Loads the scene, opens the window (GLFW backend only) and builds the first renderer; throws lidr::Error
+    // Loads the scene, opens the window (GLFW backends only: glfw, desktop GL; glfw-gles2, OpenGL ES 2.0) and
+    // builds the first renderer; throws lidr::Error
     // (bad options, no display, a first configuration the library refuses).
     Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice& rc, const ViewerOptions& options);
     ~Viewer();
@@ -98,6 +105,11 @@ private:
     int refusedWidth_ = 0, refusedHeight_ = 0;  // a window size the library refused, not tried again
     std::unique_ptr<GlContext> context_;
     GLFWwindow* window_ = nullptr;
+    // --context glfw-gles2: ImGui drawn by imgui_es2.h (the OpenGL2 backend is fixed function), the frame put
+    // into the window by FramePresenter (ES 2.0 has no glBlitFramebuffer).
+    bool gles_ = false;
+    std::unique_ptr<ImGuiEs2Renderer> es2Ui_;
+    std::unique_ptr<FramePresenter> presenter_;
     std::unique_ptr<Renderer> renderer_;
     RenderModeOptions modeOptions_;
     ShadingParameters shading_;

@@ -4,6 +4,11 @@
 #include <chrono>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+
+#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4  // ARB_pipeline_statistics_query (never used without it)
+#endif
 
 namespace lidr {
 
@@ -25,57 +30,101 @@ FrameTimer::FrameTimer(const GlInfo& info, TimingMethod method) {
                           info.renderer.find("swrast") != std::string::npos;
     if (method == TimingMethod::GpuQueries && !info.timerQuery)
         throw UnsupportedError("GPU timer queries asked for, but the context has no ARB/EXT_timer_query");
+    fragmentQueries_ = info.pipelineStatistics;
     gpu_ = method == TimingMethod::GpuQueries || (method == TimingMethod::Auto && info.timerQuery && !software);
+}
+
+FrameTimer::Frame& FrameTimer::beginFrameSlot() {
+    Frame& f = ring_[current_];
+    if (f.pending || f.number != frameNumber_) {  // first pass of this frame: the slot's old results go
+        f.passes.clear();
+        f.counted.clear();
+        f.pending = false;
+        f.number = frameNumber_;
+    }
+    return f;
 }
 
 void FrameTimer::begin(const std::string& pass) {
     if (!enabled_) return;
     if (open_) throw Error("FrameTimer: pass '" + pass + "' begun inside another");
     open_ = true;
+    Frame& f = beginFrameSlot();
+    PassTime p;
+    p.pass = pass;
+    f.passes.push_back(p);
+    const size_t i = f.passes.size() - 1;
+    const bool count = countsFragments();
+    f.counted.push_back(count);
+    if (count) {
+        if (f.fragmentQueries.size() <= i) f.fragmentQueries.emplace_back(gl::Kind::Query);
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, f.fragmentQueries[i].id());
+    }
     if (gpu_) {
-        Frame& f = ring_[current_];
-        if (f.pending || f.number != frameNumber_) {  // first pass of this frame: the slot's old results go
-            f.names.clear();
-            f.pending = false;
-            f.number = frameNumber_;
-        }
-        f.names.push_back(pass);
-        if (f.queries.size() < f.names.size()) f.queries.emplace_back(gl::Kind::Query);
-        glBeginQuery(GL_TIME_ELAPSED_EXT, f.queries[f.names.size() - 1].id());
+        if (f.queries.size() <= i) f.queries.emplace_back(gl::Kind::Query);
+        glBeginQuery(GL_TIME_ELAPSED_EXT, f.queries[i].id());
     } else {
-        names_.push_back(pass);
         glFinish();
         cpuStart_ = nowMilliseconds();
     }
+    const GlCallCounters& c = StateCache::current().counters();
+    passStart_ = {c.drawCalls, c.stateCalls};
 }
 
 void FrameTimer::end() {
     if (!enabled_) return;
     if (!open_) throw Error("FrameTimer::end without begin");
     open_ = false;
+    Frame& f = ring_[current_];
+    PassTime& p = f.passes.back();
+    const GlCallCounters& c = StateCache::current().counters();
+    p.drawCalls = c.drawCalls - passStart_.draws;
+    p.stateCalls = c.stateCalls - passStart_.states;
     if (gpu_) {
         glEndQuery(GL_TIME_ELAPSED_EXT);
     } else {
         glFinish();
         cpuMs_.push_back(nowMilliseconds() - cpuStart_);
     }
+    if (f.counted.back()) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
 
+namespace {
+bool queryAvailable(GLuint id) {
+    GLuint available = 0;
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT_AVAILABLE, &available);
+    return available != 0;
+}
+
+GLuint64 queryResult64(GLuint id) {
+    GLuint64EXT value = 0;
+    if (glGetQueryObjectui64v) {
+        glGetQueryObjectui64v(id, GL_QUERY_RESULT, &value);
+    } else if (glGetQueryObjectui64vEXT) {
+        glGetQueryObjectui64vEXT(id, GL_QUERY_RESULT, &value);
+    } else {
+        GLuint low = 0;
+        glGetQueryObjectuiv(id, GL_QUERY_RESULT, &low);
+        value = low;
+    }
+    return value;
+}
+}  // namespace
+
 std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
-    std::vector<PassTime> out;
-    for (size_t i = 0; i < f.names.size(); ++i) {
-        GLuint id = f.queries[i].id();
-        if (!wait) {
-            GLuint available = 0;
-            glGetQueryObjectuiv(id, GL_QUERY_RESULT_AVAILABLE, &available);
-            if (!available) return {};
-        }
-        GLuint64EXT ns = 0;
-        if (glGetQueryObjectui64v)
-            glGetQueryObjectui64v(id, GL_QUERY_RESULT, &ns);
-        else
-            glGetQueryObjectui64vEXT(id, GL_QUERY_RESULT, &ns);
-        out.push_back({f.names[i], double(ns) * 1e-6});
+    if (!wait) {
+        for (size_t i = 0; i < f.passes.size(); ++i)
+            if ((gpu_ && !queryAvailable(f.queries[i].id())) ||
+                (f.counted[i] && !queryAvailable(f.fragmentQueries[i].id())))
+                return {};
+    }
+    std::vector<PassTime> out = f.passes;
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (gpu_)
+            out[i].milliseconds = double(queryResult64(f.queries[i].id())) * 1e-6;
+        else if (i < cpuMs_.size())
+            out[i].milliseconds = cpuMs_[i];
+        if (f.counted[i]) out[i].fragments = static_cast<long>(queryResult64(f.fragmentQueries[i].id()));
     }
     return out;
 }
@@ -83,31 +132,27 @@ std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
 std::vector<PassTime> FrameTimer::collect() {
     std::vector<PassTime> out;
     lag_ = 0;
-    if (gpu_) {
-        Frame& now = ring_[current_];
-        if (now.number == frameNumber_ && !now.names.empty()) now.pending = true;
-        if (wait_) {
-            if (now.pending) out = read(now, true);
-            now.pending = false;
-        } else {
-            // The newest earlier frame whose queries have all answered; older pending frames are dropped.
-            for (int back = 1; back < kRingFrames; ++back) {
-                Frame& f = ring_[(current_ + kRingFrames - back) % kRingFrames];
-                if (!f.pending || f.number != frameNumber_ - back) continue;
-                out = read(f, false);
-                if (out.empty()) continue;
-                lag_ = back;
-                for (Frame& older : ring_)
-                    if (older.pending && older.number <= f.number) older.pending = false;
-                break;
-            }
-        }
-        current_ = (current_ + 1) % kRingFrames;
+    Frame& now = ring_[current_];
+    if (now.number == frameNumber_ && !now.passes.empty()) now.pending = true;
+    if (!gpu_ || wait_) {
+        // The CPU method is synchronous; waiting reads this frame's own results.
+        if (now.pending) out = read(now, true);
+        now.pending = false;
     } else {
-        for (size_t i = 0; i < names_.size() && i < cpuMs_.size(); ++i) out.push_back({names_[i], cpuMs_[i]});
+        // The newest earlier frame whose queries have all answered; older pending frames are dropped.
+        for (int back = 1; back < kRingFrames; ++back) {
+            Frame& f = ring_[(current_ + kRingFrames - back) % kRingFrames];
+            if (!f.pending || f.number != frameNumber_ - back) continue;
+            out = read(f, false);
+            if (out.empty()) continue;
+            lag_ = back;
+            for (Frame& older : ring_)
+                if (older.pending && older.number <= f.number) older.pending = false;
+            break;
+        }
     }
+    current_ = (current_ + 1) % kRingFrames;
     ++frameNumber_;
-    names_.clear();
     cpuMs_.clear();
     checkGl("FrameTimer::collect");
     return out;
@@ -115,7 +160,7 @@ std::vector<PassTime> FrameTimer::collect() {
 
 int FrameTimer::queryObjects() const {
     int n = 0;
-    for (const Frame& f : ring_) n += static_cast<int>(f.queries.size());
+    for (const Frame& f : ring_) n += static_cast<int>(f.queries.size() + f.fragmentQueries.size());
     return n;
 }
 

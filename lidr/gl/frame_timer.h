@@ -12,9 +12,15 @@
 
 namespace lidr {
 
+// One pass of a frame: its time and what it asked of the GPU. The counts are the pass's share of the
+// StateCache counters (gl_state.h); `fragments` is the number of fragment shader invocations, counted only in
+// measuring runs (FrameTimer::setWaitForResults) where the context has ARB_pipeline_statistics_query.
 struct PassTime {
     std::string pass;
     double milliseconds = 0.0;
+    long drawCalls = 0;    // glDrawArrays / glDrawElements
+    long stateCalls = 0;   // state-setting GL calls issued (those the cache skipped are not in it)
+    long fragments = -1;   // fragment shader invocations; -1: not counted
 };
 
 enum class TimingMethod { Auto, GpuQueries, CpuFinish };
@@ -25,7 +31,9 @@ TimingMethod parseTimingMethod(const std::string& name);  // "auto", "gpu", "cpu
 // newest earlier frame whose results have all arrived (lag() frames old), or nothing yet; the queries of a
 // frame never answered are reused kRingFrames frames later. setWaitForResults(true) instead waits for this
 // frame's results (lidr-demo and lidr-bench, which want each frame's own times). The CPU method (glFinish
-// around each pass) is synchronous by nature and always reports this frame.
+// around each pass) is synchronous by nature and always reports this frame. Waiting also turns on counting each
+// pass's fragment shader invocations where the context can (GlInfo::pipelineStatistics): a measuring run reads
+// them anyway, and an application's frames never pay for the queries.
 class FrameTimer {
 public:
     static constexpr int kRingFrames = 4;
@@ -44,23 +52,28 @@ public:
     bool enabled() const { return enabled_; }
     void setEnabled(bool on) { enabled_ = on; }
     void setWaitForResults(bool wait) { wait_ = wait; }
-    int queryObjects() const;  // GL query objects this timer holds (none until a GPU-timed pass begins)
+    bool countsFragments() const { return enabled_ && wait_ && fragmentQueries_; }
+    int queryObjects() const;  // GL query objects this timer holds (none until a GPU-timed or counted pass begins)
 
 private:
     struct Frame {
-        std::vector<gl::Object> queries;
-        std::vector<std::string> names;
+        std::vector<gl::Object> queries, fragmentQueries;
+        std::vector<PassTime> passes;  // names and counts; times and fragments filled when read
+        std::vector<bool> counted;     // the pass's fragment query was issued
         long number = -1;
         bool pending = false;  // ended, results not read yet
     };
+    Frame& beginFrameSlot();
     std::vector<PassTime> read(Frame& frame, bool wait);
-    bool gpu_ = false, enabled_ = true, open_ = false, wait_ = false;
+    bool gpu_ = false, enabled_ = true, open_ = false, wait_ = false, fragmentQueries_ = false;
     Frame ring_[kRingFrames];
     int current_ = 0, lag_ = 0;
     long frameNumber_ = 0;
-    std::vector<std::string> names_;  // this frame's passes (CPU method)
-    std::vector<double> cpuMs_;
+    std::vector<double> cpuMs_;  // this frame's pass times (CPU method)
     double cpuStart_ = 0.0;
+    struct Counts {
+        long draws = 0, states = 0;
+    } passStart_;
 };
 
 // One timed pass: begun at construction, ended by end() or when the scope closes, whichever comes first. A pass

@@ -159,6 +159,7 @@ GlInfo currentContextGlInfo(const std::string& backendName) {
     info.timerQuery = (hasExtension("GL_ARB_timer_query") && glGetQueryObjectui64v) ||
                        (hasExtension("GL_EXT_timer_query") && glGetQueryObjectui64vEXT);
     info.depthClamp = hasExtension("GL_ARB_depth_clamp") || hasExtension("GL_NV_depth_clamp");
+    info.pipelineStatistics = hasExtension("GL_ARB_pipeline_statistics_query");
     info.drawBuffers = hasDrawBuffersEntryPoint();
     info.multisampleFbo = (gl30 || hasExtension("GL_EXT_framebuffer_multisample") ||
                             hasExtension("GL_ARB_framebuffer_object")) && glRenderbufferStorageMultisample;

@@ -34,6 +34,9 @@ struct GlInfo {
     // (GL 3.2 / ARB_texture_multisample) read per sample (GL 4.0 / ARB_sample_shading).
     bool multisampleTexture = false;
     bool sampleShading = false;
+    // Fragment shader invocations per pass (ARB_pipeline_statistics_query), counted by FrameTimer in measuring
+    // runs; ES 2.0 and WebGL: none.
+    bool pipelineStatistics = false;
     int maxColorTextureSamples = 0;
     int maxDrawBuffers = 1;
     int maxColorAttachments = 1;      // FBO colour attachments (index targets of one frame)

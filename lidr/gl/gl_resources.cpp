@@ -130,6 +130,15 @@ void Framebuffer::attachRenderbuffer(GLenum attachment, const Renderbuffer& rb) 
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, rb.id());
 }
 
+void Framebuffer::attachDepthStencil(const Renderbuffer& depth, const Renderbuffer* separateStencil) {
+    if (!separateStencil) {
+        attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depth);
+        return;
+    }
+    attachRenderbuffer(GL_DEPTH_ATTACHMENT, depth);
+    attachRenderbuffer(GL_STENCIL_ATTACHMENT, *separateStencil);
+}
+
 void Framebuffer::checkComplete(const char* name) const {
     StateCache::current().bindFramebuffer(id_);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);

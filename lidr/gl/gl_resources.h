@@ -74,6 +74,9 @@ public:
     void bind() const;
     void attachTexture(GLenum attachment, const Texture& t);
     void attachRenderbuffer(GLenum attachment, const Renderbuffer& rb);
+    // `depth` as depth and stencil (a packed depth-stencil), or, with `separateStencil`, `depth` as depth and
+    // it as stencil.
+    void attachDepthStencil(const Renderbuffer& depth, const Renderbuffer* separateStencil = nullptr);
     void checkComplete(const char* name) const;  // throws GlError naming the status
 };
 

@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/frame_timer.h"
@@ -50,6 +51,37 @@ int indexBytesPerPixel(int budget, int indexBits) {
     return int(std::max(4L, (bytes + 3) / 4 * 4));
 }
 
+void checkDepthBits(const GlInfo& info, int depthBits) {
+    if (depthBits != 16 && depthBits != 24)
+        throw Error("depth bits must be 16 or 24, got " + std::to_string(depthBits));
+    if (depthBits == 24) return;
+    if (!info.framebufferObject) return;  // RenderTargets refuses the context itself, naming what it lacks
+    // GL has no packed 16-bit depth-stencil format: 16-bit depth is a DEPTH_COMPONENT16 renderbuffer with a
+    // STENCIL_INDEX8 one beside it, which drivers may refuse as a combination (FRAMEBUFFER_UNSUPPORTED).
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    GLenum status = 0;
+    {
+        const gl::Texture color = gl::Texture::create2D(GL_RGBA8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+        const gl::Renderbuffer depth = gl::Renderbuffer::create(GL_DEPTH_COMPONENT16, 1, 1);
+        const gl::Renderbuffer stencil = gl::Renderbuffer::create(GL_STENCIL_INDEX8, 1, 1);
+        gl::Framebuffer probe = gl::Framebuffer::create();
+        probe.attachTexture(GL_COLOR_ATTACHMENT0, color);
+        probe.attachDepthStencil(depth, &stencil);
+        status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        StateCache::current().bindFramebuffer(0);
+    }
+    checkGl("16-bit depth probe");
+    if (status == GL_FRAMEBUFFER_COMPLETE) return;
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", status);
+    const std::string name = status == GL_FRAMEBUFFER_UNSUPPORTED ? "GL_FRAMEBUFFER_UNSUPPORTED" : code;
+    throw UnsupportedError("16-bit depth needs a DEPTH_COMPONENT16 depth renderbuffer with a separate STENCIL_INDEX8 "
+                           "stencil renderbuffer (GL has no packed 16-bit depth-stencil format, and lidr's passes "
+                           "count lights in the stencil); this driver (" + info.renderer + ") refuses that pair: " +
+                           name + " (" + code + "). Use 24-bit depth (DEPTH24_STENCIL8)");
+}
+
 void checkSamples(const GlInfo& info, int samples) {
     if (samples == 0) return;
     if (samples < 0 || samples == 1)
@@ -64,8 +96,8 @@ void checkSamples(const GlInfo& info, int samples) {
                                std::to_string(info.maxSamples) + "x (GL_MAX_SAMPLES)");
 }
 
-RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samples)
-    : width_(width), height_(height), samples_(samples) {
+RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samples, int depthBits)
+    : width_(width), height_(height), samples_(samples), depthBits_(depthBits) {
     if (!info.framebufferObject && info.gles)
         throw UnsupportedError("this OpenGL ES context lacks OES_packed_depth_stencil, which lidr's framebuffer "
                                "objects need: the passes share one depth-stencil buffer (depth test and stencil count)");
@@ -74,18 +106,23 @@ RenderTargets::RenderTargets(const GlInfo& info, int width, int height, int samp
                                "lidr needs GL 2.1 + FBOs");
     checkResolution(info, width, height);
     checkSamples(info, samples);
-    depthStencil_ = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, width, height);
+    checkDepthBits(info, depthBits);
+    const bool packed = depthBits == 24;
+    depthStencil_ = gl::Renderbuffer::create(packed ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT16, width, height);
+    if (!packed) stencil_ = gl::Renderbuffer::create(GL_STENCIL_INDEX8, width, height);
     color_ = gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE);
     colorFbo_ = gl::Framebuffer::create();
     colorFbo_.attachTexture(GL_COLOR_ATTACHMENT0, color_);
-    colorFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil_);
+    colorFbo_.attachDepthStencil(depthStencil_, separateStencil());
     colorFbo_.checkComplete("scene colour");
     if (samples > 0) {
         msaaColor_ = gl::Renderbuffer::create(GL_RGBA8, width, height, samples);
-        msaaDepthStencil_ = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, width, height, samples);
+        msaaDepthStencil_ =
+            gl::Renderbuffer::create(packed ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT16, width, height, samples);
+        if (!packed) msaaStencil_ = gl::Renderbuffer::create(GL_STENCIL_INDEX8, width, height, samples);
         msaaFbo_ = gl::Framebuffer::create();
         msaaFbo_.attachRenderbuffer(GL_COLOR_ATTACHMENT0, msaaColor_);
-        msaaFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, msaaDepthStencil_);
+        msaaFbo_.attachDepthStencil(msaaDepthStencil_, multisampleSeparateStencil());
         msaaFbo_.checkComplete("scene colour MSAA");
     }
     StateCache::current().bindFramebuffer(0);

@@ -1,6 +1,8 @@
 #pragma once
 // The targets a frame renders into. A single-sample colour texture plus one packed DEPTH24_STENCIL8
-// renderbuffer that the LIDR index targets attach too, so the pre-pass depth is shared. With MSAA, shading
+// renderbuffer that the LIDR index targets attach too, so the pre-pass depth is shared. With 16-bit depth
+// (depthBits 16) the depth is a DEPTH_COMPONENT16 renderbuffer and the stencil a STENCIL_INDEX8 one beside it
+// (GL has no packed 16-bit depth-stencil format), where the driver accepts that pair (checkDepthBits). With MSAA, shading
 // goes to multisampled colour and depth-stencil renderbuffers and is resolved into the colour texture; the
 // single-sample depth-stencil still serves the light-volume pass (LIDR's index texture is single-sample).
 #include "lidr/gl/gl_info.h"
@@ -16,8 +18,9 @@ class RenderTargets {
 public:
     RenderTargets() = default;
     // Throws UnsupportedError for a context without FBOs or without the samples asked for, lidr::Error for
-    // a size the driver cannot hold. samples: 0 (no MSAA) or 2..info.maxSamples.
-    RenderTargets(const GlInfo& info, int width, int height, int samples = 0);
+    // a size the driver cannot hold. samples: 0 (no MSAA) or 2..info.maxSamples. depthBits: 24 (packed
+    // DEPTH24_STENCIL8) or 16 (checkDepthBits: refused where the driver cannot hold that depth with a stencil).
+    RenderTargets(const GlInfo& info, int width, int height, int samples = 0, int depthBits = 24);
     // Where shading goes: the MSAA FBO when samples > 0, the whole target, colour attachment 0; then `clear`.
     PassDescription colorPass(const ClearAction& clear = {}) const;
     // The single-sample colour FBO with the shared depth-stencil.
@@ -28,7 +31,12 @@ public:
     // resolve() timed as the "msaa-resolve" pass; nothing (and no pass) without MSAA.
     void resolve(class FrameTimer& timer) const;
     int samples() const { return samples_; }
+    int depthBits() const { return depthBits_; }
+    // The depth (and, with 24 bits, stencil) renderbuffer; with 16 bits the stencil is separateStencil().
     const gl::Renderbuffer& depthStencil() const { return depthStencil_; }
+    // The STENCIL_INDEX8 beside a 16-bit depth (nullptr with 24 bits: the stencil is packed with the depth).
+    const gl::Renderbuffer* separateStencil() const { return stencil_ ? &stencil_ : nullptr; }
+    const gl::Renderbuffer* multisampleSeparateStencil() const { return msaaStencil_ ? &msaaStencil_ : nullptr; }
     // The MSAA depth-stencil (per-sample index targets attach it); empty without MSAA.
     const gl::Renderbuffer& multisampleDepthStencil() const { return msaaDepthStencil_; }
     const gl::Texture& color() const { return color_; }
@@ -40,16 +48,22 @@ public:
     std::vector<uint8_t> readStencil() const; // single-sample stencil
 
 private:
-    int width_ = 0, height_ = 0, samples_ = 0;
-    gl::Renderbuffer depthStencil_;
+    int width_ = 0, height_ = 0, samples_ = 0, depthBits_ = 24;
+    gl::Renderbuffer depthStencil_, stencil_;
     gl::Texture color_;
     gl::Framebuffer colorFbo_;
-    gl::Renderbuffer msaaColor_, msaaDepthStencil_;
+    gl::Renderbuffer msaaColor_, msaaDepthStencil_, msaaStencil_;
     gl::Framebuffer msaaFbo_;
 };
 
 // Checks a resolution against the context before anything is allocated.
 void checkResolution(const GlInfo& info, int width, int height);
+// Checks a depth precision against the context before anything is allocated: 24 (always) or 16, which needs a
+// DEPTH_COMPONENT16 renderbuffer with a separate STENCIL_INDEX8 one in a complete framebuffer (every pass
+// uses the stencil). 16 is probed on a 1 x 1 framebuffer; a driver that refuses the pair (Mesa's Gallium
+// drivers, llvmpipe and softpipe included, answer GL_FRAMEBUFFER_UNSUPPORTED) throws UnsupportedError naming
+// the status. Another value throws lidr::Error.
+void checkDepthBits(const GlInfo& info, int depthBits);
 // Checks an MSAA sample count against the context: 0, or a power of two 2, 4, 8, ... up to maxSamples with
 // multisample FBOs.
 void checkSamples(const GlInfo& info, int samples);

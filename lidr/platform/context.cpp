@@ -17,11 +17,12 @@ ContextBackend parseContextBackend(const std::string& name) {
     if (name == "egl" || name == "egl-surfaceless" || name == "surfaceless") return ContextBackend::EglSurfaceless;
     if (name == "egl-device" || name == "device") return ContextBackend::EglDevice;
     if (name == "glfw") return ContextBackend::Glfw;
+    if (name == "glfw-gles2") return ContextBackend::GlfwGles2;
     if (name == "osmesa") return ContextBackend::OSMesa;
     if (name == "egl-gles2" || name == "gles2") return ContextBackend::EglGles2;
     if (name == "webgl") return ContextBackend::WebGl;
     throw Error("unknown GL context backend '" + name +
-                "' (valid: auto, egl, egl-device, egl-gles2, glfw, osmesa, webgl)");
+                "' (valid: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa, webgl)");
 }
 
 const char* contextBackendName(ContextBackend b) {
@@ -30,6 +31,7 @@ const char* contextBackendName(ContextBackend b) {
     case ContextBackend::EglSurfaceless: return "egl";
     case ContextBackend::EglDevice: return "egl-device";
     case ContextBackend::Glfw: return "glfw";
+    case ContextBackend::GlfwGles2: return "glfw-gles2";
     case ContextBackend::OSMesa: return "osmesa";
     case ContextBackend::EglGles2: return "egl-gles2";
     case ContextBackend::WebGl: return "webgl";
@@ -43,6 +45,7 @@ static std::unique_ptr<GlContext> createOne(ContextBackend b, const ContextOptio
     case ContextBackend::EglDevice: return detail::createEglDevice();
     case ContextBackend::EglGles2: return detail::createEglGles2();
     case ContextBackend::Glfw: return detail::createGlfw(o);
+    case ContextBackend::GlfwGles2: return detail::createGlfwGles2(o);
     case ContextBackend::OSMesa: return detail::createOSMesa();
     case ContextBackend::WebGl: return detail::createWebGl(o);
     case ContextBackend::Auto: break;
@@ -81,7 +84,10 @@ std::vector<ContextBackend> availableContextBackends() {
         b.push_back(ContextBackend::EglDevice);
         b.push_back(ContextBackend::EglGles2);
     }
-    if (LIDR_HAVE_GLFW) b.push_back(ContextBackend::Glfw);
+    if (LIDR_HAVE_GLFW) {
+        b.push_back(ContextBackend::Glfw);
+        b.push_back(ContextBackend::GlfwGles2);
+    }
     if (LIDR_HAVE_OSMESA) b.push_back(ContextBackend::OSMesa);
     if (LIDR_HAVE_WEBGL) b.push_back(ContextBackend::WebGl);
     return b;
@@ -92,7 +98,7 @@ namespace detail {
 [[maybe_unused]] static const char* const kOnlyThisLibrarysBackends = LIDR_HAVE_WEBGL
     ? "the web build (emscripten) offers only the webgl backend"
     : "lidr::lidr_osmesa offers only the osmesa backend (OSMesa's GL entry points replace glvnd's in a "
-      "program linked to it); link lidr::lidr for egl, egl-device, egl-gles2 and glfw";
+      "program linked to it); link lidr::lidr for egl, egl-device, egl-gles2, glfw and glfw-gles2";
 #if !LIDR_HAVE_EGL
 std::unique_ptr<GlContext> createEglSurfaceless() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
 std::unique_ptr<GlContext> createEglDevice() { throw UnsupportedError(kOnlyThisLibrarysBackends); }
@@ -103,6 +109,7 @@ std::unique_ptr<GlContext> createGlfw(const ContextOptions&) {
     throw UnsupportedError(LIDR_HAVE_EGL ? "lidr was built without GLFW (libglfw3-dev not found at configure time)"
                                          : kOnlyThisLibrarysBackends);
 }
+std::unique_ptr<GlContext> createGlfwGles2(const ContextOptions& o) { return createGlfw(o); }
 #endif
 #if !LIDR_HAVE_OSMESA
 std::unique_ptr<GlContext> createOSMesa() {

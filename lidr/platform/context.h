@@ -11,15 +11,17 @@
 namespace lidr {
 
 // EglGles2: EGL surfaceless with an OpenGL ES 2.0 context (EGL_OPENGL_ES_API), for ES 2.0-class hardware;
-// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0"). WebGl: a WebGL 1
-// context on a page's <canvas>, only in the web build (emscripten; doc/web.md), an ES 2.0 context too.
-enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2, WebGl };
+// the renderer then takes its ES path (GlInfo::gles; doc/contexts.md, "OpenGL ES 2.0"). GlfwGles2: a GLFW
+// window with an OpenGL ES 2.0 context made through EGL (lidr-viewer and lidr-demo --window on the ES path).
+// WebGl: a WebGL 1 context on a page's <canvas>, only in the web build (emscripten; doc/web.md), an ES 2.0
+// context too.
+enum class ContextBackend { Auto, EglSurfaceless, EglDevice, Glfw, OSMesa, EglGles2, WebGl, GlfwGles2 };
 
 struct ContextOptions {
     ContextBackend backend = ContextBackend::Auto;  // Auto: LIDR_CONTEXT env, else surfaceless, then device
                                                      // (lidr_osmesa: osmesa)
-    int windowWidth = 1024, windowHeight = 768;     // GLFW only
-    bool visibleWindow = false;                      // GLFW only
+    int windowWidth = 1024, windowHeight = 768;     // GLFW (glfw, glfw-gles2) only
+    bool visibleWindow = false;                      // GLFW (glfw, glfw-gles2) only
     std::string windowTitle = "lidr";
     std::string canvasSelector = "#canvas";          // WebGL only (the web build): the page's <canvas>
 };
@@ -45,10 +47,10 @@ protected:
     GlInfo info_;
 };
 
-// "auto", "egl", "egl-device", "glfw", "osmesa", "egl-gles2", "webgl"
+// "auto", "egl", "egl-device", "glfw", "osmesa", "egl-gles2", "webgl", "glfw-gles2"
 ContextBackend parseContextBackend(const std::string& name);
 const char* contextBackendName(ContextBackend b);
-// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw where built);
+// The backends this library offers. lidr::lidr: egl, egl-device, egl-gles2 (and glfw, glfw-gles2 where built);
 // lidr::lidr_osmesa: osmesa only, because OSMesa brings its own GL entry points (see doc/contexts.md); the web
 // build: webgl only.
 std::vector<ContextBackend> availableContextBackends();
@@ -58,6 +60,7 @@ std::unique_ptr<GlContext> createEglSurfaceless();
 std::unique_ptr<GlContext> createEglDevice();
 std::unique_ptr<GlContext> createEglGles2();
 std::unique_ptr<GlContext> createGlfw(const ContextOptions&);
+std::unique_ptr<GlContext> createGlfwGles2(const ContextOptions&);
 std::unique_ptr<GlContext> createOSMesa();
 std::unique_ptr<GlContext> createWebGl(const ContextOptions&);
 }  // namespace detail

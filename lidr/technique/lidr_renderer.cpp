@@ -25,6 +25,7 @@ LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
 // Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
 // an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
 PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+    checkDepthBits(info, o.depthBits);
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
                     " volume test needs the depth pre-pass; only frontface may skip it");
@@ -108,7 +109,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       info_(info),
       firstPacking_(checkedPacking(info, scene, options_)),
       scene_(scene),
-      targets_(info, width, height, options_.msaaSamples),
+      targets_(info, width, height, options_.msaaSamples, options_.depthBits),
       volumePass_(info, options_.volumeTest, options_.volumeDetail),
       timer_(info, options_.timingMethod) {
     requestedAutoBudget_ = requested.packing.autoBudget();
@@ -133,6 +134,8 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         transparentVolumePass_ = LightVolumePass(info, front, options_.volumeDetail);
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
+    volumePass_.setDepthBits(options_.depthBits);
+    transparentVolumePass_.setDepthBits(options_.depthBits);
     if (needsDepthTexture) {
         depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
         if (info.gles) {
@@ -168,7 +171,9 @@ IndexTargets& LidrRenderer::indexTargetsFor(std::map<int, IndexTargets>& cache, 
         const bool perSample = options_.perSampleIndices;
         it = cache.emplace(count, IndexTargets(count, targets_.width(), targets_.height(),
                                                perSample ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
-                                               perSample ? options_.msaaSamples : 0)).first;
+                                               perSample ? options_.msaaSamples : 0,
+                                               perSample ? targets_.multisampleSeparateStencil()
+                                                         : targets_.separateStencil())).first;
     }
     return it->second;
 }

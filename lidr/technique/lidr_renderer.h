@@ -44,6 +44,10 @@ struct LidrOptions {
     // 320-face one (LightVolumePass); false: the 320-face volume for every light.
     bool volumeDetail = false;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
+    // Depth buffer precision: 24 (DEPTH24_STENCIL8) or 16 (a DEPTH_COMPONENT16 renderbuffer with a separate
+    // STENCIL_INDEX8, where the driver accepts the pair: checkDepthBits in lidr/gl/render_targets.h; Mesa's
+    // Gallium drivers refuse it). doc/stability.md says what 16 bits cost.
+    int depthBits = 24;
     bool timing = false;  // per-pass times in FrameStats (Renderer::setTiming); off: no timer queries at all
     TimingMethod timingMethod = TimingMethod::Auto;
     // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)

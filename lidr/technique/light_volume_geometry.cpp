@@ -187,7 +187,7 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& pl
     program.set("uNearPlane", camera_.nearPlane);
     program.set("uInvTargetSize", 1.0f / glm::vec2(targetSize_));
     program.set("uRadiusScale", kSphereRadiusScale);
-    program.set("uDepthMargin", kSphereDepthSteps / 16777215.0f);  // steps of DEPTH_COMPONENT24
+    program.set("uDepthMargin", kSphereDepthSteps / depthUnits_);  // steps of the pre-pass depth buffer
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
     lightsUniform_ = program.uniform<glm::vec4>("uLights");

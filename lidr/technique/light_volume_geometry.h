@@ -70,11 +70,14 @@ public:
     float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
     int batchSize() const { return batch_; }
     int batchFor(int targetCount) const override;
+    // The precision of the depth the shader tests read (the pre-pass's depth buffer, copied): 24 or 16 bits;
+    // kSphereDepthSteps are steps of it.
+    void setDepthBits(int bits) { depthUnits_ = float((1u << bits) - 1u); }
 
     // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
     // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
     static constexpr float kSphereRadiusScale = 1.0005f;
-    // The sphere tests treat the pixel's surface as anywhere within this many steps of the 24-bit depth copy
+    // The sphere tests treat the pixel's surface as anywhere within this many steps of the depth copy (24 or 16 bits, setDepthBits)
     // (light_volume_sphere.frag): the stored depth is the true depth within half a step, and rebuilding distance
     // from it in fp32 costs about one more. Negligible at ordinary near/far ratios (about 1 mm at 20 m for near
     // 0.1 m), it keeps a light whose sphere the true surface reaches from being lost where depth precision is
@@ -107,6 +110,7 @@ private:
     const gl::Texture* depth_ = nullptr;
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;
+    float depthUnits_ = 16777215.0f;  // 2^depthBits - 1
     gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
     gl::Uniform<float> clampUniform_;
     std::vector<glm::vec4> lightData_, colorData_;

@@ -7,7 +7,8 @@
 
 namespace lidr {
 
-IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples)
+IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples,
+                           const gl::Renderbuffer* separateStencil)
     : width_(width), height_(height), samples_(samples) {
     if (count < 1 || count > kMaxIndexTargets)
         throw Error("index target count must be 1.." + std::to_string(kMaxIndexTargets));
@@ -17,13 +18,13 @@ IndexTargets::IndexTargets(int count, int width, int height, const gl::Renderbuf
                                         : gl::Texture::create2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE));
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, textures_.back());
     }
-    fbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
+    fbo_.attachDepthStencil(depthStencil, separateStencil);
     fbo_.checkComplete("light-index targets");
     if (currentContextIsGles()) {
         for (int first = 1; first < count; ++first) {
             gl::Framebuffer f = gl::Framebuffer::create();
             for (int i = first; i < count; ++i) f.attachTexture(GL_COLOR_ATTACHMENT0 + (i - first), textures_[size_t(i)]);
-            f.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
+            f.attachDepthStencil(depthStencil, separateStencil);
             f.checkComplete("light-index targets from a later one (OpenGL ES)");
             fromFbos_.push_back(std::move(f));
         }

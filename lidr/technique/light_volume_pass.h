@@ -20,7 +20,10 @@ class IndexTargets {
 public:
     IndexTargets() = default;
     // samples > 0: multisample textures (the per-sample MSAA path); depthStencil must have as many samples.
-    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples = 0);
+    // separateStencil: the stencil beside a 16-bit depth (RenderTargets::separateStencil()); nullptr when
+    // depthStencil is a packed depth-stencil.
+    IndexTargets(int count, int width, int height, const gl::Renderbuffer& depthStencil, int samples = 0,
+                 const gl::Renderbuffer* separateStencil = nullptr);
     int samples() const { return samples_; }
     int count() const { return static_cast<int>(textures_.size()); }
     const gl::Texture& texture(int i) const { return textures_[i]; }
@@ -69,6 +72,8 @@ public:
     }
 
     VolumeTest test() const { return test_; }
+    // The pre-pass depth precision, 24 (default) or 16 bits: the shader tests' margin is in its steps.
+    void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
     const CameraMatrices& camera() const { return camera_; }
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
     // plane): it then marks its whole screen footprint.
