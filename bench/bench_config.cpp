@@ -144,7 +144,7 @@ namespace {
 
 LidrOptions lidrOptionsFor(const ModeConfig& c) {
     LidrOptions o;
-    o.packing.scheme = c.scheme;
+    o.packing.scheme = parsePackingScheme(c.scheme);
     o.packing.budget = c.budget;
     o.packing.indexBits = c.indexBits;
     o.volumeTest = parseVolumeTest(c.volumeTest);

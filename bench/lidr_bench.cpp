@@ -723,7 +723,7 @@ int main(int argc, char** argv) {
                         const FrameEvaluation ev = evaluateFrame(*lidrRenderer, scene.camera, lights, image, reference.image);
                         row.error = ev.error;
                         // Per-sample index targets are multisample textures: evaluateFrame judges only the image.
-                        row.hasLists = !lidrRenderer->perSampleIndices();
+                        row.hasLists = !lidrRenderer->options().perSampleIndices;
                         row.droppedLightPixels = ev.lists.droppedLightPixels;
                         row.pixelsWithDrops = ev.lists.pixelsWithDrops;
                         row.pixelsOverBudget = ev.pixelsOverBudget;

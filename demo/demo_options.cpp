@@ -108,13 +108,14 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
         o.transparency = false;
     else
         throw Error("--transparency must be on, off or scene, got '" + transparency + "'");
-    o.packing.scheme = scheme;
+    o.packing.scheme = parsePackingScheme(scheme);
     o.packing.budget = parseAutoOrNumber(budget, "--budget", {1, 2, 4, 8, 16});
     o.packing.indexBits = parseAutoOrNumber(indexBits, "--index-bits", {4, 8, 16});
     if (o.packing.autoScheme() && (o.packing.budget != PackingConfig::kAuto || o.packing.indexBits != PackingConfig::kAuto))
         throw Error("--scheme auto chooses the budget and the index width itself: leave out --budget and --index-bits, "
                     "or name a scheme (--scheme bitshift) to fix them");
-    if (!o.packing.autoScheme() && o.packing.scheme != "bitshift" && o.packing.budget == PackingConfig::kAuto)
+    if (!o.packing.autoScheme() && o.packing.scheme != PackingSchemeKind::BitShift &&
+        o.packing.budget == PackingConfig::kAuto)
         throw Error("--budget auto is measured from bit-shift packing's stencil count; --scheme " + scheme +
                     " needs --budget 1, 2, 4, 8 or 16");
     o.perSampleIndices = msaaPerSample;

@@ -291,12 +291,12 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                         {"warnings", scene.warnings}};
     const AutoDecision& decision = stats.autoDecision;
     const int budget = renderer.scheme().config().budget;
-    summary["lidr"] = {{"scheme", renderer.scheme().name()}, {"budget", budget},
+    summary["lidr"] = {{"scheme", packingSchemeName(renderer.scheme().config().scheme)}, {"budget", budget},
                        {"index_bits", renderer.scheme().config().indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
-                       {"index_memory_bytes", renderer.indexMemoryBytes()},
+                       {"index_memory_bytes", renderer.indexTargets().bytes()},
                        {"stencil_use", renderer.scheme().stencilUse()},
                        {"volume_passes", renderer.scheme().geometryPasses()},
                        {"light_table_bytes", renderer.lightTable().bytes()},
@@ -314,10 +314,10 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     summary["gl_calls"] = glCallsJson(stats.glCalls);
     summary["pass_counts"] = passCountsJson(stats.passes);
 
-    if (renderer.perSampleIndices() && !dumpDir.empty())
+    if (renderer.options().perSampleIndices && !dumpDir.empty())
         throw Error("--dump reads the index targets back, which per-sample (multisample) targets do not allow");
     FrameArtefacts artefacts;
-    if (!renderer.perSampleIndices()) artefacts.indexTargets = renderer.readIndexTargets();
+    if (!renderer.options().perSampleIndices) artefacts.indexTargets = renderer.readIndexTargets();
     artefacts.depth = renderer.targets().readDepth();
     artefacts.lightCounts = renderer.readLightCounts();
     artefacts.camera = cameraMatrices(scene.camera, scene.width, scene.height);
@@ -342,7 +342,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         summary["timing"]["reference_median_ms"] = refTimes.json();
 
         const FrameEvaluation ev = evaluateFrame(renderer, scene.camera, lights, image, refImage);
-        if (renderer.perSampleIndices()) {
+        if (renderer.options().perSampleIndices) {
             summary["lights"] = {{"visible_lights", stats.drawnLights},
                                  {"lists_checked", false},
                                  {"why", "per-sample index targets are multisample textures; only the image is judged"}};
@@ -402,7 +402,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     if (withReference) {
         const auto& L = summary["lights"];
         const auto& E = summary["error"];
-        const bool listsChecked = !renderer.perSampleIndices();
+        const bool listsChecked = !renderer.options().perSampleIndices;
         s << "reference  brute force " << summary["timing"]["reference_median_ms"]["frame"].get<double>() << " ms\n";
         if (listsChecked) s << "lights     visible " << L["visible_lights"] << ", max overlap " << L["max_overlap_touching"]
           << " (marked " << L["max_marked_by_volume_test"] << "), pixels over budget " << L["pixels_marked_over_budget"]

@@ -228,7 +228,7 @@ TEST_CASE("auto: lights off screen get no index; the visible ones are numbered c
         for (uint32_t index : list) REQUIRE((index - 1) % 25 == 0);
     // A fixed 16-bit width indexes by scene numbers and gives the same image.
     LidrOptions fixed;
-    fixed.packing = {"bitshift", 4, 16};
+    fixed.packing = {PackingSchemeKind::BitShift, 4, 16};
     const RenderResult f = renderAndEvaluate(scene, fixed);
     REQUIRE(f.stats.autoDecision.autoIndexBits == false);
     REQUIRE(f.lidr.pixels == r.lidr.pixels);
@@ -270,14 +270,14 @@ TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][aut
     testContext();
     const Scene scene = controlledScene(2);
     LidrOptions o;
-    o.packing = {"auto", 4, PackingConfig::kAuto};
+    o.packing = {PackingSchemeKind::Auto, 4, PackingConfig::kAuto};
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height),
                         Catch::Contains("auto scheme chooses the budget and the index width itself"));
-    o.packing = {"max-stencil", PackingConfig::kAuto, 8};
+    o.packing = {PackingSchemeKind::MaxStencil, PackingConfig::kAuto, 8};
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height),
                         Catch::Contains("max-stencil needs a fixed budget"));
     // A fixed width too narrow for the scene's lights.
-    o.packing = {"bitshift", PackingConfig::kAuto, 4};
+    o.packing = {PackingSchemeKind::BitShift, PackingConfig::kAuto, 4};
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), controlledScene(16), o, scene.width, scene.height),
                         Catch::Contains("choose a wider index, or an automatic one"));
     REQUIRE_THROWS_WITH(createPackingScheme(PackingConfig{}, testGl()), Catch::Contains("is automatic"));

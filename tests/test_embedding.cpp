@@ -349,10 +349,10 @@ void main() {
     gl_FragColor = vec4(count / 255.0, first / 255.0, 0.0, 1.0);
 }
 )";
-    for (const char* schemeName : {"bitshift", "max-stencil", "cpu-sorted"}) {
-        INFO("scheme " << schemeName);
+    for (PackingSchemeKind scheme : packingSchemes()) {
+        INFO("scheme " << packingSchemeName(scheme));
         LidrOptions o;
-        o.packing = {schemeName, 4, 8};
+        o.packing = {scheme, 4, 8};
         o.materialShader = countShader;
         LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
         renderer.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});

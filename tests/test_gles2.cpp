@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
 #include "lidr/base/gl.h"
@@ -146,41 +147,42 @@ TEST_CASE("the OpenGL ES 2.0 context: capabilities from its extensions, no deskt
 TEST_CASE("ES 2.0: bit-shift at budgets 1, 2, 4 in one RGBA8 target keeps exactly the top-priority lights and "
           "matches the reference", "[.gles2][render]") {
     const GlInfo& info = requireEs2();
-    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
-    for (int budget : {1, 2, 4})
-        for (int k : {1, 2, 4, 8}) {
-            ControlledOverlapOptions o;
-            o.overlap = k;
-            o.maxLights = 255;
-            o.width = 192;
-            o.height = 144;
-            const Scene scene = makeControlledOverlapScene(o);
-            LidrOptions options;
-            options.packing = {"bitshift", budget, 8};
-            options.volumeTest = test;
-            const RenderResult r = renderAndEvaluate(scene, options, info);
-            const FrameEvaluation& e = r.evaluation;
-            INFO(volumeTestName(test) << " bit-shift budget " << budget << ", k " << k << ": invalid "
-                                      << e.lists.invalidSlots << ", within-budget max error "
-                                      << e.errorWithinBudget.maxAbsError << ", PSNR " << e.errorWithinBudget.psnr);
-            REQUIRE(r.indexTargets.size() == 1);  // one RGBA8 target
-            REQUIRE(e.lists.invalidSlots == 0);
-            REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
-            long clusterPixels = 0;
-            for (size_t p = 0; p < e.marked.size(); ++p) {
-                const int touching = e.truth.count(p);
-                if (touching == 0) continue;
-                ++clusterPixels;
-                INFO("pixel " << p);
-                REQUIRE(touching == k);
-                REQUIRE(e.marked[p] == k);  // GPU stencil count = CPU truth
-                const int kept = std::min(k, budget);
-                REQUIRE(int(e.lists.decoded[p].size()) == kept);  // exact lists: the kept highest priorities
-                for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(k - kept));
-                REQUIRE(e.lists.droppedPerPixel[p] == k - kept);
-            }
-            CHECK(clusterPixels > 40);
+    const ConfigCase c = GENERATE(from_range(
+        withOverlaps(withVolumeTests(packingCases({1, 2, 4}, {8}, {PackingSchemeKind::BitShift}), {VolumeTest::Sphere, VolumeTest::BackFace}),
+                     [](const ConfigCase&) { return std::vector<int>{1, 2, 4, 8}; })));
+    DYNAMIC_SECTION(c.name) {
+        const int budget = c.packing.budget, k = c.overlap;
+        ControlledOverlapOptions o;
+        o.overlap = k;
+        o.maxLights = 255;
+        o.width = 192;
+        o.height = 144;
+        const Scene scene = makeControlledOverlapScene(o);
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = c.volumeTest;
+        const RenderResult r = renderAndEvaluate(scene, options, info);
+        const FrameEvaluation& e = r.evaluation;
+        INFO(c.name << ": invalid " << e.lists.invalidSlots << ", within-budget max error "
+                    << e.errorWithinBudget.maxAbsError << ", PSNR " << e.errorWithinBudget.psnr);
+        REQUIRE(r.indexTargets.size() == 1);  // one RGBA8 target
+        REQUIRE(e.lists.invalidSlots == 0);
+        REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
+        long clusterPixels = 0;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            const int touching = e.truth.count(p);
+            if (touching == 0) continue;
+            ++clusterPixels;
+            INFO("pixel " << p);
+            REQUIRE(touching == k);
+            REQUIRE(e.marked[p] == k);  // GPU stencil count = CPU truth
+            const int kept = std::min(k, budget);
+            REQUIRE(int(e.lists.decoded[p].size()) == kept);  // exact lists: the kept highest priorities
+            for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(k - kept));
+            REQUIRE(e.lists.droppedPerPixel[p] == k - kept);
         }
+        CHECK(clusterPixels > 40);
+    }
 }
 
 TEST_CASE("ES 2.0: the default room at budget 4 against the brute-force reference", "[.gles2][render]") {
@@ -189,7 +191,7 @@ TEST_CASE("ES 2.0: the default room at budget 4 against the brute-force referenc
     scene.width = testWidth();
     scene.height = testHeight();
     LidrOptions options;
-    options.packing = {"bitshift", 4, PackingConfig::kAuto};
+    options.packing = {PackingSchemeKind::BitShift, 4, PackingConfig::kAuto};
     const RenderResult r = renderAndEvaluate(scene, options, info);
     const FrameEvaluation& e = r.evaluation;
     requireExactWithinBudget(e, "ES 2.0 room, bit-shift budget 4");
@@ -207,20 +209,20 @@ TEST_CASE("ES 2.0 refuses what it lacks before drawing, naming the missing featu
     auto make = [&](const GlInfo& info, const LidrOptions& options) { LidrRenderer(info, scene, options, w, h); };
 
     LidrOptions maxStencil;
-    maxStencil.packing = {"max-stencil", 4, 8};
+    maxStencil.packing = {PackingSchemeKind::MaxStencil, 4, 8};
     GlInfo noMinMax = es;
     noMinMax.blendMinMax = false;
     REQUIRE_THROWS_AS(make(noMinMax, maxStencil), UnsupportedError);
     REQUIRE_THROWS_WITH(make(noMinMax, maxStencil), Contains("EXT_blend_minmax"));
 
     LidrOptions twoTargets;
-    twoTargets.packing = {"bitshift", 8, 8};
+    twoTargets.packing = {PackingSchemeKind::BitShift, 8, 8};
     GlInfo noDrawBuffers = es;
     noDrawBuffers.drawBuffers = false;
     noDrawBuffers.maxDrawBuffers = noDrawBuffers.maxColorAttachments = 1;
     REQUIRE_THROWS_WITH(make(noDrawBuffers, twoTargets), Contains("EXT_draw_buffers"));
     LidrOptions oneTarget;
-    oneTarget.packing = {"bitshift", 4, 8};
+    oneTarget.packing = {PackingSchemeKind::BitShift, 4, 8};
     REQUIRE_NOTHROW(make(noDrawBuffers, oneTarget));  // the paper's main case needs none
 
     GlInfo noDepthTexture = es;

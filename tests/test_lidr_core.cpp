@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/gl.h"
 #include "lidr/eval/bench_scenes.h"
@@ -56,8 +57,11 @@ TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh]
 
 TEST_CASE("bit-shift CPU model: every index in every slot decodes back, newest first", "[bitshift][cpu]") {
     GlInfo noContext;
-    for (auto [bits, budget] : {std::pair{4, 1}, {4, 2}, {4, 4}, {4, 8}, {8, 1}, {8, 2}, {8, 4}, {16, 1}, {16, 2}}) {
-        BitShiftScheme scheme({"bitshift", budget, bits}, noContext);
+    const ConfigCase c = GENERATE(from_range(
+        packingCasesFor({{4, 1}, {4, 2}, {4, 4}, {4, 8}, {8, 1}, {8, 2}, {8, 4}, {16, 1}, {16, 2}}, {PackingSchemeKind::BitShift})));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        BitShiftScheme scheme(c.packing, noContext);
         const uint32_t maxIndex = scheme.maxLights();
         for (int slot = 0; slot < budget; ++slot) {
             for (uint32_t index = 1; index <= maxIndex; index += (bits == 16 ? 97 : 1)) {
@@ -177,10 +181,10 @@ TEST_CASE("the index texture holds exactly the CPU model's bytes", "[lidr][bitsh
                     light(glm::vec3(-0.5f, 0.5f, 0.0f), 5.0f, glm::vec3(1.0f), 2.0f)};
     const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
     LidrOptions options;
-    options.packing = {"bitshift", 4, 8};
+    options.packing = {PackingSchemeKind::BitShift, 4, 8};
     options.volumeTest = test;
     const RenderResult r = renderAndEvaluate(scene, options);
-    BitShiftScheme model({"bitshift", 4, 8}, testGl());
+    BitShiftScheme model({PackingSchemeKind::BitShift, 4, 8}, testGl());
     const std::vector<uint8_t> expected = model.encodePixel({2, 3, 1});  // priority order 3.0, 2.0, 1.0
     long checked = 0;
     for (size_t p = 0; p < r.evaluation.marked.size(); ++p) {
@@ -200,7 +204,7 @@ TEST_CASE("overflow keeps the highest-priority lights intact and counts the rest
                                      glm::vec3(0.2f), float(i)));
     const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
     LidrOptions options;
-    options.packing = {"bitshift", 4, 8};
+    options.packing = {PackingSchemeKind::BitShift, 4, 8};
     options.volumeTest = test;
     const RenderResult r = renderAndEvaluate(scene, options);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);
@@ -322,17 +326,17 @@ TEST_CASE("bad renderer input is refused before drawing", "[lidr][bad-input]") {
     Scene scene = floorScene();
     for (int i = 0; i < 256; ++i) scene.lights.push_back(light(glm::vec3(0.0f), 1.0f));
     LidrOptions eightBit;  // a fixed width (the automatic one takes 16 bits here)
-    eightBit.packing = {"bitshift", 4, 8};
+    eightBit.packing = {PackingSchemeKind::BitShift, 4, 8};
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, eightBit, scene.width, scene.height),
                         Catch::Contains("256 lights") && Catch::Contains("255"));
     scene.lights.resize(10);
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, LidrOptions{}, 0, 100), Error);
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, LidrOptions{}, 1 << 20, 100), Catch::Contains("exceeds"));
     LidrOptions unsupported;
-    unsupported.packing = {"bitshift", 3, 8};
+    unsupported.packing = {PackingSchemeKind::BitShift, 3, 8};
     REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, unsupported, scene.width, scene.height), UnsupportedError);
     unsupported.packing.budget = 4;
-    unsupported.packing.scheme = "nonsense";
+    unsupported.packing.scheme = static_cast<PackingSchemeKind>(99);  // no such scheme
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, unsupported, scene.width, scene.height),
                         Catch::Contains("valid:"));
     GlInfo noFbo = testGl();
@@ -429,7 +433,7 @@ TEST_CASE("the volume pass draws its plan: a draw call per step, the mesh the pa
     const CameraMatrices cam = cameraMatrices(floor.camera, floor.width, floor.height);
     gl::Renderbuffer depthStencil = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, floor.width, floor.height);
     PackingConfig config;
-    config.scheme = "bitshift";
+    config.scheme = PackingSchemeKind::BitShift;
     config.budget = 16;  // two rank windows, the second restarting the count
     config.indexBits = 8;
     const auto scheme = createPackingScheme(config, testGl());
@@ -462,22 +466,21 @@ TEST_CASE("volume detail on many small lights: same results within the budget", 
     // Rendered: many small lights, every scheme's list check and the image within the budget as without it,
     // and the coarse volumes really drawn (they mark more pixels than the 320-face ones).
     const Scene many = makeManyLightScene(1024, ManyLightView::TopDown, 320, 240);
-    for (const char* scheme : {"bitshift", "cpu-sorted"}) {
-        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::FrontFace}) {
-            LidrOptions o;
-            o.packing = {scheme, 4, 16};
-            o.volumeTest = test;
-            o.transparency = false;
-            LidrOptions fine = o;
-            o.volumeDetail = true;
-            INFO(scheme << ", " << volumeTestName(test));
-            const RenderResult coarse = renderAndEvaluate(many, o);
-            const RenderResult reference = renderAndEvaluate(many, fine);
-            requireMatchesReference(coarse);
-            const auto& m = coarse.evaluation.marked;
-            const auto& f = reference.evaluation.marked;
-            CHECK(std::accumulate(m.begin(), m.end(), 0L) > std::accumulate(f.begin(), f.end(), 0L));
-        }
+    const ConfigCase c = GENERATE(from_range(withVolumeTests(packingCases({4}, {16}, {PackingSchemeKind::BitShift, PackingSchemeKind::CpuSorted}),
+                                                             {VolumeTest::BackFace, VolumeTest::FrontFace})));
+    DYNAMIC_SECTION(c.name) {
+        LidrOptions o;
+        o.packing = c.packing;
+        o.volumeTest = c.volumeTest;
+        o.transparency = false;
+        LidrOptions fine = o;
+        o.volumeDetail = true;
+        const RenderResult coarse = renderAndEvaluate(many, o);
+        const RenderResult reference = renderAndEvaluate(many, fine);
+        requireMatchesReference(coarse);
+        const auto& m = coarse.evaluation.marked;
+        const auto& f = reference.evaluation.marked;
+        CHECK(std::accumulate(m.begin(), m.end(), 0L) > std::accumulate(f.begin(), f.end(), 0L));
     }
 }
 

@@ -118,6 +118,22 @@ TEST_CASE("front-face mode with the camera inside a light volume, with and witho
     }
 }
 
+namespace {
+// 2x and 4x MSAA where the context has them, each with both front-face volume tests.
+struct MsaaCase {
+    std::string name;  // "4x MSAA, sphere-ray"
+    int samples;
+    VolumeTest volumeTest;
+};
+std::vector<MsaaCase> msaaCases() {
+    std::vector<MsaaCase> cases;
+    for (int samples = 2; samples <= std::min(4, testGl().maxSamples); samples *= 2)
+        for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::SphereRay})
+            cases.push_back({std::to_string(samples) + "x MSAA, " + volumeTestName(test), samples, test});
+    return cases;
+}
+}  // namespace
+
 TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa]") {
     const GlInfo& info = testGl();
     if (!info.multisampleFbo || info.maxSamples < 2) {
@@ -125,25 +141,21 @@ TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa]") {
         return;
     }
     const Scene scene = glassScene();
-    for (int samples : {2, 4}) {
-        if (samples > info.maxSamples) continue;
-        INFO(samples << "x MSAA");
-        for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::SphereRay}) {
-            INFO("volume test " << volumeTestName(test));
-            const RenderResult r = renderWith(scene, test, samples);
-            const FrameEvaluation& e = r.evaluation;
-            REQUIRE(e.lists.invalidSlots == 0);
-            requireNeverBrighter(r);
-            // Stated bound: the index list is built at pixel centres, so an edge sample whose surface differs
-            // from the centre's may miss a light whose volume boundary passes between them. Within budget:
-            // PSNR >= 50 dB and at most 0.5% of pixels more than one step off.
-            INFO("PSNR " << e.errorWithinBudget.psnr << ", over 1: " << e.errorWithinBudget.pixelsOverThreshold);
-            REQUIRE(e.errorWithinBudget.psnr >= 50.0);
-            REQUIRE(e.errorWithinBudget.pixelsOverThreshold * 200 <= e.errorWithinBudget.comparedPixels);
-            // MSAA really happened: edges differ from the single-sample image.
-            const RenderResult single = renderWith(scene, test, 0);
-            CHECK(compareImages(r.lidr, single.lidr).differingPixels > 50);
-        }
+    const MsaaCase c = GENERATE(from_range(msaaCases()));
+    DYNAMIC_SECTION(c.name) {
+        const RenderResult r = renderWith(scene, c.volumeTest, c.samples);
+        const FrameEvaluation& e = r.evaluation;
+        REQUIRE(e.lists.invalidSlots == 0);
+        requireNeverBrighter(r);
+        // Stated bound: the index list is built at pixel centres, so an edge sample whose surface differs
+        // from the centre's may miss a light whose volume boundary passes between them. Within budget:
+        // PSNR >= 50 dB and at most 0.5% of pixels more than one step off.
+        INFO("PSNR " << e.errorWithinBudget.psnr << ", over 1: " << e.errorWithinBudget.pixelsOverThreshold);
+        REQUIRE(e.errorWithinBudget.psnr >= 50.0);
+        REQUIRE(e.errorWithinBudget.pixelsOverThreshold * 200 <= e.errorWithinBudget.comparedPixels);
+        // MSAA really happened: edges differ from the single-sample image.
+        const RenderResult single = renderWith(scene, c.volumeTest, 0);
+        CHECK(compareImages(r.lidr, single.lidr).differingPixels > 50);
     }
 }
 
@@ -184,7 +196,7 @@ TEST_CASE("the default room with MSAA and glass in front-face mode", "[msaa][tra
     LidrOptions o;
     o.volumeTest = VolumeTest::FrontFace;
     o.msaaSamples = samples >= 2 ? samples : 0;
-    o.packing = {"bitshift", 4, 8};  // the bound below was stated for this budget
+    o.packing = {PackingSchemeKind::BitShift, 4, 8};  // the bound below was stated for this budget
     const RenderResult r = renderAndEvaluate(scene, o);
     requireNeverBrighter(r);
     REQUIRE(r.evaluation.lists.invalidSlots == 0);

@@ -19,11 +19,12 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/base/shader_float.h"
 #include "lidr/gl/shader_source.h"
+#include "config_cases.h"
 
 using namespace lidr;
+using namespace lidr::test;
 
 namespace {
-const char* kSchemes[] = {"bitshift", "max-stencil", "cpu-sorted"};
 const FloatPrecision kPrecisions[] = {FloatPrecision::Fp16, FloatPrecision::Fp24, FloatPrecision::Fp32};
 
 // A context that has everything (the CPU models need none of it).
@@ -225,71 +226,71 @@ TEST_CASE("the naive floor(x * 255 + 0.5) is not exact in fp16 for reads within 
 
 TEST_CASE("every scheme x budget x width: the CPU model round-trips every index in every slot, empty and "
           "overflowing lists", "[packing][cpu]") {
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16}) {
-                const auto s = createPackingScheme({name, budget, bits}, fullContext());
-                INFO(s->describe());
-                const uint32_t maxIndex = s->maxLights();
-                const std::vector<uint8_t> zero(size_t(s->targetCount()) * 4, 0);
-                for (uint32_t slot : s->decodePixel(zero.data())) REQUIRE(slot == 0);  // unlit: the null light
-                REQUIRE(s->encodePixel({}) == zero);
-                const uint32_t stride = bits == 16 ? 251 : 1;
-                for (int at = 0; at < budget; ++at)
-                    for (uint32_t v = 1; v <= maxIndex; v += stride) {
-                        std::vector<uint32_t> list;
-                        for (int k = 0; k < std::min<int>(budget, int(maxIndex)); ++k)
-                            list.push_back(k == at ? v : 1 + (v + uint32_t(k) * 5u) % maxIndex);
-                        std::sort(list.begin(), list.end());
-                        list.erase(std::unique(list.begin(), list.end()), list.end());
-                        const std::vector<uint32_t> slots = s->decodePixel(s->encodePixel(list).data());
-                        REQUIRE(slots.size() == size_t(budget));
-                        REQUIRE(sortedNonNull(slots) == s->keptLights(list));
-                    }
-                // Overflow: the first `budget` in draw order are kept, the rest counted by the stencil.
-                std::mt19937 rng(uint32_t(bits * 100 + budget));
-                for (int trial = 0; trial < 300; ++trial) {
-                    std::vector<uint32_t> list;
-                    const int n = std::min<int>(budget + 1 + trial % 7, int(maxIndex));
-                    while (int(list.size()) < n) {
-                        const uint32_t i = 1 + rng() % maxIndex;
-                        if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
-                    }
-                    int count = 0;
-                    const std::vector<uint32_t> slots = s->decodePixel(s->encodePixel(list, {}, &count).data());
-                    REQUIRE(count == n);
-                    REQUIRE(sortedNonNull(slots) == s->keptLights(list));
-                }
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        const auto s = createPackingScheme(c.packing, fullContext());
+        INFO(s->describe());
+        const uint32_t maxIndex = s->maxLights();
+        const std::vector<uint8_t> zero(size_t(s->targetCount()) * 4, 0);
+        for (uint32_t slot : s->decodePixel(zero.data())) REQUIRE(slot == 0);  // unlit: the null light
+        REQUIRE(s->encodePixel({}) == zero);
+        const uint32_t stride = bits == 16 ? 251 : 1;
+        for (int at = 0; at < budget; ++at)
+            for (uint32_t v = 1; v <= maxIndex; v += stride) {
+                std::vector<uint32_t> list;
+                for (int k = 0; k < std::min<int>(budget, int(maxIndex)); ++k)
+                    list.push_back(k == at ? v : 1 + (v + uint32_t(k) * 5u) % maxIndex);
+                std::sort(list.begin(), list.end());
+                list.erase(std::unique(list.begin(), list.end()), list.end());
+                const std::vector<uint32_t> slots = s->decodePixel(s->encodePixel(list).data());
+                REQUIRE(slots.size() == size_t(budget));
+                REQUIRE(sortedNonNull(slots) == s->keptLights(list));
             }
+        // Overflow: the first `budget` in draw order are kept, the rest counted by the stencil.
+        std::mt19937 rng(uint32_t(bits * 100 + budget));
+        for (int trial = 0; trial < 300; ++trial) {
+            std::vector<uint32_t> list;
+            const int n = std::min<int>(budget + 1 + trial % 7, int(maxIndex));
+            while (int(list.size()) < n) {
+                const uint32_t i = 1 + rng() % maxIndex;
+                if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
+            }
+            int count = 0;
+            const std::vector<uint32_t> slots = s->decodePixel(s->encodePixel(list, {}, &count).data());
+            REQUIRE(count == n);
+            REQUIRE(sortedNonNull(slots) == s->keptLights(list));
+        }
+    }
 }
 
 TEST_CASE("decoding is exact for reads perturbed within +-0.45 step: fp16, fp24 and fp32 for all widths",
           "[packing][precision][fp16][fp24][fp32][cpu]") {
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16}) {
-                const auto s = createPackingScheme({name, budget, bits}, fullContext());
-                std::mt19937 rng(uint32_t(budget * 7 + bits));
-                std::uniform_real_distribution<double> offset(-0.45, 0.45);
-                for (FloatPrecision p : kPrecisions) {
-                    INFO(s->describe() << ", " << floatPrecisionName(p));
-                    for (int trial = 0; trial < 400; ++trial) {
-                        std::vector<uint32_t> list;
-                        const int n = std::min<int>(trial % (budget + 3), int(s->maxLights()));
-                        while (int(list.size()) < n) {
-                            const uint32_t i = 1 + rng() % s->maxLights();
-                            if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
-                        }
-                        const std::vector<uint8_t> bytes = s->encodePixel(list);
-                        std::vector<float> reads;
-                        for (uint8_t b : bytes) {
-                            const double d = trial % 3 == 0 ? (trial % 2 ? 0.45 : -0.45) : offset(rng);
-                            reads.push_back(readWithin(b, d, p));
-                        }
-                        REQUIRE(s->decodeReads(reads.data(), p) == s->decodePixel(bytes.data()));
-                    }
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        const auto s = createPackingScheme(c.packing, fullContext());
+        std::mt19937 rng(uint32_t(budget * 7 + bits));
+        std::uniform_real_distribution<double> offset(-0.45, 0.45);
+        for (FloatPrecision p : kPrecisions) {
+            INFO(s->describe() << ", " << floatPrecisionName(p));
+            for (int trial = 0; trial < 400; ++trial) {
+                std::vector<uint32_t> list;
+                const int n = std::min<int>(trial % (budget + 3), int(s->maxLights()));
+                while (int(list.size()) < n) {
+                    const uint32_t i = 1 + rng() % s->maxLights();
+                    if (std::find(list.begin(), list.end(), i) == list.end()) list.push_back(i);
                 }
+                const std::vector<uint8_t> bytes = s->encodePixel(list);
+                std::vector<float> reads;
+                for (uint8_t b : bytes) {
+                    const double d = trial % 3 == 0 ? (trial % 2 ? 0.45 : -0.45) : offset(rng);
+                    reads.push_back(readWithin(b, d, p));
+                }
+                REQUIRE(s->decodeReads(reads.data(), p) == s->decodePixel(bytes.data()));
             }
+        }
+    }
 }
 
 TEST_CASE("fp16: every 16-bit index decodes exactly in every slot, as two bytes that are never one float",
@@ -299,11 +300,13 @@ TEST_CASE("fp16: every 16-bit index decodes exactly in every slot, as two bytes 
     // (doc/packing.md, "Precision"). Exhaustive: every index 1..65535 drawn first and drawn last into a full list
     // of every scheme at budget 1 (every 13th index at 2..16, every index with LIDR_FP16_EXHAUSTIVE=1; the other
     // lights random), read at the byte exactly and at +-0.45 step.
-    CHECK(roundToPrecision(4097.0, FloatPrecision::Fp16) != 4097.0);
-    const FloatPrecision p = FloatPrecision::Fp16;
-    for (const char* name : kSchemes)
-        for (int budget : {1, 2, 4, 8, 16}) {
-            const auto s = createPackingScheme({name, budget, 16}, fullContext());
+    SECTION("one fp16 value cannot hold 4097") { CHECK(roundToPrecision(4097.0, FloatPrecision::Fp16) != 4097.0); }
+    SECTION("every scheme and budget, 16-bit") {
+        const FloatPrecision p = FloatPrecision::Fp16;
+        const ConfigCase c = GENERATE(from_range(packingCases(kBudgets, {16})));
+        DYNAMIC_SECTION(c.name) {
+            const int budget = c.packing.budget;
+            const auto s = createPackingScheme(c.packing, fullContext());
             INFO(s->describe());
             long checked = 0, wrong = 0;
             std::mt19937 rng{uint32_t(budget)};
@@ -332,13 +335,16 @@ TEST_CASE("fp16: every 16-bit index decodes exactly in every slot, as two bytes 
             CHECK(checked >= long(65535 / stride));
             CHECK(wrong == 0);
         }
+    }
 }
 
 TEST_CASE("bit-shift within its slots is exact on every blend hardware variant; an uncapped overflow corrupts "
           "kept indices under round-to-nearest", "[packing][bitshift][cpu]") {
-    for (int bits : {4, 8, 16})
-        for (int budget : {2, 4, 8, 16}) {
-            const BitShiftScheme s({"bitshift", budget, bits}, fullContext());
+    SECTION("within the slots, every width and budget") {
+        const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, kIndexWidths, {PackingSchemeKind::BitShift})));
+        DYNAMIC_SECTION(c.name) {
+            const int budget = c.packing.budget, bits = c.packing.indexBits;
+            const BitShiftScheme s(c.packing, fullContext());
             std::mt19937 rng(uint32_t(budget + bits));
             for (BlendModel m : {BlendModel{false, false}, BlendModel{true, false}, BlendModel{false, true}, BlendModel{true, true}}) {
                 INFO(s.describe() << ", quantised constant " << m.quantisedConstant << ", truncate " << m.truncate);
@@ -353,28 +359,32 @@ TEST_CASE("bit-shift within its slots is exact on every blend hardware variant; 
                 }
             }
         }
-    // Without the stencil window, a fifth light into 2-bit groups (budget 4) shifts the oldest group out;
-    // round-to-nearest carries its top bit into the kept bits.
-    const BitShiftScheme s({"bitshift", 4, 8}, fullContext());
-    int corrupted = 0;
-    for (uint32_t oldest = 1; oldest < 256; ++oldest) {
-        std::vector<uint32_t> list = {oldest, 17, 34, 51, 68};
-        uint8_t texel[4] = {0, 0, 0, 0};
-        for (uint32_t index : list) {
-            const IndexColors c = s.colorsFor(index);
-            for (int ch = 0; ch < 4; ++ch)
-                texel[ch] = uint8_t(std::min(255.0, std::nearbyint(std::nearbyint(c[0][ch] * 255.0) + texel[ch] / 4.0)));
-        }
-        const std::vector<uint32_t> kept = sortedNonNull(s.decodePixel(texel));
-        corrupted += kept != std::vector<uint32_t>{17, 34, 51, 68};
     }
-    CHECK(corrupted > 0);
+    SECTION("an uncapped overflow") {
+        // Without the stencil window, a fifth light into 2-bit groups (budget 4) shifts the oldest group out;
+        // round-to-nearest carries its top bit into the kept bits.
+        const BitShiftScheme s({PackingSchemeKind::BitShift, 4, 8}, fullContext());
+        int corrupted = 0;
+        for (uint32_t oldest = 1; oldest < 256; ++oldest) {
+            std::vector<uint32_t> list = {oldest, 17, 34, 51, 68};
+            uint8_t texel[4] = {0, 0, 0, 0};
+            for (uint32_t index : list) {
+                const IndexColors c = s.colorsFor(index);
+                for (int ch = 0; ch < 4; ++ch)
+                    texel[ch] = uint8_t(std::min(255.0, std::nearbyint(std::nearbyint(c[0][ch] * 255.0) + texel[ch] / 4.0)));
+            }
+            const std::vector<uint32_t> kept = sortedNonNull(s.decodePixel(texel));
+            corrupted += kept != std::vector<uint32_t>{17, 34, 51, 68};
+        }
+        CHECK(corrupted > 0);
+    }
 }
 
 TEST_CASE("MAX scheme: an unlit pixel and a one-light window decode to null slots, never 255 or a duplicate",
           "[packing][max-stencil][cpu]") {
-    for (int budget : {2, 4, 8, 16}) {
-        const MaxStencilScheme s({"max-stencil", budget, 8}, fullContext());
+    const ConfigCase c = GENERATE(from_range(packingCases({2, 4, 8, 16}, {8}, {PackingSchemeKind::MaxStencil})));
+    DYNAMIC_SECTION(c.name) {
+        const MaxStencilScheme s(c.packing, fullContext());
         const std::vector<uint8_t> unlit(size_t(s.targetCount()) * 4, 0);
         for (uint32_t v : s.decodePixel(unlit.data())) REQUIRE(v == 0);
         for (uint32_t a = 1; a <= 255; ++a) {
@@ -395,34 +405,34 @@ TEST_CASE("configurations: targets, passes, memory per pixel, and refusal of wha
         {{4, 1}, 1}, {{4, 2}, 1}, {{4, 4}, 1}, {{4, 8}, 1}, {{4, 16}, 2}, {{8, 1}, 1}, {{8, 2}, 1}, {{8, 4}, 1},
         {{8, 8}, 2}, {{8, 16}, 4}, {{16, 1}, 1}, {{16, 2}, 1}, {{16, 4}, 2}, {{16, 8}, 4}, {{16, 16}, 8}};
     for (const auto& [key, targets] : bitshiftTargets) {
-        const BitShiftScheme s({"bitshift", key.second, key.first}, full);
+        const BitShiftScheme s({PackingSchemeKind::BitShift, key.second, key.first}, full);
         INFO(s.describe());
         CHECK(s.targetCount() == targets);
         CHECK(s.geometryPasses() == (key.second == 16 ? 2 : 1));
         CHECK(s.indexBytes(100, 10) == size_t(targets) * 4000);
     }
-    CHECK(MaxStencilScheme({"max-stencil", 4, 8}, full).geometryPasses() == 2);  // the paper's two passes
-    CHECK(MaxStencilScheme({"max-stencil", 16, 8}, full).targetCount() == 4);
-    CHECK(MaxStencilScheme({"max-stencil", 16, 16}, full).geometryPasses() == 16);
-    CHECK(CpuSortedScheme({"cpu-sorted", 16, 4}, full).targetCount() == 2);
-    CHECK(CpuSortedScheme({"cpu-sorted", 16, 16}, full).targetCount() == 8);
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 4, 8}, full).geometryPasses() == 2);  // the paper's two passes
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 16, 8}, full).targetCount() == 4);
+    CHECK(MaxStencilScheme({PackingSchemeKind::MaxStencil, 16, 16}, full).geometryPasses() == 16);
+    CHECK(CpuSortedScheme({PackingSchemeKind::CpuSorted, 16, 4}, full).targetCount() == 2);
+    CHECK(CpuSortedScheme({PackingSchemeKind::CpuSorted, 16, 16}, full).targetCount() == 8);
 
-    for (const char* name : kSchemes) {
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 3, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 32, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 4, 12}, full), Catch::Contains("4, 8 or 16"));
+    for (PackingSchemeKind scheme : packingSchemes()) {
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 3, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 32, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 4, 12}, full), Catch::Contains("4, 8 or 16"));
         GlInfo fewAttachments = full;
         fewAttachments.maxColorAttachments = 4;
-        REQUIRE_THROWS_AS(createPackingScheme({name, 16, 16}, fewAttachments), UnsupportedError);
-        REQUIRE_NOTHROW(createPackingScheme({name, 8, 8}, fewAttachments));
+        REQUIRE_THROWS_AS(createPackingScheme({scheme, 16, 16}, fewAttachments), UnsupportedError);
+        REQUIRE_NOTHROW(createPackingScheme({scheme, 8, 8}, fewAttachments));
         GlInfo fewUnits = full;
         fewUnits.maxTextureUnits = 8;
-        REQUIRE_THROWS_WITH(createPackingScheme({name, 1, 8}, fewUnits), Catch::Contains("texture units"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 1, 8}, fewUnits), Catch::Contains("texture units"));
     }
     GlInfo oneDrawBuffer = full;
     oneDrawBuffer.maxDrawBuffers = 1;
-    REQUIRE_THROWS_WITH(createPackingScheme({"bitshift", 8, 8}, oneDrawBuffer), Catch::Contains("draw buffers"));
-    REQUIRE_NOTHROW(createPackingScheme({"max-stencil", 16, 16}, oneDrawBuffer));  // one target per draw
-    REQUIRE_THROWS_WITH(createPackingScheme({"nonsense", 4, 8}, full),
+    REQUIRE_THROWS_WITH(createPackingScheme({PackingSchemeKind::BitShift, 8, 8}, oneDrawBuffer), Catch::Contains("draw buffers"));
+    REQUIRE_NOTHROW(createPackingScheme({PackingSchemeKind::MaxStencil, 16, 16}, oneDrawBuffer));  // one target per draw
+    REQUIRE_THROWS_WITH(parsePackingScheme("nonsense"),
                         Catch::Contains("bitshift") && Catch::Contains("max-stencil") && Catch::Contains("cpu-sorted"));
 }

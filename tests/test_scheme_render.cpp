@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/gl.h"
 #include "lidr/technique/cpu_sorted_scheme.h"
@@ -17,8 +18,6 @@ using namespace lidr;
 using namespace lidr::test;
 
 namespace {
-const char* kSchemes[] = {"bitshift", "max-stencil", "cpu-sorted"};
-
 // Exact where every marking light was kept, no corrupted slot anywhere, every truly dropped light counted.
 void requireCorrectFrame(const RenderResult& r, const std::string& what) {
     const FrameEvaluation& e = r.evaluation;
@@ -31,80 +30,88 @@ void requireCorrectFrame(const RenderResult& r, const std::string& what) {
 }
 
 int controlledSize(bool width) { return isSoftpipe() ? (width ? 96 : 72) : (width ? 192 : 144); }
+
+// Both volume tests x every scheme x width x budget x overlap k = 1, 2, 4, 8, 16; softpipe (an interpreter) only
+// at k = the budget and twice it, and k = 16 at budget 1.
+std::vector<ConfigCase> controlledOverlapCases() {
+    const bool thin = isSoftpipe();
+    return withOverlaps(withVolumeTests(packingCases(), {VolumeTest::Sphere, VolumeTest::BackFace}),
+                        [thin](const ConfigCase& c) {
+                            const int b = c.packing.budget;
+                            if (!thin) return std::vector<int>{1, 2, 4, 8, 16};
+                            if (b == 1) return std::vector<int>{1, 2, 16};
+                            return b == 16 ? std::vector<int>{16} : std::vector<int>{b, 2 * b};
+                        });
+}
 }  // namespace
 
 TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width keeps the top-priority lights, "
           "counts the rest exactly, corrupts nothing", "[render][schemes]") {
-    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16})
-                for (int k : {1, 2, 4, 8, 16}) {
-                    if (isSoftpipe() && k != budget && k != 2 * budget && !(k == 16 && budget == 1)) continue;
-                    ControlledOverlapOptions o;
-                    o.overlap = k;
-                    o.maxLights = int((1u << bits) - 1u);
-                    o.width = controlledSize(true);
-                    o.height = controlledSize(false);
-                    const Scene scene = makeControlledOverlapScene(o);
-                    const int kk = int(scene.lights.size()) / std::max(1, int(scene.lights.size()) / std::min(k, o.maxLights));
-                    LidrOptions options;
-                    options.packing = {name, budget, bits};
-                    options.volumeTest = test;
-                    const RenderResult r = renderAndEvaluate(scene, options);
-                    const std::string what = r.stats.drawnLights >= 0 ? std::string(volumeTestName(test)) + " " + name + " budget " + std::to_string(budget) +
-                                                                            " " + std::to_string(bits) + "-bit, k " + std::to_string(kk)
-                                                                      : "";
-                    requireCorrectFrame(r, what);
-                    const FrameEvaluation& e = r.evaluation;
-                    long clusterPixels = 0;
-                    for (size_t p = 0; p < e.marked.size(); ++p) {
-                        INFO(what << ", pixel " << p);
-                        REQUIRE((e.marked[p] == 0 || e.marked[p] == kk));  // exactly k lights, or none
-                        const int touching = e.truth.count(p);
-                        if (touching == 0) continue;
-                        ++clusterPixels;
-                        REQUIRE(touching == kk);
-                        REQUIRE(e.marked[p] == kk);  // GPU count of marks = CPU truth
-                        // Kept: the min(k, budget) highest priorities of the cluster; the GPU counts the rest.
-                        const int kept = std::min(kk, budget);
-                        REQUIRE(int(e.lists.decoded[p].size()) == kept);
-                        for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(kk - kept));
-                        REQUIRE(e.lists.droppedPerPixel[p] == kk - kept);
-                        REQUIRE(e.droppedMarks[p] == kk - kept);
-                    }
-                    CHECK(clusterPixels > 40);  // one cluster covers about 50 pixels at softpipe's 96 x 72
-                }
+    const ConfigCase c = GENERATE(from_range(controlledOverlapCases()));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        ControlledOverlapOptions o;
+        o.overlap = c.overlap;
+        o.maxLights = int((1u << bits) - 1u);
+        o.width = controlledSize(true);
+        o.height = controlledSize(false);
+        const Scene scene = makeControlledOverlapScene(o);
+        const int kk = int(scene.lights.size()) / std::max(1, int(scene.lights.size()) / std::min(c.overlap, o.maxLights));
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = c.volumeTest;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        const std::string what = c.name + " (k " + std::to_string(kk) + " lights)";
+        requireCorrectFrame(r, what);
+        const FrameEvaluation& e = r.evaluation;
+        long clusterPixels = 0;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            INFO(what << ", pixel " << p);
+            REQUIRE((e.marked[p] == 0 || e.marked[p] == kk));  // exactly k lights, or none
+            const int touching = e.truth.count(p);
+            if (touching == 0) continue;
+            ++clusterPixels;
+            REQUIRE(touching == kk);
+            REQUIRE(e.marked[p] == kk);  // GPU count of marks = CPU truth
+            // Kept: the min(k, budget) highest priorities of the cluster; the GPU counts the rest.
+            const int kept = std::min(kk, budget);
+            REQUIRE(int(e.lists.decoded[p].size()) == kept);
+            for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(kk - kept));
+            REQUIRE(e.lists.droppedPerPixel[p] == kk - kept);
+            REQUIRE(e.droppedMarks[p] == kk - kept);
+        }
+        CHECK(clusterPixels > 40);  // one cluster covers about 50 pixels at softpipe's 96 x 72
+    }
 }
 
 TEST_CASE("controlled overlap under the exact tests (stencil and sphere): every scheme x width at budgets 2, 8, 16",
           "[render][schemes][exact]") {
-    const VolumeTest test = GENERATE(VolumeTest::ExactStencil, VolumeTest::Sphere);
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {2, 8, 16}) {
-                if (isSoftpipe() && budget == 8) continue;
-                ControlledOverlapOptions o;
-                o.overlap = 8;
-                o.maxLights = int((1u << bits) - 1u);
-                o.width = controlledSize(true);
-                o.height = controlledSize(false);
-                const Scene scene = makeControlledOverlapScene(o);
-                LidrOptions options;
-                options.packing = {name, budget, bits};
-                options.volumeTest = test;
-                const RenderResult r = renderAndEvaluate(scene, options);
-                requireCorrectFrame(r, std::string(name) + " " + volumeTestName(test) + " budget " + std::to_string(budget) + " " +
-                                           std::to_string(bits) + "-bit");
-                long pixels = 0;
-                for (size_t p = 0; p < r.evaluation.marked.size(); ++p)
-                    if (r.evaluation.truth.count(p) > 0) {
-                        ++pixels;
-                        REQUIRE(r.evaluation.marked[p] == r.evaluation.truth.count(p));
-                        REQUIRE(r.evaluation.lists.droppedPerPixel[p] == r.evaluation.droppedMarks[p]);
-                    }
-                CHECK(pixels > 40);
+    // softpipe interprets every fragment: budgets 2 and 16 there.
+    const std::vector<int> budgets = isSoftpipe() ? std::vector<int>{2, 16} : std::vector<int>{2, 8, 16};
+    const ConfigCase c = GENERATE_COPY(
+        from_range(withVolumeTests(packingCases(budgets), {VolumeTest::ExactStencil, VolumeTest::Sphere})));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits;
+        ControlledOverlapOptions o;
+        o.overlap = 8;
+        o.maxLights = int((1u << bits) - 1u);
+        o.width = controlledSize(true);
+        o.height = controlledSize(false);
+        const Scene scene = makeControlledOverlapScene(o);
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = c.volumeTest;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        requireCorrectFrame(r, c.name);
+        long pixels = 0;
+        for (size_t p = 0; p < r.evaluation.marked.size(); ++p)
+            if (r.evaluation.truth.count(p) > 0) {
+                ++pixels;
+                REQUIRE(r.evaluation.marked[p] == r.evaluation.truth.count(p));
+                REQUIRE(r.evaluation.lists.droppedPerPixel[p] == r.evaluation.droppedMarks[p]);
             }
+        CHECK(pixels > 40);
+    }
 }
 
 TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[render][schemes][default-room]") {
@@ -112,19 +119,20 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
     o.width = testWidth();
     o.height = testHeight();
     const Scene scene = makeDefaultScene(o);
-    for (const char* name : kSchemes)
-        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
-            LidrOptions options;
-            options.packing = {name, 4, 8};
-            options.volumeTest = test;
-            // CPU sorting drops whole lights from the transparent layers' front-face lists too, where the
-            // evaluation's within-budget mask (a conservative CPU count of front-face marks) cannot see it:
-            // its opaque frame is checked here, transparency in the transparency tests.
-            options.transparency = std::string(name) != "cpu-sorted";
-            const RenderResult r = renderAndEvaluate(scene, options);
-            requireCorrectFrame(r, std::string(name) + " " + volumeTestName(test));
-            CHECK(r.evaluation.lists.slotsUsed > 0);
-        }
+    const ConfigCase c = GENERATE(from_range(withVolumeTests(
+        packingCases({4}, {8}), {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere})));
+    DYNAMIC_SECTION(c.name) {
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = c.volumeTest;
+        // CPU sorting drops whole lights from the transparent layers' front-face lists too, where the
+        // evaluation's within-budget mask (a conservative CPU count of front-face marks) cannot see it:
+        // its opaque frame is checked here, transparency in the transparency tests.
+        options.transparency = c.packing.scheme != PackingSchemeKind::CpuSorted;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        requireCorrectFrame(r, c.name);
+        CHECK(r.evaluation.lists.slotsUsed > 0);
+    }
 }
 
 TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][default-room][slow]") {
@@ -133,24 +141,23 @@ TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][
     o.height = testHeight();
     o.time = 2.0f;
     Scene scene = makeDefaultScene(o);
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16}) {
-                Scene s = scene;
-                if (bits == 4) {  // 15 lights: the 15 of highest priority, where they are at this time
-                    s.lights = scene.lightsAt(scene.time);
-                    s.lightPaths.clear();
-                    std::stable_sort(s.lights.begin(), s.lights.end(),
-                                     [](const PointLight& a, const PointLight& b) { return a.priority > b.priority; });
-                    s.lights.resize(15);
-                }
-                LidrOptions options;
-                options.packing = {name, budget, bits};
-                options.transparency = std::string(name) != "cpu-sorted";  // see the test above
-                const RenderResult r = renderAndEvaluate(s, options);
-                requireCorrectFrame(r, std::string(name) + " budget " + std::to_string(budget) + " " + std::to_string(bits) + "-bit");
-                if (budget == 16 && std::string(name) != "cpu-sorted") CHECK(r.evaluation.pixelsOverBudget == 0);
-            }
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        Scene s = scene;
+        if (c.packing.indexBits == 4) {  // 15 lights: the 15 of highest priority, where they are at this time
+            s.lights = scene.lightsAt(scene.time);
+            s.lightPaths.clear();
+            std::stable_sort(s.lights.begin(), s.lights.end(),
+                             [](const PointLight& a, const PointLight& b) { return a.priority > b.priority; });
+            s.lights.resize(15);
+        }
+        LidrOptions options;
+        options.packing = c.packing;
+        options.transparency = c.packing.scheme != PackingSchemeKind::CpuSorted;  // see the test above
+        const RenderResult r = renderAndEvaluate(s, options);
+        requireCorrectFrame(r, c.name);
+        if (c.packing.budget == 16 && c.packing.scheme != PackingSchemeKind::CpuSorted) CHECK(r.evaluation.pixelsOverBudget == 0);
+    }
 }
 
 TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres can mark one pixel, so they must "
@@ -161,7 +168,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
 
     // What the back-face test does: light 2, behind the wall, marks the wall where light 1 lights it.
     LidrOptions backface;
-    backface.packing = {"bitshift", 4, 8};
+    backface.packing = {PackingSchemeKind::BitShift, 4, 8};
     backface.volumeTest = VolumeTest::BackFace;
     const RenderResult rb = renderAndEvaluate(scene, backface);
     long doubleMarkedOneTouching = 0;
@@ -173,7 +180,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
     // exact test it does not (both in group 0, nothing dropped).
     for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
         LidrOptions sorted;
-        sorted.packing = {"cpu-sorted", 1, 8};
+        sorted.packing = {PackingSchemeKind::CpuSorted, 1, 8};
         sorted.volumeTest = test;
         const RenderResult r = renderAndEvaluate(scene, sorted);
         requireCorrectFrame(r, std::string("cpu-sorted budget 1, ") + volumeTestName(test));
@@ -212,7 +219,7 @@ TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", 
         IndexTargets targets(1, 4, 4, ds);
         LightVolumePass pass(testGl(), test);
         pass.begin(targets, cam);  // camera and test for the grouping
-        const CpuSortedScheme s({"cpu-sorted", 4, 8}, testGl());
+        const CpuSortedScheme s({PackingSchemeKind::CpuSorted, 4, 8}, testGl());
         const std::vector<int> groups = s.assignGroups(volumes, &pass);
         REQUIRE(groups == s.assignGroups(volumes, &pass));
         int dropped = 0;

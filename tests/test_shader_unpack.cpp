@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "pixel_list_geometry.h"
 #include "lidr/base/gl.h"
@@ -143,7 +144,8 @@ UnpackRun runLists(const PackingScheme& scheme, VolumeTest test, const Lists& li
         ShaderDefines defines = scheme.unpackDefines();
         if (bitByBitBytes) defines.push_back({"LIDR_FRAGMENT_FP16", "1"});
         probe = gl::Program::create(
-            "unpack-probe-" + scheme.name(), testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
+            std::string("unpack-probe-") + packingSchemeName(scheme.config().scheme),
+            testShaderSource("pixel_list_volume.vert", {{"LIDR_DRAW_TARGETS", "1"}}),
             buildShaderSource("unpack_probe.frag", defines, {{"lidr_unpack.glsl", scheme.unpackShaderFile()}}),
             {{"aPosition", gl::kPosition}});
     }
@@ -298,6 +300,16 @@ Lists everyIndexInEverySlot(const PackingScheme& s, bool everyValue) {
     return lists;
 }
 
+// everyIndexInEverySlot(s, false), every fifth list of it on softpipe (it interprets every fragment) where it
+// has more than 4096.
+Lists everyIndexInEverySlotThinned(const PackingScheme& s) {
+    Lists lists = everyIndexInEverySlot(s, false);
+    if (!isSoftpipe() || lists.size() <= 4096) return lists;
+    Lists thin;
+    for (size_t i = 0; i < lists.size(); i += 5) thin.push_back(lists[i]);
+    return thin;
+}
+
 // Every ordered pair of distinct indices from `values`, and every single index.
 Lists everyPair(const std::vector<uint32_t>& values) {
     Lists lists{{}};
@@ -343,39 +355,30 @@ Lists randomLists(const PackingScheme& s, size_t count, int maxLength, uint32_t 
     return lists;
 }
 
-const char* kSchemes[] = {"bitshift", "max-stencil", "cpu-sorted"};
-
 }  // namespace
 
 TEST_CASE("shader unpack: every index in every slot, every pair, every order; all schemes, budgets, widths",
           "[unpack][gpu]") {
     const bool soft = isSoftpipe();
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16}) {
-                const auto scheme = createPackingScheme({name, budget, bits}, testGl());
-                // softpipe interprets every fragment: the same sets, thinned where they are large.
-                Lists slotLists = everyIndexInEverySlot(*scheme, false);
-                if (soft && slotLists.size() > 4096) {
-                    Lists thin;
-                    for (size_t i = 0; i < slotLists.size(); i += 5) thin.push_back(slotLists[i]);
-                    slotLists = thin;
-                }
-                runAndCheck(*scheme, VolumeTest::BackFace, slotLists, "every index in every slot");
-                const uint32_t pairMax = std::min<uint32_t>(scheme->maxLights(), soft ? 40u : 255u);
-                std::vector<uint32_t> pairValues = range(1, pairMax);
-                if (bits == 16)  // high bytes too
-                    for (uint32_t v : {256u, 257u, 511u, 0x1234u, 0x8000u, 0xFF00u, 0xFFFEu, 0xFFFFu}) pairValues.push_back(v);
-                runAndCheck(*scheme, VolumeTest::BackFace, everyPair(pairValues), "every pair");
-                runAndCheck(*scheme, VolumeTest::ExactStencil, everyPair(range(1, std::min<uint32_t>(scheme->maxLights(), 24))),
-                            "every pair (exact test)");
-                const int orderOf = std::min(budget + 1, soft ? 5 : 7);  // one past the budget: overflow too
-                runAndCheck(*scheme, VolumeTest::BackFace, everyOrder(*scheme, std::min<int>(orderOf, int(scheme->maxLights()))),
-                            "every order");
-                // Overflowing lists through the exact test's stencil bookkeeping.
-                runAndCheck(*scheme, VolumeTest::ExactStencil, randomLists(*scheme, soft ? 500 : 4000, budget + 4, 7u + budget),
-                            "random overflowing lists (exact test)");
-            }
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        runAndCheck(*scheme, VolumeTest::BackFace, everyIndexInEverySlotThinned(*scheme), "every index in every slot");
+        const uint32_t pairMax = std::min<uint32_t>(scheme->maxLights(), soft ? 40u : 255u);
+        std::vector<uint32_t> pairValues = range(1, pairMax);
+        if (bits == 16)  // high bytes too
+            for (uint32_t v : {256u, 257u, 511u, 0x1234u, 0x8000u, 0xFF00u, 0xFFFEu, 0xFFFFu}) pairValues.push_back(v);
+        runAndCheck(*scheme, VolumeTest::BackFace, everyPair(pairValues), "every pair");
+        runAndCheck(*scheme, VolumeTest::ExactStencil, everyPair(range(1, std::min<uint32_t>(scheme->maxLights(), 24))),
+                    "every pair (exact test)");
+        const int orderOf = std::min(budget + 1, soft ? 5 : 7);  // one past the budget: overflow too
+        runAndCheck(*scheme, VolumeTest::BackFace, everyOrder(*scheme, std::min<int>(orderOf, int(scheme->maxLights()))),
+                    "every order");
+        // Overflowing lists through the exact test's stencil bookkeeping.
+        runAndCheck(*scheme, VolumeTest::ExactStencil, randomLists(*scheme, soft ? 500 : 4000, budget + 4, 7u + budget),
+                    "random overflowing lists (exact test)");
+    }
 }
 
 // The byte decode of mediump (ES without fragment highp: LIDR_FRAGMENT_FP16) has no GPU here that computes fp16
@@ -384,49 +387,39 @@ TEST_CASE("shader unpack: every index in every slot, every pair, every order; al
 // shaders, in the driver's own precision: every byte value in every channel of every target, decoded exactly.
 TEST_CASE("shader unpack with the mediump byte decode (LIDR_FRAGMENT_FP16): every index in every slot; all "
           "schemes, budgets, widths", "[unpack][gpu]") {
-    const bool soft = isSoftpipe();
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {1, 2, 4, 8, 16}) {
-                const auto scheme = createPackingScheme({name, budget, bits}, testGl());
-                Lists slotLists = everyIndexInEverySlot(*scheme, false);
-                if (soft && slotLists.size() > 4096) {
-                    Lists thin;
-                    for (size_t i = 0; i < slotLists.size(); i += 5) thin.push_back(slotLists[i]);
-                    slotLists = thin;
-                }
-                runAndCheck(*scheme, VolumeTest::BackFace, slotLists, "every index in every slot, bit-by-bit bytes", true);
-            }
+    const ConfigCase c = GENERATE(from_range(packingCases()));
+    DYNAMIC_SECTION(c.name) {
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        runAndCheck(*scheme, VolumeTest::BackFace, everyIndexInEverySlotThinned(*scheme),
+                    "every index in every slot, bit-by-bit bytes", true);
+    }
 }
 
 TEST_CASE("shader unpack: every 16-bit index in every slot", "[unpack][gpu][slow]") {
-    for (const char* name : kSchemes)
-        for (int budget : {1, 2, 4, 8, 16}) {
-            const auto scheme = createPackingScheme({name, budget, 16}, testGl());
-            Lists lists = everyIndexInEverySlot(*scheme, true);
-            runAndCheck(*scheme, VolumeTest::BackFace, lists, "every 16-bit index in every slot");
-        }
+    const ConfigCase c = GENERATE(from_range(packingCases(kBudgets, {16})));
+    DYNAMIC_SECTION(c.name) {
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        Lists lists = everyIndexInEverySlot(*scheme, true);
+        runAndCheck(*scheme, VolumeTest::BackFace, lists, "every 16-bit index in every slot");
+    }
 }
 
 TEST_CASE("shader unpack: every order of 8 lights", "[unpack][gpu][slow]") {
-    for (const char* name : kSchemes)
-        for (int bits : {4, 8, 16})
-            for (int budget : {4, 8, 16}) {
-                const auto scheme = createPackingScheme({name, budget, bits}, testGl());
-                runAndCheck(*scheme, VolumeTest::BackFace, everyOrder(*scheme, 8), "every order of 8");
-            }
+    const ConfigCase c = GENERATE(from_range(packingCases({4, 8, 16})));
+    DYNAMIC_SECTION(c.name) {
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        runAndCheck(*scheme, VolumeTest::BackFace, everyOrder(*scheme, 8), "every order of 8");
+    }
 }
 
 TEST_CASE("shader unpack: a million seeded random lists per deep configuration, overflowing ones included",
           "[unpack][gpu][slow]") {
-    const std::pair<int, int> deep[] = {{8, 8}, {8, 16}, {16, 16}, {4, 16}};  // (width, budget)
-    for (const char* name : kSchemes)
-        for (auto [bits, budget] : deep) {
-            {
-                const auto scheme = createPackingScheme({name, budget, bits}, testGl());
-                runAndCheck(*scheme, VolumeTest::BackFace,
-                            randomLists(*scheme, 1u << 20, budget + 4, 1000u + uint32_t(bits * 31 + budget)),
-                            "1,048,576 random lists, lengths 0..budget+4");
-            }
-}
+    const ConfigCase c = GENERATE(from_range(packingCasesFor({{8, 8}, {8, 16}, {16, 16}, {4, 16}})));  // (width, budget)
+    DYNAMIC_SECTION(c.name) {
+        const int bits = c.packing.indexBits, budget = c.packing.budget;
+        const auto scheme = createPackingScheme(c.packing, testGl());
+        runAndCheck(*scheme, VolumeTest::BackFace,
+                    randomLists(*scheme, 1u << 20, budget + 4, 1000u + uint32_t(bits * 31 + budget)),
+                    "1,048,576 random lists, lengths 0..budget+4");
+    }
 }

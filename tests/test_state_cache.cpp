@@ -239,7 +239,7 @@ TEST_CASE("a frame's GL calls are counted in FrameStats, the same each frame, an
         INFO("volume test " << volumeTestName(test));
         LidrOptions options;
         options.volumeTest = test;
-        options.packing = {"bitshift", 4, 8};
+        options.packing = {PackingSchemeKind::BitShift, 4, 8};
         LidrRenderer renderer(testGl(), scene, options, scene.width, scene.height);
         const GlCallCounters first = renderer.render(scene.camera, lights, {scene.ambient, scene.backgroundColor}).glCalls;
         CHECK_FALSE(StateCache::current().valid());  // SavedGlState gave the caller's state back

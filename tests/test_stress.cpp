@@ -97,7 +97,7 @@ Row run(const std::string& family, const std::string& variant, const Scene& scen
     // Its CPU model: the configuration the frame was packed with (the automatic one says what it chose).
     PackingConfig packed = options.packing;
     if (r.stats.autoDecision.autoBudget || r.stats.autoDecision.autoIndexBits)
-        packed = {packed.autoScheme() ? "bitshift" : packed.scheme, r.stats.autoDecision.budget,
+        packed = {packed.autoScheme() ? PackingSchemeKind::BitShift : packed.scheme, r.stats.autoDecision.budget,
                   r.stats.autoDecision.indexBits};
     const std::unique_ptr<PackingScheme> model = createPackingScheme(packed, info);
     const PackingScheme& scheme = *model;
@@ -265,7 +265,7 @@ TEST_CASE("stress: camera inside many lights", "[stress][slow]") {
         for (const PointLight& l : floorLights(rng, 6, 1.0f, 0.5f, 3.0f)) scene.lights.push_back(l);
         for (int budget : {16, 4}) {
             LidrOptions o;
-            o.packing = {"bitshift", budget, 8};
+            o.packing = {PackingSchemeKind::BitShift, budget, 8};
             const Row r = run("camera inside lights", "budget " + std::to_string(budget) + ", seed " + std::to_string(seed),
                               scene, o, testGl());
             requireExactWithinBudget(r);
@@ -290,7 +290,7 @@ TEST_CASE("stress: radii from a pixel to beyond the far plane", "[stress][slow]"
         for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil}) {
             LidrOptions o;
             o.volumeTest = test;
-            o.packing = {"bitshift", 16, 8};
+            o.packing = {PackingSchemeKind::BitShift, 16, 8};
             const Row r = run("radii", std::string(volumeTestName(test)) + ", seed " + std::to_string(seed), scene, o,
                               testGl());
             requireExactWithinBudget(r);
@@ -308,7 +308,7 @@ TEST_CASE("stress: many lights with 16-bit indices", "[stress][slow]") {
         Scene scene = floorScene();
         scene.lights = floorLights(rng, count, 1.0f, 0.2f, 0.8f);
         LidrOptions o;
-        o.packing = {"bitshift", 16, 16};
+        o.packing = {PackingSchemeKind::BitShift, 16, 16};
         const Row r = run("many lights", std::to_string(count) + " lights, seed " + std::to_string(seed), scene, o,
                           testGl());
         requireExactWithinBudget(r);

@@ -66,7 +66,7 @@ std::vector<std::string> rows(const VolumeDrawPlan& plan) {
 }
 
 // The draws of a real scheme's plan (one pixel that every light marks: CPU groups need no pass).
-std::vector<VolumeDraw> schemeDraws(const std::string& scheme, int budget, int bits, int lights = 2) {
+std::vector<VolumeDraw> schemeDraws(PackingSchemeKind scheme, int budget, int bits, int lights = 2) {
     PackingConfig config;
     config.scheme = scheme;
     config.budget = budget;
@@ -99,9 +99,9 @@ TEST_CASE("volume plan: the steps and states of each volume test, as a table", "
     windowed.rankCount = 4;
     VolumeDraw colourless = windowed;
     colourless.colorMask = glm::bvec4(false);
-    const VolumeDraw bitshift4 = schemeDraws("bitshift", 4, 8).at(0);
+    const VolumeDraw bitshift4 = schemeDraws(PackingSchemeKind::BitShift, 4, 8).at(0);
     REQUIRE(bitshift4.rankCount == 4);
-    const VolumeDraw cpuSorted = schemeDraws("cpu-sorted", 4, 8).at(0);
+    const VolumeDraw cpuSorted = schemeDraws(PackingSchemeKind::CpuSorted, 4, 8).at(0);
     REQUIRE(cpuSorted.rankCount == 0);
 
     struct Case {
@@ -219,7 +219,7 @@ TEST_CASE("volume plan: states are shared, lights are loaded once, meshes follow
 TEST_CASE("volume plan: a rank window with the count restarted, on desktop GL and OpenGL ES", "[volume-plan][cpu]") {
     // Bit-shift at budget 16 with 8-bit indices: two windows of 8 slots, two targets each; the second restarts
     // the count and ranks lights 8-15.
-    const std::vector<VolumeDraw> draws = schemeDraws("bitshift", 16, 8);
+    const std::vector<VolumeDraw> draws = schemeDraws(PackingSchemeKind::BitShift, 16, 8);
     REQUIRE(draws.size() == 2);
     const VolumeDraw& second = draws[1];
     const std::vector<VolumeLightFacts> one(1);
@@ -248,7 +248,7 @@ TEST_CASE("volume plan: a rank window with the count restarted, on desktop GL an
     CHECK(gles.drawBuffers == std::vector<GLenum>{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1});
     CHECK(rows(gles) == rows(desktop));
     es.drawBuffers = false;  // ES 2.0 without EXT_draw_buffers: one target, draw buffers never set
-    const VolumeDrawPlan single = planVolumeDraw(schemeDraws("bitshift", 4, 8)[0], es, one);
+    const VolumeDrawPlan single = planVolumeDraw(schemeDraws(PackingSchemeKind::BitShift, 4, 8)[0], es, one);
     CHECK(single.framebufferFrom == 0);
     CHECK(single.drawBuffers.empty());
 }

@@ -515,7 +515,7 @@ void Viewer::computeViews() {
     reference.reset();
     ev.error = compareImages(frame, ev.reference);
     ev.images[View::Difference] = differenceImage(frame, ev.reference);
-    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->perSampleIndices()) {
+    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->options().perSampleIndices) {
         const FrameEvaluation fe = evaluateFrame(*lidr, cam, lights, frame, ev.reference);
         const demo::LidrViews lv = demo::lidrViews(fe, width_, height_, lidr->scheme().config().budget);
         ev.images[View::IndexLists] = lv.indexLists;
@@ -831,7 +831,7 @@ void Viewer::saveAll(const std::string& dir) {
         std::replace(f.begin(), f.end(), '-', '_');
         writePng(path((f + ".png").c_str()), img);
     }
-    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->perSampleIndices()) {
+    if (const auto* lidr = dynamic_cast<const LidrRenderer*>(&drawingRenderer()); lidr && !lidr->options().perSampleIndices) {
         const auto lights = currentLights();
         FrameArtefacts a;
         a.indexTargets = lidr->readIndexTargets();

@@ -71,7 +71,7 @@ std::vector<PointLight> currentLights() {
 std::unique_ptr<Renderer> makeRenderer(const Settings& s) {
     RenderModeOptions o;
     o.mode = s.mode;
-    o.lidr.packing = {s.scheme, s.budget, s.indexBits};
+    o.lidr.packing = {parsePackingScheme(s.scheme), s.budget, s.indexBits};
     o.transparency = true;
     return createRenderer(o, page->context->info(), page->scene, kWidth, kHeight);
 }

@@ -68,7 +68,7 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
         bool allPassed = true;
         for (int budget : {1, 2, 4}) {
             LidrOptions options;
-            options.packing = {"bitshift", budget, 8};
+            options.packing = {PackingSchemeKind::BitShift, budget, 8};
             options.transparency = false;
             std::unique_ptr<LidrRenderer> renderer;
             std::string volumeTest = "sphere";

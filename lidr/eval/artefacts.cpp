@@ -60,7 +60,7 @@ void writeFrameArtefacts(const std::string& dir, const FrameArtefacts& a, const 
                {"view_projection", matrixJson(a.camera.viewProjection)},
                {"depth_convention", "window depth in [0,1], GL default depth range; PFM rows bottom to top"}});
     writeJson(root / "packing.json",
-              {{"scheme", scheme.name()},
+              {{"scheme", packingSchemeName(scheme.config().scheme)},
                {"budget", scheme.config().budget},
                {"index_bits", scheme.config().indexBits},
                {"targets", scheme.targetCount()},

@@ -9,7 +9,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
                               const ImageRGBA8& reference) {
     FrameEvaluation e;
     const RenderTargets& t = renderer.targets();
-    if (renderer.perSampleIndices()) {
+    if (renderer.options().perSampleIndices) {
         // Multisample index targets and no single-sample depth: only the image can be judged, everywhere.
         const size_t n = size_t(t.width()) * t.height();
         e.withinBudget.assign(n, 1);

@@ -8,7 +8,8 @@
 
 namespace lidr {
 
-BitShiftScheme::BitShiftScheme(const PackingConfig& config, const GlInfo& info) : PackingScheme(config) {
+BitShiftScheme::BitShiftScheme(const PackingConfig& config, const GlInfo& info)
+    : PackingScheme(PackingSchemeKind::BitShift, config) {
     checkPackingConfig(config);
     const int budget = config.budget, bits = config.indexBits;
     groupBits_ = std::min(bits, 8 / std::min(budget, 8));
@@ -38,7 +39,8 @@ IndexColors BitShiftScheme::colorsFor(uint32_t index) const {
 std::vector<SchemeDraw> BitShiftScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
     std::vector<SchemeDraw> draws;
     for (int w = 0; w < windows_; ++w) {
-        SchemeDraw sd = rankWindowDraw("bitshift", w, windowSlots_, lights, [this](uint32_t i) { return colorsFor(i); });
+        SchemeDraw sd = rankWindowDraw(PackingSchemeKind::BitShift, w, windowSlots_, lights,
+                                       [this](uint32_t i) { return colorsFor(i); });
         VolumeDraw& d = sd.draw;
         d.firstTarget = w * windowTargets_;
         d.targetCount = windowTargets_;

@@ -17,7 +17,6 @@ namespace lidr {
 class BitShiftScheme final : public PackingScheme {
 public:
     BitShiftScheme(const PackingConfig& config, const GlInfo& info);
-    std::string name() const override { return "bitshift"; }
     int targetCount() const override { return windows_ * windowTargets_; }
     std::string stencilUse() const override;
     int geometryPasses() const override { return windows_; }

@@ -33,7 +33,8 @@ ScreenFootprint screenFootprint(const CameraMatrices& m, const glm::vec4& posRad
     return f;
 }
 
-CpuSortedScheme::CpuSortedScheme(const PackingConfig& config, const GlInfo& info) : PackingScheme(config) {
+CpuSortedScheme::CpuSortedScheme(const PackingConfig& config, const GlInfo& info)
+    : PackingScheme(PackingSchemeKind::CpuSorted, config) {
     checkPackingConfig(config);
     if (info.framebufferObject) checkContextFor("cpu-sorted " + describe(), info, targetCount(), 1);
 }

@@ -30,7 +30,6 @@ ScreenFootprint screenFootprint(const CameraMatrices& camera, const glm::vec4& p
 class CpuSortedScheme final : public PackingScheme {
 public:
     CpuSortedScheme(const PackingConfig& config, const GlInfo& info);
-    std::string name() const override { return "cpu-sorted"; }
     int targetCount() const override { return (config_.budget * config_.indexBits + 31) / 32; }
     std::string stencilUse() const override { return "light count only (no rank windows)"; }
     int geometryPasses() const override { return 1; }

@@ -38,7 +38,7 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
         fragment = perSampleVersion(fragment);
     }
     program_ = gl::Program::create(std::string(materialShader.empty() ? "lidr-forward-" : "lidr-material-") +
-                                       scheme.name() + (perSample ? "-per-sample" : ""),
+                                       packingSchemeName(scheme.config().scheme) + (perSample ? "-per-sample" : ""),
                                    vertex, fragment, geometryAttributes());
 }
 

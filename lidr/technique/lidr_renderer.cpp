@@ -17,7 +17,7 @@ namespace {
 // (bit-shift; the automatic width stays). FrameStats::autoDecision.budgetFallback says so each frame.
 LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
     if (info.occlusionQuery || !o.packing.autoBudget()) return o;
-    if (o.packing.autoScheme()) o.packing.scheme = "bitshift";
+    if (o.packing.autoScheme()) o.packing.scheme = PackingSchemeKind::BitShift;
     o.packing.budget = LidrRenderer::kBudgetWithoutOcclusionQueries;
     return o;
 }
@@ -62,11 +62,11 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
             throw Error("the auto scheme chooses the budget and the index width itself (got budget " +
                         std::to_string(c.budget) + ", " + std::to_string(c.indexBits) +
                         "-bit): leave both automatic, or name a scheme (bitshift, max-stencil, cpu-sorted) to fix them");
-        c.scheme = "bitshift";
+        c.scheme = PackingSchemeKind::BitShift;
     }
-    if (c.budget == PackingConfig::kAuto && c.scheme != "bitshift")
-        throw Error("an automatic budget is measured from the stencil count of bit-shift packing; " + c.scheme +
-                    " needs a fixed budget (1, 2, 4, 8 or 16)");
+    if (c.budget == PackingConfig::kAuto && c.scheme != PackingSchemeKind::BitShift)
+        throw Error(std::string("an automatic budget is measured from the stencil count of bit-shift packing; ") +
+                    packingSchemeName(c.scheme) + " needs a fixed budget (1, 2, 4, 8 or 16)");
     if (o.autoHoldFrames < 0 || o.autoHoldFrames > 100000)
         throw Error("autoHoldFrames must be in [0, 100000], got " + std::to_string(o.autoHoldFrames));
     if (o.autoNarrowingInterval < 1 || o.autoNarrowingInterval > 100000)
@@ -159,7 +159,7 @@ LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
     Variant& v = variants_[{budget, indexBits}];
     if (!v.scheme) {
         PackingConfig c = options_.packing;
-        if (c.autoScheme()) c.scheme = "bitshift";
+        if (c.autoScheme()) c.scheme = PackingSchemeKind::BitShift;
         c.budget = budget;
         c.indexBits = indexBits;
         v.scheme = createPackingScheme(c, info_);

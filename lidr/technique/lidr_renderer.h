@@ -89,12 +89,9 @@ public:
     // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
     // index (1-based) of index k. Empty: indices are the scene's own.
     const std::vector<uint32_t>& frameLightIndices() const { return frameLights_; }
-    // What the automatic configuration decided for the last frame.
-    const AutoDecision& autoDecision() const { return stats_.autoDecision; }
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
     bool drawsTransparency() const { return drawTransparent_; }
-    bool perSampleIndices() const { return options_.perSampleIndices; }
     float volumeMeshOutsideRadius() const { return volumePass_.meshOutsideRadius(); }
     // Per light of the last frame (light i has index i + 1): the relative vertex distance of the volume it
     // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
@@ -104,7 +101,6 @@ public:
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;
-    size_t indexMemoryBytes() const { return indexTargets_->bytes(); }
     size_t lightDataBytes() const override;
 
     // Lights in the order the volume pass draws them: priority high to low, then index low to high.

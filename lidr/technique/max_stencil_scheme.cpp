@@ -7,7 +7,8 @@
 
 namespace lidr {
 
-MaxStencilScheme::MaxStencilScheme(const PackingConfig& config, const GlInfo& info) : PackingScheme(config) {
+MaxStencilScheme::MaxStencilScheme(const PackingConfig& config, const GlInfo& info)
+    : PackingScheme(PackingSchemeKind::MaxStencil, config) {
     checkPackingConfig(config);
     windowSlots_ = (config.indexBits == 16 || config.budget == 1) ? 1 : 2;
     windows_ = config.budget / windowSlots_;
@@ -39,7 +40,8 @@ IndexColors MaxStencilScheme::colorsFor(uint32_t index) const {
 std::vector<SchemeDraw> MaxStencilScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
     std::vector<SchemeDraw> draws;
     for (int w = 0; w < windows_; ++w) {
-        SchemeDraw sd = rankWindowDraw("max-stencil", w, windowSlots_, lights, [this](uint32_t i) { return colorsFor(i); });
+        SchemeDraw sd = rankWindowDraw(PackingSchemeKind::MaxStencil, w, windowSlots_, lights,
+                                       [this](uint32_t i) { return colorsFor(i); });
         VolumeDraw& d = sd.draw;
         d.firstTarget = w / 2;
         d.targetCount = 1;

@@ -16,7 +16,6 @@ namespace lidr {
 class MaxStencilScheme final : public PackingScheme {
 public:
     MaxStencilScheme(const PackingConfig& config, const GlInfo& info);
-    std::string name() const override { return "max-stencil"; }
     int targetCount() const override { return (windows_ + 1) / 2; }
     std::string stencilUse() const override;
     int geometryPasses() const override { return windows_; }

@@ -13,10 +13,10 @@
 
 namespace lidr {
 
-SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
+SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
                           std::function<IndexColors(uint32_t index)> colors) {
     SchemeDraw sd;
-    sd.draw.name = scheme + "-window-" + std::to_string(window);
+    sd.draw.name = packingSchemeName(scheme) + std::string("-window-") + std::to_string(window);
     sd.draw.rankFirst = window * windowSlots;
     sd.draw.rankCount = windowSlots;
     sd.draw.restartCount = window > 0;
@@ -26,32 +26,71 @@ SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots
 }
 
 std::string PackingScheme::describe() const {
-    return name() + " budget " + std::to_string(config_.budget) + ", " + std::to_string(config_.indexBits) +
+    return std::string(packingSchemeName(config_.scheme)) + " budget " + std::to_string(config_.budget) + ", " +
+           std::to_string(config_.indexBits) +
            "-bit indices, " + std::to_string(targetCount()) + " target" + (targetCount() > 1 ? "s" : "") + ", " +
            std::to_string(geometryPasses()) + " volume pass" + (geometryPasses() > 1 ? "es" : "") + ", stencil: " +
            stencilUse();
 }
 
-std::vector<std::string> packingSchemeNames() { return {"bitshift", "max-stencil", "cpu-sorted"}; }
+const char* packingSchemeName(PackingSchemeKind kind) {
+    switch (kind) {
+    case PackingSchemeKind::Auto: return "auto";
+    case PackingSchemeKind::BitShift: return "bitshift";
+    case PackingSchemeKind::MaxStencil: return "max-stencil";
+    case PackingSchemeKind::CpuSorted: return "cpu-sorted";
+    }
+    return "?";
+}
+
+std::vector<PackingSchemeKind> packingSchemes() {
+    return {PackingSchemeKind::BitShift, PackingSchemeKind::MaxStencil, PackingSchemeKind::CpuSorted};
+}
+
+std::vector<std::string> packingSchemeNames() {
+    std::vector<std::string> names;
+    for (PackingSchemeKind kind : packingSchemes()) names.emplace_back(packingSchemeName(kind));
+    return names;
+}
+
+namespace {
+std::string validSchemeNames() {
+    std::string valid;
+    for (const auto& n : packingSchemeNames()) valid += (valid.empty() ? "" : ", ") + n;
+    return valid;
+}
+}  // namespace
+
+PackingSchemeKind parsePackingScheme(const std::string& name) {
+    if (name == "auto") return PackingSchemeKind::Auto;
+    if (name == "bitshift") return PackingSchemeKind::BitShift;
+    if (name == "max-stencil" || name == "max") return PackingSchemeKind::MaxStencil;
+    if (name == "cpu-sorted" || name == "sorted") return PackingSchemeKind::CpuSorted;
+    throw UnsupportedError("unknown packing scheme '" + name + "' (valid: auto, " + validSchemeNames() + ")");
+}
 
 std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info) {
     if (config.autoScheme() || config.budget == PackingConfig::kAuto || config.indexBits == PackingConfig::kAuto)
-        throw Error("createPackingScheme: '" + config.scheme + "' budget " + std::to_string(config.budget) + ", " +
-                    std::to_string(config.indexBits) + "-bit is automatic; LidrRenderer resolves it per frame");
-    if (config.scheme == "bitshift") return std::make_unique<BitShiftScheme>(config, info);
-    if (config.scheme == "max-stencil" || config.scheme == "max") return std::make_unique<MaxStencilScheme>(config, info);
-    if (config.scheme == "cpu-sorted" || config.scheme == "sorted") return std::make_unique<CpuSortedScheme>(config, info);
-    std::string valid;
-    for (const auto& n : packingSchemeNames()) valid += (valid.empty() ? "" : ", ") + n;
-    throw UnsupportedError("unknown packing scheme '" + config.scheme + "' (valid: " + valid + ")");
+        throw Error(std::string("createPackingScheme: '") + packingSchemeName(config.scheme) + "' budget " +
+                    std::to_string(config.budget) + ", " + std::to_string(config.indexBits) +
+                    "-bit is automatic; LidrRenderer resolves it per frame");
+    switch (config.scheme) {
+    case PackingSchemeKind::BitShift: return std::make_unique<BitShiftScheme>(config, info);
+    case PackingSchemeKind::MaxStencil: return std::make_unique<MaxStencilScheme>(config, info);
+    case PackingSchemeKind::CpuSorted: return std::make_unique<CpuSortedScheme>(config, info);
+    case PackingSchemeKind::Auto: break;
+    }
+    throw UnsupportedError("unknown packing scheme " + std::to_string(int(config.scheme)) + " (valid: " +
+                           validSchemeNames() + ")");
 }
 
 void checkPackingConfig(const PackingConfig& c) {
     const int b = c.budget, w = c.indexBits;
+    const std::string scheme = packingSchemeName(c.scheme);
     if (w != 4 && w != 8 && w != 16)
-        throw UnsupportedError(c.scheme + ": index width must be 4, 8 or 16 bits, got " + std::to_string(w));
+        throw UnsupportedError(scheme + ": index width must be 4, 8 or 16 bits, got " + std::to_string(w));
     if (b != 1 && b != 2 && b != 4 && b != 8 && b != 16)
-        throw UnsupportedError(c.scheme + ": budget must be 1, 2, 4, 8 or 16 lights per pixel, got " + std::to_string(b));
+        throw UnsupportedError(scheme + ": budget must be 1, 2, 4, 8 or 16 lights per pixel, got " + std::to_string(b));
 }
 
 void checkContextFor(const std::string& what, const GlInfo& info, int targets, int drawTargets) {

@@ -19,13 +19,28 @@
 
 namespace lidr {
 
+// The packing schemes (doc/packing.md). Their names ("auto", "bitshift", "max-stencil", "cpu-sorted") are for
+// the command line, scene and bench files and reports only: packingSchemeName / parsePackingScheme convert.
+enum class PackingSchemeKind {
+    Auto,        // bit-shift with the budget and the index width chosen per frame (LidrRenderer, doc/auto.md)
+    BitShift,    // CONSTANT_COLOR bit-shift (bitshift_scheme.h)
+    MaxStencil,  // MAX blend + stencil (max_stencil_scheme.h)
+    CpuSorted,   // CPU overlap sorting (cpu_sorted_scheme.h)
+};
+const char* packingSchemeName(PackingSchemeKind kind);
+// "auto", "bitshift", "max-stencil" (or "max"), "cpu-sorted" (or "sorted"); throws UnsupportedError listing
+// the valid names for anything else.
+PackingSchemeKind parsePackingScheme(const std::string& name);
+// The concrete schemes (not Auto), and their names.
+std::vector<PackingSchemeKind> packingSchemes();
+std::vector<std::string> packingSchemeNames();
+
 struct PackingConfig {
     static constexpr int kAuto = 0;
-    // "auto": bit-shift with the budget and the index width chosen per frame (LidrRenderer, doc/auto.md).
-    std::string scheme = "auto";
+    PackingSchemeKind scheme = PackingSchemeKind::Auto;
     int budget = kAuto;     // light slots per pixel: 1, 2, 4, 8, 16, or kAuto (measured per frame; bitshift)
     int indexBits = kAuto;  // 4 (15 lights), 8 (255), 16 (65,535), or kAuto (the narrowest for the visible lights)
-    bool autoScheme() const { return scheme == "auto"; }
+    bool autoScheme() const { return scheme == PackingSchemeKind::Auto; }
     bool autoBudget() const { return autoScheme() || budget == kAuto; }
     bool autoIndexBits() const { return autoScheme() || indexBits == kAuto; }
 };
@@ -46,15 +61,14 @@ struct SchemeDraw {
 // Draw `window` of a scheme that splits its budget into stencil rank windows of `windowSlots` lights: ranks
 // window * windowSlots .. + windowSlots - 1, the count restarted for every window after the first. The scheme
 // sets targets, masks and blending.
-SchemeDraw rankWindowDraw(const std::string& scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
+SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
                           std::function<IndexColors(uint32_t index)> colors);
 
 class PackingScheme {
 public:
     virtual ~PackingScheme() = default;
-    const PackingConfig& config() const { return config_; }
-    virtual std::string name() const = 0;  // e.g. "bitshift"
-    std::string describe() const;          // "bitshift budget 4, 8-bit indices, 1 target, ..."
+    const PackingConfig& config() const { return config_; }  // config().scheme: which scheme this is
+    std::string describe() const;  // "bitshift budget 4, 8-bit indices, 1 target, ..."
     uint32_t maxLights() const { return (1u << config_.indexBits) - 1u; }
     virtual int targetCount() const = 0;
     size_t indexBytes(int width, int height) const { return size_t(targetCount()) * width * height * 4; }
@@ -94,17 +108,16 @@ public:
     std::vector<uint32_t> keptLights(const std::vector<uint32_t>& drawOrder) const;
 
 protected:
-    explicit PackingScheme(PackingConfig c) : config_(std::move(c)) {}
+    PackingScheme(PackingSchemeKind kind, PackingConfig c) : config_(c) { config_.scheme = kind; }
     // The unpack arithmetic after lidrBytes(): `bytes` are exact integers (as shader floats) per channel.
     virtual std::vector<uint32_t> decodeBytes(const std::vector<ShaderFloat>& bytes) const = 0;
     PackingConfig config_;
 };
 
 // Throws UnsupportedError (before any drawing) for a budget or width the scheme cannot do, or a context
-// without what the scheme needs; the message lists what is valid. The config must be concrete (no "auto",
+// without what the scheme needs; the message lists what is valid. The config must be concrete (no Auto scheme,
 // no kAuto): LidrRenderer resolves those per frame.
 std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info);
-std::vector<std::string> packingSchemeNames();
 
 // Common checks: budget in {1,2,4,8,16}, width in {4,8,16}; and that the context can bind `targets` index
 // textures (colour attachments, texture units next to the light table) and draw `drawTargets` at once.

@@ -11,7 +11,7 @@
 int main() {
     const lidr::LightVolumeMesh mesh = lidr::makeLightVolumeMesh(2);
     lidr::GlInfo noContext;  // no context needed for the CPU model
-    auto scheme = lidr::createPackingScheme({"bitshift", 4, 8}, noContext);
+    auto scheme = lidr::createPackingScheme({lidr::PackingSchemeKind::BitShift, 4, 8}, noContext);
     const auto texel = scheme->encodePixel({200, 17, 3});
     const auto slots = scheme->decodePixel(texel.data());
     const bool cpuOk = mesh.insideRadius >= 1.0f && slots.size() == 4 && slots[0] == 3 && slots[1] == 17 &&
