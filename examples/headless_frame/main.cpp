@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
         scene.validate();  // throws lidr::Error naming what is wrong (here: a bad width or height)
 
         // 3. The renderer: depth pre-pass, light volumes into the light-index texture, forward pass.
-        lidr::LidrOptions options;  // defaults: bit-shift packing, 8 lights a pixel, 8-bit indices
+        lidr::LidrOptions options;  // defaults: automatic (bit-shift; budget and index width chosen per frame)
         lidr::LidrRenderer renderer(context->info(), scene, options, width, height);
 
         // 4. One frame: the camera and the lights at time t (light i has index i + 1).
