@@ -96,18 +96,26 @@ bool queryAvailable(GLuint id) {
     return available != 0;
 }
 
-GLuint64 queryResult64(GLuint id) {
-    GLuint64EXT value = 0;
+// Timer queries exist only with ARB_timer_query (core glGetQueryObjectui64v) or EXT_timer_query (its EXT entry point).
+GLuint64 timeResult(GLuint id) {
+    GLuint64EXT ns = 0;
+    if (glGetQueryObjectui64v)
+        glGetQueryObjectui64v(id, GL_QUERY_RESULT, &ns);
+    else
+        glGetQueryObjectui64vEXT(id, GL_QUERY_RESULT, &ns);
+    return ns;
+}
+
+// Fragment counts: 64-bit where the entry point exists, else 32-bit (GL 1.5).
+long countResult(GLuint id) {
     if (glGetQueryObjectui64v) {
-        glGetQueryObjectui64v(id, GL_QUERY_RESULT, &value);
-    } else if (glGetQueryObjectui64vEXT) {
-        glGetQueryObjectui64vEXT(id, GL_QUERY_RESULT, &value);
-    } else {
-        GLuint low = 0;
-        glGetQueryObjectuiv(id, GL_QUERY_RESULT, &low);
-        value = low;
+        GLuint64 n = 0;
+        glGetQueryObjectui64v(id, GL_QUERY_RESULT, &n);
+        return static_cast<long>(n);
     }
-    return value;
+    GLuint n = 0;
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT, &n);
+    return static_cast<long>(n);
 }
 }  // namespace
 
@@ -121,10 +129,10 @@ std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
     std::vector<PassTime> out = f.passes;
     for (size_t i = 0; i < out.size(); ++i) {
         if (gpu_)
-            out[i].milliseconds = double(queryResult64(f.queries[i].id())) * 1e-6;
+            out[i].milliseconds = double(timeResult(f.queries[i].id())) * 1e-6;
         else if (i < cpuMs_.size())
             out[i].milliseconds = cpuMs_[i];
-        if (f.counted[i]) out[i].fragments = static_cast<long>(queryResult64(f.fragmentQueries[i].id()));
+        if (f.counted[i]) out[i].fragments = countResult(f.fragmentQueries[i].id());
     }
     return out;
 }
