@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_resources.h"
 
 namespace lidr::viewer {
 namespace {
@@ -41,45 +42,14 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum stage, const char* source) {
-    const GLuint s = glCreateShader(stage);
-    glShaderSource(s, 1, &source, nullptr);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = {};
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        glDeleteShader(s);
-        throw Error(std::string("ImGui ES 2.0 renderer: the ") + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                    " shader does not compile: " + log);
-    }
-    return s;
-}
-
 }  // namespace
 
 ImGuiEs2Renderer::ImGuiEs2Renderer() {
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glBindAttribLocation(program_, kPosition, "aPosition");
-    glBindAttribLocation(program_, kUv, "aUv");
-    glBindAttribLocation(program_, kColor, "aColor");
-    glLinkProgram(program_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = {};
-        glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-        glDeleteProgram(program_);
-        throw Error(std::string("ImGui ES 2.0 renderer: the program does not link: ") + log);
-    }
-    projection_ = glGetUniformLocation(program_, "uProjection");
-    texture_ = glGetUniformLocation(program_, "uTexture");
+    // Program::create throws GlError with the driver's log when a stage does not compile or link.
+    program_ = gl::Program::create("imgui-es2", kVertex, kFragment,
+                                   {{"aPosition", kPosition}, {"aUv", kUv}, {"aColor", kColor}});
+    projection_ = glGetUniformLocation(program_.id(), "uProjection");
+    texture_ = glGetUniformLocation(program_.id(), "uTexture");
     glGenBuffers(1, &vertexBuffer_);
     glGenBuffers(1, &indexBuffer_);
 
@@ -111,7 +81,6 @@ ImGuiEs2Renderer::~ImGuiEs2Renderer() {
     glDeleteTextures(1, &fontTexture_);
     glDeleteBuffers(1, &vertexBuffer_);
     glDeleteBuffers(1, &indexBuffer_);
-    glDeleteProgram(program_);
 }
 
 void ImGuiEs2Renderer::render(const ImDrawData* data, int fbw, int fbh) const {
@@ -125,7 +94,7 @@ void ImGuiEs2Renderer::render(const ImDrawData* data, int fbw, int fbh) const {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_SCISSOR_TEST);
-    glUseProgram(program_);
+    glUseProgram(program_.id());
     // Display coordinates (y down) to clip space.
     const float l = pos.x, r = pos.x + size.x, t = pos.y, b = pos.y + size.y;
     const float ortho[16] = {2.0f / (r - l), 0, 0, 0, 0, 2.0f / (t - b), 0, 0, 0, 0, -1.0f, 0,

@@ -6,6 +6,8 @@
 // Needs the ES context current; every GL error it meets throws lidr::GlError.
 #include <cstdint>
 
+#include "lidr/gl/gl_resources.h"
+
 struct ImDrawData;
 
 namespace lidr::viewer {
@@ -22,7 +24,8 @@ public:
     void render(const ImDrawData* data, int fbw, int fbh) const;
 
 private:
-    uint32_t program_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0, fontTexture_ = 0;
+    gl::Program program_;
+    uint32_t vertexBuffer_ = 0, indexBuffer_ = 0, fontTexture_ = 0;
     int projection_ = -1, texture_ = -1;
 };
 
