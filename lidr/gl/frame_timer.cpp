@@ -38,7 +38,6 @@ FrameTimer::Frame& FrameTimer::beginFrameSlot() {
     Frame& f = ring_[current_];
     if (f.pending || f.number != frameNumber_) {  // first pass of this frame: the slot's old results go
         f.passes.clear();
-        f.counted.clear();
         f.pending = false;
         f.number = frameNumber_;
     }
@@ -52,10 +51,10 @@ void FrameTimer::begin(const std::string& pass) {
     Frame& f = beginFrameSlot();
     PassTime p;
     p.pass = pass;
+    const bool count = countsFragments();
+    p.fragments = count ? 0 : -1;  // >= 0 marks a pass whose fragment query was issued; read() fills it
     f.passes.push_back(p);
     const size_t i = f.passes.size() - 1;
-    const bool count = countsFragments();
-    f.counted.push_back(count);
     if (count) {
         if (f.fragmentQueries.size() <= i) f.fragmentQueries.emplace_back(gl::Kind::Query);
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, f.fragmentQueries[i].id());
@@ -86,7 +85,7 @@ void FrameTimer::end() {
         glFinish();
         cpuMs_.push_back(nowMilliseconds() - cpuStart_);
     }
-    if (f.counted.back()) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    if (p.fragments >= 0) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
 
 namespace {
@@ -123,7 +122,7 @@ std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
     if (!wait) {
         for (size_t i = 0; i < f.passes.size(); ++i)
             if ((gpu_ && !queryAvailable(f.queries[i].id())) ||
-                (f.counted[i] && !queryAvailable(f.fragmentQueries[i].id())))
+                (f.passes[i].fragments >= 0 && !queryAvailable(f.fragmentQueries[i].id())))
                 return {};
     }
     std::vector<PassTime> out = f.passes;
@@ -132,7 +131,7 @@ std::vector<PassTime> FrameTimer::read(Frame& f, bool wait) {
             out[i].milliseconds = double(timeResult(f.queries[i].id())) * 1e-6;
         else if (i < cpuMs_.size())
             out[i].milliseconds = cpuMs_[i];
-        if (f.counted[i]) out[i].fragments = countResult(f.fragmentQueries[i].id());
+        if (out[i].fragments >= 0) out[i].fragments = countResult(f.fragmentQueries[i].id());
     }
     return out;
 }

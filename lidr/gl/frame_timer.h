@@ -58,8 +58,8 @@ public:
 private:
     struct Frame {
         std::vector<gl::Object> queries, fragmentQueries;
-        std::vector<PassTime> passes;  // names and counts; times and fragments filled when read
-        std::vector<bool> counted;     // the pass's fragment query was issued
+        std::vector<PassTime> passes;  // names and counts; times and fragments filled when read (fragments 0:
+                                       // its query was issued, -1: not counted)
         long number = -1;
         bool pending = false;  // ended, results not read yet
     };
