@@ -349,8 +349,8 @@ void main() {
     gl_FragColor = vec4(count / 255.0, first / 255.0, 0.0, 1.0);
 }
 )";
-    for (PackingSchemeKind scheme : packingSchemes()) {
-        INFO("scheme " << packingSchemeName(scheme));
+    const PackingSchemeKind scheme = GENERATE(from_range(packingSchemes()));
+    DYNAMIC_SECTION(packingSchemeName(scheme)) {
         LidrOptions o;
         o.packing = {scheme, 4, 8};
         o.materialShader = countShader;

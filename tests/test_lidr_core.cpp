@@ -42,7 +42,8 @@ TEST_CASE("the GL context is GL 2.1+ (or OpenGL ES 2.0+) with framebuffer object
 }
 
 TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh][cpu]") {
-    for (int subdivisions : {0, 1, 2}) {
+    const int subdivisions = GENERATE(0, 1, 2);
+    DYNAMIC_SECTION("subdivisions " << subdivisions) {
         const LightVolumeMesh m = makeLightVolumeMesh(subdivisions);
         REQUIRE(m.insideRadius >= 1.0f);
         for (size_t i = 0; i < m.indices.size(); i += 3) {
@@ -232,7 +233,8 @@ TEST_CASE("camera inside a light volume", "[lidr]") {
     scene.camera.target = glm::vec3(0.0f, 0.5f, 0.0f);
     scene.lights = {light(glm::vec3(0.0f, 1.5f, 5.0f), 6.0f, glm::vec3(0.9f, 0.8f, 0.6f)),
                     light(glm::vec3(2.0f, 0.5f, 1.0f), 2.0f, glm::vec3(0.2f, 0.4f, 1.0f))};
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         LidrOptions o;
         o.volumeTest = test;
         const RenderResult r = renderAndEvaluate(scene, o);
@@ -257,30 +259,29 @@ TEST_CASE("light volumes crossing the near and the far plane", "[lidr]") {
                     light(glm::vec3(1.0f, 0.5f, -7.0f), 4.0f, glm::vec3(0.3f, 0.6f, 1.0f))};
     const glm::vec3 toNearLight = scene.lights[0].position - scene.camera.position;
     REQUIRE(glm::length(toNearLight) > scene.lights[0].radius);
-    for (bool depthClamp : {true, false}) {
-        GlInfo info = testGl();
-        info.depthClamp = info.depthClamp && depthClamp;  // false: the conservative no-clamp path
-        for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
-            LidrOptions o;
-            o.volumeTest = test;
-            const RenderResult r = renderAndEvaluate(scene, o, info);
-            INFO("depth clamp " << info.depthClamp << ", test " << volumeTestName(test));
-            requireMatchesReference(r);
-            REQUIRE(r.evaluation.lists.droppedLightPixels == 0);
-            long nearLit = 0, farLit = 0, nearTruth = 0, farTruth = 0;
-            for (const auto& list : r.evaluation.lists.decoded) {
-                nearLit += std::count(list.begin(), list.end(), 1u);
-                farLit += std::count(list.begin(), list.end(), 2u);
-            }
-            const CoverageTruth& truth = r.evaluation.truth;
-            for (uint32_t index : truth.lights) (index == 1u ? nearTruth : farTruth) += index <= 2u;
-            // Both lights really light the floor (at softpipe's small size too), and every pixel they light is
-            // in its list; the stencil tests also mark some surfaces they do not reach, the sphere test none.
-            CHECK(nearTruth > 20);
-            CHECK(farTruth > 20);
-            CHECK(nearLit >= nearTruth);
-            CHECK(farLit >= farTruth);
+    const bool depthClamp = GENERATE(true, false);  // false: the conservative no-clamp path
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere);
+    GlInfo info = testGl();
+    info.depthClamp = info.depthClamp && depthClamp;
+    DYNAMIC_SECTION((depthClamp ? "depth clamp where the driver has it, " : "no depth clamp, ") << volumeTestName(test)) {
+        LidrOptions o;
+        o.volumeTest = test;
+        const RenderResult r = renderAndEvaluate(scene, o, info);
+        requireMatchesReference(r);
+        REQUIRE(r.evaluation.lists.droppedLightPixels == 0);
+        long nearLit = 0, farLit = 0, nearTruth = 0, farTruth = 0;
+        for (const auto& list : r.evaluation.lists.decoded) {
+            nearLit += std::count(list.begin(), list.end(), 1u);
+            farLit += std::count(list.begin(), list.end(), 2u);
         }
+        const CoverageTruth& truth = r.evaluation.truth;
+        for (uint32_t index : truth.lights) (index == 1u ? nearTruth : farTruth) += index <= 2u;
+        // Both lights really light the floor (at softpipe's small size too), and every pixel they light is
+        // in its list; the stencil tests also mark some surfaces they do not reach, the sphere test none.
+        CHECK(nearTruth > 20);
+        CHECK(farTruth > 20);
+        CHECK(nearLit >= nearTruth);
+        CHECK(farLit >= farTruth);
     }
 }
 
@@ -395,15 +396,16 @@ TEST_CASE("16-bit depth: other depth bits are refused; a driver that refuses D16
         return;
     }
     // A driver that holds the pair: the frame is drawn with 16-bit depth and is exact within the budget.
-    for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil, VolumeTest::BackFace}) {
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil, VolumeTest::BackFace);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         o.volumeTest = test;
         const RenderResult r = renderAndEvaluate(scene, o);
         requireExactWithinBudget(r.evaluation, std::string("16-bit depth, ") + volumeTestName(test));
+        LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
+        renderer.render(scene.camera, scene.lights, {});
+        REQUIRE(renderer.targets().depthBits() == 16);
+        REQUIRE(glGetError() == GL_NO_ERROR);
     }
-    LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
-    renderer.render(scene.camera, scene.lights, {});
-    REQUIRE(renderer.targets().depthBits() == 16);
-    REQUIRE(glGetError() == GL_NO_ERROR);
 }
 
 TEST_CASE("volume detail: coarse volumes for lights small on screen, same results within the budget", "[lidr][detail]") {
@@ -441,8 +443,8 @@ TEST_CASE("the volume pass draws its plan: a draw call per step, the mesh the pa
     const std::vector<VolumeLight> lights = {{1, glm::vec4(-10.0f, 0.2f, -10.0f, 0.05f)},
                                              {2, glm::vec4(0.0f, 1.0f, 0.0f, 6.0f)},
                                              {3, glm::vec4(2.0f, 0.5f, 1.0f, 2.0f)}};
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace}) {
-        INFO(volumeTestName(test));
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         LightVolumePass pass(testGl(), test, true);
         pass.begin(targets, cam);
         size_t steps = 0;
@@ -490,11 +492,11 @@ TEST_CASE("volume detail with transparent layers: front-face lists from the coar
     room.height = testHeight();
     room.time = 1.5f;
     const Scene scene = makeDefaultScene(room);
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::FrontFace}) {
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::FrontFace);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         LidrOptions o;
         o.volumeTest = test;
         o.volumeDetail = true;
-        INFO(volumeTestName(test));
         const RenderResult r = renderAndEvaluate(scene, o);
         REQUIRE(r.evaluation.frontFaceMarked.size() == r.evaluation.marked.size());  // transparent lists checked
         requireMatchesReference(r);

@@ -58,9 +58,9 @@ void requireNeverBrighter(const RenderResult& r) {
 
 TEST_CASE("transparent panes over a lit floor match the reference with the same blending", "[transparency]") {
     const Scene scene = glassScene();
-    for (VolumeTest test : {VolumeTest::FrontFace, VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere,
-                            VolumeTest::SphereRay}) {
-        INFO("volume test " << volumeTestName(test));
+    const VolumeTest test = GENERATE(VolumeTest::FrontFace, VolumeTest::BackFace, VolumeTest::ExactStencil,
+                                     VolumeTest::Sphere, VolumeTest::SphereRay);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         const RenderResult r = renderWith(scene, test);
         requireWithinBudgetExact(r);
         requireNeverBrighter(r);
@@ -227,8 +227,8 @@ TEST_CASE("optional per-sample MSAA index targets (Trebilco's technique 1) match
         REQUIRE_THROWS(LidrRenderer(info, scene, o, scene.width, scene.height));
         return;
     }
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace}) {
-        INFO("volume test " << volumeTestName(test));
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         o.volumeTest = test;
         const RenderResult r = renderAndEvaluate(scene, o);
         // Every sample reads its own exact list: with the overlap of this scene under the budget, the image

@@ -175,10 +175,13 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
     for (size_t p = 0; p < rb.evaluation.marked.size(); ++p)
         if (rb.evaluation.marked[p] == 2 && rb.evaluation.truth.count(p) == 1) ++doubleMarkedOneTouching;
     CHECK(doubleMarkedOneTouching > 50);
+}
 
-    // CPU sorting, one group: under back-face the pair conflicts (light 2 dropped and counted); under the
-    // exact test it does not (both in group 0, nothing dropped).
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere}) {
+TEST_CASE("CPU sorting, one group: under back-face the disjoint pair conflicts (light 2 dropped and counted); under "
+          "the exact tests it does not (both in group 0, nothing dropped)", "[render][cpu-sorted]") {
+    const Scene scene = makeOccludedLightScene(controlledSize(true), controlledSize(false));
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         LidrOptions sorted;
         sorted.packing = {PackingSchemeKind::CpuSorted, 1, 8};
         sorted.volumeTest = test;
@@ -213,8 +216,8 @@ TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", 
         const PointLight& l = lights[index - 1];
         if (sphereMayBeVisible(cam, l.position, l.radius)) volumes.push_back({index, glm::vec4(l.position, l.radius)});
     }
-    IndexTargets unused;
-    for (VolumeTest test : {VolumeTest::BackFace, VolumeTest::ExactStencil}) {
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         gl::Renderbuffer ds = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, 4, 4);
         IndexTargets targets(1, 4, 4, ds);
         LightVolumePass pass(testGl(), test);
@@ -236,7 +239,7 @@ TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", 
             }
         }
         pass.end();
-        INFO(volumeTestName(test) << ": " << dropped << " of " << volumes.size() << " dropped");
+        INFO(dropped << " of " << volumes.size() << " dropped");
         CHECK(dropped > 0);  // the room overlaps more than 4 deep in screen space
     }
 }

@@ -235,8 +235,8 @@ TEST_CASE("a frame's GL calls are counted in FrameStats, the same each frame, an
     scene.width = testWidth();
     scene.height = testHeight();
     const auto lights = scene.lightsAt(2.0f);
-    for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil}) {
-        INFO("volume test " << volumeTestName(test));
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil);
+    DYNAMIC_SECTION(volumeTestName(test)) {
         LidrOptions options;
         options.volumeTest = test;
         options.packing = {PackingSchemeKind::BitShift, 4, 8};

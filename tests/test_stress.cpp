@@ -34,6 +34,8 @@ int envInt(const char* name, int fallback, int lo, int hi) {
     return std::clamp(std::atoi(text), lo, hi);
 }
 int seedCount() { return envInt("LIDR_STRESS_SEEDS", 2, 1, 1000); }
+// The seeds of a family as a Catch2 generator: GENERATE(seeds()) runs the test case once per seed.
+auto seeds() { return Catch::Generators::range(1, seedCount() + 1); }
 
 // A small deterministic generator (the same numbers on every platform).
 struct Rng {
@@ -173,16 +175,17 @@ PointLight lightOnRay(Rng& rng, const Camera& camera, float aspect, float distan
 }  // namespace
 
 TEST_CASE("stress: world scales 1e-3 .. 1e5 are exact within the budget", "[stress][slow]") {
-    for (float scale : {1e-3f, 1e-1f, 1.0f, 1e2f, 1e5f})
-        for (int seed = 1; seed <= seedCount(); ++seed) {
-            Rng rng(uint64_t(seed) * 1000 + 1);
-            Scene scene = scaledFloor(scale);
-            scene.lights = floorLights(rng, 24, scale, 0.5f, 4.0f);
-            const Row r = run("world scale", "scale " + std::to_string(scale) + ", seed " + std::to_string(seed),
-                              scene, LidrOptions{}, testGl());
-            requireExactWithinBudget(r);
-            CHECK(r.truthPairs > 1000);  // the lights really light the floor
-        }
+    const float scale = GENERATE(1e-3f, 1e-1f, 1.0f, 1e2f, 1e5f);
+    const int seed = GENERATE(seeds());
+    const std::string variant = "scale " + std::to_string(scale) + ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
+        Rng rng(uint64_t(seed) * 1000 + 1);
+        Scene scene = scaledFloor(scale);
+        scene.lights = floorLights(rng, 24, scale, 0.5f, 4.0f);
+        const Row r = run("world scale", variant, scene, LidrOptions{}, testGl());
+        requireExactWithinBudget(r);
+        CHECK(r.truthPairs > 1000);  // the lights really light the floor
+    }
 }
 
 TEST_CASE("stress: near/far ratios up to 1e6", "[stress][slow]") {
@@ -192,66 +195,70 @@ TEST_CASE("stress: near/far ratios up to 1e6", "[stress][slow]") {
     // far/near 1e5 every list is exact. At 1e6 the GPU's own fp32 vertex and depth arithmetic moves the stored
     // depth by more than that: a few lights are lost at the edges of their spheres. Bound (doc/stability.md):
     // at most 3 % of the truth's (pixel, light) pairs, whole image PSNR >= 50 dB.
-    for (float ratio : {1e3f, 1e4f, 1e5f, 1e6f})
-        for (int seed = 1; seed <= seedCount(); ++seed) {
-            Rng rng(uint64_t(seed) * 1000 + 2);
-            Scene scene = floorScene();
-            scene.camera.nearPlane = scene.camera.farPlane / ratio;
-            scene.lights = floorLights(rng, 24, 1.0f, 0.5f, 4.0f);
-            const Row r = run("near/far ratio", "far/near " + std::to_string(int(ratio)) + ", seed " +
-                                                    std::to_string(seed), scene, LidrOptions{}, testGl());
-            INFO("ratio " << ratio << " seed " << seed);
-            if (ratio <= 1e5f) {
-                requireExactWithinBudget(r);
-            } else {
-                CHECK(r.invalid == 0);
-                CHECK(r.dropsWithin * 100 <= r.truthPairs * 3);
-                CHECK(r.psnrWhole >= 50.0);
-                CHECK(r.fp16Diff == 0);
-            }
+    const float ratio = GENERATE(1e3f, 1e4f, 1e5f, 1e6f);
+    const int seed = GENERATE(seeds());
+    const std::string variant = "far/near " + std::to_string(int(ratio)) + ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
+        Rng rng(uint64_t(seed) * 1000 + 2);
+        Scene scene = floorScene();
+        scene.camera.nearPlane = scene.camera.farPlane / ratio;
+        scene.lights = floorLights(rng, 24, 1.0f, 0.5f, 4.0f);
+        const Row r = run("near/far ratio", variant, scene, LidrOptions{}, testGl());
+        if (ratio <= 1e5f) {
+            requireExactWithinBudget(r);
+        } else {
+            CHECK(r.invalid == 0);
+            CHECK(r.dropsWithin * 100 <= r.truthPairs * 3);
+            CHECK(r.psnrWhole >= 50.0);
+            CHECK(r.fp16Diff == 0);
         }
+    }
 }
 
 TEST_CASE("stress: lights straddling and touching the near and far planes", "[stress][slow]") {
     // The camera looks along the floor; far = 12 m cuts the floor. Half the lights straddle or touch the near
     // plane (centre within one radius of it, in front or behind), half the far plane.
-    for (bool depthClamp : {true, false})
-        for (int seed = 1; seed <= seedCount(); ++seed) {
-            Rng rng(uint64_t(seed) * 1000 + 3);
-            Scene scene = floorScene();
-            scene.camera.position = glm::vec3(0.0f, 0.6f, 4.0f);
-            scene.camera.target = glm::vec3(0.0f, 0.0f, -6.0f);
-            scene.camera.nearPlane = 0.5f;
-            scene.camera.farPlane = 12.0f;
-            const float aspect = float(scene.width) / float(scene.height);
-            for (int i = 0; i < 8; ++i) {
-                const float radius = rng.uniform(0.3f, 1.5f);
-                // Touching: |offset| == radius exactly for every fourth light.
-                const float offset = (i % 4 == 0) ? (rng.next() % 2 ? radius : -radius) : rng.uniform(-radius, radius);
-                scene.lights.push_back(lightOnRay(rng, scene.camera, aspect, scene.camera.nearPlane + offset, radius));
-            }
-            for (int i = 0; i < 8; ++i) {
-                const float radius = rng.uniform(1.0f, 4.0f);
-                const float offset = (i % 4 == 0) ? (rng.next() % 2 ? radius : -radius) : rng.uniform(-radius, radius);
-                scene.lights.push_back(lightOnRay(rng, scene.camera, aspect, scene.camera.farPlane + offset, radius));
-            }
-            GlInfo info = testGl();
-            info.depthClamp = info.depthClamp && depthClamp;
-            for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil}) {
-                LidrOptions o;
-                o.volumeTest = test;
-                const Row r = run("near/far planes", std::string(volumeTestName(test)) + ", depth clamp " +
-                                                         (info.depthClamp ? "on" : "off") + ", seed " + std::to_string(seed),
-                                  scene, o, info);
-                requireExactWithinBudget(r);
-            }
+    const bool depthClamp = GENERATE(true, false);
+    const int seed = GENERATE(seeds());
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil);
+    GlInfo info = testGl();
+    info.depthClamp = info.depthClamp && depthClamp;
+    // Named by the request, so the case keeps its name on a driver without depth clamp.
+    const std::string variant = std::string(volumeTestName(test)) +
+                                (depthClamp ? ", depth clamp where the driver has it" : ", no depth clamp") +
+                                ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
+        Rng rng(uint64_t(seed) * 1000 + 3);
+        Scene scene = floorScene();
+        scene.camera.position = glm::vec3(0.0f, 0.6f, 4.0f);
+        scene.camera.target = glm::vec3(0.0f, 0.0f, -6.0f);
+        scene.camera.nearPlane = 0.5f;
+        scene.camera.farPlane = 12.0f;
+        const float aspect = float(scene.width) / float(scene.height);
+        for (int i = 0; i < 8; ++i) {
+            const float radius = rng.uniform(0.3f, 1.5f);
+            // Touching: |offset| == radius exactly for every fourth light.
+            const float offset = (i % 4 == 0) ? (rng.next() % 2 ? radius : -radius) : rng.uniform(-radius, radius);
+            scene.lights.push_back(lightOnRay(rng, scene.camera, aspect, scene.camera.nearPlane + offset, radius));
         }
+        for (int i = 0; i < 8; ++i) {
+            const float radius = rng.uniform(1.0f, 4.0f);
+            const float offset = (i % 4 == 0) ? (rng.next() % 2 ? radius : -radius) : rng.uniform(-radius, radius);
+            scene.lights.push_back(lightOnRay(rng, scene.camera, aspect, scene.camera.farPlane + offset, radius));
+        }
+        LidrOptions o;
+        o.volumeTest = test;
+        requireExactWithinBudget(run("near/far planes", variant, scene, o, info));
+    }
 }
 
 TEST_CASE("stress: camera inside many lights", "[stress][slow]") {
     // 12 lights contain the eye (and reach the floor); 6 more elsewhere. Budget 16 holds them all: exact. Budget
     // 4 drops lights at pixels marked by more than 4 (by design), still exact where the list is complete.
-    for (int seed = 1; seed <= seedCount(); ++seed) {
+    const int seed = GENERATE(seeds());
+    const int budget = GENERATE(16, 4);
+    const std::string variant = "budget " + std::to_string(budget) + ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
         Rng rng(uint64_t(seed) * 1000 + 4);
         Scene scene = floorScene();
         scene.camera.position = glm::vec3(0.0f, 3.0f, 6.0f);
@@ -263,22 +270,22 @@ TEST_CASE("stress: camera inside many lights", "[stress][slow]") {
                                          rng.colour() * 0.2f, float(rng.next() % 3)));
         }
         for (const PointLight& l : floorLights(rng, 6, 1.0f, 0.5f, 3.0f)) scene.lights.push_back(l);
-        for (int budget : {16, 4}) {
-            LidrOptions o;
-            o.packing = {PackingSchemeKind::BitShift, budget, 8};
-            const Row r = run("camera inside lights", "budget " + std::to_string(budget) + ", seed " + std::to_string(seed),
-                              scene, o, testGl());
-            requireExactWithinBudget(r);
-            CHECK(r.maxOverlap >= 12);
-            if (budget == 16 && r.maxOverlap <= 16) CHECK(r.drops == 0);
-        }
+        LidrOptions o;
+        o.packing = {PackingSchemeKind::BitShift, budget, 8};
+        const Row r = run("camera inside lights", variant, scene, o, testGl());
+        requireExactWithinBudget(r);
+        CHECK(r.maxOverlap >= 12);
+        if (budget == 16 && r.maxOverlap <= 16) CHECK(r.drops == 0);
     }
 }
 
 TEST_CASE("stress: radii from a pixel to beyond the far plane", "[stress][slow]") {
     // Radii log-uniform from about a pixel's footprint on the floor (24 m over 256 pixels at ~20 m: ~0.1 m; the
     // smallest are below it) up to 3x the far plane, where the whole view is inside the light.
-    for (int seed = 1; seed <= seedCount(); ++seed) {
+    const int seed = GENERATE(seeds());
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil);
+    const std::string variant = std::string(volumeTestName(test)) + ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
         Rng rng(uint64_t(seed) * 1000 + 5);
         Scene scene = floorScene();
         for (int i = 0; i < 20; ++i) {
@@ -287,14 +294,10 @@ TEST_CASE("stress: radii from a pixel to beyond the far plane", "[stress][slow]"
             l.color *= 0.3f;
             scene.lights.push_back(l);
         }
-        for (VolumeTest test : {VolumeTest::Sphere, VolumeTest::ExactStencil}) {
-            LidrOptions o;
-            o.volumeTest = test;
-            o.packing = {PackingSchemeKind::BitShift, 16, 8};
-            const Row r = run("radii", std::string(volumeTestName(test)) + ", seed " + std::to_string(seed), scene, o,
-                              testGl());
-            requireExactWithinBudget(r);
-        }
+        LidrOptions o;
+        o.volumeTest = test;
+        o.packing = {PackingSchemeKind::BitShift, 16, 8};
+        requireExactWithinBudget(run("radii", variant, scene, o, testGl()));
     }
 }
 
@@ -303,14 +306,15 @@ TEST_CASE("stress: many lights with 16-bit indices", "[stress][slow]") {
     // budget, and the unpack model decodes the GPU's bytes to the same indices in fp16 and fp24 as in fp32 (the
     // indices above 2048 travel as two bytes; doc/packing.md).
     const int count = envInt("LIDR_STRESS_LIGHTS", 4096, 1, 65535);
-    for (int seed = 1; seed <= seedCount(); ++seed) {
+    const int seed = GENERATE(seeds());
+    const std::string variant = std::to_string(count) + " lights, seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
         Rng rng(uint64_t(seed) * 1000 + 6);
         Scene scene = floorScene();
         scene.lights = floorLights(rng, count, 1.0f, 0.2f, 0.8f);
         LidrOptions o;
         o.packing = {PackingSchemeKind::BitShift, 16, 16};
-        const Row r = run("many lights", std::to_string(count) + " lights, seed " + std::to_string(seed), scene, o,
-                          testGl());
+        const Row r = run("many lights", variant, scene, o, testGl());
         requireExactWithinBudget(r);
         CHECK(r.truthPairs > 1000);
     }
@@ -338,24 +342,25 @@ TEST_CASE("stress: 16-bit depth at near/far ratios 160 .. 1e4", "[stress][slow][
         CHECK_THROWS_AS(LidrRenderer(testGl(), scene, o, scene.width, scene.height), UnsupportedError);
         return;
     }
-    for (float ratio : {160.0f, 1e3f, 1e4f})
-        for (int seed = 1; seed <= seedCount(); ++seed)
-            for (int bits : {24, 16}) {
-                Rng rng(uint64_t(seed) * 1000 + 7);
-                Scene scene = floorScene();
-                scene.camera.nearPlane = scene.camera.farPlane / ratio;
-                scene.lights = floorLights(rng, 24, 1.0f, 0.5f, 4.0f);
-                LidrOptions o;
-                o.depthBits = bits;
-                const Row r = run("16-bit depth", "far/near " + std::to_string(int(ratio)) + ", " + std::to_string(bits) +
-                                                      "-bit, seed " + std::to_string(seed), scene, o, testGl());
-                INFO("ratio " << ratio << ", " << bits << "-bit depth, seed " << seed);
-                if (ratio <= 160.0f || bits == 24) {
-                    requireExactWithinBudget(r);
-                } else {
-                    CHECK(r.invalid == 0);
-                    CHECK(r.fp24Diff == 0);
-                    CHECK(r.fp16Diff == 0);
-                }
-            }
+    const float ratio = GENERATE(160.0f, 1e3f, 1e4f);
+    const int seed = GENERATE(seeds());
+    const int bits = GENERATE(24, 16);
+    const std::string variant =
+        "far/near " + std::to_string(int(ratio)) + ", " + std::to_string(bits) + "-bit, seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
+        Rng rng(uint64_t(seed) * 1000 + 7);
+        Scene scene = floorScene();
+        scene.camera.nearPlane = scene.camera.farPlane / ratio;
+        scene.lights = floorLights(rng, 24, 1.0f, 0.5f, 4.0f);
+        LidrOptions o;
+        o.depthBits = bits;
+        const Row r = run("16-bit depth", variant, scene, o, testGl());
+        if (ratio <= 160.0f || bits == 24) {
+            requireExactWithinBudget(r);
+        } else {
+            CHECK(r.invalid == 0);
+            CHECK(r.fp24Diff == 0);
+            CHECK(r.fp16Diff == 0);
+        }
+    }
 }
