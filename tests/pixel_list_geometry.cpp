@@ -21,25 +21,15 @@ std::string testShaderSource(const std::string& name, const ShaderDefines& defin
 }
 
 PixelListGeometry::PixelListGeometry(const GlInfo& info)
-    : maxDrawTargets_(std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1)),
-      programs_(kMaxIndexTargets) {
+    : programs_(info, [](int targetCount) {
+          const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+          return gl::Program::create("pixel_list_volume-" + std::to_string(targetCount),
+                                     testShaderSource("pixel_list_volume.vert", defs),
+                                     testShaderSource("pixel_list_volume.frag", defs), {{"aPosition", gl::kPosition}});
+      }) {
     // Two clockwise triangles over the whole target: back faces, as the volume test draws them.
     const float q[] = {-1, -1, 0, -1, 1, 0, 1, 1, 0, -1, -1, 0, 1, 1, 0, 1, -1, 0};
     quad_ = gl::Buffer::create(GL_ARRAY_BUFFER, q, sizeof(q));
-}
-
-const gl::Program& PixelListGeometry::programFor(int targetCount) {
-    if (targetCount < 1 || targetCount > maxDrawTargets_)
-        throw UnsupportedError("writing " + std::to_string(targetCount) +
-                               " index targets at once needs that many draw buffers");
-    gl::Program& p = programs_[size_t(targetCount - 1)];
-    if (!p) {
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        p = gl::Program::create("pixel_list_volume-" + std::to_string(targetCount),
-                                testShaderSource("pixel_list_volume.vert", defs),
-                                testShaderSource("pixel_list_volume.frag", defs), {{"aPosition", gl::kPosition}});
-    }
-    return p;
 }
 
 void PixelListGeometry::begin(const CameraMatrices&, glm::ivec2 targetSize, const gl::Texture*) {
@@ -75,7 +65,7 @@ void PixelListGeometry::uploadColorTable(const VolumeDraw& d, const IndexColorsF
 void PixelListGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor& colors) {
     if (plan.program != VolumeProgram::PerLight)
         throw Error("pixel lists stand in for the stencil tests' volumes, one light per draw");
-    const gl::Program& program = programFor(plan.programTargets);
+    const gl::Program& program = programs_.get(plan.programTargets);
     program.use();
     uploadColorTable(d, colors);
     colorTable_.bind(gl::kUnitPixelListColors);

@@ -36,10 +36,8 @@ public:
                   const IndexColorsFor& colors) override;
 
 private:
-    const gl::Program& programFor(int targetCount);
     void uploadColorTable(const VolumeDraw& d, const IndexColorsFor& colors);
-    int maxDrawTargets_ = 1;
-    std::vector<gl::Program> programs_;  // per target count, compiled on first use
+    DrawTargetPrograms programs_;
     gl::Buffer quad_;
     gl::Texture colorTable_;
     const PixelListSource* source_ = nullptr;

@@ -25,9 +25,12 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
     }
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
-    maxDrawTargets_ = std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1);
-    programs_.resize(kMaxIndexTargets);
-    batchPrograms_.resize(kMaxIndexTargets);
+    programs_ = DrawTargetPrograms(info, [](int targetCount) {
+        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        return gl::Program::create("light_volume-" + std::to_string(targetCount),
+                                   buildShaderSource("light_volume.vert", defs),
+                                   buildShaderSource("light_volume.frag", defs), {{"aPosition", gl::kPosition}});
+    });
     if (isShaderVolumeTest(test)) {
         // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
         // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
@@ -48,44 +51,28 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
         batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
         maxVertexUniformVectors_ = info.maxVertexUniformVectors;
+        // By value: the geometry moves with its pass.
+        batchPrograms_ = DrawTargetPrograms(info, [test, batch = batch_, uniforms = maxVertexUniformVectors_](int targetCount) {
+            if (targetCount != 1 && targetCount != 2 && targetCount != 4)
+                throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
+                            std::to_string(targetCount));
+            ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
+                                  {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount))}};
+            if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+            return gl::Program::create(std::string(volumeTestName(test)) + "-volumes-" + std::to_string(targetCount),
+                                       buildShaderSource("light_volume_batch.vert", defs),
+                                       buildShaderSource("light_volume_sphere.frag", defs),
+                                       {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
+        });
     }
+}
+
+int LightVolumeGeometry::batchFor(int batch, int maxVertexUniformVectors, int targetCount) {
+    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (1 + targetCount)));
 }
 
 int LightVolumeGeometry::batchFor(int targetCount) const {
-    return std::max(1, std::min(batch_, (maxVertexUniformVectors_ - kReservedVertexUniforms) / (1 + targetCount)));
-}
-
-const gl::Program& LightVolumeGeometry::batchProgramFor(int targetCount) const {
-    if (targetCount != 1 && targetCount != 2 && targetCount != 4)
-        throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " + std::to_string(targetCount));
-    if (targetCount > maxDrawTargets_)
-        throw UnsupportedError("writing " + std::to_string(targetCount) +
-                               " index targets at once needs that many draw buffers");
-    gl::Program& p = batchPrograms_[size_t(targetCount - 1)];
-    if (!p) {
-        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
-                              {"LIDR_BATCH", std::to_string(batchFor(targetCount))}};
-        if (test_ == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-        p = gl::Program::create(std::string(volumeTestName(test_)) + "-volumes-" + std::to_string(targetCount),
-                                buildShaderSource("light_volume_batch.vert", defs),
-                                buildShaderSource("light_volume_sphere.frag", defs),
-                                {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
-    }
-    return p;
-}
-
-const gl::Program& LightVolumeGeometry::programFor(int targetCount) const {
-    if (targetCount < 1 || targetCount > maxDrawTargets_)
-        throw UnsupportedError("writing " + std::to_string(targetCount) +
-                               " index targets at once needs that many draw buffers");
-    gl::Program& p = programs_[size_t(targetCount - 1)];
-    if (!p) {
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        p = gl::Program::create("light_volume-" + std::to_string(targetCount),
-                                buildShaderSource("light_volume.vert", defs), buildShaderSource("light_volume.frag", defs),
-                                {{"aPosition", gl::kPosition}});
-    }
-    return p;
+    return batchFor(batch_, maxVertexUniformVectors_, targetCount);
 }
 
 int LightVolumeGeometry::detailFor(const VolumeLight& l, const CameraMatrices& camera) const {
@@ -166,7 +153,7 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& pl
     program_ = plan.program;
     targets_ = plan.programTargets;
     if (plan.program == VolumeProgram::PerLight) {
-        const gl::Program& program = programFor(plan.programTargets);
+        const gl::Program& program = programs_.get(plan.programTargets);
         program.use();
         program.set("uViewProj", camera_.viewProjection);
         // Per light: looked up once per draw, set through typed handles.
@@ -175,7 +162,7 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& pl
         clampUniform_ = program.uniform<float>("uClampToFar");
         return;
     }
-    const gl::Program& program = batchProgramFor(plan.programTargets);
+    const gl::Program& program = batchPrograms_.get(plan.programTargets);
     program.use();
     program.set("uViewProj", camera_.viewProjection);
     program.set("uView", camera_.view);

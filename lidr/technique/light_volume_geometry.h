@@ -13,12 +13,12 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/scene/camera.h"
+#include "lidr/technique/draw_target_programs.h"
 #include "lidr/technique/light_volume_mesh.h"
 #include "lidr/technique/volume_draw_plan.h"
 
 namespace lidr {
 
-constexpr int kMaxIndexTargets = 8;
 using IndexColors = std::array<glm::vec4, kMaxIndexTargets>;
 // The value a light's index writes to each target of a draw.
 using IndexColorsFor = std::function<IndexColors(uint32_t index)>;
@@ -86,24 +86,21 @@ public:
 
 private:
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
-    const gl::Program& programFor(int targetCount) const;
-    const gl::Program& batchProgramFor(int targetCount) const;
+    static int batchFor(int batch, int maxVertexUniformVectors, int targetCount);
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
     static constexpr int kDetailLevels = 3;
 
     VolumeTest test_ = VolumeTest::BackFace;
-    int maxDrawTargets_ = 1;
     LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
     GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
     int coarsest_ = kDetailLevels - 1;  // 0 with volumeDetail, else the finest only
     gl::Buffer vertices_, indices_;
-    // One per target count 1..kMaxIndexTargets, compiled on first use (most schemes write one target).
-    mutable std::vector<gl::Program> programs_;
+    DrawTargetPrograms programs_;  // the stencil tests' one-light program
     // Shader tests: batch_ copies of the batchLevel_ volume mesh, each vertex (x, y, z, slot).
     int batch_ = 1, batchLevel_ = 0, maxVertexUniformVectors_ = 128;
     GLsizei batchCopyIndices_ = 0;
     gl::Buffer batchVertices_, batchIndices_;
-    mutable std::vector<gl::Program> batchPrograms_;
+    DrawTargetPrograms batchPrograms_;  // the shader tests' batch program
     // The frame (begin()) and the current plan's program and per-step uniforms (one light, or a batch's arrays).
     CameraMatrices camera_;
     glm::ivec2 targetSize_{1};

@@ -41,7 +41,7 @@ size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ *
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail)
     : test_(test), depthClamp_(info.depthClamp), gles_(info.gles),
-      maxDrawTargets_(std::min(kMaxIndexTargets, info.drawBuffers ? std::max(1, info.maxDrawBuffers) : 1)),
+      maxDrawTargets_(maxDrawTargets(info)),
       volumes_(info, test, volumeDetail) {}
 
 void LightVolumePass::begin(const IndexTargets& targets, const CameraMatrices& camera, const gl::Texture* depth) {
