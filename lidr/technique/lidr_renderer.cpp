@@ -288,11 +288,14 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
     // packed with is packed again, at once, with the smallest budget that holds it (doc/auto.md).
     // The transparent lists have their own budget: a ray in front of a surface meets more lights than the
-    // surface does, and only the transparent layers read those lists.
-    for (;;) {
-        int need = 0, needTransparent = -1;
-        drawVolumes(cam, volumes, need, needTransparent);
-        if (!autoBudget) break;
+    // surface does, and only the transparent layers read those lists. The main pass's probe is read only after
+    // the forward passes are queued, so the GPU is not left idle while the CPU waits for it; a frame found over
+    // its budget then is packed and shaded again.
+    int needTransparent = -1;
+    drawVolumes(cam, volumes, needTransparent);
+    shade(cam, shading);
+    while (autoBudget) {
+        const int need = measuredNeed();
         decision.measuredBudget = need;
         decision.measuredTransparentBudget = std::max(needTransparent, 0);
         const int repack = auto_.observeNeed(need, narrowingAsked_);
@@ -302,6 +305,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         ++decision.repacks;  // both passes again: the main pass's stencil counts must be the last ones drawn
         if (repack) selectVariant(repack, bits);
         if (repackTransparent) selectTransparentVariant(repackTransparent, bits);
+        drawVolumes(cam, volumes, needTransparent);
+        shade(cam, shading);
     }
     if (transparentIndexTargets_ && stats_.transparentVolumeLights > 0)
         decision.transparentBudget = currentTransparent_->scheme->config().budget;
@@ -311,7 +316,16 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     decision.indexBits = current_->scheme->config().indexBits;
     if (requestedAutoBudget_ && !autoBudget) decision.budgetFallback = "fixed (no occlusion queries)";
     stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
+    targets_.resolve(timer_);
 
+    stats_.passes = timer_.collect();
+    stats_.timingLag = timer_.lag();
+    StateCache::current().bindFramebuffer(0);
+    checkGl("LidrRenderer::render");
+    return stats_;
+}
+
+void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading) {
     const bool multisampled = targets_.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
         TimedPass msaaDepthPrepassTime(timer_, "msaa-depth-prepass");
@@ -327,45 +341,52 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         TimedPass forwardTransparentTime(timer_, "forward-transparent");
         currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
     }
-    targets_.resolve(timer_);
-
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
-    StateCache::current().bindFramebuffer(0);
-    checkGl("LidrRenderer::render");
-    return stats_;
 }
 
-void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& need,
-                               int& needTransparent) {
+int LidrRenderer::measuredNeed() {
+    auto above = probe_.pixelsAbove();  // waits for the GPU: the forward passes are queued by now
+    if (OverlapProbe::smallestBudget(above) < 0) {
+        // Over the budget: how far over. The volume pass's counts are still in the stencil (the forward passes
+        // after a pre-pass clear colour only), so the probe asks again over the index targets.
+        PassDescription pass{indexTargets_->framebuffer().id(),
+                             glm::ivec4(0, 0, indexTargets_->width(), indexTargets_->height()), {}, {}};
+        StateCache::current().beginPass(pass);
+        probe_.issue(OverlapProbe::aboveBudget(current_->scheme->config().budget));
+        const auto more = probe_.pixelsAbove();
+        for (size_t i = 0; i < above.size(); ++i)
+            if (more[i] >= 0) above[i] = more[i];
+    }
+    pixelsAbove_ = above;
+    return OverlapProbe::smallestBudget(above);
+}
+
+void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent) {
     const bool measure = options_.packing.autoBudget();
-    need = 1;
     needTransparent = -1;
     pixelsAbove_.fill(0);
     // Steady frames ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may
     // narrow). Only an overflowing frame asks how far over, and a renderer's first frame asks everything at once.
-    auto measured = [&](const glm::ivec4* transparentArea) {
-        const AutoConfiguration& a = transparentArea ? autoTransparent_ : auto_;
-        const int budget = (transparentArea ? currentTransparent_ : current_)->scheme->config().budget;
+    // The thresholds this frame asks about. The transparent pass's are read at once (the main pass's counts
+    // replace its own in the shared stencil); the main pass's after the forward passes (measuredNeed()).
+    auto ask = [&](const AutoConfiguration& a, int budget, bool& narrowingAsked) {
+        narrowingAsked = a.asksNarrowing();
+        return !a.measured() ? OverlapProbe::kAll
+               : narrowingAsked ? OverlapProbe::aroundBudget(budget)
+                                : OverlapProbe::atBudget(budget);
+    };
+    auto measureTransparent = [&](const glm::ivec4* area) {
         auto probe = [&](unsigned which) {
-            if (transparentArea)
-                probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, transparentArea);
-            else
-                probe_.issue(which);
+            probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, area);
             return probe_.pixelsAbove();
         };
-        const bool narrowing = a.asksNarrowing();
-        (transparentArea ? narrowingAskedTransparent_ : narrowingAsked_) = narrowing;
-        auto above = probe(!a.measured() ? OverlapProbe::kAll
-                           : narrowing   ? OverlapProbe::aroundBudget(budget)
-                                         : OverlapProbe::atBudget(budget));
+        const int budget = currentTransparent_->scheme->config().budget;
+        auto above = probe(ask(autoTransparent_, budget, narrowingAskedTransparent_));
         if (OverlapProbe::smallestBudget(above) < 0) {
             const auto more = probe(OverlapProbe::aboveBudget(budget));
             for (size_t i = 0; i < above.size(); ++i)
                 if (more[i] >= 0) above[i] = more[i];
         }
-        if (!transparentArea) pixelsAbove_ = above;
-        (transparentArea ? needTransparent : need) = OverlapProbe::smallestBudget(above);
+        needTransparent = OverlapProbe::smallestBudget(above);
     };
     if (transparentIndexTargets_) {
         // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
@@ -387,7 +408,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
             currentTransparent_->scheme->encode(transparentVolumePass_, reaching);
             transparentVolumePass_.setScissor(nullptr);
             transparentVolumePass_.end();
-            if (measure) measured(&box);
+            if (measure) measureTransparent(&box);
         } else {
             transparentVolumePass_.end();
         }
@@ -397,7 +418,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumePass_.end();
-    if (measure) measured(nullptr);
+    if (measure) probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_));
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {

@@ -127,7 +127,13 @@ private:
     // The volume passes (transparent lists first, then the main ones) with the current variants; with an
     // automatic budget, the overlap each one measured: the smallest budget that drops nothing (0: none does).
     // needTransparent: -1 where the transparent lists were not drawn (none separate, or none in view).
-    void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& need, int& needTransparent);
+    // The volume passes; with an automatic budget the transparent pass's need is measured and the main pass's
+    // probe issued (read by measuredNeed()).
+    void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent);
+    // The forward passes (opaque, transparent layers) from the current index lists.
+    void shade(const CameraMatrices& cam, const ShadingParameters& shading);
+    // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
+    int measuredNeed();
 
     LidrOptions options_;  // as asked, with the context's fallbacks (withContextFallbacks)
     bool requestedAutoBudget_ = false;
