@@ -250,7 +250,7 @@ std::vector<SweepGroup> fullPreset() {
     room.schemes = schemesWithAuto();
     room.budgets = budgets;
     room.indexBits = {8, 16};
-    room.volumeTests = {"backface", "exact", "frontface"};
+    room.volumeTests = {"sphere", "backface", "exact", "frontface"};  // sphere: the default
     room.msaa = {0};
     room.perSample = {false};
     // Opaque first: forward-multipass draws no transparent meshes, so the like-for-like comparison of every
@@ -270,7 +270,8 @@ std::vector<SweepGroup> fullPreset() {
     variants.tiledDepthBounds = {true};
     variants.budgets = {4};
     variants.indexBits = {8};
-    variants.volumeTests = {"backface", "frontface"};  // back-face needs per-sample lists under MSAA
+    variants.volumeTests = {"backface", "frontface"};  // back-face needs per-sample lists under MSAA; sphere reads
+                                                        // single-sample depth (refused with MSAA)
     // 320x240: brute force with 4x MSAA costs seconds a frame at this size on llvmpipe, shaded per sample
     // four times that; at 1024x768 the two references alone would take minutes.
     variants.resolutions = {{320, 240}};
@@ -287,7 +288,7 @@ std::vector<SweepGroup> fullPreset() {
     overlap.schemes = schemesWithAuto();
     overlap.budgets = budgets;
     overlap.indexBits = {4, 8};  // 4-bit holds 15 lights: overlap-1 only (16-bit: the many-light scenes)
-    overlap.volumeTests = {"backface"};
+    overlap.volumeTests = {"sphere", "backface"};
     overlap.msaa = {0};
     overlap.perSample = {false};
     overlap.transparency = {true};
