@@ -44,15 +44,11 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                                    const ShadingParameters& shading) {
-    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (lights.size() > 65535)
         throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
     checkLightSpheres(lights, "forward-multipass");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    stats_ = FrameStats{};
-    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
-    stats_.timingMethod = timer_.method();
-    stats_.sceneLights = static_cast<int>(lights.size());
+    const FrameScope frame(stats_, timer_, lights.size());
     meshDraws_ = 0;
 
     TimedPass lightTableTime(timer_, "light-table");

@@ -28,14 +28,11 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
 
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
-    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));
-    stats_ = FrameStats{};
-    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
-    stats_.timingMethod = timer_.method();
-    stats_.sceneLights = stats_.drawnLights = static_cast<int>(lights.size());
+    const FrameScope frame(stats_, timer_, lights.size());
+    stats_.drawnLights = stats_.sceneLights;
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     TimedPass lightTableTime(timer_, "light-table");
     lightTable_.update(lights);

@@ -76,15 +76,11 @@ void TiledRenderer::buildProgram(int loopBound) {
 
 const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
-    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     if (lights.size() > 65535)
         throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
     checkLightSpheres(lights, "tiled");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    stats_ = FrameStats{};
-    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
-    stats_.timingMethod = timer_.method();
-    stats_.sceneLights = static_cast<int>(lights.size());
+    const FrameScope frame(stats_, timer_, lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
     TimedPass lightTableTime(timer_, "light-table");

@@ -8,6 +8,7 @@
 #include "lidr/gl/frame_timer.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
+#include "lidr/gl/saved_gl_state.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/scene/scene.h"
 
@@ -48,6 +49,22 @@ struct FrameStats {
     // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.
     int timingLag = 0;
     double frameMilliseconds() const;
+};
+
+// What every mode's render() opens with, as one scope: the caller's GL state saved (given back when the scope
+// ends: doc/embedding.md), the frame's stats started afresh with the timing method and the scene's light count,
+// and the frame's GL calls counted into them (GlCallCount writes them when the scope ends).
+class FrameScope {
+public:
+    FrameScope(FrameStats& stats, const FrameTimer& timer, size_t sceneLights) : counted_(stats.glCalls) {
+        stats = FrameStats{};
+        stats.timingMethod = timer.method();
+        stats.sceneLights = static_cast<int>(sceneLights);
+    }
+
+private:
+    SavedGlState callerState_;
+    GlCallCount counted_;
 };
 
 class Renderer {

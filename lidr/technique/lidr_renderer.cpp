@@ -215,17 +215,13 @@ std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lig
 
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
-    const SavedGlState callerState;  // the caller's GL state comes back on return (doc/embedding.md)
     const bool autoBits = options_.packing.autoIndexBits(), autoBudget = options_.packing.autoBudget();
     const PackingConfig& fixed = options_.packing;
     if (!autoBits && lights.size() > (1u << fixed.indexBits) - 1u)
         throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +
                     " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    stats_ = FrameStats{};
-    const GlCallCount counted(stats_.glCalls);  // this frame's GL calls, in FrameStats
-    stats_.timingMethod = timer_.method();
-    stats_.sceneLights = static_cast<int>(lights.size());
+    const FrameScope frame(stats_, timer_, lights.size());
 
     TimedPass lightTableTime(timer_, "light-table");
     // Lights that cannot touch a visible surface get no index: outside the view frustum, or touching no
