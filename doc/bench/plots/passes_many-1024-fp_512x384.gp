@@ -1,6 +1,6 @@
-set terminal pngcairo size 950,520 font 'sans,8' noenhanced
+set terminal pngcairo size 1400,520 font 'sans,8' noenhanced
 set output "passes_many-1024-fp_512x384.png"
-set title "per-pass breakdown: many-1024-fp 512x384"
+set title "per-pass breakdown: many-1024-fp 512x384\noff scale: forward-brute opaque 1282 ms"
 set style data histograms
 set style histogram rowstacked
 set style fill solid 0.85 border -1
@@ -12,24 +12,41 @@ set grid ytics lc rgb '#dddddd'
 set yrange [0:*]
 set bmargin 12
 $P << EOD
-"forward-brute opaque" 0.042063 4.64086 1369.99 0 0 0 0 0 0 0
-"tiled min/max opaque" 0.032709 5.15402 0 0.649383 0.219195 31.6437 0 0 0 0
-"tiled no-min/max opaque" 0.035593 4.61249 0 0 0.237542 43.252 0 0 0 0
-"forward-multipass opaque" 0.032308 4.63525 0 0 0 0 8.37545 27.3074 0 0
-"lidr bitshift b1 16-bit backface opaque" 0.306104 4.42076 0 0 0 0 0 0 35.732 9.33674
-"lidr bitshift b2 16-bit backface opaque" 0.313905 4.43016 0 0 0 0 0 0 39.3591 10.5652
-"lidr bitshift b4 16-bit backface opaque" 0.292604 4.47684 0 0 0 0 0 0 44.2468 19.3633
-"lidr bitshift b8 16-bit backface opaque" 0.305463 4.55331 0 0 0 0 0 0 39.3982 14.8693
-"lidr bitshift b16 16-bit backface opaque" 0.316349 4.70647 0 0 0 0 0 0 71.565 19.5019
-"lidr max-stencil b1 16-bit backface opaque" 0.304171 4.60906 0 0 0 0 0 0 35.9621 9.18782
-"lidr max-stencil b2 16-bit backface opaque" 0.322779 4.5508 0 0 0 0 0 0 63.2156 10.4918
-"lidr max-stencil b4 16-bit backface opaque" 0.341897 4.6315 0 0 0 0 0 0 115.739 13.4119
-"lidr max-stencil b8 16-bit backface opaque" 0.316039 4.51921 0 0 0 0 0 0 214.209 14.9498
-"lidr max-stencil b16 16-bit backface opaque" 0.322188 4.74805 0 0 0 0 0 0 460.794 18.8884
-"lidr cpu-sorted b1 16-bit backface opaque" 0.27029 4.52407 0 0 0 0 0 0 15.6075 11.2246
-"lidr cpu-sorted b2 16-bit backface opaque" 0.300306 4.56226 0 0 0 0 0 0 16.3322 12.9905
-"lidr cpu-sorted b4 16-bit backface opaque" 0.294958 5.80231 0 0 0 0 0 0 27.1577 19.3188
-"lidr cpu-sorted b8 16-bit backface opaque" 0.34401 6.013 0 0 0 0 0 0 24.0365 26.5193
-"lidr cpu-sorted b16 16-bit backface opaque" 0.344821 4.62927 0 0 0 0 0 0 23.4721 42.106
+"forward-multipass opaque" 0.040577 5.96455 7.23057 24.6986 0 0 0 0 0
+"tiled min/max opaque" 0.034576 6.91203 0 0 0.746728 0.280864 33.537 0 0
+"tiled no-min/max opaque" 0.049033 5.51362 0 0 0 0.262318 44.7767 0 0
+"auto opaque" 0.259463 5.70395 0 0 0 0 0 5.58267 11.5802
+"lidr bitshift b1 16-bit sphere opaque" 0.80015 5.94389 0 0 0 0 0 4.65347 11.25
+"lidr bitshift b1 16-bit backface opaque" 0.679671 6.08964 0 0 0 0 0 20.9522 12.113
+"lidr bitshift b2 16-bit sphere opaque" 0.592947 6.23754 0 0 0 0 0 4.76163 11.266
+"lidr bitshift b2 16-bit backface opaque" 0.606252 6.16498 0 0 0 0 0 19.507 12.0929
+"lidr bitshift b4 16-bit sphere opaque" 0.717784 6.13337 0 0 0 0 0 5.56272 11.5918
+"lidr bitshift b4 16-bit backface opaque" 0.682075 5.90563 0 0 0 0 0 20.7819 13.0744
+"lidr bitshift b8 16-bit sphere opaque" 0.657199 6.18905 0 0 0 0 0 6.7361 12.151
+"lidr bitshift b8 16-bit backface opaque" 0.653561 6.04692 0 0 0 0 0 25.122 14.0914
+"lidr bitshift b16 16-bit sphere opaque" 0.643963 5.98952 0 0 0 0 0 14.0017 13.3696
+"lidr bitshift b16 16-bit backface opaque" 0.652369 5.88576 0 0 0 0 0 41.4806 15.4578
+"lidr max-stencil b1 16-bit sphere opaque" 0.715849 6.22898 0 0 0 0 0 4.69046 12.0399
+"lidr max-stencil b1 16-bit backface opaque" 0.543692 6.40957 0 0 0 0 0 19.7745 12.2936
+"lidr max-stencil b2 16-bit sphere opaque" 0.601342 6.12695 0 0 0 0 0 8.50288 11.4851
+"lidr max-stencil b2 16-bit backface opaque" 0.649724 5.78105 0 0 0 0 0 35.1615 12.7855
+"lidr max-stencil b4 16-bit sphere opaque" 0.622161 5.84097 0 0 0 0 0 16.6884 11.8318
+"lidr max-stencil b4 16-bit backface opaque" 0.618395 5.9049 0 0 0 0 0 65.9085 13.5373
+"lidr max-stencil b8 16-bit sphere opaque" 0.601753 5.89203 0 0 0 0 0 34.4682 12.0938
+"lidr max-stencil b8 16-bit backface opaque" 0.683298 5.93022 0 0 0 0 0 130.534 15.7497
+"lidr max-stencil b16 16-bit sphere opaque" 0.614136 6.18545 0 0 0 0 0 62.2118 12.5578
+"lidr max-stencil b16 16-bit backface opaque" 0.552459 6.50912 0 0 0 0 0 239.693 19.4661
+"lidr cpu-sorted b1 16-bit sphere opaque" 0.603356 5.82711 0 0 0 0 0 6.23202 11.7494
+"lidr cpu-sorted b1 16-bit backface opaque" 0.541589 5.74071 0 0 0 0 0 9.44128 12.5262
+"lidr cpu-sorted b2 16-bit sphere opaque" 0.571776 5.8714 0 0 0 0 0 7.14856 12.6066
+"lidr cpu-sorted b2 16-bit backface opaque" 0.578179 5.64294 0 0 0 0 0 9.75013 12.8757
+"lidr cpu-sorted b4 16-bit sphere opaque" 0.557519 5.80039 0 0 0 0 0 8.14131 15.2936
+"lidr cpu-sorted b4 16-bit backface opaque" 0.705571 5.9386 0 0 0 0 0 11.0851 14.5165
+"lidr cpu-sorted b8 16-bit sphere opaque" 0.598076 5.87493 0 0 0 0 0 8.15513 18.0721
+"lidr cpu-sorted b8 16-bit backface opaque" 0.629306 5.61923 0 0 0 0 0 11.897 18.8229
+"lidr cpu-sorted b16 16-bit sphere opaque" 0.658451 6.16398 0 0 0 0 0 8.9778 24.0748
+"lidr cpu-sorted b16 16-bit backface opaque" 0.644244 5.88692 0 0 0 0 0 14.1524 25.3915
+"lidr auto sphere opaque" 0.279902 5.94282 0 0 0 0 0 5.604 11.2368
+"lidr auto backface opaque" 0.241529 5.72894 0 0 0 0 0 42.1977 15.3843
 EOD
-plot $P using 2:xtic(1) title "light-table", $P using 3 title "depth-prepass", $P using 4 title "brute-force", $P using 5 title "tile-depth-reduce", $P using 6 title "light-grid", $P using 7 title "tiled-forward", $P using 8 title "ambient", $P using 9 title "light-passes", $P using 10 title "light-volumes", $P using 11 title "forward"
+plot $P using 2:xtic(1) title "light-table", $P using 3 title "depth-prepass", $P using 4 title "ambient", $P using 5 title "light-passes", $P using 6 title "tile-depth-reduce", $P using 7 title "light-grid", $P using 8 title "tiled-forward", $P using 9 title "light-volumes", $P using 10 title "forward"

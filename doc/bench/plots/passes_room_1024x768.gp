@@ -1,6 +1,6 @@
 set terminal pngcairo size 1400,520 font 'sans,8' noenhanced
 set output "passes_room_1024x768.png"
-set title "per-pass breakdown: room 1024x768\noff scale: forward-brute opaque 1292 ms"
+set title "per-pass breakdown: room 1024x768\noff scale: forward-brute opaque 1375 ms"
 set style data histograms
 set style histogram rowstacked
 set style fill solid 0.85 border -1
@@ -12,53 +12,73 @@ set grid ytics lc rgb '#dddddd'
 set yrange [0:*]
 set bmargin 12
 $P << EOD
-"tiled min/max opaque" 0.02695 9.25448 1.75225 0.227818 47.5715 0 0 0 0
-"tiled no-min/max opaque" 0.026689 7.69409 0 0.314136 71.1863 0 0 0 0
-"forward-multipass opaque" 0.029053 7.71717 0 0 0 10.6778 36.9283 0 0
-"lidr bitshift b1 8-bit backface opaque" 0.040219 9.49459 0 0 0 0 0 26.3183 24.6724
-"lidr bitshift b1 8-bit exact opaque" 0.041401 9.51654 0 0 0 0 0 47.0076 24.7106
-"lidr bitshift b1 8-bit frontface opaque" 0.042093 9.6502 0 0 0 0 0 24.7747 24.6929
-"lidr bitshift b2 8-bit backface opaque" 0.04059 8.59559 0 0 0 0 0 26.0212 29.6896
-"lidr bitshift b2 8-bit exact opaque" 0.0405 7.68472 0 0 0 0 0 41.4212 26.8811
-"lidr bitshift b2 8-bit frontface opaque" 0.039749 7.56899 0 0 0 0 0 20.9683 26.1507
-"lidr bitshift b4 8-bit backface opaque" 0.041241 7.72619 0 0 0 0 0 22.9078 36.4059
-"lidr bitshift b4 8-bit exact opaque" 0.04093 7.54047 0 0 0 0 0 40.642 36.8548
-"lidr bitshift b4 8-bit frontface opaque" 0.037285 7.56431 0 0 0 0 0 21.9758 36.3661
-"lidr bitshift b8 8-bit backface opaque" 0.039769 7.50639 0 0 0 0 0 26.4261 36.4359
-"lidr bitshift b8 8-bit exact opaque" 0.043164 7.5882 0 0 0 0 0 44.633 31.6956
-"lidr bitshift b8 8-bit frontface opaque" 0.04034 7.68391 0 0 0 0 0 27.7986 45.7612
-"lidr bitshift b16 8-bit backface opaque" 0.038938 7.52893 0 0 0 0 0 49.4417 42.2992
-"lidr bitshift b16 8-bit exact opaque" 0.043074 7.57713 0 0 0 0 0 83.8349 37.3959
-"lidr bitshift b16 8-bit frontface opaque" 0.040991 7.53627 0 0 0 0 0 47.1938 52.8989
-"lidr max-stencil b1 8-bit backface opaque" 0.04025 7.51969 0 0 0 0 0 21.9486 22.1043
-"lidr max-stencil b1 8-bit exact opaque" 0.040039 7.62427 0 0 0 0 0 40.1743 22.7029
-"lidr max-stencil b1 8-bit frontface opaque" 0.039378 7.58147 0 0 0 0 0 20.3052 22.1798
-"lidr max-stencil b2 8-bit backface opaque" 0.040981 7.63887 0 0 0 0 0 22.4539 26.149
-"lidr max-stencil b2 8-bit exact opaque" 0.040761 7.59689 0 0 0 0 0 40.7733 26.6711
-"lidr max-stencil b2 8-bit frontface opaque" 0.042914 7.561 0 0 0 0 0 20.7739 26.0957
-"lidr max-stencil b4 8-bit backface opaque" 0.041962 7.5326 0 0 0 0 0 46.9021 35.0845
-"lidr max-stencil b4 8-bit exact opaque" 0.043544 7.5155 0 0 0 0 0 73.9578 35.239
-"lidr max-stencil b4 8-bit frontface opaque" 0.04039 7.80544 0 0 0 0 0 41.3724 35.0751
-"lidr max-stencil b8 8-bit backface opaque" 0.043054 9.24534 0 0 0 0 0 93.2789 39.6695
-"lidr max-stencil b8 8-bit exact opaque" 0.044596 9.32238 0 0 0 0 0 164.595 34.5844
-"lidr max-stencil b8 8-bit frontface opaque" 0.042363 8.00741 0 0 0 0 0 76.2589 47.5108
-"lidr max-stencil b16 8-bit backface opaque" 0.042494 7.53612 0 0 0 0 0 158.869 43.1881
-"lidr max-stencil b16 8-bit exact opaque" 0.045577 9.31189 0 0 0 0 0 284.547 38.283
-"lidr max-stencil b16 8-bit frontface opaque" 0.043704 9.34312 0 0 0 0 0 169.935 57.0681
-"lidr cpu-sorted b1 8-bit backface opaque" 0.041982 9.38795 0 0 0 0 0 13.8827 32.263
-"lidr cpu-sorted b1 8-bit exact opaque" 0.043905 9.50393 0 0 0 0 0 47.4455 32.4035
-"lidr cpu-sorted b1 8-bit frontface opaque" 0.044947 9.39778 0 0 0 0 0 12.9167 32.6511
-"lidr cpu-sorted b2 8-bit backface opaque" 0.046639 7.64341 0 0 0 0 0 10.3919 35.5767
-"lidr cpu-sorted b2 8-bit exact opaque" 0.045638 7.66083 0 0 0 0 0 40.3363 36.0983
-"lidr cpu-sorted b2 8-bit frontface opaque" 0.045767 7.67949 0 0 0 0 0 9.93892 35.7332
-"lidr cpu-sorted b4 8-bit backface opaque" 0.044887 7.83231 0 0 0 0 0 10.9033 47.4121
-"lidr cpu-sorted b4 8-bit exact opaque" 0.04717 7.68467 0 0 0 0 0 41.493 47.8028
-"lidr cpu-sorted b4 8-bit frontface opaque" 0.046158 7.7641 0 0 0 0 0 10.3414 47.2547
-"lidr cpu-sorted b8 8-bit backface opaque" 0.048081 7.76407 0 0 0 0 0 12.7374 73.7654
-"lidr cpu-sorted b8 8-bit exact opaque" 0.047811 7.71356 0 0 0 0 0 41.9412 74.2328
-"lidr cpu-sorted b8 8-bit frontface opaque" 0.046799 7.63744 0 0 0 0 0 11.9999 73.5744
-"lidr cpu-sorted b16 8-bit backface opaque" 0.049013 7.6986 0 0 0 0 0 14.6674 133.7
-"lidr cpu-sorted b16 8-bit exact opaque" 0.047931 7.60741 0 0 0 0 0 43.3682 133.538
-"lidr cpu-sorted b16 8-bit frontface opaque" 0.048872 7.76794 0 0 0 0 0 14.5327 134.231
+"forward-multipass opaque" 0.037461 10.6578 15.2547 44.5555 0 0 0 0 0
+"tiled min/max opaque" 0.04183 12.0659 0 0 2.39372 0.251227 49.9719 0 0
+"tiled no-min/max opaque" 0.053692 9.41838 0 0 0 0.303757 82.6924 0 0
+"auto opaque" 0.116331 9.78233 0 0 0 0 0 24.1948 32.2905
+"lidr bitshift b1 8-bit sphere opaque" 0.128474 12.3112 0 0 0 0 0 22.8666 31.8687
+"lidr bitshift b1 8-bit backface opaque" 0.088036 10.1605 0 0 0 0 0 27.5726 37.1998
+"lidr bitshift b1 8-bit exact opaque" 0.111242 12.044 0 0 0 0 0 49.2895 31.3361
+"lidr bitshift b1 8-bit frontface opaque" 0.118155 11.4763 0 0 0 0 0 24.2187 36.1351
+"lidr bitshift b2 8-bit sphere opaque" 0.105821 12.5919 0 0 0 0 0 24.5565 32.1812
+"lidr bitshift b2 8-bit backface opaque" 0.074542 10.5323 0 0 0 0 0 27.917 36.2682
+"lidr bitshift b2 8-bit exact opaque" 0.098126 12.2531 0 0 0 0 0 50.5515 32.4219
+"lidr bitshift b2 8-bit frontface opaque" 0.076075 10.3324 0 0 0 0 0 27.3404 39.1879
+"lidr bitshift b4 8-bit sphere opaque" 0.14748 14.7909 0 0 0 0 0 25.0384 33.3724
+"lidr bitshift b4 8-bit backface opaque" 0.117113 11.4729 0 0 0 0 0 29.2495 37.5426
+"lidr bitshift b4 8-bit exact opaque" 0.13699 12.4663 0 0 0 0 0 51.2962 33.4327
+"lidr bitshift b4 8-bit frontface opaque" 0.098797 12.6304 0 0 0 0 0 28.2918 43.4484
+"lidr bitshift b8 8-bit sphere opaque" 0.217192 11.9805 0 0 0 0 0 26.3515 33.2245
+"lidr bitshift b8 8-bit backface opaque" 0.153341 12.086 0 0 0 0 0 34.4907 43.7879
+"lidr bitshift b8 8-bit exact opaque" 0.125809 12.3172 0 0 0 0 0 53.1732 35.4374
+"lidr bitshift b8 8-bit frontface opaque" 0.15258 15.5273 0 0 0 0 0 33.9377 48.3196
+"lidr bitshift b16 8-bit sphere opaque" 0.135197 16.1858 0 0 0 0 0 61.0187 40.1278
+"lidr bitshift b16 8-bit backface opaque" 0.161336 11.0927 0 0 0 0 0 55.3247 44.4802
+"lidr bitshift b16 8-bit exact opaque" 0.088468 10.2554 0 0 0 0 0 124.53 38.9682
+"lidr bitshift b16 8-bit frontface opaque" 0.150566 12.5119 0 0 0 0 0 58.409 56.8445
+"lidr max-stencil b1 8-bit sphere opaque" 0.138823 10.5515 0 0 0 0 0 21.9804 31.3471
+"lidr max-stencil b1 8-bit backface opaque" 0.167959 12.5422 0 0 0 0 0 27.8702 37.9042
+"lidr max-stencil b1 8-bit exact opaque" 0.118646 15.2803 0 0 0 0 0 53.1368 34.6878
+"lidr max-stencil b1 8-bit frontface opaque" 0.136339 12.3039 0 0 0 0 0 24.5424 36.8902
+"lidr max-stencil b2 8-bit sphere opaque" 0.117042 12.3616 0 0 0 0 0 22.3499 34.5873
+"lidr max-stencil b2 8-bit backface opaque" 0.164332 12.5406 0 0 0 0 0 28.9069 36.6917
+"lidr max-stencil b2 8-bit exact opaque" 0.190723 12.0413 0 0 0 0 0 49.8551 34.8005
+"lidr max-stencil b2 8-bit frontface opaque" 0.119186 9.94319 0 0 0 0 0 24.1904 43.4113
+"lidr max-stencil b4 8-bit sphere opaque" 0.114187 16.4533 0 0 0 0 0 46.4569 36.8532
+"lidr max-stencil b4 8-bit backface opaque" 0.157479 13.4387 0 0 0 0 0 55.2992 43.8219
+"lidr max-stencil b4 8-bit exact opaque" 0.141359 16.1197 0 0 0 0 0 90.4565 35.3757
+"lidr max-stencil b4 8-bit frontface opaque" 0.151077 12.2222 0 0 0 0 0 50.7972 45.8798
+"lidr max-stencil b8 8-bit sphere opaque" 0.086624 11.4415 0 0 0 0 0 83.5374 36.3085
+"lidr max-stencil b8 8-bit backface opaque" 0.144394 10.9504 0 0 0 0 0 91.9466 40.9916
+"lidr max-stencil b8 8-bit exact opaque" 0.08982 10.114 0 0 0 0 0 162.564 34.4585
+"lidr max-stencil b8 8-bit frontface opaque" 0.090271 10.8292 0 0 0 0 0 90.111 54.9666
+"lidr max-stencil b16 8-bit sphere opaque" 0.118004 11.0665 0 0 0 0 0 166.123 36.9254
+"lidr max-stencil b16 8-bit backface opaque" 0.109969 15.409 0 0 0 0 0 171.414 43.8836
+"lidr max-stencil b16 8-bit exact opaque" 0.102856 10.1119 0 0 0 0 0 317.944 35.6061
+"lidr max-stencil b16 8-bit frontface opaque" 0.135518 9.70551 0 0 0 0 0 167.821 53.4761
+"lidr cpu-sorted b1 8-bit sphere opaque" 0.104128 9.86587 0 0 0 0 0 19.6367 33.0701
+"lidr cpu-sorted b1 8-bit backface opaque" 0.092054 10.3805 0 0 0 0 0 14.2234 31.3664
+"lidr cpu-sorted b1 8-bit exact opaque" 0.080853 9.78608 0 0 0 0 0 41.6395 32.1988
+"lidr cpu-sorted b1 8-bit frontface opaque" 0.088237 10.3165 0 0 0 0 0 11.7713 32.9181
+"lidr cpu-sorted b2 8-bit sphere opaque" 0.071747 9.85492 0 0 0 0 0 19.7249 33.4721
+"lidr cpu-sorted b2 8-bit backface opaque" 0.069621 9.56085 0 0 0 0 0 13.4505 34.88
+"lidr cpu-sorted b2 8-bit exact opaque" 0.072347 9.68751 0 0 0 0 0 41.7181 36.9312
+"lidr cpu-sorted b2 8-bit frontface opaque" 0.077738 9.51102 0 0 0 0 0 12.2164 37.0262
+"lidr cpu-sorted b4 8-bit sphere opaque" 0.078248 10.0394 0 0 0 0 0 21.2701 48.0057
+"lidr cpu-sorted b4 8-bit backface opaque" 0.090091 9.67722 0 0 0 0 0 13.4296 41.4798
+"lidr cpu-sorted b4 8-bit exact opaque" 0.084441 9.84625 0 0 0 0 0 49.3086 42.3187
+"lidr cpu-sorted b4 8-bit frontface opaque" 0.073409 9.83696 0 0 0 0 0 14.2276 42.3799
+"lidr cpu-sorted b8 8-bit sphere opaque" 0.081324 10.4128 0 0 0 0 0 26.8625 54.7427
+"lidr cpu-sorted b8 8-bit backface opaque" 0.132392 10.9051 0 0 0 0 0 17.6575 58.3107
+"lidr cpu-sorted b8 8-bit exact opaque" 0.123715 9.9084 0 0 0 0 0 44.6565 56.7636
+"lidr cpu-sorted b8 8-bit frontface opaque" 0.085282 9.98124 0 0 0 0 0 15.6253 57.7597
+"lidr cpu-sorted b16 8-bit sphere opaque" 0.076425 10.831 0 0 0 0 0 23.6622 90.6032
+"lidr cpu-sorted b16 8-bit backface opaque" 0.113084 10.3457 0 0 0 0 0 17.0969 92.4404
+"lidr cpu-sorted b16 8-bit exact opaque" 0.081105 10.196 0 0 0 0 0 44.7566 85.8428
+"lidr cpu-sorted b16 8-bit frontface opaque" 0.074491 10.7684 0 0 0 0 0 19.2662 92.8096
+"lidr auto sphere opaque" 0.160405 10.455 0 0 0 0 0 26.2301 33.2181
+"lidr auto backface opaque" 0.139354 10.3845 0 0 0 0 0 55.1585 42.9161
+"lidr auto exact opaque" 0.201232 11.9141 0 0 0 0 0 53.624 33.3672
+"lidr auto frontface opaque" 0.125699 9.93006 0 0 0 0 0 55.7688 58.6469
 EOD
-plot $P using 2:xtic(1) title "light-table", $P using 3 title "depth-prepass", $P using 4 title "tile-depth-reduce", $P using 5 title "light-grid", $P using 6 title "tiled-forward", $P using 7 title "ambient", $P using 8 title "light-passes", $P using 9 title "light-volumes", $P using 10 title "forward"
+plot $P using 2:xtic(1) title "light-table", $P using 3 title "depth-prepass", $P using 4 title "ambient", $P using 5 title "light-passes", $P using 6 title "tile-depth-reduce", $P using 7 title "light-grid", $P using 8 title "tiled-forward", $P using 9 title "light-volumes", $P using 10 title "forward"
