@@ -129,6 +129,13 @@ TEST_CASE("auto: the smallest budget no pixel exceeds, from the probe's counts",
     REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 0, -1}) == 8);   // the budget was right
     REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, 7, 3, -1}) == -1);  // over: ask the thresholds above
     REQUIRE(OverlapProbe::smallestBudget(A{-1, -1, -1, 9, 2}) == 0);
+    // An overflow's second question (the thresholds above the budget) completes the first.
+    A asked{-1, -1, 7, 3, -1};
+    OverlapProbe::merge(asked, A{-1, -1, -1, -1, 0});
+    REQUIRE(asked == A{-1, -1, 7, 3, 0});
+    REQUIRE(OverlapProbe::smallestBudget(asked) == 16);
+    OverlapProbe::merge(asked, A{-1, -1, -1, 1, 0});  // a later measurement of a threshold replaces it
+    REQUIRE(asked == A{-1, -1, 7, 1, 0});
 }
 
 namespace {

@@ -348,9 +348,7 @@ int LidrRenderer::measuredNeed() {
                              glm::ivec4(0, 0, indexTargets_->width(), indexTargets_->height()), {}, {}};
         StateCache::current().beginPass(pass);
         probe_.issue(OverlapProbe::aboveBudget(current_->scheme->config().budget));
-        const auto more = probe_.pixelsAbove();
-        for (size_t i = 0; i < above.size(); ++i)
-            if (more[i] >= 0) above[i] = more[i];
+        OverlapProbe::merge(above, probe_.pixelsAbove());
     }
     pixelsAbove_ = above;
     return OverlapProbe::smallestBudget(above);
@@ -377,11 +375,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
         };
         const int budget = currentTransparent_->scheme->config().budget;
         auto above = probe(ask(autoTransparent_, budget, narrowingAskedTransparent_));
-        if (OverlapProbe::smallestBudget(above) < 0) {
-            const auto more = probe(OverlapProbe::aboveBudget(budget));
-            for (size_t i = 0; i < above.size(); ++i)
-                if (more[i] >= 0) above[i] = more[i];
-        }
+        if (OverlapProbe::smallestBudget(above) < 0) OverlapProbe::merge(above, probe(OverlapProbe::aboveBudget(budget)));
         needTransparent = OverlapProbe::smallestBudget(above);
     };
     if (transparentIndexTargets_) {

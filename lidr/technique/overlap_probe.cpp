@@ -114,6 +114,11 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
     return above;
 }
 
+void OverlapProbe::merge(std::array<long, kThresholds>& into, const std::array<long, kThresholds>& more) {
+    for (size_t i = 0; i < into.size(); ++i)
+        if (more[i] >= 0) into[i] = more[i];
+}
+
 int OverlapProbe::smallestBudget(const std::array<long, kThresholds>& above) {
     for (int i = 0; i < kThresholds; ++i)
         if (above[size_t(i)] == 0) return kThreshold[size_t(i)];

@@ -42,6 +42,9 @@ public:
     // needs at most that budget); 0 when the largest, 16, is exceeded; -1 when every measured threshold is
     // exceeded but larger ones were not measured.
     static int smallestBudget(const std::array<long, kThresholds>& above);
+    // The thresholds a later measurement `more` took (not -1) written over `into`'s (an overflowing frame's
+    // second question, "how far over", completes its first).
+    static void merge(std::array<long, kThresholds>& into, const std::array<long, kThresholds>& more);
     long drawCalls() const { return drawCalls_; }
 
 private:
