@@ -24,6 +24,7 @@ public:
     DrawTargetPrograms(const GlInfo& info, Build build);
 
     const gl::Program& get(int targetCount) const;
+
 private:
     int maxDrawTargets_ = 1;
     Build build_;
