@@ -2,7 +2,9 @@
 // pixel, and the bit-shift scheme's CPU model. Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
 // 580.159.04 (H100, EGL; the volume-detail tests only on Mesa).
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <utility>
 #include <set>
 
 #include <catch2/catch.hpp>
@@ -13,6 +15,7 @@
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/technique/bitshift_scheme.h"
 #include "lidr/scene/default_scene.h"
+#include "lidr/scene/primitives.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
@@ -404,6 +407,93 @@ TEST_CASE("16-bit depth: other depth bits are refused; a driver that refuses D16
         LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
         renderer.render(scene.camera, scene.lights, {});
         REQUIRE(renderer.targets().depthBits() == 16);
+        REQUIRE(glGetError() == GL_NO_ERROR);
+    }
+}
+
+namespace {
+// Depth pixels (d < 1) whose value is not one of the 65,536 levels of a 16-bit buffer (read back from the 24-bit
+// one: a level k / 65535 comes back within 1/512 of a 16-bit step), and how many pixels have a surface.
+std::pair<long, long> offSixteenBitLevels(const ImageFloat& depth) {
+    long off = 0, surface = 0;
+    for (float d : depth.pixels) {
+        if (d >= 1.0f) continue;
+        ++surface;
+        const double steps = double(d) * 65535.0;
+        off += std::abs(steps - std::round(steps)) > 1.0 / 512.0;
+    }
+    return {off, surface};
+}
+}  // namespace
+
+TEST_CASE("emulated 16-bit depth: every depth the passes keep is a 16-bit level, the frame exact within the "
+          "budget; combinations it cannot emulate are refused before any work", "[lidr][depth16]") {
+    testContext();
+    Scene scene = floorScene();
+    scene.lights = {light(glm::vec3(0.0f, 1.0f, 0.0f), 3.0f), light(glm::vec3(2.0f, 0.5f, 1.0f), 2.5f),
+                    light(glm::vec3(-1.5f, 0.8f, -0.5f), 2.0f), light(glm::vec3(0.5f, 0.2f, 2.0f), 1.5f)};
+    Material glass;
+    glass.opacity = 0.5f;
+    scene.materials.push_back(glass);
+    addBox(scene, glm::vec3(-1.0f, 0.5f, -1.0f), glm::vec3(1.0f), int(scene.materials.size() - 1));
+    const int before = gl::liveGlObjects();
+    struct Refused {
+        const char* name;
+        void (*set)(LidrOptions&);
+        const char* message;
+    };
+    const Refused refused[] = {
+        {"8 bits", [](LidrOptions& o) { o.emulatedDepthBits = 8; }, "emulatedDepthBits is 0 (off) or 16, got 8"},
+        {"with the real 16-bit buffer", [](LidrOptions& o) { o.depthBits = 16; }, "keep depthBits 24"},
+        {"with MSAA", [](LidrOptions& o) { o.msaaSamples = 4; o.volumeTest = VolumeTest::SphereRay; },
+         "use it without MSAA"},
+        {"with a material shader", [](LidrOptions& o) { o.materialShader = "void main() {}"; },
+         "needs lidr's own forward shader"},
+    };
+    for (const Refused& r : refused) {
+        INFO(r.name);
+        LidrOptions o;
+        o.emulatedDepthBits = 16;
+        r.set(o);
+        REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains(r.message));
+        REQUIRE(gl::liveGlObjects() == before);
+    }
+    if (testGl().gles) {
+        // OpenGL ES 2.0 writes fragment depth only with EXT_frag_depth: refused, naming it.
+        LidrOptions o;
+        o.emulatedDepthBits = 16;
+        REQUIRE_THROWS_AS(LidrRenderer(testGl(), scene, o, scene.width, scene.height), UnsupportedError);
+        REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height),
+                            Catch::Contains("EXT_frag_depth"));
+        REQUIRE(gl::liveGlObjects() == before);
+        return;
+    }
+
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil, VolumeTest::BackFace);
+    DYNAMIC_SECTION(volumeTestName(test)) {
+        LidrOptions o;
+        o.volumeTest = test;
+        const RenderResult exact24 = renderAndEvaluate(scene, o);
+        o.emulatedDepthBits = 16;
+        const RenderResult r = renderAndEvaluate(scene, o);
+        requireExactWithinBudget(r.evaluation, std::string("emulated 16-bit depth, ") + volumeTestName(test));
+        REQUIRE(r.evaluation.lists.droppedLightPixels == 0);  // the automatic budget holds every list
+        REQUIRE(r.evaluation.error.maxAbsError <= 1);
+        // The lists really were built on 16-bit depth: the depth the frame kept lies on 16-bit levels, where the
+        // same frame at 24 bits mostly does not.
+        LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
+        renderer.render(scene.camera, scene.lights, {});
+        const auto [off16, surface16] = offSixteenBitLevels(renderer.targets().readDepth());
+        REQUIRE(surface16 > long(scene.width) * scene.height / 2);
+        REQUIRE(off16 == 0);
+        LidrOptions plain = o;
+        plain.emulatedDepthBits = 0;
+        LidrRenderer renderer24(testGl(), scene, plain, scene.width, scene.height);
+        renderer24.render(scene.camera, scene.lights, {});
+        const auto [off24, surface24] = offSixteenBitLevels(renderer24.targets().readDepth());
+        REQUIRE(surface24 == surface16);
+        REQUIRE(off24 > surface24 / 2);
+        REQUIRE(exact24.evaluation.lists.droppedLightPixels == 0);
         REQUIRE(glGetError() == GL_NO_ERROR);
     }
 }

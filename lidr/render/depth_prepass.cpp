@@ -13,9 +13,20 @@ const std::vector<std::pair<std::string, GLuint>>& geometryAttributes() {
     return attributes;
 }
 
-DepthPrepass::DepthPrepass()
-    : program_(gl::Program::create("depth-prepass", buildShaderSource("geometry.vert"),
-                                   buildShaderSource("depth_only.frag"), geometryAttributes())) {}
+void DepthEmulation::apply(ShaderDefines& defines, ShaderIncludes& includes) const {
+    if (bits == 0) return;
+    if (bits != 16) throw Error("emulated depth precision is 16 bits, not " + std::to_string(bits));
+    defines.push_back({"LIDR_DEPTH_STEPS", "65535.0"});
+    includes.push_back({"lidr_depth.glsl", "lidr_depth_emulated.glsl"});
+}
+
+DepthPrepass::DepthPrepass(DepthEmulation depth) {
+    ShaderDefines defines;
+    ShaderIncludes includes;
+    depth.apply(defines, includes);
+    program_ = gl::Program::create("depth-prepass", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("depth_only.frag", defines, includes), geometryAttributes());
+}
 
 void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) const {
     StateCache& cache = StateCache::current();

@@ -1,13 +1,23 @@
 #pragma once
 // Pass 1 of LIDR (and of the reference): opaque depth only. Clears depth and stencil of the bound target.
 #include "lidr/scene/camera.h"
+#include "lidr/gl/shader_source.h"
 #include "lidr/render/gpu_scene.h"
 
 namespace lidr {
 
+// Depth precision emulated inside the DEPTH24_STENCIL8 buffer (LidrOptions::emulatedDepthBits): every LIDR
+// fragment shader that writes or tests depth includes lidr_depth.glsl, and bits 16 substitutes
+// lidr_depth_emulated.glsl (the fragment depth rounded to 16-bit levels). 0: the buffer's own precision.
+struct DepthEmulation {
+    int bits = 0;
+    // The define and the include substitution for a fragment shader's build (nothing where bits is 0).
+    void apply(ShaderDefines& defines, ShaderIncludes& includes) const;
+};
+
 class DepthPrepass {
 public:
-    DepthPrepass();
+    explicit DepthPrepass(DepthEmulation depth = {});
     void run(const GpuScene& scene, const CameraMatrices& camera) const;
 
 private:

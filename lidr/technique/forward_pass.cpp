@@ -20,7 +20,7 @@ std::string perSampleVersion(std::string source) {
 }  // namespace
 
 ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
-                         const std::string& materialShader)
+                         const std::string& materialShader, DepthEmulation depth)
     : perSample_(perSample), maxLights_(scheme.config().budget) {
     ShaderDefines defines = table.defines();
     for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
@@ -29,7 +29,11 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
         defines.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
     }
     std::string vertex = buildShaderSource("geometry.vert");
-    const ShaderIncludes unpack = {{"lidr_unpack.glsl", scheme.unpackShaderFile()}};
+    ShaderIncludes unpack = {{"lidr_unpack.glsl", scheme.unpackShaderFile()}};
+    if (depth.bits != 0 && !materialShader.empty())
+        throw Error("emulated depth precision needs lidr's own forward shader: a material shader does not write the "
+                    "rounded depth the pre-pass wrote");
+    depth.apply(defines, unpack);
     std::string fragment = materialShader.empty()
                                ? buildShaderSource("lidr_forward.frag", defines, unpack)
                                : buildShaderSourceFromText("material shader", materialShader, defines, unpack);

@@ -3,6 +3,7 @@
 // targets (the scheme's unpack shader) and shades with those lights from the light table.
 #include "lidr/scene/camera.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/depth_prepass.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/light_table.h"
 #include "lidr/technique/light_volume_pass.h"
@@ -20,9 +21,10 @@ public:
     // materialShader: a fragment shader of the program's own (GLSL 1.20, `#include "lidr_lights.glsl"` for
     // the light list, see doc/embedding.md) instead of lidr_forward.frag; empty: lidr_forward.frag. It is
     // built with the scheme's unpack file and the light table's defines, like the built-in one; a compile
-    // or link error throws GlError with the log and the line of the material shader.
+    // or link error throws GlError with the log and the line of the material shader. depth: the depth precision
+    // lidr_forward.frag emulates (LidrOptions::emulatedDepthBits; not with a material shader).
     ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample = false,
-                const std::string& materialShader = {});
+                const std::string& materialShader = {}, DepthEmulation depth = {});
     // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
     // depth there, or LEQUAL with depth writes when that target had no pre-pass (so that, as with EQUAL,
     // the last fragment drawn at the nearest depth stays).

@@ -25,6 +25,22 @@ LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
 // Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
 // an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
 PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+    if (o.emulatedDepthBits != 0) {
+        if (o.emulatedDepthBits != 16)
+            throw Error("emulatedDepthBits is 0 (off) or 16, got " + std::to_string(o.emulatedDepthBits));
+        if (o.depthBits != 24)
+            throw Error("emulatedDepthBits rounds depth to 16 bits inside the 24-bit buffer: keep depthBits 24 "
+                        "(depthBits 16 is the real 16-bit buffer)");
+        if (o.msaaSamples > 0)
+            throw Error("emulatedDepthBits writes one depth per fragment, which would replace MSAA's per-sample "
+                        "depth: use it without MSAA");
+        if (!o.materialShader.empty())
+            throw Error("emulatedDepthBits needs lidr's own forward shader: a material shader does not write the "
+                        "rounded depth the pre-pass wrote");
+        if (info.gles)
+            throw UnsupportedError("emulatedDepthBits writes gl_FragDepth, which OpenGL ES 2.0 has only with "
+                                   "EXT_frag_depth: use a desktop GL context");
+    }
     checkDepthBits(info, o.depthBits);
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
@@ -112,7 +128,8 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       firstPacking_(checkedPacking(info, scene, options_)),
       scene_(scene),
       targets_(info, width, height, options_.msaaSamples, options_.depthBits),
-      volumePass_(info, options_.volumeTest, options_.volumeDetail),
+      depthPrepass_(DepthEmulation{options_.emulatedDepthBits}),
+      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}),
       timer_(info, options_.timingMethod) {
     requestedAutoBudget_ = requested.packing.autoBudget();
     const PackingConfig& first = firstPacking_;
@@ -124,7 +141,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames,
                                   options_.autoNarrowingInterval);
         autoTransparent_ = auto_;
-        probe_ = OverlapProbe(info);
+        probe_ = OverlapProbe(info, DepthEmulation{options_.emulatedDepthBits});
     } else {
         auto_ = autoTransparent_ = AutoConfiguration(16, options_.autoHoldFrames, options_.autoNarrowingInterval);
     }
@@ -134,11 +151,13 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest)) {
         // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
         const VolumeTest front = options_.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
-        transparentVolumePass_ = LightVolumePass(info, front, options_.volumeDetail);
+        transparentVolumePass_ =
+            LightVolumePass(info, front, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits});
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
-    volumePass_.setDepthBits(options_.depthBits);
-    transparentVolumePass_.setDepthBits(options_.depthBits);
+    const int depthPrecision = options_.emulatedDepthBits != 0 ? options_.emulatedDepthBits : options_.depthBits;
+    volumePass_.setDepthBits(depthPrecision);
+    transparentVolumePass_.setDepthBits(depthPrecision);
     if (needsDepthTexture) {
         depthTexture_ = gl::Texture::create2D(GL_DEPTH_COMPONENT24, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
         if (info.gles) {
@@ -163,7 +182,8 @@ LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
         c.budget = budget;
         c.indexBits = indexBits;
         v.scheme = createPackingScheme(c, info_);
-        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices, options_.materialShader);
+        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices,
+                                                  options_.materialShader, DepthEmulation{options_.emulatedDepthBits});
     }
     return v;
 }

@@ -51,6 +51,12 @@ struct LidrOptions {
     // STENCIL_INDEX8, where the driver accepts the pair: checkDepthBits in lidr/gl/render_targets.h; Mesa's
     // Gallium drivers refuse it). doc/stability.md says what 16 bits cost.
     int depthBits = 24;
+    // 16: measure what 16-bit depth does where the driver cannot hold it. The buffer stays DEPTH24_STENCIL8 and
+    // every LIDR pass that writes or tests depth rounds its fragment depth to the 16-bit levels (gl_FragDepth,
+    // lidr_depth_emulated.glsl), so each depth test and the sphere tests' depth copy see what a 16-bit buffer
+    // holds (round to nearest). A measurement aid, slower (no early depth test): needs depthBits 24, no MSAA,
+    // lidr's own forward shader and desktop GL. 0: off. doc/stability.md.
+    int emulatedDepthBits = 0;
     bool timing = false;  // per-pass times in FrameStats (Renderer::setTiming); off: no timer queries at all
     TimingMethod timingMethod = TimingMethod::Auto;
     // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)

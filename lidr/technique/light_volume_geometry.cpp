@@ -11,7 +11,7 @@
 
 namespace lidr {
 
-LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail)
+LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth)
     : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
     std::vector<glm::vec3> positions;
     std::vector<uint16_t> indices;
@@ -25,11 +25,14 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
     }
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
-    programs_ = DrawTargetPrograms(info, [](int targetCount) {
-        const ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        return gl::Program::create("light_volume-" + std::to_string(targetCount),
-                                   buildShaderSource("light_volume.vert", defs),
-                                   buildShaderSource("light_volume.frag", defs), {{"aPosition", gl::kPosition}});
+    programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
+        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        const std::string vertex = buildShaderSource("light_volume.vert", defs);
+        ShaderIncludes includes;
+        depth.apply(defs, includes);
+        return gl::Program::create("light_volume-" + std::to_string(targetCount), vertex,
+                                   buildShaderSource("light_volume.frag", defs, includes),
+                                   {{"aPosition", gl::kPosition}});
     });
     if (isShaderVolumeTest(test)) {
         // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
@@ -52,16 +55,19 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
         maxVertexUniformVectors_ = info.maxVertexUniformVectors;
         // By value: the geometry moves with its pass.
-        batchPrograms_ = DrawTargetPrograms(info, [test, batch = batch_, uniforms = maxVertexUniformVectors_](int targetCount) {
+        const int uniforms = maxVertexUniformVectors_;
+        batchPrograms_ = DrawTargetPrograms(info, [test, depth, batch = batch_, uniforms](int targetCount) {
             if (targetCount != 1 && targetCount != 2 && targetCount != 4)
                 throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
                             std::to_string(targetCount));
             ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
                                   {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount))}};
             if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+            const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
+            ShaderIncludes includes;
+            depth.apply(defs, includes);
             return gl::Program::create(std::string(volumeTestName(test)) + "-volumes-" + std::to_string(targetCount),
-                                       buildShaderSource("light_volume_batch.vert", defs),
-                                       buildShaderSource("light_volume_sphere.frag", defs),
+                                       vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
                                        {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
         });
     }

@@ -12,6 +12,7 @@
 
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
+#include "lidr/render/depth_prepass.h"
 #include "lidr/scene/camera.h"
 #include "lidr/technique/draw_target_programs.h"
 #include "lidr/technique/light_volume_mesh.h"
@@ -53,8 +54,8 @@ public:
 class LightVolumeGeometry final : public VolumeGeometry {
 public:
     LightVolumeGeometry() = default;
-    // volumeDetail: see LightVolumePass.
-    LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail);
+    // volumeDetail, depth: see LightVolumePass.
+    LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth = {});
 
     VolumeLightFacts factsFor(const VolumeLight& light, const CameraMatrices& camera) const override;
     void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;

@@ -49,8 +49,9 @@ public:
     LightVolumePass() = default;
     // volumeDetail: draw a light with the coarsest of the 20-, 80- and 320-face volumes whose extra reach past
     // the 320-face one stays under a pixel on screen (lidr-bench: about half the volume pass on many small
-    // lights); false: always the 320-face volume.
-    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false);
+    // lights); false: always the 320-face volume. depth: the depth precision the volume shaders emulate
+    // (LidrOptions::emulatedDepthBits).
+    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false, DepthEmulation depth = {});
 
     // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil. The shader tests
     // read `depth`, a single-sample depth texture of the pre-pass (not attached to the targets).
@@ -72,7 +73,8 @@ public:
     }
 
     VolumeTest test() const { return test_; }
-    // The pre-pass depth precision, 24 (default) or 16 bits: the shader tests' margin is in its steps.
+    // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
+    // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
     const CameraMatrices& camera() const { return camera_; }
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far

@@ -9,12 +9,16 @@ namespace lidr {
 
 constexpr std::array<int, OverlapProbe::kThresholds> OverlapProbe::kThreshold;
 
-OverlapProbe::OverlapProbe(const GlInfo&) {
+OverlapProbe::OverlapProbe(const GlInfo&, DepthEmulation depth) {
     // Occlusion queries are GL 1.5 core, inside lidr's GL 2.1 floor.
     program_ = gl::Program::create("overlap-probe", buildShaderSource("fullscreen.vert"),
                                    buildShaderSource("overlap_probe.frag"), {{"aPosition", gl::kPosition}});
+    ShaderDefines defines;
+    ShaderIncludes includes;
+    depth.apply(defines, includes);  // the meshes are depth-tested against the pre-pass
     meshProgram_ = gl::Program::create("overlap-probe-meshes", buildShaderSource("geometry.vert"),
-                                       buildShaderSource("overlap_probe.frag"), geometryAttributes());
+                                       buildShaderSource("overlap_probe.frag", defines, includes),
+                                       geometryAttributes());
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     for (gl::Object& q : queries_) q = gl::Object(gl::Kind::Query);

@@ -8,6 +8,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/depth_prepass.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/scene/camera.h"
 
@@ -19,7 +20,8 @@ public:
     static constexpr std::array<int, kThresholds> kThreshold = {1, 2, 4, 8, 16};  // the budgets lidr has
 
     OverlapProbe() = default;
-    explicit OverlapProbe(const GlInfo& info);
+    // depth: the depth precision the probe over transparent meshes emulates (LidrOptions::emulatedDepthBits).
+    explicit OverlapProbe(const GlInfo& info, DepthEmulation depth = {});
     explicit operator bool() const { return static_cast<bool>(program_); }
     static constexpr unsigned kAll = (1u << kThresholds) - 1u;
     // The thresholds that tell whether `budget` was too small or twice what was needed: budget / 2 and budget.

@@ -1,10 +1,12 @@
 #version 120
 // LIDR forward pass, the built-in material: lidr's Blinn-Phong (shading.glsl) summed over this pixel's light
 // list, read with the same API a user material shader has (lidr_lights.glsl; LidrOptions::materialShader).
+#include "lidr_depth.glsl"
 #include "shading.glsl"
 #include "lidr_lights.glsl"
 
 void main() {
+    lidrWriteDepth();
     LidrSurface s = lidrSurface();
     vec3 color = lidrAmbient(s);
     lidrBeginLights();

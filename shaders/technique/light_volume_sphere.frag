@@ -9,6 +9,7 @@
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
 // front of the eye is ray * z. A few operations a fragment, because on a CPU rasteriser this shader runs for
 // every fragment of every volume (discard and stencil writes force the late depth test there).
+#include "lidr_depth.glsl"
 uniform sampler2D uDepth;      // the pre-pass depth, not attached to the framebuffer drawn into
 uniform vec2 uInvTargetSize;
 uniform vec2 uDepthToDistance; // window depth d -> distance in front of the eye: x / (d + y) (perspective)
@@ -33,6 +34,7 @@ vec4 lidrExactBytes(vec4 c) {
 }
 
 void main() {
+    lidrWriteDepth();
     float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
     float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
