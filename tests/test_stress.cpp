@@ -321,46 +321,69 @@ TEST_CASE("stress: many lights with 16-bit indices", "[stress][slow]") {
 }
 
 TEST_CASE("stress: 16-bit depth at near/far ratios 160 .. 1e4", "[stress][slow][depth16]") {
-    // LidrOptions::depthBits = 16: a DEPTH_COMPONENT16 renderbuffer with a separate STENCIL_INDEX8 (no packed
-    // 16-bit depth-stencil format exists). Where the driver refuses that pair (Mesa's Gallium drivers, llvmpipe
-    // included: GL_FRAMEBUFFER_UNSUPPORTED) the renderer must say so, naming the status, and nothing is drawn.
-    // Where it holds it: the 16-bit depth step at distance z is z^2 / near * 2^-16 (1.2 cm at 20 m for the floor's
-    // near 0.5 m, far/near 160; 0.76 m at far/near 1e4). Decided bound, not yet measured on a driver that holds
-    // the pair (doc/stability.md): no invalid slot and fp16/fp24 unpacks equal fp32 at every ratio (packing does not
-    // read depth); exact within the budget at far/near 160, where the sphere test's 3-step margin (3.7 cm at 20 m)
-    // covers the coarser depth and the CPU truth rebuilds surfaces from the same 16-bit depth.
+    // Each frame at 24 bits, at 16 bits emulated inside the 24-bit buffer (LidrOptions::emulatedDepthBits: every
+    // pass's fragment depth rounded to the 16-bit levels, so each depth test and the depth copy see what a 16-bit
+    // buffer holds) and, where the driver holds it, in a real 16-bit buffer (LidrOptions::depthBits = 16: a
+    // DEPTH_COMPONENT16 renderbuffer with a separate STENCIL_INDEX8; no packed 16-bit depth-stencil format exists).
+    // Where the driver refuses that pair (Mesa's Gallium drivers, llvmpipe included: GL_FRAMEBUFFER_UNSUPPORTED)
+    // the renderer must say so, naming the status, and nothing is drawn.
+    // The 16-bit depth step at distance z is about z^2 / near * 2^-16: 1.9 cm at 25 m for far/near 160 (near 0.5 m),
+    // 1.2 m at far/near 1e4. What must hold, in the default sphere test and the stencil back-face test
+    // (doc/stability.md, measured): 24-bit rows and far/near up to 1e3 exact within the budget. At 1e4 at 16 bits
+    // the CPU truth, which rebuilds surfaces from the depth buffer, puts a surface up to half a step (0.6 m) off the
+    // geometry, inside lights that reach no mesh: the renderer culls those lights (they light nothing), and the
+    // truth counts them as drops; and the box's foot z-fights with the floor in the forward pass's EQUAL test.
+    // So at 1e4: no invalid slot, fp16/fp24 unpacks equal fp32, at most 3 % of the truth's pairs dropped,
+    // whole-image PSNR >= 50 dB, and the same frame without light culling drops nothing within the budget (every
+    // drop was a culled light).
+    bool held = true;
     try {
         checkDepthBits(testGl(), 16);
     } catch (const UnsupportedError& e) {
+        held = false;
         const std::string what = e.what();
-        WARN("16-bit depth not measured here: " << what);
+        static bool warned = false;  // the body runs once per generated case
+        if (!warned) WARN("no real 16-bit depth buffer here, 16-bit rows emulated: " << what);
+        warned = true;
         CHECK(what.find("DEPTH_COMPONENT16") != std::string::npos);
         CHECK(what.find("STENCIL_INDEX8") != std::string::npos);
         Scene scene = floorScene();
         LidrOptions o;
         o.depthBits = 16;
         CHECK_THROWS_AS(LidrRenderer(testGl(), scene, o, scene.width, scene.height), UnsupportedError);
-        return;
     }
     const float ratio = GENERATE(160.0f, 1e3f, 1e4f);
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::BackFace);
     const int seed = GENERATE(seeds());
-    const int bits = GENERATE(24, 16);
-    const std::string variant =
-        "far/near " + std::to_string(int(ratio)) + ", " + std::to_string(bits) + "-bit, seed " + std::to_string(seed);
+    enum Depth { Bits24, Bits16, Bits16Emulated };
+    const Depth depth = GENERATE(Bits24, Bits16, Bits16Emulated);
+    if (depth == Bits16 && !held) return;
+    if (depth == Bits16Emulated && testGl().gles) return;  // refused there (gl_FragDepth): test_lidr_core checks it
+    const char* depthName = depth == Bits24 ? "24-bit" : depth == Bits16 ? "16-bit" : "16-bit emulated";
+    const std::string variant = "far/near " + std::to_string(int(ratio)) + ", " + volumeTestName(test) + ", " +
+                                depthName + ", seed " + std::to_string(seed);
     DYNAMIC_SECTION(variant) {
         Rng rng(uint64_t(seed) * 1000 + 7);
         Scene scene = floorScene();
         scene.camera.nearPlane = scene.camera.farPlane / ratio;
         scene.lights = floorLights(rng, 24, 1.0f, 0.5f, 4.0f);
         LidrOptions o;
-        o.depthBits = bits;
+        o.volumeTest = test;
+        o.depthBits = depth == Bits16 ? 16 : 24;
+        o.emulatedDepthBits = depth == Bits16Emulated ? 16 : 0;
         const Row r = run("16-bit depth", variant, scene, o, testGl());
-        if (ratio <= 160.0f || bits == 24) {
+        if (ratio <= 1e3f || depth == Bits24) {
             requireExactWithinBudget(r);
         } else {
             CHECK(r.invalid == 0);
             CHECK(r.fp24Diff == 0);
             CHECK(r.fp16Diff == 0);
+            CHECK(r.dropsWithin * 100 <= r.truthPairs * 3);
+            CHECK(r.psnrWhole >= 50.0);
+            o.cullLights = false;
+            const Row unculled = run("16-bit depth", variant + ", no light culling", scene, o, testGl());
+            CHECK(unculled.invalid == 0);
+            CHECK(unculled.dropsWithin == 0);
         }
     }
 }
