@@ -93,6 +93,9 @@ void RendererChoice::addOptions(CLI::App& app) {
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
     app.add_flag("--volume-detail", volumeDetail,
                  "Coarser light volumes (20 / 80 faces) for lights small on screen (LidrOptions::volumeDetail)");
+    app.add_option("--depth-bits", depthBits,
+                   "LIDR depth precision: 24 (default), 16 (a 16-bit depth buffer with a separate stencil, where the "
+                   "driver holds it) or 16-emulated (16-bit levels inside the 24-bit buffer; doc/stability.md)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; --window: glfw or glfw-gles2)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
@@ -120,6 +123,12 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
                     " needs --budget 1, 2, 4, 8 or 16");
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
+    if (depthBits == "16")
+        o.depthBits = 16;
+    else if (depthBits == "16-emulated")
+        o.emulatedDepthBits = 16;
+    else if (!depthBits.empty() && depthBits != "24")
+        throw Error("--depth-bits must be 24, 16 or 16-emulated, got '" + depthBits + "'");
     o.volumeTest = volumeTest == "auto"
                        ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereRay : VolumeTest::Sphere)
                        : parseVolumeTest(volumeTest);
@@ -134,6 +143,8 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     if (!isRenderModeName(o.mode))
         throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
     o.lidr = lidrOptions(scene);
+    if (!depthBits.empty() && o.mode != "lidr")
+        throw Error("--depth-bits sets LIDR's depth precision; the " + o.mode + " mode keeps 24-bit depth (use --mode lidr)");
     o.msaaSamples = o.lidr.msaaSamples;
     o.transparency = o.lidr.transparency;
     o.timingMethod = o.lidr.timingMethod;

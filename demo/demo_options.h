@@ -36,6 +36,7 @@ struct RendererChoice {
     std::string transparency = "scene";
     bool msaaPerSample = false;
     bool volumeDetail = false;
+    std::string depthBits;  // empty: 24
     std::string context = "auto";
     bool fixedLightTable = false;
     std::string timer = "auto";
