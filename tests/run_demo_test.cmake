@@ -31,8 +31,8 @@ if(NOT dropped EQUAL 0 OR whole_psnr LESS 50 OR NOT auto_on STREQUAL "ON" OR aut
                       "budget ${auto_budget}, ${auto_bits}-bit")
 endif()
 
-# 16-bit depth on the room, emulated (llvmpipe has no D16 + S8): no light dropped; the image error is z-fighting
-# at silhouettes and contact lines (doc/stability.md: PSNR 48.8 dB at 1024x768). A bad value is refused.
+# 16-bit depth on the room, emulated (llvmpipe has no D16 + S8): no light dropped; the image error is depth ties
+# where the pillars stand in their plinths (doc/stability.md: 81.8 dB at 320x240). A bad value is refused.
 execute_process(COMMAND ${DEMO} --headless --depth-bits 16-emulated --width 320 --height 240 --frames 1
                 --out ${OUT}/depth16 RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
@@ -43,7 +43,7 @@ file(READ ${OUT}/depth16/summary.json summary)
 string(JSON dropped GET "${summary}" lights dropped_light_pixels)
 string(JSON invalid GET "${summary}" lights invalid_slots)
 string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
-if(NOT dropped EQUAL 0 OR NOT invalid EQUAL 0 OR whole_psnr LESS 40)
+if(NOT dropped EQUAL 0 OR NOT invalid EQUAL 0 OR whole_psnr LESS 60)
   message(FATAL_ERROR "--depth-bits 16-emulated: dropped ${dropped}, invalid ${invalid}, whole-image PSNR ${whole_psnr}")
 endif()
 execute_process(COMMAND ${DEMO} --headless --depth-bits 20 --out ${OUT}/depth20

@@ -332,10 +332,10 @@ TEST_CASE("stress: 16-bit depth at near/far ratios 160 .. 1e4", "[stress][slow][
     // (doc/stability.md, measured): 24-bit rows and far/near up to 1e3 exact within the budget. At 1e4 at 16 bits
     // the CPU truth, which rebuilds surfaces from the depth buffer, puts a surface up to half a step (0.6 m) off the
     // geometry, inside lights that reach no mesh: the renderer culls those lights (they light nothing), and the
-    // truth counts them as drops; and the box's foot z-fights with the floor in the forward pass's EQUAL test.
-    // So at 1e4: no invalid slot, fp16/fp24 unpacks equal fp32, at most 3 % of the truth's pairs dropped,
-    // whole-image PSNR >= 50 dB, and the same frame without light culling drops nothing within the budget (every
-    // drop was a culled light).
+    // truth counts them as drops. So at 1e4: no invalid slot, fp16/fp24 unpacks equal fp32, at most 3 % of the
+    // truth's pairs dropped, the pixels within the budget within one step of the reference, and the same frame
+    // without light culling drops nothing within the budget (every drop was a culled light). (Before closed meshes
+    // were drawn with their inner side culled, the box's bottom face tied with the floor in one 16-bit level.)
     bool held = true;
     try {
         checkDepthBits(testGl(), 16);
@@ -379,7 +379,7 @@ TEST_CASE("stress: 16-bit depth at near/far ratios 160 .. 1e4", "[stress][slow][
             CHECK(r.fp24Diff == 0);
             CHECK(r.fp16Diff == 0);
             CHECK(r.dropsWithin * 100 <= r.truthPairs * 3);
-            CHECK(r.psnrWhole >= 50.0);
+            CHECK(r.maxErrWithin <= 1);
             o.cullLights = false;
             const Row unculled = run("16-bit depth", variant + ", no light culling", scene, o, testGl());
             CHECK(unculled.invalid == 0);

@@ -74,7 +74,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
     setShadingUniforms(ambient_, cam, shading);
-    scene_.draw(ambient_, DrawFilter::Opaque, true);
+    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam);
     ambientTime.end();
 
     TimedPass lightPassesTime(timer_, "light-passes");
@@ -126,7 +126,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
             if (!screenCull) return sphereTouchesBox(l.position, radius, bmin, bmax);
             const glm::ivec4& box = meshRects[i];  // empty (z < x) when off screen
             return box.x <= box.z && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w && rect.y <= box.w;
-        }, true);
+        }, true, &cam);
         if (drawn == 0) continue;
         meshDraws_ += drawn;
         ++stats_.drawnLights;

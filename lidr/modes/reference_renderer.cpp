@@ -47,7 +47,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     beginOpaqueShading(targets_, shading, true, sampleShading_);
     useShadingProgram(program_, cam, shading, lightTable_);
     program_.set("uLightCount", float(lights.size()));
-    scene_.draw(program_, DrawFilter::Opaque, true);
+    scene_.draw(program_, DrawFilter::Opaque, true, &cam);
     bruteForceTime.end();
     if (transparency_ && scene_.hasTransparent()) {
         TimedPass bruteForceTransparentTime(timer_, "brute-force-transparent");

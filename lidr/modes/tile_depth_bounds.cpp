@@ -137,7 +137,7 @@ void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camer
     cache.apply(s);
     prepassProgram_.use();
     prepassProgram_.set("uViewProj", camera.viewProjection);
-    scene.draw(prepassProgram_, DrawFilter::Opaque, false);
+    scene.draw(prepassProgram_, DrawFilter::Opaque, false, &camera);
     cache.apply(RenderState{});
     checkGl("tile pre-Z");
 }

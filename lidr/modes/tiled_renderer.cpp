@@ -125,7 +125,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     beginOpaqueShading(targets_, shading, options_.preZ);
     useShadingProgram(program_, cam, shading, lightTable_);
     gridTextures_.bind(program_, false);
-    scene_.draw(program_, DrawFilter::Opaque, true);
+    scene_.draw(program_, DrawFilter::Opaque, true, &cam);
     tiledForwardTime.end();
 
     if (transparent) {

@@ -41,7 +41,7 @@ void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) cons
     cache.apply(s);
     program_.use();
     program_.set("uViewProj", camera.viewProjection);
-    scene.draw(program_, DrawFilter::Opaque, false);
+    scene.draw(program_, DrawFilter::Opaque, false, &camera);
     cache.apply(RenderState{});
     checkGl("depth pre-pass");
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 
 #include <stb_image.h>
@@ -46,6 +47,7 @@ GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
     b.indexCount = static_cast<GLsizei>(indices.size());
     b.triangles = mesh.triangleCount();
     b.material = mesh.material;
+    b.outer = closedMeshOuterWinding(mesh.positions, mesh.indices);  // the reversed order keeps each winding
     b.objectCentroid = sum / float(std::max<size_t>(vertices.size(), 1));
     b.objectMin = b.objectMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
     for (const glm::vec3& p : mesh.positions) b.objectMin = glm::min(b.objectMin, p), b.objectMax = glm::max(b.objectMax, p);
@@ -195,8 +197,36 @@ void GpuScene::unbindGeometry() const {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
 
-void GpuScene::draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const {
-    drawSelected(program, filter, [](size_t, const glm::vec3&, const glm::vec3&) { return true; }, setMaterials);
+void GpuScene::draw(const gl::Program& program, DrawFilter filter, bool setMaterials,
+                    const CameraMatrices* camera) const {
+    drawSelected(program, filter, [](size_t, const glm::vec3&, const glm::vec3&) { return true; }, setMaterials,
+                 camera);
+}
+
+namespace {
+// How far from the eye the near plane reaches (its farthest corner), with a margin: within that distance of a
+// mesh's bounds the near plane may cut the mesh open, or the eye be inside it, and its inner side be seen.
+float nearPlaneReach(const CameraMatrices& camera) {
+    float reach = 0.0f;
+    for (int c = 0; c < 4; ++c) {
+        const glm::vec4 p = camera.inverseViewProjection *
+                            glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, -1.0f, 1.0f);
+        reach = std::max(reach, glm::length(glm::vec3(p) / p.w - camera.eye));
+    }
+    return std::isfinite(reach) ? reach * 1.01f + camera.nearPlane : std::numeric_limits<float>::infinity();
+}
+}  // namespace
+
+GLenum GpuScene::culledSide(size_t batch, const CameraMatrices& camera) const {
+    return culledSide(batches_.at(batch), camera.eye, nearPlaneReach(camera));
+}
+
+GLenum GpuScene::culledSide(const Batch& b, const glm::vec3& eye, float reach) const {
+    if (!cullClosedMeshes_ || b.outer == OuterWinding::Open || materials_[b.material].opacity < 1.0f) return 0;
+    if (sphereTouchesBox(eye, reach, b.boundsMin, b.boundsMax)) return 0;
+    // A mirroring transform turns the winding over.
+    const bool mirrored = glm::determinant(glm::mat3(b.transform)) < 0.0f;
+    return (b.outer == OuterWinding::CounterClockwise) != mirrored ? GL_BACK : GL_FRONT;
 }
 
 void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const {
@@ -217,7 +247,13 @@ bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& bo
 
 int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
                            const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
-                           bool setMaterials) const {
+                           bool setMaterials, const CameraMatrices* camera) const {
+    StateCache& cache = StateCache::current();
+    // Culling goes through the cache on top of the pass's state, which is applied again after; a pass that culls
+    // itself, or state the cache does not know, is left alone.
+    const bool mayCull = camera && cullClosedMeshes_ && cache.valid() && !cache.known().cull;
+    const RenderState pass = mayCull ? cache.known() : RenderState{};
+    const float reach = mayCull ? nearPlaneReach(*camera) : 0.0f;
     int drawn = 0;
     for (size_t i = 0; i < batches_.size(); ++i) {
         const Batch& b = batches_[i];
@@ -225,9 +261,17 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
         if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
             continue;
         if (!select(i, b.boundsMin, b.boundsMax)) continue;
+        if (mayCull) {
+            RenderState s = pass;
+            const GLenum side = culledSide(b, camera->eye, reach);
+            s.cull = side != 0;
+            if (side) s.cullFace = side;
+            cache.apply(s);
+        }
         drawBatch(program, b, setMaterials);
         ++drawn;
     }
+    if (mayCull) cache.apply(pass);
     unbindGeometry();
     return drawn;
 }

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "lidr/gl/gl_resources.h"
+#include "lidr/scene/camera.h"
+#include "lidr/scene/closed_mesh.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
@@ -29,15 +31,24 @@ public:
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene, DrawOrder order = DrawOrder::AsGiven);
     // Draws meshes passing `filter`, setting the shading.glsl material uniforms on `program` when
-    // `setMaterials` (a depth-only pass does not need them). The program must be in use.
-    void draw(const gl::Program& program, DrawFilter filter, bool setMaterials) const;
+    // `setMaterials` (a depth-only pass does not need them). The program must be in use. With `camera`, opaque
+    // closed meshes that the eye and the near plane are outside of are drawn with their inner side culled
+    // (cullsInnerSide); the pass's own state is restored after.
+    void draw(const gl::Program& program, DrawFilter filter, bool setMaterials,
+              const CameraMatrices* camera = nullptr) const;
     // Transparent meshes sorted back to front for `eye` (by mesh centroid distance).
     void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const;
     // Draws the meshes passing `filter` for which select(batch, boundsMin, boundsMax) is true (batch: 0 ..
     // batchCount() - 1, in draw order); returns how many.
     int drawSelected(const gl::Program& program, DrawFilter filter,
                      const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
-                     bool setMaterials) const;
+                     bool setMaterials, const CameraMatrices* camera = nullptr) const;
+    // The GL face (GL_BACK or GL_FRONT) that draw() culls for this batch seen from `camera`, 0 for none: the inner
+    // side of an opaque closed mesh (closedMeshOuterWinding, after the object's transform) whose bounds neither the
+    // eye nor any point of the near plane reaches. From outside, that side always lies behind the outer one.
+    GLenum culledSide(size_t batch, const CameraMatrices& camera) const;
+    // false: every mesh drawn with both sides (the image is the same; tests compare the two).
+    void setCullClosedMeshes(bool on) { cullClosedMeshes_ = on; }
     size_t batchCount() const { return batches_.size(); }
     void batchBounds(size_t batch, glm::vec3& boundsMin, glm::vec3& boundsMax) const {
         boundsMin = batches_.at(batch).boundsMin, boundsMax = batches_.at(batch).boundsMax;
@@ -66,18 +77,21 @@ private:
         glm::vec3 objectCentroid{0.0f}, objectMin{0.0f}, objectMax{0.0f};  // as uploaded
         glm::vec3 centroid{0.0f};                                           // world, after the transform
         glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
+        OuterWinding outer = OuterWinding::Open;  // of the mesh as uploaded
     };
     Batch upload(const Mesh& mesh, DrawOrder order) const;
     gl::Texture loadTexture(const Material& m) const;
     void placeBatch(Batch& b) const;  // world centroid and bounds from the transform
     size_t batchIndex(ObjectId id) const;  // throws lidr::Error for an id that is not (or no longer) there
     void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
+    GLenum culledSide(const Batch& b, const glm::vec3& eye, float nearReach) const;
     void unbindGeometry() const;
     std::vector<Batch> batches_;
     std::vector<Material> materials_;
     std::vector<gl::Texture> textures_;  // one per material; empty texture when none
     size_t triangles_ = 0;
     DrawOrder order_ = DrawOrder::AsGiven;
+    bool cullClosedMeshes_ = true;
     ObjectId nextId_ = 0;
 };
 

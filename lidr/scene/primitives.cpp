@@ -78,9 +78,21 @@ void addQuadGrid(Mesh& mesh, const glm::vec3& origin, const glm::vec3& uEdge, co
             [&](float u, float v) { return Vertex{origin + u * uEdge + v * vEdge, normal}; });
 }
 
-// Horizontal direction at angle a, turning counter-clockwise seen from +y: with v pointing up, d/du x d/dv
+// cos and sin of `turns` full turns, exact at 0 and 1: a closed surface's seam (u = 0 and u = 1) and a sphere's
+// poles then meet at exactly the same positions, so the mesh is watertight where its vertices are split
+// (closedMeshOuterWinding welds only equal positions).
+glm::vec2 cosSinTurns(float turns) {
+    if (turns == 0.0f || turns == 1.0f) return {1.0f, 0.0f};
+    const float angle = glm::two_pi<float>() * turns;
+    return {std::cos(angle), std::sin(angle)};
+}
+
+// Horizontal direction `turns` of the way round, counter-clockwise seen from +y: with v pointing up, d/du x d/dv
 // then points away from the y axis.
-glm::vec3 around(float angle) { return {std::cos(angle), 0.0f, -std::sin(angle)}; }
+glm::vec3 around(float turns) {
+    const glm::vec2 cs = cosSinTurns(turns);
+    return {cs.x, 0.0f, -cs.y};
+}
 
 // A flat disc cap at height y, facing up or down, as a fan around its centre.
 void addCap(Mesh& mesh, const glm::vec3& center, float radius, int segments, bool facingUp) {
@@ -88,7 +100,7 @@ void addCap(Mesh& mesh, const glm::vec3& center, float radius, int segments, boo
     const uint32_t middle = addVertex(mesh, {center, normal}, glm::vec2(0.5f));
     const uint32_t ring = uint32_t(mesh.positions.size());
     for (int i = 0; i <= segments; ++i) {
-        const glm::vec3 direction = around(glm::two_pi<float>() * float(i) / float(segments));
+        const glm::vec3 direction = around(float(i) / float(segments));  // as the side's grid has it
         addVertex(mesh, {center + radius * direction, normal}, 0.5f + 0.5f * glm::vec2(direction.x, -direction.z));
     }
     for (uint32_t i = 0; i < uint32_t(segments); ++i) {
@@ -138,9 +150,10 @@ void addSphere(Scene& scene, const glm::vec3& center, float radius, int material
     addGrid(
         mesh, segments, rings,
         [&](float u, float v) {
-            const float latitude = glm::pi<float>() * (v - 0.5f);
-            const glm::vec3 normal =
-                std::cos(latitude) * around(glm::two_pi<float>() * u) + glm::vec3(0, std::sin(latitude), 0);
+            // Half a turn from pole to pole; at the poles exactly (0, -1, 0) and (0, 1, 0) whatever u is.
+            const glm::vec2 cs = cosSinTurns(0.5f * v - 0.25f);
+            const glm::vec3 normal = v == 0.0f || v == 1.0f ? glm::vec3(0.0f, v == 0.0f ? -1.0f : 1.0f, 0.0f)
+                                                            : cs.x * around(u) + glm::vec3(0, cs.y, 0);
             return Vertex{center + radius * normal, normal};
         },
         true, true);
@@ -153,8 +166,9 @@ void addCylinder(Scene& scene, const glm::vec3& base, float radius, float height
     requirePositive("addCylinder", "height", height);
     Mesh& mesh = newMesh(scene, "cylinder", material);
     addGrid(mesh, segments, 1, [&](float u, float v) {
-        const glm::vec3 normal = around(glm::two_pi<float>() * u);
-        return Vertex{base + radius * normal + glm::vec3(0, v * height, 0), normal};
+        const glm::vec3 normal = around(u);
+        // In the caps' order (their centre, then the rim), so the rims meet exactly.
+        return Vertex{base + glm::vec3(0, v * height, 0) + radius * normal, normal};
     });
     addCap(mesh, base + glm::vec3(0, height, 0), radius, segments, true);
     addCap(mesh, base, radius, segments, false);
@@ -172,9 +186,9 @@ void addTorus(Scene& scene, const glm::vec3& center, float majorRadius, float mi
     // v goes round the tube from the outer equator over the top; with u going round the y axis this keeps
     // d/du x d/dv pointing out of the tube.
     addGrid(mesh, majorSegments, minorSegments, [&](float u, float v) {
-        const glm::vec3 outward = around(glm::two_pi<float>() * u);
-        const float tubeAngle = glm::two_pi<float>() * v;
-        const glm::vec3 normal = std::cos(tubeAngle) * outward + glm::vec3(0, std::sin(tubeAngle), 0);
+        const glm::vec3 outward = around(u);
+        const glm::vec2 tube = cosSinTurns(v);
+        const glm::vec3 normal = tube.x * outward + glm::vec3(0, tube.y, 0);
         return Vertex{center + majorRadius * outward + minorRadius * normal, normal};
     });
 }

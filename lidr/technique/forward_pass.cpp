@@ -73,7 +73,7 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
     bindInputs(targets, indices, table, camera, shading);
-    scene.draw(program_, DrawFilter::Opaque, true);
+    scene.draw(program_, DrawFilter::Opaque, true, &camera);
     unbindInputs(indices);
     checkGl("LIDR forward pass");
 }
