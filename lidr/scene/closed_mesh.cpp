@@ -9,7 +9,8 @@ namespace lidr {
 
 namespace {
 // Vertices at exactly the same position (bit for bit) are one corner: meshes split vertices at hard edges and
-// seams. An open-addressing table keeps this fast on millions of vertices.
+// seams. (-0.0 and 0.0 differ: a mesh that mixes them at a corner counts as open, which only costs the culling.)
+// An open-addressing table keeps this fast on millions of vertices.
 std::vector<uint32_t> cornersOf(const std::vector<glm::vec3>& positions, uint32_t& count) {
     size_t size = 16;
     while (size < positions.size() * 2) size *= 2;
@@ -19,7 +20,8 @@ std::vector<uint32_t> cornersOf(const std::vector<glm::vec3>& positions, uint32_
     for (uint32_t i = 0; i < positions.size(); ++i) {
         uint32_t bits[3];
         std::memcpy(bits, &positions[i], sizeof bits);
-        uint64_t h = (bits[0] * 0x9E3779B97F4A7C15ull) ^ (bits[1] * 0xC2B2AE3D27D4EB4Full) ^ (bits[2] * 0x165667B19E3779F9ull);
+        const uint64_t h =
+            (bits[0] * 0x9E3779B97F4A7C15ull) ^ (bits[1] * 0xC2B2AE3D27D4EB4Full) ^ (bits[2] * 0x165667B19E3779F9ull);
         size_t at = size_t(h ^ (h >> 29)) & (size - 1);
         while (slot[at] != UINT32_MAX && std::memcmp(&positions[slot[at]], &positions[i], sizeof(glm::vec3)) != 0)
             at = (at + 1) & (size - 1);
