@@ -1,6 +1,20 @@
 # End to end: lidr-demo --headless writes its images, summary and dump; bad input exits non-zero.
 file(REMOVE_RECURSE ${OUT})
 set(ENV{LIDR_CONTEXT} egl)
+
+# lidr-demo --headless --out OUT/DIR with the other arguments; fails naming WHAT unless it exits 0, and sets
+# `summary` to its summary.json.
+function(run_demo dir what)
+  execute_process(COMMAND ${DEMO} --headless --out ${OUT}/${dir} ${ARGN}
+                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "lidr-demo ${what} failed (${r})")
+  endif()
+  file(READ ${OUT}/${dir}/summary.json text)
+  set(summary "${text}" PARENT_SCOPE)
+endfunction()
+
 execute_process(COMMAND ${DEMO} --headless --width 320 --height 240 --frames 1 --out ${OUT} --dump ${OUT}/dump
                 RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
@@ -33,13 +47,7 @@ endif()
 
 # 16-bit depth on the room, emulated (llvmpipe has no D16 + S8): no light dropped; the image error is depth ties
 # where the pillars stand in their plinths (doc/stability.md: 81.8 dB at 320x240). A bad value is refused.
-execute_process(COMMAND ${DEMO} --headless --depth-bits 16-emulated --width 320 --height 240 --frames 1
-                --out ${OUT}/depth16 RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT r EQUAL 0)
-  message(FATAL_ERROR "lidr-demo --depth-bits 16-emulated failed (${r})")
-endif()
-file(READ ${OUT}/depth16/summary.json summary)
+run_demo(depth16 "--depth-bits 16-emulated" --depth-bits 16-emulated --width 320 --height 240 --frames 1)
 string(JSON dropped GET "${summary}" lights dropped_light_pixels)
 string(JSON invalid GET "${summary}" lights invalid_slots)
 string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
@@ -54,18 +62,12 @@ endif()
 
 # The other render modes: their image, the reference and, for tiled, the tile heat map; tiled must miss no light.
 foreach(mode tiled forward-multipass forward-brute auto)
-  execute_process(COMMAND ${DEMO} --headless --mode ${mode} --width 160 --height 120 --frames 1 --out ${OUT}/${mode}
-                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${out}${err}")
-  if(NOT r EQUAL 0)
-    message(FATAL_ERROR "lidr-demo --mode ${mode} failed (${r})")
-  endif()
+  run_demo(${mode} "--mode ${mode}" --mode ${mode} --width 160 --height 120 --frames 1)
   foreach(f ${mode}.png reference.png difference.png summary.json summary.txt)
     if(NOT EXISTS ${OUT}/${mode}/${f})
       message(FATAL_ERROR "lidr-demo --mode ${mode} did not write ${f}")
     endif()
   endforeach()
-  file(READ ${OUT}/${mode}/summary.json summary)
   string(JSON name GET "${summary}" mode name)
   string(JSON max_error GET "${summary}" error whole_image max_abs_error)
   if(NOT name STREQUAL mode OR max_error GREATER 8)
@@ -147,13 +149,8 @@ if(r EQUAL 0 OR NOT err MATCHES "--out: (cannot create folder|'[^']*' is not a f
 endif()
 
 # A glTF scene rendered directly (media/scenes/courtyard.gltf: 5 point lights, a camera, a BLEND glass pane).
-execute_process(COMMAND ${DEMO} --headless --scene ${SOURCE_DIR}/media/scenes/courtyard.gltf --width 240 --height 180
-                --frames 1 --out ${OUT}/gltf RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}${err}")
-if(NOT r EQUAL 0)
-  message(FATAL_ERROR "lidr-demo --scene courtyard.gltf failed (${r})")
-endif()
-file(READ ${OUT}/gltf/summary.json summary)
+run_demo(gltf "--scene courtyard.gltf" --scene ${SOURCE_DIR}/media/scenes/courtyard.gltf --width 240 --height 180
+         --frames 1)
 string(JSON lights GET "${summary}" scene lights)
 string(JSON name GET "${summary}" scene name)
 string(JSON warnings LENGTH "${summary}" scene warnings)
