@@ -1,0 +1,33 @@
+#pragma once
+// Lights for any model: `count` seeded point lights scattered over the scene's surfaces (area-weighted), so
+// every model becomes a many-light scene in one call (lidr-demo/lidr-viewer/lidr-bench `--lights N`, the web
+// page's `lights=N`, a scene file's "scatterLights"). Deterministic for the same scene, count and seed.
+#include <cstdint>
+#include <vector>
+
+#include "lidr/scene/scene.h"
+
+namespace lidr {
+
+struct LightScatterOptions {
+    int count = 0;           // lights to add, 1 .. maxSceneLights - the scene's lights
+    uint32_t seed = 1;
+    // Light radius in scene units; <= 0: automatic (defaultScatterRadius).
+    float radius = 0.0f;
+    float intensity = 1.0f;  // colour scale
+};
+
+// The automatic radius: lights of this radius over the scene's surfaces cover each surface point about
+// kScatterMeanOverlap times on average (N pi r^2 = overlap x area, counting one side of every triangle), so
+// the lists of an ordinary view fit the automatic budget; clamped to [1e-4, 0.25] x the bounds' diagonal.
+constexpr float kScatterMeanOverlap = 1.5f;
+float defaultScatterRadius(const Scene& scene, int count);
+
+// The lights, not yet in the scene: each sits at a random point of a random triangle (chosen by area), lifted
+// off the surface along the face normal by a quarter of its radius, with a bright seeded colour. Throws
+// lidr::Error for a count out of range, a negative or non-finite radius, or a scene without triangles.
+std::vector<PointLight> scatterLights(const Scene& scene, const LightScatterOptions& options);
+// Appends scatterLights(scene, options) to scene.lights (static: paths, if the scene has them, stay put).
+void addScatteredLights(Scene& scene, const LightScatterOptions& options);
+
+}  // namespace lidr

@@ -1,0 +1,85 @@
+// Lights scattered over any model's surfaces (lidr/scene/light_scatter.h): deterministic, on the surfaces,
+// within limits, refused with a reason where they cannot be made.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "lidr/base/error.h"
+#include "lidr/scene/default_scene.h"
+#include "lidr/scene/light_scatter.h"
+#include "lidr/scene/primitives.h"
+
+using Catch::Contains;
+
+namespace {
+
+// Distance from p to the nearest triangle's plane among triangles whose projection holds p (a coarse check
+// that each light sits over some surface at the expected lift).
+float liftAboveSomeTriangle(const lidr::Scene& s, glm::vec3 p, float expected) {
+    float best = 1e30f;
+    for (const lidr::Mesh& m : s.meshes)
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                            c = m.positions[m.indices[3 * t + 2]];
+            const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+            const glm::vec3 q = p - n * expected;  // back down onto the plane
+            // barycentric containment of q
+            const glm::vec3 v0 = b - a, v1 = c - a, v2 = q - a;
+            const float d00 = glm::dot(v0, v0), d01 = glm::dot(v0, v1), d11 = glm::dot(v1, v1);
+            const float d20 = glm::dot(v2, v0), d21 = glm::dot(v2, v1), den = d00 * d11 - d01 * d01;
+            if (den <= 0.0f) continue;
+            const float v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
+            if (v < -1e-3f || w < -1e-3f || v + w > 1.001f) continue;
+            best = std::min(best, std::abs(glm::dot(p - a, n) - expected));
+        }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("scattered lights lie on the surfaces, seeded and within limits", "[cpu][scene][scatter]") {
+    lidr::Scene scene;
+    scene.materials.push_back({});
+    lidr::addBox(scene, glm::vec3(-2.0f, 0.0f, -3.0f), glm::vec3(2.0f, 1.0f, 3.0f), 0, 1);
+    lidr::LightScatterOptions o;
+    o.count = 64;
+    o.seed = 7;
+    const std::vector<lidr::PointLight> a = lidr::scatterLights(scene, o), b = lidr::scatterLights(scene, o);
+    REQUIRE(a.size() == 64);
+    for (size_t i = 0; i < a.size(); ++i) {
+        CHECK(a[i].position == b[i].position);  // same seed, same lights
+        CHECK(a[i].radius == Approx(lidr::defaultScatterRadius(scene, 64)));
+        CHECK(std::max({a[i].color.r, a[i].color.g, a[i].color.b}) == Approx(1.0f));
+        CHECK(liftAboveSomeTriangle(scene, a[i].position, 0.25f * a[i].radius) < 1e-4f);
+    }
+    o.seed = 8;
+    CHECK(lidr::scatterLights(scene, o)[0].position != a[0].position);
+    // The automatic radius: N pi r^2 = 1.5 x area (box area 2 (4x1 + 4x6 + 1x6) = 68).
+    CHECK(lidr::defaultScatterRadius(scene, 64) == Approx(std::sqrt(1.5 * 68.0 / (64.0 * M_PI))).epsilon(1e-5));
+    o.radius = 0.3f;
+    for (const lidr::PointLight& l : lidr::scatterLights(scene, o)) CHECK(l.radius == 0.3f);
+
+    lidr::Scene withPaths = lidr::makeDefaultScene();
+    const size_t before = withPaths.lights.size();
+    lidr::addScatteredLights(withPaths, o);
+    CHECK(withPaths.lights.size() == before + 64);
+    CHECK(withPaths.lightPaths.size() == withPaths.lights.size());
+    CHECK_NOTHROW(withPaths.validate());
+}
+
+TEST_CASE("scattering refuses what it cannot make, with the reason", "[cpu][scene][scatter][bad-input]") {
+    lidr::Scene empty;
+    lidr::LightScatterOptions o;
+    o.count = 4;
+    CHECK_THROWS_WITH(lidr::scatterLights(empty, o), Contains("no triangle"));
+    lidr::Scene scene = lidr::makeDefaultScene();
+    o.count = 0;
+    CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("count must be 1.."));
+    o.count = int(lidr::maxSceneLights);
+    CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("count must be 1.."));
+    o.count = 4;
+    o.radius = -1.0f;
+    CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("radius"));
+    o.radius = NAN;
+    CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("radius"));
+}
