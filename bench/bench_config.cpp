@@ -52,7 +52,8 @@ std::string joinNames(const std::vector<std::string>& names) {
 std::string sceneNameHelp() {
     return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
            "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), heavy-T (the room with about T "
-           "triangles, e.g. heavy-250k, heavy-1m), file:PATH or a path ending in .json, .gltf, .glb or .obj";
+           "triangles, e.g. heavy-250k, heavy-1m), hall-N / city-N (deep, occluded scenes: a pillared hall and a city "
+           "block grid with N lights of 1-4 m, e.g. hall-255), file:PATH or a path ending in .json, .gltf, .glb or .obj";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed) {
@@ -94,6 +95,15 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
             throw Error("bad scene name '" + name + "': use heavy-T with T triangles, 1..20m, e.g. heavy-250k (valid: " +
                         sceneNameHelp() + ")");
         return makeHeavyScene(long(n) * scale, 1024, 768, seed);
+    }
+    for (OccludedSceneKind kind : {OccludedSceneKind::Hall, OccludedSceneKind::City}) {
+        const std::string prefix = std::string(occludedSceneName(kind)) + "-";
+        if (!startsWith(name, prefix)) continue;
+        const int n = positiveInt(name.substr(prefix.size()));
+        if (n < 1 || n > 65535)
+            throw Error("bad scene name '" + name + "': use " + prefix + "N with N lights, 1..65535 (valid: " +
+                        sceneNameHelp() + ")");
+        return makeOccludedScene(kind, n, 1024, 768, seed);
     }
     std::string path;
     if (startsWith(name, "file:"))

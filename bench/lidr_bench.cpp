@@ -321,7 +321,7 @@ void printNames() {
     std::cout << "render modes:   " << joinNames(availableModes()) << "\n"
               << "packing schemes: " << joinNames(packingSchemeNames()) << "\n"
               << "budgets, index widths: any; each scheme refuses what it cannot do (see --dry-run)\n"
-              << "volume tests:   backface, exact, frontface\n"
+              << "volume tests:   sphere (the library's default), sphere-ray, backface, exact, frontface\n"
               << "scenes:         " << sceneNameHelp() << "\n";
 }
 
@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, resolutions{"1024x768"};
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     std::vector<std::string> sweeps;
@@ -343,7 +343,7 @@ int main(int argc, char** argv) {
     app.add_option("--schemes", schemes, "Packing schemes for mode lidr (default: all the library has)");
     app.add_option("--budgets", budgets, "LIDR light slots per pixel")->capture_default_str();
     app.add_option("--index-bits", indexBits, "LIDR light index widths")->capture_default_str();
-    app.add_option("--volume-tests", volumeTests, "LIDR volume tests: backface, exact, frontface")->capture_default_str();
+    app.add_option("--volume-tests", volumeTests, "LIDR volume tests: sphere (the library's default), sphere-ray, backface, exact, frontface")->capture_default_str();
     app.add_option("--msaa", msaa, "MSAA sample counts (0 = off); LIDR needs the frontface test for MSAA unless per-sample")->capture_default_str();
     app.add_option("--per-sample", perSample, "With MSAA: LIDR per-sample index lists (GL 3.2) off, on")->capture_default_str();
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();

@@ -217,15 +217,18 @@ TEST_CASE("volume plan: states are shared, lights are loaded once, meshes follow
 }
 
 TEST_CASE("volume plan: a rank window with the count restarted, on desktop GL and OpenGL ES", "[volume-plan][cpu]") {
-    // Bit-shift at budget 16 with 8-bit indices: two windows of 8 slots, two targets each; the second restarts
-    // the count and ranks lights 8-15.
+    // Bit-shift at budget 16 with 8-bit indices: two windows of 8 slots, two targets each, drawn last to first:
+    // ranks 8-15 from the pass's cleared count, then ranks 0-7 with the count restarted, so the count left in
+    // the stencil is every pixel's whole count.
     const std::vector<VolumeDraw> draws = schemeDraws(PackingSchemeKind::BitShift, 16, 8);
     REQUIRE(draws.size() == 2);
-    const VolumeDraw& second = draws[1];
+    const VolumeDraw& second = draws[0];
+    CHECK(second.rankFirst == 8);
+    CHECK(draws[1].rankFirst == 0);
     const std::vector<VolumeLightFacts> one(1);
     const VolumeDrawPlan desktop = planVolumeDraw(second, context(VolumeTest::BackFace), one);
-    CHECK(desktop.restartCount);
-    CHECK_FALSE(planVolumeDraw(draws[0], context(VolumeTest::BackFace), one).restartCount);
+    CHECK_FALSE(desktop.restartCount);
+    CHECK(planVolumeDraw(draws[1], context(VolumeTest::BackFace), one).restartCount);
     CHECK(desktop.framebufferFrom == -1);
     CHECK(desktop.drawBuffers == std::vector<GLenum>{GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3});
     CHECK(desktop.programTargets == 2);

@@ -26,3 +26,21 @@ Scene makeHeavyScene(long totalTriangles, int width = 1024, int height = 768, ui
 long sceneTriangleCount(const Scene& scene);
 
 }  // namespace lidr
+
+namespace lidr {
+
+// Deep, occluded scenes (issue 25): the cost of a light-volume pass that rasterises every light's screen area,
+// hidden lights included, shows here and not in the room. Both are one mesh per material (a handful of draws,
+// like an architectural model), 1024x768 by default, seeded static lights of radius 1 to 4 m.
+//   Hall: a nave 70 m long between two rows of 16 pillars (stacked shafts on plinths) with arches along the
+//         rows and across the nave, side aisles split into chapels, clerestory walls, about 60 k triangles; the
+//         camera at eye height at one end looking down the nave (most aisle lights hidden by pillars and walls).
+//   City: 8 x 8 blocks of buildings (6-30 m high) over 6 m streets, about 60 k triangles; the camera at street
+//         level looking down a street (most lights hidden by buildings).
+enum class OccludedSceneKind { Hall, City };
+const char* occludedSceneName(OccludedSceneKind kind);  // "hall", "city"
+// lightCount in [1, 65535].
+Scene makeOccludedScene(OccludedSceneKind kind, int lightCount, int width = 1024, int height = 768,
+                        uint32_t seed = 1);
+
+}  // namespace lidr

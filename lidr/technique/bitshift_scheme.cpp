@@ -38,8 +38,8 @@ IndexColors BitShiftScheme::colorsFor(uint32_t index) const {
 
 std::vector<SchemeDraw> BitShiftScheme::plan(const std::vector<VolumeLight>& lights, const LightVolumePass*) const {
     std::vector<SchemeDraw> draws;
-    for (int w = 0; w < windows_; ++w) {
-        SchemeDraw sd = rankWindowDraw(PackingSchemeKind::BitShift, w, windowSlots_, lights,
+    for (int w = windows_ - 1; w >= 0; --w) {  // last to first (rankWindowDraw)
+        SchemeDraw sd = rankWindowDraw(PackingSchemeKind::BitShift, w, windowSlots_, windows_, lights,
                                        [this](uint32_t i) { return colorsFor(i); });
         VolumeDraw& d = sd.draw;
         d.firstTarget = w * windowTargets_;

@@ -170,6 +170,13 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             StateCache::current().bindFramebuffer(0);
         }
     }
+    if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && depthTexture_ && !info.gles) {
+        // OpenGL ES keeps the volume meshes: its depth texture is drawn by a second pre-pass, and a mediump
+        // sampler would round the tile ranges.
+        if (options_.volumeTileSize < 4 || options_.volumeTileSize > 256)
+            throw Error("volumeTileSize must be in [4, 256], got " + std::to_string(options_.volumeTileSize));
+        volumeTiles_ = std::make_unique<TileDepthBounds>(info, width, height, options_.volumeTileSize, depthTexture_);
+    }
     selectVariant(first.budget, first.indexBits);
     selectTransparentVariant(first.budget, first.indexBits);
 }
@@ -294,6 +301,13 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
                 glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
                 checkGl("depth copy for the volume tests");
             }
+        }
+        depthPrepassTime.end();
+        if (volumeTiles_) {
+            TimedPass volumeTilesTime(timer_, "volume-tiles");
+            volumePass_.setTileDepth(volumeTiles_->reduce(), options_.volumeTileSize, volumeTiles_->tilesX(),
+                                     volumeTiles_->tilesY());
+            targets_.bindSingleSample();
         }
     } else {
         ClearAction clear;

@@ -20,6 +20,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/tile_depth_bounds.h"
 
 namespace lidr {
 
@@ -46,6 +47,13 @@ struct LidrOptions {
     // Coarser volumes (20 or 80 faces) for lights small on screen, where they reach at most a pixel past the
     // 320-face one (LightVolumePass); false: the 320-face volume for every light.
     bool volumeDetail = false;
+    // Tile-culled volumes (the sphere test, desktop GL): the pre-pass depth is reduced to a min/max per
+    // volumeTileSize^2 tile on the GPU and read back, and each light is drawn as screen quads over the tiles its
+    // sphere reaches in depth instead of its volume mesh: lights hidden behind nearer surfaces and empty tiles
+    // cost no fragment, and a later stencil rank window (budget 16) touches only tiles with more candidate
+    // lights than its first rank. The lists are the same (the shader's test is); false: volume meshes.
+    bool tileCulledVolumes = true;
+    int volumeTileSize = 16;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     // Depth buffer precision: 24 (DEPTH24_STENCIL8) or 16 (a DEPTH_COMPONENT16 renderbuffer with a separate
     // STENCIL_INDEX8, where the driver accepts the pair: checkDepthBits in lidr/gl/render_targets.h; Mesa's
@@ -160,6 +168,7 @@ private:
     IndexTargets* transparentIndexTargets_ = nullptr;  // when transparent layers need their own front-face lists
     gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
     gl::Framebuffer depthTextureFbo_;       // OpenGL ES: the pre-pass drawn again into depthTexture_
+    std::unique_ptr<TileDepthBounds> volumeTiles_;  // LidrOptions::tileCulledVolumes: depthTexture_'s tile ranges
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;

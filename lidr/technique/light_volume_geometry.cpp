@@ -8,6 +8,7 @@
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
 
@@ -56,20 +57,29 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         maxVertexUniformVectors_ = info.maxVertexUniformVectors;
         // By value: the geometry moves with its pass.
         const int uniforms = maxVertexUniformVectors_;
-        batchPrograms_ = DrawTargetPrograms(info, [test, depth, batch = batch_, uniforms](int targetCount) {
-            if (targetCount != 1 && targetCount != 2 && targetCount != 4)
-                throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
-                            std::to_string(targetCount));
-            ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
-                                  {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount))}};
-            if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-            const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
-            ShaderIncludes includes;
-            depth.apply(defs, includes);
-            return gl::Program::create(std::string(volumeTestName(test)) + "-volumes-" + std::to_string(targetCount),
-                                       vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
-                                       {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
-        });
+        auto programs = [&info, test, depth, batch = batch_, uniforms](bool screenTiles) {
+            return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles](int targetCount) {
+                if (targetCount != 1 && targetCount != 2 && targetCount != 4)
+                    throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
+                                std::to_string(targetCount));
+                ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
+                                      {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount))}};
+                if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+                if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
+                const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
+                ShaderIncludes includes;
+                depth.apply(defs, includes);
+                return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
+                                               std::to_string(targetCount),
+                                           vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
+                                           {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
+            });
+        };
+        batchPrograms_ = programs(false);
+        if (test == VolumeTest::Sphere) {
+            tilePrograms_ = programs(true);
+            tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
+        }
     }
 }
 
@@ -132,7 +142,13 @@ void LightVolumeGeometry::begin(const CameraMatrices& camera, glm::ivec2 targetS
     camera_ = camera;
     targetSize_ = targetSize;
     depth_ = depth;
-    if (isShaderVolumeTest(test_)) {
+    tileQuadPixels_ = 0;
+    tiledLights_.clear();
+    if (drawsScreenTiles()) {
+        glBindBuffer(GL_ARRAY_BUFFER, tileQuads_.id());  // attributes set per step (the data is re-specified)
+        glEnableVertexAttribArray(gl::kPosition);
+        glEnableVertexAttribArray(gl::kVolumeSlot);
+    } else if (isShaderVolumeTest(test_)) {
         glBindBuffer(GL_ARRAY_BUFFER, batchVertices_.id());
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batchIndices_.id());
         glEnableVertexAttribArray(gl::kPosition);
@@ -155,7 +171,7 @@ void LightVolumeGeometry::end() {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
 
-void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& plan, const IndexColorsFor&) {
+void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& plan, const IndexColorsFor&) {
     program_ = plan.program;
     targets_ = plan.programTargets;
     if (plan.program == VolumeProgram::PerLight) {
@@ -168,10 +184,14 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw&, const VolumeDrawPlan& pl
         clampUniform_ = program.uniform<float>("uClampToFar");
         return;
     }
-    const gl::Program& program = batchPrograms_.get(plan.programTargets);
+    const gl::Program& program = (drawsScreenTiles() ? tilePrograms_ : batchPrograms_).get(plan.programTargets);
     program.use();
     program.set("uViewProj", camera_.viewProjection);
     program.set("uView", camera_.view);
+    program.set("uProjection", camera_.projection);
+    // A rank window from rank k on writes only where more than k lights mark a pixel; its count is not the
+    // one left for the probe (rankWindowDraw draws rank 0 last, over every tile).
+    skipTilesUpTo_ = d.rankCount > 0 ? d.rankFirst : 0;
     // Window depth d to distance in front of the eye, for lidr's perspective projections (P[2][3] = -1):
     // z_ndc = 2d - 1 = (P22 z_view + P32) / -z_view, so distance = -z_view = (P32 / 2) / (d + (P22 - 1) / 2).
     const glm::mat4& P = camera_.projection;
@@ -213,12 +233,108 @@ void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<Vol
         clampUniform_.set(step.clampToFar ? 1.0f : 0.0f);
     }
     StateCache& cache = StateCache::current();
-    if (batch) {
+    if (batch && drawsScreenTiles()) {
+        cullToTiles(lights);
+        drawTileQuads(step);
+    } else if (batch) {
         cache.drawElements(GL_TRIANGLES, GLsizei(step.lightCount) * batchCopyIndices_, GL_UNSIGNED_SHORT, nullptr);
     } else {
         cache.drawElements(GL_TRIANGLES, indexCount_[step.detail], GL_UNSIGNED_SHORT,
                            reinterpret_cast<const void*>(size_t(firstIndex_[step.detail]) * sizeof(uint16_t)));
     }
+}
+
+void LightVolumeGeometry::setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY) {
+    if (!ranges.empty() && (test_ != VolumeTest::Sphere || size_t(tilesX) * size_t(tilesY) != ranges.size() ||
+                            tileSize < 1))
+        throw Error("tile-culled light volumes: the sphere test with one depth range per tile");
+    tileRanges_ = std::move(ranges);
+    tileSize_ = tileSize;
+    tilesX_ = tilesX;
+    tilesY_ = tilesY;
+}
+
+void LightVolumeGeometry::cullToTiles(const std::vector<VolumeLight>& lights) {
+    if (tiledLights_.size() == lights.size() &&
+        std::equal(lights.begin(), lights.end(), tiledLights_.begin(), [](const VolumeLight& a, const VolumeLight& b) {
+            return a.index == b.index && a.posRadius == b.posRadius;
+        }))
+        return;  // the frame's earlier draw (another rank window) culled these lights already
+    tiledLights_ = lights;
+    lightTiles_.assign(lights.size(), {});
+    tileCandidates_.assign(tileRanges_.size(), 0);
+    // Each tile's stored depth range widened as the shader widens a pixel's (uDepthMargin), as distances.
+    const float margin = kSphereDepthSteps / depthUnits_;
+    std::vector<glm::vec2> tileDistance(tileRanges_.size(), glm::vec2(-1.0f));  // x < 0: no surface in the tile
+    for (size_t t = 0; t < tileRanges_.size(); ++t) {
+        const TileDepthRange& r = tileRanges_[t];
+        if (r.minDepth >= 1.0f) continue;  // background only: the shader discards every pixel
+        tileDistance[t] = {viewDepthFromWindowDepth(camera_, std::max(r.minDepth - margin, 0.0f)),
+                           viewDepthFromWindowDepth(camera_, std::min(r.maxDepth + margin, 1.0f))};
+    }
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const glm::vec3 centre(lights[i].posRadius);
+        const float radius = lights[i].posRadius.w * kSphereRadiusScale;
+        glm::ivec4 rect;  // pixels, inclusive, y up
+        if (!spherePixelRect(camera_, centre, radius, rect)) continue;
+        // The sphere's extent along the view direction, widened by float rounding of the distances.
+        const float along = glm::dot(centre - camera_.eye, camera_.forward);
+        const float slack = 1e-5f * (std::abs(along) + radius) + 1e-6f;
+        const float nearest = along - radius - slack, farthest = along + radius + slack;
+        const int tx0 = rect.x / tileSize_, tx1 = std::min(rect.z / tileSize_, tilesX_ - 1);
+        const int ty0 = rect.y / tileSize_, ty1 = std::min(rect.w / tileSize_, tilesY_ - 1);
+        for (int ty = ty0; ty <= ty1; ++ty)
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                const int t = ty * tilesX_ + tx;
+                const glm::vec2 d = tileDistance[size_t(t)];
+                if (d.x < 0.0f || farthest < d.x || nearest > d.y) continue;
+                lightTiles_[i].push_back(t);
+                ++tileCandidates_[size_t(t)];
+            }
+    }
+}
+
+void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {
+    // Window pixel (x, y) -> its point at NDC depth 0 in view space (a plane, so the eye ray interpolates
+    // exactly across a quad; the near plane itself would be clipped by rounding).
+    const glm::mat4 inverseProjection = glm::inverse(camera_.projection);
+    auto nearPoint = [&](int x, int y) {
+        const glm::vec4 ndc(2.0f * float(x) / float(targetSize_.x) - 1.0f, 2.0f * float(y) / float(targetSize_.y) - 1.0f,
+                            0.0f, 1.0f);
+        const glm::vec4 v = inverseProjection * ndc;
+        return glm::vec3(v) / v.w;
+    };
+    tileVertices_.clear();
+    for (int slot = 0; slot < step.lightCount; ++slot) {
+        const std::vector<int>& tiles = lightTiles_[size_t(step.firstLight + slot)];
+        for (size_t k = 0; k < tiles.size();) {
+            // A run of kept tiles along one row becomes one quad.
+            const int first = tiles[k];
+            if (tileCandidates_[size_t(first)] <= skipTilesUpTo_) {
+                ++k;
+                continue;
+            }
+            int last = first;
+            while (k + 1 < tiles.size() && tiles[k + 1] == last + 1 && (last + 1) % tilesX_ != 0 &&
+                   tileCandidates_[size_t(last + 1)] > skipTilesUpTo_)
+                last = tiles[++k];
+            ++k;
+            const int y0 = (first / tilesX_) * tileSize_, y1 = std::min(y0 + tileSize_, targetSize_.y);
+            const int x0 = (first % tilesX_) * tileSize_, x1 = std::min((last % tilesX_ + 1) * tileSize_, targetSize_.x);
+            tileQuadPixels_ += long(x1 - x0) * long(y1 - y0);
+            const glm::vec3 a = nearPoint(x0, y0), b = nearPoint(x1, y0), c = nearPoint(x1, y1), d = nearPoint(x0, y1);
+            // Clockwise on screen: the pass's state culls front faces (it draws a volume's back faces).
+            for (const glm::vec3& p : {a, d, c, a, c, b}) tileVertices_.emplace_back(p, float(slot));
+        }
+    }
+    if (tileVertices_.empty()) return;
+    glBindBuffer(GL_ARRAY_BUFFER, tileQuads_.id());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(tileVertices_.size() * sizeof(glm::vec4)), tileVertices_.data(),
+                 GL_STREAM_DRAW);
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glVertexAttribPointer(gl::kVolumeSlot, 1, GL_FLOAT, GL_FALSE, sizeof(glm::vec4),
+                          reinterpret_cast<const void*>(3 * sizeof(float)));
+    StateCache::current().drawArrays(GL_TRIANGLES, 0, GLsizei(tileVertices_.size()));
 }
 
 }  // namespace lidr

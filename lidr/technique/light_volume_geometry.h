@@ -13,6 +13,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/depth_prepass.h"
+#include "lidr/render/light_grid.h"
 #include "lidr/scene/camera.h"
 #include "lidr/technique/draw_target_programs.h"
 #include "lidr/technique/light_volume_mesh.h"
@@ -40,6 +41,9 @@ public:
     virtual bool marksWithinLightFootprints() const { return true; }
     // Lights per draw of a batched plan (VolumeProgram::Batch) writing this many targets.
     virtual int batchFor(int /*targetCount*/) const { return 1; }
+    // True where the shader tests draw screen quads over depth-culled tiles instead of volume meshes (no depth
+    // pre-test then).
+    virtual bool drawsScreenTiles() const { return false; }
     // The pass's begin() and end(): vertex buffers and attributes. targetSize: the index targets' in pixels;
     // depth: the pre-pass depth copy (the shader tests read it).
     virtual void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) = 0;
@@ -75,6 +79,16 @@ public:
     // kSphereDepthSteps are steps of it.
     void setDepthBits(int bits) { depthUnits_ = float((1u << bits) - 1u); }
 
+    // Tile-culled volumes (the sphere test only): with the pre-pass depth range of each T x T tile (rows from
+    // the bottom, tile (x, y) at y * tilesX + x), the next frame draws each light as screen quads over the tiles
+    // of its sphere's screen rectangle whose depth range its sphere reaches, and a later rank window only over
+    // tiles with more candidate lights than the window's first rank. The fragment shader's test is unchanged, so
+    // the lists are the same; occluded lights and empty tiles cost nothing. Empty `ranges`: volume meshes.
+    void setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY);
+    bool drawsScreenTiles() const override { return !tileRanges_.empty(); }
+    // Rasterised area of the last frame's tile quads, in pixels (0 without tiles): what the culling kept.
+    long tileQuadPixels() const { return tileQuadPixels_; }
+
     // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
     // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
     static constexpr float kSphereRadiusScale = 1.0005f;
@@ -87,6 +101,8 @@ public:
 
 private:
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
+    void cullToTiles(const std::vector<VolumeLight>& lights);  // lightTiles_, tileCandidates_ for this frame
+    void drawTileQuads(const VolumeStep& step);
     static int batchFor(int batch, int maxVertexUniformVectors, int targetCount);
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
     static constexpr int kDetailLevels = 3;
@@ -112,6 +128,18 @@ private:
     gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
     gl::Uniform<float> clampUniform_;
     std::vector<glm::vec4> lightData_, colorData_;
+    // Tile-culled volumes (setTileDepth): the frame's tile ranges, each light's tiles (by its place in the
+    // pass's light list) and each tile's candidate count, the stream buffer of quads and its program.
+    std::vector<TileDepthRange> tileRanges_;
+    int tileSize_ = 16, tilesX_ = 0, tilesY_ = 0;
+    std::vector<VolumeLight> tiledLights_;         // the lights lightTiles_ was built for
+    std::vector<std::vector<int>> lightTiles_;
+    std::vector<int> tileCandidates_;
+    int skipTilesUpTo_ = 0;  // the current draw's tiles with at most this many candidates are skipped
+    long tileQuadPixels_ = 0;
+    gl::Buffer tileQuads_;
+    std::vector<glm::vec4> tileVertices_;
+    DrawTargetPrograms tilePrograms_;
 };
 
 }  // namespace lidr

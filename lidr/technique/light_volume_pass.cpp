@@ -73,6 +73,7 @@ VolumeDrawPlan LightVolumePass::planFor(const VolumeDraw& d, const std::vector<V
     context.gles = gles_;
     context.drawBuffers = maxDrawTargets_ > 1;
     context.batchSize = geometry.batchFor(d.targetCount);
+    context.screenTiles = geometry.drawsScreenTiles();
     context.scissor = scissor_;
     return planVolumeDraw(d, context, facts);
 }

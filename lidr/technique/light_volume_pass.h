@@ -76,6 +76,12 @@ public:
     // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
     // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
+    // The sphere test's tile culling for the next begin() (LightVolumeGeometry::setTileDepth).
+    void setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY) {
+        volumes_.setTileDepth(std::move(ranges), tileSize, tilesX, tilesY);
+    }
+    // Pixels the tile quads of the last pass covered (0 without tile culling).
+    long tileQuadPixels() const { return volumes_.tileQuadPixels(); }
     const CameraMatrices& camera() const { return camera_; }
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
     // plane): it then marks its whole screen footprint.

@@ -13,13 +13,13 @@
 
 namespace lidr {
 
-SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
-                          std::function<IndexColors(uint32_t index)> colors) {
+SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, int windows,
+                          const std::vector<VolumeLight>& lights, std::function<IndexColors(uint32_t index)> colors) {
     SchemeDraw sd;
     sd.draw.name = packingSchemeName(scheme) + std::string("-window-") + std::to_string(window);
     sd.draw.rankFirst = window * windowSlots;
     sd.draw.rankCount = windowSlots;
-    sd.draw.restartCount = window > 0;
+    sd.draw.restartCount = window < windows - 1;  // drawn last to first
     sd.lights = lights;
     sd.colors = std::move(colors);
     return sd;

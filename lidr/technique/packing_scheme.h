@@ -58,11 +58,14 @@ struct SchemeDraw {
     std::function<IndexColors(uint32_t index)> colors;
 };
 
-// Draw `window` of a scheme that splits its budget into stencil rank windows of `windowSlots` lights: ranks
-// window * windowSlots .. + windowSlots - 1, the count restarted for every window after the first. The scheme
+// Draw `window` of `windows` of a scheme that splits its budget into stencil rank windows of `windowSlots`
+// lights: ranks window * windowSlots .. + windowSlots - 1. Schemes draw the windows last to first: the count
+// is restarted for every window after the first drawn, so the last drawn, ranks 0.., leaves every pixel's
+// whole count in the stencil (the overlap probe and readLightCounts read it), and the earlier windows need
+// touch only pixels with more lights than their first rank (tile-culled volumes skip the rest). The scheme
 // sets targets, masks and blending.
-SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, const std::vector<VolumeLight>& lights,
-                          std::function<IndexColors(uint32_t index)> colors);
+SchemeDraw rankWindowDraw(PackingSchemeKind scheme, int window, int windowSlots, int windows,
+                          const std::vector<VolumeLight>& lights, std::function<IndexColors(uint32_t index)> colors);
 
 class PackingScheme {
 public:

@@ -136,7 +136,7 @@ VolumeDrawPlan planVolumeDraw(const VolumeDraw& d, const VolumePlanContext& c,
         st = backFaceState(d, c);
         // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
         // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
-        st.depthTest = c.test == VolumeTest::Sphere;
+        st.depthTest = c.test == VolumeTest::Sphere && !c.screenTiles;
         st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
         st.stencil.ref = d.rankFirst;
         st.stencil.readMask = windowMask;

@@ -65,6 +65,8 @@ struct VolumePlanContext {
     bool gles = false;        // OpenGL ES: gl_FragData[i] goes to COLOR_ATTACHMENTi only
     bool drawBuffers = true;  // more than one draw buffer (ES 2.0: EXT_draw_buffers); false: none are set
     int batchSize = 1;        // lights per draw of the shader tests, for this draw's target count
+    bool screenTiles = false; // the shader tests draw screen quads over tiles (VolumeGeometry::drawsScreenTiles):
+                              // no depth pre-test, the tiles were culled by depth on the CPU
     glm::ivec4 scissor{-1};   // x, y, width, height; z < 0: none
 };
 

@@ -7,6 +7,7 @@ attribute vec3 aPosition;
 attribute float aSlot;
 uniform mat4 uViewProj;
 uniform mat4 uView;
+uniform mat4 uProjection;
 uniform vec4 uLights[LIDR_BATCH];                           // world centre, radius
 uniform vec4 uIndexColors[LIDR_BATCH * LIDR_DRAW_TARGETS];  // the light's value per target, bytes / 255
 // 1.0 where the context has no depth clamp and a volume of the batch reaches past the far plane: vertices
@@ -28,10 +29,15 @@ varying vec4 vColor3;
 void main() {
     int slot = int(aSlot + 0.5);
     vec4 light = uLights[slot];
+#ifdef LIDR_SCREEN_TILES
+    gl_Position = uProjection * vec4(aPosition, 1.0);
+    vViewPos = aPosition;  // a plane in view space: interpolated exactly along the pixel's ray
+#else
     vec4 world = vec4(light.xyz + aPosition * light.w, 1.0);
     gl_Position = uViewProj * world;
     vViewPos = (uView * world).xyz;
     if (uClampToFar > 0.5 && gl_Position.w > 0.0) gl_Position.z = min(gl_Position.z, gl_Position.w);
+#endif
     vLightView = vec4((uView * vec4(light.xyz, 1.0)).xyz, light.w);
     int c = slot * LIDR_DRAW_TARGETS;
     vColor0 = uIndexColors[c];
