@@ -120,10 +120,11 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
 // ---- configurations -------------------------------------------------------------------------------------
 
 std::string ModeConfig::label() const {
-    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "");
+    const std::string meshes = volumeTiles || volumeTest != "sphere" ? "" : " meshes";
+    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "") + meshes;
     if (mode == "lidr")
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
-               (volumeDetail ? " detail" : "");
+               (volumeDetail ? " detail" : "") + meshes;
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
     return mode;
 }
@@ -159,6 +160,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.packing.indexBits = c.indexBits;
     o.volumeTest = parseVolumeTest(c.volumeTest);
     o.volumeDetail = c.volumeDetail;
+    o.tileCulledVolumes = c.volumeTiles;
     o.msaaSamples = c.msaa;
     o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;
@@ -472,15 +474,19 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                     for (int budget : scheme == "auto" ? std::vector<int>{0} : g.budgets)
                                         for (int bits : scheme == "auto" ? std::vector<int>{0} : g.indexBits)
                                             for (const auto& vt : g.volumeTests)
-                                                for (bool detail : g.volumeDetail) {
-                                                    ModeConfig c = base;
-                                                    c.scheme = scheme;
-                                                    c.budget = budget;
-                                                    c.indexBits = bits;
-                                                    c.volumeTest = volumeTestName(parseVolumeTest(vt));
-                                                    c.volumeDetail = detail;
-                                                    configs.push_back(c);
-                                                }
+                                                for (bool detail : g.volumeDetail)
+                                                    for (bool tiles : g.volumeTiles) {
+                                                        ModeConfig c = base;
+                                                        c.scheme = scheme;
+                                                        c.budget = budget;
+                                                        c.indexBits = bits;
+                                                        c.volumeTest = volumeTestName(parseVolumeTest(vt));
+                                                        c.volumeDetail = detail;
+                                                        c.volumeTiles = tiles;
+                                                        // Only the sphere test culls by tiles: one row for the others.
+                                                        if (!tiles && c.volumeTest != "sphere") continue;
+                                                        configs.push_back(c);
+                                                    }
                             } else if (mode == "tiled") {
                                 for (bool db : g.tiledDepthBounds) {
                                     ModeConfig c = base;

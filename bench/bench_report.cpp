@@ -87,7 +87,8 @@ const std::vector<std::string>& resultColumns() {
         "max_abs_error", "differing_pixels", "compared_pixels", "dropped_light_pixels", "pixels_with_drops",
         "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "scene_triangles", "rounds",
         "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
-        "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls"};
+        "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls", "true_light_pixels",
+        "volume_fragments", "volume_fragments_per_light_pixel"};
     return c;
 }
 
@@ -141,7 +142,9 @@ std::vector<std::string> csvCells(const Row& r) {
             r.autoBudget ? std::to_string(r.autoBudget) : "", r.autoIndexBits ? std::to_string(r.autoIndexBits) : "",
             r.autoBudget || r.autoIndexBits ? std::to_string(r.autoRepacks) : "",
             std::to_string(r.glCalls.stateCalls), std::to_string(r.glCalls.stateCallsSkipped),
-            std::to_string(r.glCalls.drawCalls)};
+            std::to_string(r.glCalls.drawCalls), r.trueLightPixels >= 0 ? std::to_string(r.trueLightPixels) : "",
+            r.volumeFragments >= 0 ? std::to_string(r.volumeFragments) : "",
+            r.volumeEfficiency() >= 0 ? num(r.volumeEfficiency(), 3) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -159,7 +162,7 @@ nlohmann::json rowJson(const Row& r) {
     j["mode"] = c.mode;
     j["config"] = c.key();
     if (c.mode == "lidr")
-        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}};
+        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}, {"volume_tiles", c.volumeTiles}};
     if (r.autoBudget || r.autoIndexBits)
         j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
@@ -193,7 +196,9 @@ nlohmann::json rowJson(const Row& r) {
     if (r.hasLists)
         j["lists"] = {{"dropped_light_pixels", r.droppedLightPixels}, {"pixels_with_drops", r.pixelsWithDrops},
                       {"pixels_over_budget", r.pixelsOverBudget}, {"max_marked", r.maxMarked},
-                      {"invalid_slots", r.invalidSlots}, {"psnr_within_budget_db", finitePsnr(r.psnrWithinBudget)}};
+                      {"invalid_slots", r.invalidSlots}, {"psnr_within_budget_db", finitePsnr(r.psnrWithinBudget)},
+                      {"true_light_pixels", r.trueLightPixels}, {"volume_fragments", r.volumeFragments},
+                      {"volume_fragments_per_light_pixel", r.volumeEfficiency()}};
     return j;
 }
 

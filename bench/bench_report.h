@@ -50,6 +50,13 @@ struct Row {
     long droppedLightPixels = 0, pixelsWithDrops = 0, pixelsOverBudget = 0, invalidSlots = 0;
     int maxMarked = 0;
     double psnrWithinBudget = 0.0;
+    // LIDR only: the light-pixel pairs of the CPU truth (the sum of the true list lengths) and the fragments the
+    // volume pass rasterised (the opaque light-volume pass; -1: not counted). Their ratio is the volume pass's
+    // efficiency (1: it touches only what it lights).
+    long trueLightPixels = -1, volumeFragments = -1;
+    double volumeEfficiency() const {
+        return trueLightPixels > 0 && volumeFragments >= 0 ? double(volumeFragments) / double(trueLightPixels) : -1.0;
+    }
     long sceneTriangles = 0;
     // Interleaved rounds (doc/benchmarks.md): every configuration of one scene and size renders one measured
     // frame per round, in turn. `rounds`: the rounds its scene set ran; roundMs[r]: this configuration's frame

@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
                 static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
                     "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
                     "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "auto_budget",
-                    "auto_index_bits", "auto_repacks"};
+                    "auto_index_bits", "auto_repacks", "true_light_pixels", "volume_fragments",
+                    "volume_fragments_per_light_pixel"};
                 if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
                 continue;
             }

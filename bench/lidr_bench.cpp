@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, resolutions{"1024x768"};
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, volumeTiles{"on"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     std::vector<std::string> sweeps;
@@ -350,6 +350,10 @@ int main(int argc, char** argv) {
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();
     app.add_option("--volume-detail", volumeDetail,
                    "LIDR coarse light volumes for lights small on screen (LidrOptions::volumeDetail): off, on")
+        ->capture_default_str();
+    app.add_option("--volume-tiles", volumeTiles,
+                   "LIDR sphere test over depth-culled screen tiles (LidrOptions::tileCulledVolumes; off: volume meshes): "
+                   "on, off")
         ->capture_default_str();
     app.add_option("--resolution", resolutions, "WIDTHxHEIGHT, or 'scene' for the scene's own")->capture_default_str();
     app.add_option("--warmup", settings.warmup, "Warm-up frames per configuration (at least)")->capture_default_str()->check(CLI::Range(0, 100));
@@ -454,6 +458,7 @@ int main(int argc, char** argv) {
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");
             g.volumeDetail = onOffList(volumeDetail, "--volume-detail value");
+            g.volumeTiles = onOffList(volumeTiles, "--volume-tiles value");
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
             // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
             const std::pair<const char*, const char*> typed[] = {
@@ -730,6 +735,14 @@ int main(int argc, char** argv) {
                         row.invalidSlots = ev.lists.invalidSlots;
                         row.maxMarked = ev.maxMarked;
                         row.psnrWithinBudget = ev.errorWithinBudget.psnr;
+                        if (row.hasLists) {
+                            row.trueLightPixels = 0;
+                            for (size_t p = 0; p < ev.truth.surface.size(); ++p)
+                                if (ev.truth.surface[p]) row.trueLightPixels += ev.truth.count(p);
+                            for (const PassStat& pass : row.passes)
+                                if (pass.pass == "light-volumes" && pass.fragments >= 0)
+                                    row.volumeFragments = std::max(0L, row.volumeFragments) + pass.fragments;
+                        }
                     } else {
                         row.error = compareImages(image, reference.image);
                     }
