@@ -96,15 +96,8 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
                         sceneNameHelp() + ")");
         return makeHeavyScene(long(n) * scale, 1024, 768, seed);
     }
-    for (OccludedSceneKind kind : {OccludedSceneKind::Hall, OccludedSceneKind::City}) {
-        const std::string prefix = std::string(occludedSceneName(kind)) + "-";
-        if (!startsWith(name, prefix)) continue;
-        const int n = positiveInt(name.substr(prefix.size()));
-        if (n < 1 || n > 65535)
-            throw Error("bad scene name '" + name + "': use " + prefix + "N with N lights, 1..65535 (valid: " +
-                        sceneNameHelp() + ")");
-        return makeOccludedScene(kind, n, 1024, 768, seed);
-    }
+    Scene occluded;
+    if (makeOccludedSceneByName(name, occluded, seed)) return occluded;
     std::string path;
     if (startsWith(name, "file:"))
         path = name.substr(5);
@@ -120,7 +113,10 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
 // ---- configurations -------------------------------------------------------------------------------------
 
 std::string ModeConfig::label() const {
-    const std::string meshes = volumeTiles || volumeTest != "sphere" ? "" : " meshes";
+    const std::string meshes = volumeTest != "sphere" ? ""
+                               : !volumeTiles          ? " meshes"
+                               : volumeTileSize != 16  ? " tiles" + std::to_string(volumeTileSize)
+                                                       : "";
     if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "") + meshes;
     if (mode == "lidr")
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
@@ -161,6 +157,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.volumeTest = parseVolumeTest(c.volumeTest);
     o.volumeDetail = c.volumeDetail;
     o.tileCulledVolumes = c.volumeTiles;
+    o.volumeTileSize = c.volumeTileSize;
     o.msaaSamples = c.msaa;
     o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;
@@ -475,7 +472,8 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                         for (int bits : scheme == "auto" ? std::vector<int>{0} : g.indexBits)
                                             for (const auto& vt : g.volumeTests)
                                                 for (bool detail : g.volumeDetail)
-                                                    for (bool tiles : g.volumeTiles) {
+                                                    for (bool tiles : g.volumeTiles)
+                                                    for (int tileSize : g.volumeTileSizes) {
                                                         ModeConfig c = base;
                                                         c.scheme = scheme;
                                                         c.budget = budget;
@@ -483,8 +481,13 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                                         c.volumeTest = volumeTestName(parseVolumeTest(vt));
                                                         c.volumeDetail = detail;
                                                         c.volumeTiles = tiles;
-                                                        // Only the sphere test culls by tiles: one row for the others.
+                                                        c.volumeTileSize = tileSize;
+                                                        // Only the sphere test culls by tiles: one row for the
+                                                        // others, and one without tiles.
                                                         if (!tiles && c.volumeTest != "sphere") continue;
+                                                        if ((!tiles || c.volumeTest != "sphere") &&
+                                                            tileSize != g.volumeTileSizes.front())
+                                                            continue;
                                                         configs.push_back(c);
                                                     }
                             } else if (mode == "tiled") {

@@ -12,6 +12,7 @@
 #include <sstream>
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/scene_loader.h"
+#include "lidr/eval/bench_scenes.h"
 
 namespace lidr::demo {
 
@@ -29,7 +30,8 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 }  // namespace
 
 void SceneChoice::addOptions(CLI::App& app) {
-    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model; default: the built-in room");
+    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, or a "
+                   "built-in occluded bench scene: hall-N / city-N (N lights, e.g. hall-255); default: the built-in room");
     app.add_flag("--smooth-normals", smoothNormals,
                  "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
                  "model may say otherwise with \"smooth_normals\")");
@@ -53,6 +55,8 @@ Scene SceneChoice::load() const {
         o.seed = seed;
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
+    } else if (makeOccludedSceneByName(sceneFile, scene, seed)) {
+        if (time) scene.time = float(*time);
     } else {
         ObjImportOptions objOptions;
         objOptions.smoothNormals = smoothNormals;

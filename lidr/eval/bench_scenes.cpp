@@ -224,6 +224,23 @@ void buildCity(Scene& scene, Scene& parts, SceneRandom& random) {
 
 }  // namespace
 
+bool makeOccludedSceneByName(const std::string& name, Scene& scene, uint32_t seed) {
+    for (OccludedSceneKind kind : {OccludedSceneKind::Hall, OccludedSceneKind::City}) {
+        const std::string prefix = std::string(occludedSceneName(kind)) + "-";
+        if (name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::string digits = name.substr(prefix.size());
+        const bool numeric = !digits.empty() && digits.size() <= 5 &&
+                             std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+        const int n = numeric ? std::stoi(digits) : 0;
+        if (n < 1 || n > 65535)
+            throw Error("bad scene name '" + name + "': use " + prefix + "N with N lights, 1..65535 (e.g. " + prefix +
+                        "255)");
+        scene = makeOccludedScene(kind, n, 1024, 768, seed);
+        return true;
+    }
+    return false;
+}
+
 const char* occludedSceneName(OccludedSceneKind kind) { return kind == OccludedSceneKind::Hall ? "hall" : "city"; }
 
 Scene makeOccludedScene(OccludedSceneKind kind, int lightCount, int width, int height, uint32_t seed) {

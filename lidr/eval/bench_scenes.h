@@ -25,10 +25,6 @@ Scene makeHeavyScene(long totalTriangles, int width = 1024, int height = 768, ui
 // Triangles of every mesh in the scene.
 long sceneTriangleCount(const Scene& scene);
 
-}  // namespace lidr
-
-namespace lidr {
-
 // Deep, occluded scenes (issue 25): the cost of a light-volume pass that rasterises every light's screen area,
 // hidden lights included, shows here and not in the room. Both are one mesh per material (a handful of draws,
 // like an architectural model), 1024x768 by default, seeded static lights of radius 1 to 4 m.
@@ -42,5 +38,8 @@ const char* occludedSceneName(OccludedSceneKind kind);  // "hall", "city"
 // lightCount in [1, 65535].
 Scene makeOccludedScene(OccludedSceneKind kind, int lightCount, int width = 1024, int height = 768,
                         uint32_t seed = 1);
+// By name, as lidr-bench and lidr-demo take it: "hall-N" or "city-N" (N lights). False for other names; a name
+// with the prefix and a bad N throws lidr::Error naming the valid form.
+bool makeOccludedSceneByName(const std::string& name, Scene& scene, uint32_t seed = 1);
 
 }  // namespace lidr

@@ -15,7 +15,7 @@ enum TextureUnit : int {
     // Light volume pass drawing pixel lists (tests/pixel_list_geometry.h): the list step and the colour table.
     kUnitPixelListStep = 0,
     kUnitPixelListColors = 1,
-    // Tiled forward: the tile grid and the light list (lidr/render/light_grid.h).
+    // Tiled forward: the tile grid and the light list (lidr/modes/light_grid.h).
     kUnitTileGrid = 0,
     kUnitTileList = 1,
     // Tile depth bounds: the reduction input, then the min and max tile textures of the depth-bounds pass.

@@ -3,6 +3,15 @@
 
 #include <chrono>
 
+// Valgrind's callgrind client requests (where the headers are installed): with the CPU method, each pass's
+// instructions are dumped apart (scripts/callgrind_passes.sh); outside valgrind each is a few no-op instructions.
+#if defined(__has_include)
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define LIDR_CALLGRIND_PASSES 1
+#endif
+#endif
+
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
 
@@ -65,6 +74,9 @@ void FrameTimer::begin(const std::string& pass) {
     } else {
         glFinish();
         cpuStart_ = nowMilliseconds();
+#ifdef LIDR_CALLGRIND_PASSES
+        CALLGRIND_ZERO_STATS;  // what ran before the pass (and the GL work glFinish waited for) is not its own
+#endif
     }
     const GlCallCounters& c = StateCache::current().counters();
     passStart_ = {c.drawCalls, c.stateCalls};
@@ -84,6 +96,9 @@ void FrameTimer::end() {
     } else {
         glFinish();
         cpuMs_.push_back(nowMilliseconds() - cpuStart_);
+#ifdef LIDR_CALLGRIND_PASSES
+        if (RUNNING_ON_VALGRIND) CALLGRIND_DUMP_STATS_AT(("lidr-pass " + p.pass).c_str());
+#endif
     }
     if (p.fragments >= 0) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }

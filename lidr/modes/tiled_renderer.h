@@ -15,11 +15,11 @@
 #include "lidr/gl/frame_timer.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/base/image.h"
-#include "lidr/render/light_grid.h"
+#include "lidr/modes/light_grid.h"
 #include "lidr/render/light_table.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
-#include "lidr/render/tile_depth_bounds.h"
+#include "lidr/modes/tile_depth_bounds.h"
 
 namespace lidr {
 

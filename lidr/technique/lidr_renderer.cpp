@@ -170,12 +170,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             StateCache::current().bindFramebuffer(0);
         }
     }
-    if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && depthTexture_ && !info.gles) {
-        // OpenGL ES keeps the volume meshes: its depth texture is drawn by a second pre-pass, and a mediump
-        // sampler would round the tile ranges.
-        if (options_.volumeTileSize < 4 || options_.volumeTileSize > 256)
-            throw Error("volumeTileSize must be in [4, 256], got " + std::to_string(options_.volumeTileSize));
-        volumeTiles_ = std::make_unique<TileDepthBounds>(info, width, height, options_.volumeTileSize, depthTexture_);
+    if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && !info.gles) {
+        // OpenGL ES 2.0 keeps the volume meshes: it cannot read depth back (glReadPixels takes colour only).
+        volumeTiles_ = std::make_unique<VolumeTiles>(width, height, options_.volumeTileSize);
     }
     selectVariant(first.budget, first.indexBits);
     selectTransparentVariant(first.budget, first.indexBits);
@@ -250,36 +247,6 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     const FrameScope frame(stats_, timer_, lights.size());
 
-    TimedPass lightTableTime(timer_, "light-table");
-    // Lights that cannot touch a visible surface get no index: outside the view frustum, or touching no
-    // mesh's bounds. With an automatic width the rest are numbered 1..n in draw order and only they go into
-    // the light table.
-    std::vector<VolumeLight> volumes;
-    std::vector<PointLight> tableLights;
-    frameLights_.clear();
-    for (uint32_t index : drawOrder(lights)) {
-        const PointLight& l = lights[index - 1];
-        const glm::vec4 posRadius(l.position, l.radius);
-        if (options_.cullLights && (!sphereMayBeVisible(cam, l.position, l.radius) || !touchesScene(posRadius)))
-            continue;
-        if (autoBits) {
-            tableLights.push_back(l);
-            frameLights_.push_back(index);
-            index = static_cast<uint32_t>(frameLights_.size());
-        }
-        volumes.push_back({index, posRadius});
-    }
-    lightTable_.update(autoBits ? tableLights : lights);
-    stats_.drawnLights = static_cast<int>(volumes.size());
-    AutoDecision& decision = stats_.autoDecision;
-    decision.autoBudget = autoBudget;
-    decision.autoIndexBits = autoBits;
-    decision.visibleLights = stats_.drawnLights;
-    const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
-    selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
-    selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
-    lightTableTime.end();
-
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
         targets_.bindColor();
@@ -305,15 +272,48 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         depthPrepassTime.end();
         if (volumeTiles_) {
             TimedPass volumeTilesTime(timer_, "volume-tiles");
-            volumePass_.setTileDepth(volumeTiles_->reduce(), options_.volumeTileSize, volumeTiles_->tilesX(),
-                                     volumeTiles_->tilesY());
-            targets_.bindSingleSample();
+            volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam);  // the single-sample pre-pass depth
+            volumePass_.setTiles(volumeTiles_.get(), cam);
         }
     } else {
         ClearAction clear;
         clear.depth = true;
         StateCache::current().clear(clear);
     }
+
+    TimedPass lightTableTime(timer_, "light-table");
+    // Lights that cannot touch a visible surface get no index: outside the view frustum, touching no mesh's
+    // bounds, or (tile-culled volumes) reaching no surface of the pre-pass depth, unless they reach a transparent
+    // mesh. With an automatic width the rest are numbered 1..n in draw order and only they go into the light
+    // table.
+    std::vector<VolumeLight> volumes;
+    std::vector<PointLight> tableLights;
+    frameLights_.clear();
+    for (uint32_t index : drawOrder(lights)) {
+        const PointLight& l = lights[index - 1];
+        const glm::vec4 posRadius(l.position, l.radius);
+        if (options_.cullLights && (!sphereMayBeVisible(cam, l.position, l.radius) || !touchesScene(posRadius)))
+            continue;
+        if (options_.cullLights && volumePass_.drawsScreenTiles() && !volumePass_.sphereReachesTiles(posRadius) &&
+            !(drawTransparent_ && reachesTransparentMesh({index, posRadius})))
+            continue;
+        if (autoBits) {
+            tableLights.push_back(l);
+            frameLights_.push_back(index);
+            index = static_cast<uint32_t>(frameLights_.size());
+        }
+        volumes.push_back({index, posRadius});
+    }
+    lightTable_.update(autoBits ? tableLights : lights);
+    stats_.drawnLights = static_cast<int>(volumes.size());
+    AutoDecision& decision = stats_.autoDecision;
+    decision.autoBudget = autoBudget;
+    decision.autoIndexBits = autoBits;
+    decision.visibleLights = stats_.drawnLights;
+    const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
+    selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
+    selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
+    lightTableTime.end();
 
     // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
     // packed with is packed again, at once, with the smallest budget that holds it (doc/auto.md).
@@ -442,7 +442,11 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumePass_.end();
-    if (measure) probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_));
+    lightVolumesTime.end();
+    if (measure) {
+        TimedPass probeTime(timer_, "overlap-probe");  // apart: full-screen draws, not volume fragments
+        probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_));
+    }
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {

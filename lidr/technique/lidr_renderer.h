@@ -20,7 +20,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
-#include "lidr/render/tile_depth_bounds.h"
+#include "lidr/technique/volume_tiles.h"
 
 namespace lidr {
 
@@ -47,11 +47,12 @@ struct LidrOptions {
     // Coarser volumes (20 or 80 faces) for lights small on screen, where they reach at most a pixel past the
     // 320-face one (LightVolumePass); false: the 320-face volume for every light.
     bool volumeDetail = false;
-    // Tile-culled volumes (the sphere test, desktop GL): the pre-pass depth is reduced to a min/max per
-    // volumeTileSize^2 tile on the GPU and read back, and each light is drawn as screen quads over the tiles its
-    // sphere reaches in depth instead of its volume mesh: lights hidden behind nearer surfaces and empty tiles
-    // cost no fragment, and a later stencil rank window (budget 16) touches only tiles with more candidate
-    // lights than its first rank. The lists are the same (the shader's test is); false: volume meshes.
+    // Tile-culled volumes (the sphere test, desktop GL): the pre-pass depth is read back and kept per
+    // volumeTileSize^2 tile as a depth range and a mask of depth slices holding surfaces (volume_tiles.h), and
+    // each light is drawn as screen quads over the tiles where its sphere may reach a surface instead of its
+    // volume mesh: lights hidden behind nearer surfaces and empty tiles cost no fragment, and the second stencil
+    // rank window (budget 16) touches only tiles with more than 8 candidate lights. The lists are the same (the
+    // shader's test is); false: volume meshes.
     bool tileCulledVolumes = true;
     int volumeTileSize = 16;
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
@@ -168,7 +169,7 @@ private:
     IndexTargets* transparentIndexTargets_ = nullptr;  // when transparent layers need their own front-face lists
     gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
     gl::Framebuffer depthTextureFbo_;       // OpenGL ES: the pre-pass drawn again into depthTexture_
-    std::unique_ptr<TileDepthBounds> volumeTiles_;  // LidrOptions::tileCulledVolumes: depthTexture_'s tile ranges
+    std::unique_ptr<VolumeTiles> volumeTiles_;  // LidrOptions::tileCulledVolumes: the frame's depth per tile
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;

@@ -143,7 +143,6 @@ void LightVolumeGeometry::begin(const CameraMatrices& camera, glm::ivec2 targetS
     targetSize_ = targetSize;
     depth_ = depth;
     tileQuadPixels_ = 0;
-    tiledLights_.clear();
     if (drawsScreenTiles()) {
         glBindBuffer(GL_ARRAY_BUFFER, tileQuads_.id());  // attributes set per step (the data is re-specified)
         glEnableVertexAttribArray(gl::kPosition);
@@ -244,54 +243,72 @@ void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<Vol
     }
 }
 
-void LightVolumeGeometry::setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY) {
-    if (!ranges.empty() && (test_ != VolumeTest::Sphere || size_t(tilesX) * size_t(tilesY) != ranges.size() ||
-                            tileSize < 1))
-        throw Error("tile-culled light volumes: the sphere test with one depth range per tile");
-    tileRanges_ = std::move(ranges);
-    tileSize_ = tileSize;
-    tilesX_ = tilesX;
-    tilesY_ = tilesY;
+size_t LightVolumeGeometry::SphereHash::operator()(const SphereKey& k) const {
+    size_t h = 0;
+    for (int i = 0; i < 4; ++i) h = h * 0x9E3779B97F4A7C15ull + std::hash<float>()(k.posRadius[i]);
+    return h;
+}
+
+void LightVolumeGeometry::setTiles(const VolumeTiles* tiles, const CameraMatrices& camera) {
+    if (tiles && test_ != VolumeTest::Sphere) throw Error("tile-culled light volumes are the sphere test's");
+    tiles_ = tiles;
+    camera_ = camera;
+    sphereTiles_.clear();  // a new frame's tiles
+    tiledLights_.clear();
+}
+
+const LightVolumeGeometry::SphereTiles& LightVolumeGeometry::tilesOf(const glm::vec4& posRadius) {
+    auto [it, added] = sphereTiles_.try_emplace(SphereKey{posRadius});
+    SphereTiles& result = it->second;
+    if (!added) return result;
+    std::vector<TileReach>& tiles = result.tiles;
+    const glm::vec3 centre(posRadius);
+    const float radius = posRadius.w * kSphereRadiusScale;
+    glm::ivec4 rect;  // pixels, inclusive, y up
+    float nearDepth = 0.0f, farDepth = 1.0f;
+    if (!spherePixelRect(camera_, centre, radius, rect) ||
+        !VolumeTiles::sphereDepthSpan(camera_, centre, radius, nearDepth, farDepth))
+        return result;
+    result.rect = rect;
+    const glm::vec3 viewCentre(camera_.view * glm::vec4(centre, 1.0f));
+    const int size = tiles_->tileSize(), tilesX = tiles_->tilesX(), tilesY = tiles_->tilesY();
+    const int tx0 = rect.x / size, tx1 = std::min(rect.z / size, tilesX - 1);
+    const int ty0 = rect.y / size, ty1 = std::min(rect.w / size, tilesY - 1);
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const int t = ty * tilesX + tx;
+            const uint32_t slices = tiles_->slicesReached(t, viewCentre, radius, nearDepth, farDepth);
+            if (slices) tiles.push_back({t, slices});
+        }
+    return result;
+}
+
+bool LightVolumeGeometry::sphereReachesTiles(const glm::vec4& posRadius) {
+    if (!tiles_) throw Error("sphereReachesTiles without tiles");
+    return !tilesOf(posRadius).tiles.empty();
 }
 
 void LightVolumeGeometry::cullToTiles(const std::vector<VolumeLight>& lights) {
     if (tiledLights_.size() == lights.size() &&
-        std::equal(lights.begin(), lights.end(), tiledLights_.begin(), [](const VolumeLight& a, const VolumeLight& b) {
-            return a.index == b.index && a.posRadius == b.posRadius;
-        }))
-        return;  // the frame's earlier draw (another rank window) culled these lights already
-    tiledLights_ = lights;
-    lightTiles_.assign(lights.size(), {});
-    tileCandidates_.assign(tileRanges_.size(), 0);
-    // Each tile's stored depth range widened as the shader widens a pixel's (uDepthMargin), as distances.
-    const float margin = kSphereDepthSteps / depthUnits_;
-    std::vector<glm::vec2> tileDistance(tileRanges_.size(), glm::vec2(-1.0f));  // x < 0: no surface in the tile
-    for (size_t t = 0; t < tileRanges_.size(); ++t) {
-        const TileDepthRange& r = tileRanges_[t];
-        if (r.minDepth >= 1.0f) continue;  // background only: the shader discards every pixel
-        tileDistance[t] = {viewDepthFromWindowDepth(camera_, std::max(r.minDepth - margin, 0.0f)),
-                           viewDepthFromWindowDepth(camera_, std::min(r.maxDepth + margin, 1.0f))};
-    }
-    for (size_t i = 0; i < lights.size(); ++i) {
-        const glm::vec3 centre(lights[i].posRadius);
-        const float radius = lights[i].posRadius.w * kSphereRadiusScale;
-        glm::ivec4 rect;  // pixels, inclusive, y up
-        if (!spherePixelRect(camera_, centre, radius, rect)) continue;
-        // The sphere's extent along the view direction, widened by float rounding of the distances.
-        const float along = glm::dot(centre - camera_.eye, camera_.forward);
-        const float slack = 1e-5f * (std::abs(along) + radius) + 1e-6f;
-        const float nearest = along - radius - slack, farthest = along + radius + slack;
-        const int tx0 = rect.x / tileSize_, tx1 = std::min(rect.z / tileSize_, tilesX_ - 1);
-        const int ty0 = rect.y / tileSize_, ty1 = std::min(rect.w / tileSize_, tilesY_ - 1);
-        for (int ty = ty0; ty <= ty1; ++ty)
-            for (int tx = tx0; tx <= tx1; ++tx) {
-                const int t = ty * tilesX_ + tx;
-                const glm::vec2 d = tileDistance[size_t(t)];
-                if (d.x < 0.0f || farthest < d.x || nearest > d.y) continue;
-                lightTiles_[i].push_back(t);
-                ++tileCandidates_[size_t(t)];
+        std::equal(lights.begin(), lights.end(), tiledLights_.begin(),
+                   [](const VolumeLight& a, const glm::vec4& b) { return a.posRadius == b; }))
+        return;  // the frame's earlier draw (another rank window) gathered these lights already
+    tiledLights_.clear();
+    lightTiles_.clear();
+    const size_t tiles = size_t(tiles_->tileCount());
+    sliceCounts_.assign(tiles * 32, 0);
+    for (const VolumeLight& l : lights) {
+        tiledLights_.push_back(l.posRadius);
+        lightTiles_.push_back(&tilesOf(l.posRadius));
+        for (const TileReach& r : lightTiles_.back()->tiles)
+            for (uint32_t bits = r.slices; bits; bits &= bits - 1) {
+                uint8_t& n = sliceCounts_[size_t(r.tile) * 32 + size_t(__builtin_ctz(bits))];
+                if (n < 255) ++n;
             }
     }
+    tileCandidates_.assign(tiles, 0);
+    for (size_t t = 0; t < tiles; ++t)
+        tileCandidates_[t] = *std::max_element(sliceCounts_.begin() + t * 32, sliceCounts_.begin() + (t + 1) * 32);
 }
 
 void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {
@@ -305,22 +322,27 @@ void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {
         return glm::vec3(v) / v.w;
     };
     tileVertices_.clear();
+    const int tilesX = tiles_->tilesX(), size = tiles_->tileSize();
     for (int slot = 0; slot < step.lightCount; ++slot) {
-        const std::vector<int>& tiles = lightTiles_[size_t(step.firstLight + slot)];
+        const SphereTiles& sphere = *lightTiles_[size_t(step.firstLight + slot)];
+        const std::vector<TileReach>& tiles = sphere.tiles;
         for (size_t k = 0; k < tiles.size();) {
             // A run of kept tiles along one row becomes one quad.
-            const int first = tiles[k];
+            const int first = tiles[k].tile;
             if (tileCandidates_[size_t(first)] <= skipTilesUpTo_) {
                 ++k;
                 continue;
             }
             int last = first;
-            while (k + 1 < tiles.size() && tiles[k + 1] == last + 1 && (last + 1) % tilesX_ != 0 &&
+            while (k + 1 < tiles.size() && tiles[k + 1].tile == last + 1 && (last + 1) % tilesX != 0 &&
                    tileCandidates_[size_t(last + 1)] > skipTilesUpTo_)
-                last = tiles[++k];
+                last = tiles[++k].tile;
             ++k;
-            const int y0 = (first / tilesX_) * tileSize_, y1 = std::min(y0 + tileSize_, targetSize_.y);
-            const int x0 = (first % tilesX_) * tileSize_, x1 = std::min((last % tilesX_ + 1) * tileSize_, targetSize_.x);
+            // The run's pixels, clipped to the sphere's own rectangle (inclusive there, exclusive here).
+            const glm::ivec4& r = sphere.rect;
+            const int y0 = std::max((first / tilesX) * size, r.y), y1 = std::min({(first / tilesX + 1) * size, r.w + 1, targetSize_.y});
+            const int x0 = std::max((first % tilesX) * size, r.x), x1 = std::min({(last % tilesX + 1) * size, r.z + 1, targetSize_.x});
+            if (x1 <= x0 || y1 <= y0) continue;
             tileQuadPixels_ += long(x1 - x0) * long(y1 - y0);
             const glm::vec3 a = nearPoint(x0, y0), b = nearPoint(x1, y0), c = nearPoint(x1, y1), d = nearPoint(x0, y1);
             // Clockwise on screen: the pass's state culls front faces (it draws a volume's back faces).

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -13,7 +14,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/depth_prepass.h"
-#include "lidr/render/light_grid.h"
+#include "lidr/technique/volume_tiles.h"
 #include "lidr/scene/camera.h"
 #include "lidr/technique/draw_target_programs.h"
 #include "lidr/technique/light_volume_mesh.h"
@@ -79,13 +80,18 @@ public:
     // kSphereDepthSteps are steps of it.
     void setDepthBits(int bits) { depthUnits_ = float((1u << bits) - 1u); }
 
-    // Tile-culled volumes (the sphere test only): with the pre-pass depth range of each T x T tile (rows from
-    // the bottom, tile (x, y) at y * tilesX + x), the next frame draws each light as screen quads over the tiles
-    // of its sphere's screen rectangle whose depth range its sphere reaches, and a later rank window only over
-    // tiles with more candidate lights than the window's first rank. The fragment shader's test is unchanged, so
-    // the lists are the same; occluded lights and empty tiles cost nothing. Empty `ranges`: volume meshes.
-    void setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY);
-    bool drawsScreenTiles() const override { return !tileRanges_.empty(); }
+    // Tile-culled volumes (the sphere test only): with the frame's pre-pass depth per tile (volume_tiles.h; it
+    // must outlive the pass), the pass draws each light as screen quads over the tiles of its sphere's screen
+    // rectangle that may hold a surface within its depth span, and a rank window from rank k > 0 only over tiles
+    // with more than k such lights. The fragment shader's test is unchanged, so the lists are the same; hidden
+    // lights and empty tiles cost no fragment. nullptr: volume meshes.
+    void setTiles(const VolumeTiles* tiles, const CameraMatrices& camera);
+    bool drawsScreenTiles() const override { return tiles_ != nullptr; }
+    // With tiles: whether the sphere (centre, radius) may mark any pixel of this frame (some tile may hold a
+    // surface inside it). Its tiles are kept for the frame's draws.
+    bool sphereReachesTiles(const glm::vec4& posRadius);
+    // The depth margin of the sphere test, in window depth: what VolumeTiles::build takes.
+    float depthMargin() const { return kSphereDepthSteps / depthUnits_; }
     // Rasterised area of the last frame's tile quads, in pixels (0 without tiles): what the culling kept.
     long tileQuadPixels() const { return tileQuadPixels_; }
 
@@ -100,8 +106,17 @@ public:
     static constexpr float kSphereDepthSteps = 3.0f;
 
 private:
+    struct TileReach {
+        int tile;
+        uint32_t slices;  // VolumeTiles::slicesReached
+    };
+    struct SphereTiles {
+        glm::ivec4 rect{0};  // the sphere's pixel rectangle (spherePixelRect): quads are clipped to it
+        std::vector<TileReach> tiles;
+    };
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
-    void cullToTiles(const std::vector<VolumeLight>& lights);  // lightTiles_, tileCandidates_ for this frame
+    const SphereTiles& tilesOf(const glm::vec4& posRadius);  // the sphere's tiles this frame (cached)
+    void cullToTiles(const std::vector<VolumeLight>& lights);     // lightTiles_, tileCandidates_ for a draw
     void drawTileQuads(const VolumeStep& step);
     static int batchFor(int batch, int maxVertexUniformVectors, int targetCount);
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
@@ -130,11 +145,20 @@ private:
     std::vector<glm::vec4> lightData_, colorData_;
     // Tile-culled volumes (setTileDepth): the frame's tile ranges, each light's tiles (by its place in the
     // pass's light list) and each tile's candidate count, the stream buffer of quads and its program.
-    std::vector<TileDepthRange> tileRanges_;
-    int tileSize_ = 16, tilesX_ = 0, tilesY_ = 0;
-    std::vector<VolumeLight> tiledLights_;         // the lights lightTiles_ was built for
-    std::vector<std::vector<int>> lightTiles_;
+    const VolumeTiles* tiles_ = nullptr;
+    struct SphereKey {
+        glm::vec4 posRadius;
+        bool operator==(const SphereKey& o) const { return posRadius == o.posRadius; }
+    };
+    struct SphereHash {
+        size_t operator()(const SphereKey& k) const;
+    };
+    std::unordered_map<SphereKey, SphereTiles, SphereHash> sphereTiles_;  // this frame's, by sphere
+    std::vector<glm::vec4> tiledLights_;           // the spheres lightTiles_ was gathered for
+    std::vector<const SphereTiles*> lightTiles_;
+    // Per tile: at most this many lights mark one of its pixels (the most spheres meeting one of its slices).
     std::vector<int> tileCandidates_;
+    std::vector<uint8_t> sliceCounts_;  // per tile and slice, saturating at 255 (a bound above 16 is as good)
     int skipTilesUpTo_ = 0;  // the current draw's tiles with at most this many candidates are skipped
     long tileQuadPixels_ = 0;
     gl::Buffer tileQuads_;

@@ -76,10 +76,12 @@ public:
     // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
     // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
-    // The sphere test's tile culling for the next begin() (LightVolumeGeometry::setTileDepth).
-    void setTileDepth(std::vector<TileDepthRange> ranges, int tileSize, int tilesX, int tilesY) {
-        volumes_.setTileDepth(std::move(ranges), tileSize, tilesX, tilesY);
-    }
+    // The sphere test's tile culling (LightVolumeGeometry::setTiles); its margin for VolumeTiles::build.
+    void setTiles(const VolumeTiles* tiles, const CameraMatrices& camera) { volumes_.setTiles(tiles, camera); }
+    bool drawsScreenTiles() const { return volumes_.drawsScreenTiles(); }
+    // With tiles: whether the sphere may mark any pixel this frame (LightVolumeGeometry::sphereReachesTiles).
+    bool sphereReachesTiles(const glm::vec4& posRadius) { return volumes_.sphereReachesTiles(posRadius); }
+    float tileDepthMargin() const { return volumes_.depthMargin(); }
     // Pixels the tile quads of the last pass covered (0 without tile culling).
     long tileQuadPixels() const { return volumes_.tileQuadPixels(); }
     const CameraMatrices& camera() const { return camera_; }

@@ -1,4 +1,4 @@
-// Reads the tiled-forward light grid (lidr/render/light_grid.h, doc/tiled.md). GLSL 1.20, no integers or bit ops:
+// Reads the tiled-forward light grid (lidr/modes/light_grid.h, doc/tiled.md). GLSL 1.20, no integers or bit ops:
 // bytes are rebuilt with floor(x * 255 + 0.5), exact for every 8-bit value, and every number stays an
 // integer below 2^24, exact in fp32.
 //   LIDR_TILE_SIZE        tile edge in pixels

@@ -1,4 +1,4 @@
-// Depth in colour targets for the tile min/max reduction (lidr/render/tile_depth_bounds.h). GL 2.1 cannot sample
+// Depth in colour targets for the tile min/max reduction (lidr/modes/tile_depth_bounds.h). GL 2.1 cannot sample
 // the packed depth-stencil renderbuffer, so the pre-Z pass also writes each fragment's depth here.
 // Packed: an RGBA8 texel holds one depth as a 24-bit integer in RGB (R high), in units of 1 / (2^24 - 1).
 // The values stay integers below 2^24 in the shader, so min/max over them is exact in fp32; only the first

@@ -11,14 +11,14 @@
 // Formats: the full-size depth copy is always RGBA8 with depth packed as a 24-bit integer in RGB (4 bytes a
 // pixel, exact). The reduced textures are RGBA32F (R = min, G = max) where ARB_texture_float exists and the
 // driver renders to it; otherwise packed RGBA8 too, with the min and the max reduced in two chains (no float
-// render targets and no multiple render targets needed). shaders/common/depth_pack.glsl has the encoding.
+// render targets and no multiple render targets needed). shaders/modes/depth_pack.glsl has the encoding.
 #include <vector>
 
 #include "lidr/scene/camera.h"
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
-#include "lidr/render/light_grid.h"
+#include "lidr/modes/light_grid.h"
 
 namespace lidr {
 
@@ -32,10 +32,6 @@ public:
     // ranges come back with `split` set.
     TileDepthBounds(const GlInfo& info, int width, int height, int tileSize, const gl::Renderbuffer& depthStencil,
                     bool forcePacked = false, bool halfZ = false);
-    // The reduction alone, of a depth texture the caller fills (LIDR's copy of its pre-pass depth, which its
-    // sphere test samples): the first pass samples `depthTexture` (its R is the window depth), no pre-Z pass or
-    // colour copy of its own. prepass() is not available; no half-Z. The texture must outlive this object.
-    TileDepthBounds(const GlInfo& info, int width, int height, int tileSize, const gl::Texture& depthTexture);
     // Clears depth, stencil and the depth copy, then draws the scene's opaque geometry.
     void prepass(const GpuScene& scene, const CameraMatrices& camera) const;
     // Reduces the depth copy to one (min, max) per tile on the GPU and reads the result back.
@@ -50,8 +46,7 @@ private:
         gl::Texture columns, tiles;
         gl::Framebuffer columnsFbo, tilesFbo;
     };
-    void createTargets(const gl::Renderbuffer* depthStencil);
-    void createPrograms(int tileSize);
+    void createTargets(const gl::Renderbuffer& depthStencil);
     Chain makeChain() const;
     void runPass(const gl::Program& program, const gl::Texture& input, const gl::Framebuffer& output, int outW,
                  int outH) const;
@@ -60,7 +55,6 @@ private:
     DepthReductionFormat format_;
     int width_, height_, tilesX_, tilesY_;
     gl::Texture depthCopy_;
-    const gl::Texture* depthTexture_ = nullptr;  // the reduction-only constructor's input
     gl::Framebuffer prepassFbo_;
     std::vector<Chain> chains_;  // float: one (min and max together); packed: min, then max
     std::vector<Chain> splitChains_;  // half-Z. float: one (far min, near max); packed: far min, then near max

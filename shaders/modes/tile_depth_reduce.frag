@@ -4,7 +4,6 @@
 // any tile size T. The loop has the constant bound GLSL ES 1.00-class compilers want and breaks at the
 // input's edge (the last row and column of tiles may be partial).
 //   LIDR_INPUT_PACKED   1: input texels hold one packed depth (depth_pack.glsl); 0: float (min, max) in RG
-//   LIDR_INPUT_DEPTH    1: the input is a depth texture (R: window depth), e.g. LIDR's pre-pass depth copy
 //   LIDR_OUTPUT_PACKED  1: write one packed depth, the max if LIDR_REDUCE_MAX else the min; 0: float RG
 #include "depth_pack.glsl"
 
@@ -27,13 +26,6 @@ void main() {
         vec4 texel = texture2D(uInput, (p + 0.5) / uInputSize);
 #if LIDR_INPUT_PACKED
         float v = lidrUnpackDepthUnits(texel);
-        range = vec2(min(range.x, v), max(range.y, v));
-#elif LIDR_INPUT_DEPTH
-#if LIDR_OUTPUT_PACKED
-        float v = floor(texel.r * kLidrDepthUnits + 0.5);  // packed units: exact integers below 2^24
-#else
-        float v = texel.r;
-#endif
         range = vec2(min(range.x, v), max(range.y, v));
 #else
         range = vec2(min(range.x, texel.r), max(range.y, texel.g));

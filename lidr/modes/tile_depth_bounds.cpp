@@ -1,4 +1,4 @@
-#include "lidr/render/tile_depth_bounds.h"
+#include "lidr/modes/tile_depth_bounds.h"
 #include "lidr/base/gl.h"
 
 #include "lidr/render/depth_prepass.h"
@@ -41,50 +41,27 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
     const LightGrid shape(width, height, tileSize);  // validates the tile size
     tilesX_ = shape.tilesX();
     tilesY_ = shape.tilesY();
-    createTargets(&depthStencil);
+    createTargets(depthStencil);
     if (format_ == DepthReductionFormat::Float32 && !(complete(chains_[0].columnsFbo) && complete(chains_[0].tilesFbo))) {
         // ARB_texture_float makes float textures, not necessarily float render targets: fall back.
         format_ = DepthReductionFormat::PackedRGBA8;
-        createTargets(&depthStencil);
+        createTargets(depthStencil);
     }
     prepassFbo_.checkComplete("tile pre-Z");
-    prepassProgram_ = gl::Program::create("tile-prez", buildShaderSource("geometry.vert"),
-                                          buildShaderSource("depth_to_color.frag"), geometryAttributes());
-    createPrograms(tileSize);
-}
-
-TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int tileSize,
-                                 const gl::Texture& depthTexture)
-    : format_(info.textureFloat ? DepthReductionFormat::Float32 : DepthReductionFormat::PackedRGBA8),
-      width_(width),
-      height_(height),
-      depthTexture_(&depthTexture) {
-    const LightGrid shape(width, height, tileSize);
-    tilesX_ = shape.tilesX();
-    tilesY_ = shape.tilesY();
-    createTargets(nullptr);
-    if (format_ == DepthReductionFormat::Float32 && !(complete(chains_[0].columnsFbo) && complete(chains_[0].tilesFbo))) {
-        format_ = DepthReductionFormat::PackedRGBA8;
-        createTargets(nullptr);
-    }
-    createPrograms(tileSize);
-}
-
-void TileDepthBounds::createPrograms(int tileSize) {
     for (const std::vector<Chain>* chains : {&chains_, &splitChains_})
         for (const Chain& c : *chains) {
             c.columnsFbo.checkComplete("tile depth reduction (columns)");
             c.tilesFbo.checkComplete("tile depth reduction (tiles)");
         }
     StateCache::current().bindFramebuffer(0);
+
+    prepassProgram_ = gl::Program::create("tile-prez", buildShaderSource("geometry.vert"),
+                                          buildShaderSource("depth_to_color.frag"), geometryAttributes());
     const bool packed = format_ == DepthReductionFormat::PackedRGBA8;
     for (size_t c = 0; c < chains_.size(); ++c) {
         for (int vertical = 0; vertical < 2; ++vertical) {
             ShaderDefines d;
-            // The first pass reads the packed depth copy, or the caller's depth texture.
-            const bool fromDepthTexture = depthTexture_ && !vertical;
-            d.push_back({"LIDR_INPUT_PACKED", !fromDepthTexture && (packed || !vertical) ? "1" : "0"});
-            d.push_back({"LIDR_INPUT_DEPTH", fromDepthTexture ? "1" : "0"});
+            d.push_back({"LIDR_INPUT_PACKED", packed || !vertical ? "1" : "0"});  // the depth copy is packed
             d.push_back({"LIDR_OUTPUT_PACKED", packed ? "1" : "0"});
             d.push_back({"LIDR_REDUCE_COUNT", std::to_string(tileSize)});
             d.push_back({"LIDR_REDUCE_VERTICAL", std::to_string(vertical)});
@@ -116,13 +93,11 @@ void TileDepthBounds::createPrograms(int tileSize) {
     checkGl("TileDepthBounds");
 }
 
-void TileDepthBounds::createTargets(const gl::Renderbuffer* depthStencil) {
+void TileDepthBounds::createTargets(const gl::Renderbuffer& depthStencil) {
     // The full-size copy is always packed RGBA8 (4 bytes a pixel); the small reduced ones use the format.
-    if (depthStencil) {
-        depthCopy_ = colorTexture(DepthReductionFormat::PackedRGBA8, width_, height_);
-        prepassFbo_ = colorFbo(depthCopy_);
-        prepassFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, *depthStencil);
-    }
+    depthCopy_ = colorTexture(DepthReductionFormat::PackedRGBA8, width_, height_);
+    prepassFbo_ = colorFbo(depthCopy_);
+    prepassFbo_.attachRenderbuffer(GL_DEPTH_STENCIL_ATTACHMENT, depthStencil);
     chains_.clear();
     splitChains_.clear();
     const int chainCount = format_ == DepthReductionFormat::Float32 ? 1 : 2;
@@ -145,12 +120,11 @@ TileDepthBounds::Chain TileDepthBounds::makeChain() const {
 
 size_t TileDepthBounds::bytes() const {
     const size_t texel = format_ == DepthReductionFormat::Float32 ? 16 : 4;
-    return (depthTexture_ ? 0 : 4 * size_t(width_) * height_) +
+    return 4 * size_t(width_) * height_ +
            texel * (chains_.size() + splitChains_.size()) * (size_t(tilesX_) * height_ + size_t(tilesX_) * tilesY_);
 }
 
 void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camera) const {
-    if (depthTexture_) throw Error("TileDepthBounds: the reduction-only bounds have no pre-Z pass of their own");
     StateCache& cache = StateCache::current();
     ClearAction clear;
     clear.color = clear.depth = clear.stencil = true;
@@ -205,7 +179,7 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     for (size_t c = 0; c < chains_.size(); ++c) {
-        runPass(horizontal_[c], depthTexture_ ? *depthTexture_ : depthCopy_, chains_[c].columnsFbo, tilesX_, height_);
+        runPass(horizontal_[c], depthCopy_, chains_[c].columnsFbo, tilesX_, height_);
         runPass(vertical_[c], chains_[c].columns, chains_[c].tilesFbo, tilesX_, tilesY_);
     }
     for (size_t c = 0; c < splitChains_.size(); ++c) {  // half-Z: needs the min/max tiles just reduced

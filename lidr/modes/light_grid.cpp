@@ -1,4 +1,4 @@
-#include "lidr/render/light_grid.h"
+#include "lidr/modes/light_grid.h"
 #include "lidr/base/gl.h"
 
 #include <algorithm>

@@ -1,0 +1,141 @@
+#include "lidr/technique/volume_tiles.h"
+#include "lidr/base/gl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "lidr/base/error.h"
+
+namespace lidr {
+
+namespace {
+constexpr int kSlices = 32;
+// Float rounding of a depth computed two ways (the shader's and this file's): a few steps of a 24-bit buffer.
+constexpr float kDepthSlack = 4.0f / 16777215.0f;
+
+uint32_t sliceMask(int first, int last) {  // bits first..last, 0 <= first <= last < 32
+    const uint32_t upTo = last >= 31 ? 0xFFFFFFFFu : (1u << (last + 1)) - 1u;
+    return upTo & ~((1u << first) - 1u);
+}
+}  // namespace
+
+VolumeTiles::VolumeTiles(int width, int height, int tileSize)
+    : width_(width), height_(height), tileSize_(tileSize) {
+    if (tileSize < 4 || tileSize > 256)
+        throw Error("light-volume tiles: the tile size must be in [4, 256], got " + std::to_string(tileSize));
+    if (width < 1 || height < 1) throw Error("light-volume tiles: the target must be at least 1 x 1");
+    tilesX_ = (width + tileSize - 1) / tileSize;
+    tilesY_ = (height + tileSize - 1) / tileSize;
+}
+
+void VolumeTiles::build(const std::vector<float>& depth, float margin, const CameraMatrices& camera) {
+    if (depth.size() != size_t(width_) * size_t(height_))
+        throw Error("light-volume tiles: " + std::to_string(depth.size()) + " depths for a " + std::to_string(width_) +
+                    " x " + std::to_string(height_) + " target");
+    const glm::mat4& P = camera.projection;
+    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("light-volume tiles need a perspective projection");
+    depthToDistance_ = {0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)};
+    // NDC x = P00 (x / -z) - P20, so x / -z = (ndc + P20) / P00; the same for y.
+    slopeX_.resize(size_t(tilesX_) + 1);
+    slopeY_.resize(size_t(tilesY_) + 1);
+    for (int i = 0; i <= tilesX_; ++i)
+        slopeX_[size_t(i)] = (2.0f * float(std::min(i * tileSize_, width_)) / float(width_) - 1.0f + P[2][0]) / P[0][0];
+    for (int i = 0; i <= tilesY_; ++i)
+        slopeY_[size_t(i)] = (2.0f * float(std::min(i * tileSize_, height_)) / float(height_) - 1.0f + P[2][1]) / P[1][1];
+    const size_t tiles = size_t(tileCount());
+    minDepth_.assign(tiles, 2.0f);
+    maxDepth_.assign(tiles, -1.0f);
+    slices_.assign(tiles, 0u);
+    margin += kDepthSlack;
+    // Pass 1: each tile's range of surface depths, widened by the margin.
+    for (int y = 0; y < height_; ++y) {
+        const float* row = depth.data() + size_t(y) * size_t(width_);
+        const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
+        for (int x = 0; x < width_; ++x) {
+            const float d = row[x];
+            if (!(d < 1.0f)) continue;  // background: the sphere test discards it
+            const size_t t = tileRow + size_t(x / tileSize_);
+            minDepth_[t] = std::min(minDepth_[t], d - margin);
+            maxDepth_[t] = std::max(maxDepth_[t], d + margin);
+        }
+    }
+    // Pass 2: the slices each pixel's widened depth overlaps.
+    std::vector<float> scale(tiles, 0.0f);
+    for (size_t t = 0; t < tiles; ++t)
+        if (maxDepth_[t] > minDepth_[t]) scale[t] = float(kSlices) / (maxDepth_[t] - minDepth_[t]);
+    for (int y = 0; y < height_; ++y) {
+        const float* row = depth.data() + size_t(y) * size_t(width_);
+        const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
+        for (int x = 0; x < width_; ++x) {
+            const float d = row[x];
+            if (!(d < 1.0f)) continue;
+            const size_t t = tileRow + size_t(x / tileSize_);
+            const float lo = (d - margin - minDepth_[t]) * scale[t], hi = (d + margin - minDepth_[t]) * scale[t];
+            const int first = std::clamp(int(std::floor(lo)), 0, kSlices - 1);
+            const int last = std::clamp(int(std::floor(hi)), 0, kSlices - 1);
+            slices_[t] |= sliceMask(first, last);
+        }
+    }
+}
+
+void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera) {
+    readback_.resize(size_t(width_) * size_t(height_));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, readback_.data());
+    checkGl("light-volume tiles: depth read-back");
+    build(readback_, margin, camera);
+}
+
+uint32_t VolumeTiles::slicesReached(int tile, const glm::vec3& c, float radius, float nearDepth, float farDepth) const {
+    const float lo = minDepth_[size_t(tile)], hi = maxDepth_[size_t(tile)];
+    if (!(hi > lo) || farDepth < lo || nearDepth > hi) return 0;
+    const float scale = float(kSlices) / (hi - lo), width = (hi - lo) / float(kSlices);
+    // Slices are widened by one on each side: the pixels' slices were found with the same float formula, so a
+    // depth on a slice boundary may have landed on either side of it.
+    const int first = std::clamp(int(std::floor((nearDepth - lo) * scale)) - 1, 0, kSlices - 1);
+    const int last = std::clamp(int(std::floor((farDepth - lo) * scale)) + 1, 0, kSlices - 1);
+    const uint32_t occupied = slices_[size_t(tile)] & sliceMask(first, last);
+    if (occupied == 0) return 0;
+    // The tile's corner slopes; a cell between distances D0 < D1 spans x in [min(sx0 D0, sx0 D1), max(sx1 D0,
+    // sx1 D1)] (x = slope * distance), the same in y, and z in [-D1, -D0].
+    const int tx = tile % tilesX_, ty = tile / tilesX_;
+    const float sx0 = slopeX_[size_t(tx)], sx1 = slopeX_[size_t(tx) + 1];
+    const float sy0 = slopeY_[size_t(ty)], sy1 = slopeY_[size_t(ty) + 1];
+    const float r2 = radius * radius * (1.0f + 1e-4f) + 1e-12f;
+    auto distance = [&](float d) { return depthToDistance_.x / (d + depthToDistance_.y); };
+    uint32_t reached = 0;
+    for (int s = first; s <= last; ++s) {
+        if (!(occupied & (1u << s))) continue;
+        // The slice's depths widened by a tenth of a slice (rounding in floor above), as distances, with slack.
+        const float d0 = std::max(lo + (float(s) - 0.1f) * width, 0.0f), d1 = std::min(lo + (float(s) + 1.1f) * width, 1.0f);
+        float D0 = distance(d0), D1 = distance(d1);
+        D0 -= 1e-5f * D0;
+        D1 += 1e-5f * D1;
+        const glm::vec3 boxMin(std::min(sx0 * D0, sx0 * D1), std::min(sy0 * D0, sy0 * D1), -D1);
+        const glm::vec3 boxMax(std::max(sx1 * D0, sx1 * D1), std::max(sy1 * D0, sy1 * D1), -D0);
+        const glm::vec3 nearest = glm::clamp(c, boxMin, boxMax);
+        const glm::vec3 e = c - nearest;
+        const float slack = 1e-5f * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + radius);
+        if (glm::dot(e, e) <= r2 + 2.0f * radius * slack + slack * slack) reached |= 1u << s;
+    }
+    return reached;
+}
+
+bool VolumeTiles::sphereDepthSpan(const CameraMatrices& camera, const glm::vec3& centre, float radius,
+                                  float& nearDepth, float& farDepth) {
+    // Distance along the view direction -> window depth, for lidr's perspective projections:
+    // d = (P22 - 1) / 2 * -1 ... written as d = x / distance - y with (x, y) the sphere shader's uDepthToDistance.
+    const glm::mat4& P = camera.projection;
+    const double x = 0.5 * double(P[3][2]), y = 0.5 * (double(P[2][2]) - 1.0);
+    const double along = double(glm::dot(centre - camera.eye, camera.forward));
+    const double slack = 1e-5 * (std::abs(along) + double(radius)) + 1e-6;
+    const double nearest = along - double(radius) - slack, farthest = along + double(radius) + slack;
+    if (farthest <= 0.0) return false;
+    auto windowDepth = [&](double distance) { return distance <= 0.0 ? -1.0 : x / distance - y; };
+    nearDepth = float(std::max(0.0, windowDepth(nearest)) - kDepthSlack);
+    farDepth = float(std::min(1.0, windowDepth(farthest)) + kDepthSlack);
+    return true;
+}
+
+}  // namespace lidr

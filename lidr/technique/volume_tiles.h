@@ -1,0 +1,60 @@
+#pragma once
+// Where on screen a light volume can mark anything: the pre-pass depth read back once per frame and kept per
+// T x T tile as the window-depth range of its surfaces and a 32-bit mask of which of 32 equal slices of that
+// range hold a surface (the "2.5D" depth mask of Harada et al., 2012, here on the CPU). Each occupied slice is
+// a cell of the view frustum (the tile's pixels between two depths); a light can reach a surface of the tile
+// only if its sphere meets one of those cells, so lights hidden behind nearer surfaces, lights floating
+// between a near pillar and a far wall, lights beside the tile in depth and empty tiles are rejected before
+// any fragment (LightVolumeGeometry draws the rest as screen quads; doc/architecture.md). Conservative: each
+// pixel marks the slices of its depth widened by the sphere test's margin, and a cell is the box around the
+// tile's corner rays between its slice's depths.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lidr/scene/camera.h"
+
+namespace lidr {
+
+class VolumeTiles {
+public:
+    VolumeTiles() = default;
+    // Throws lidr::Error for a tile size outside [4, 256] or a size below 1 pixel.
+    VolumeTiles(int width, int height, int tileSize);
+
+    // From window depths, rows bottom to top (as glReadPixels gives them), width x height, seen by `camera` (a
+    // perspective projection). `margin`: each pixel's surface lies within this much window depth of its stored
+    // depth (the sphere test's uDepthMargin).
+    void build(const std::vector<float>& depth, float margin, const CameraMatrices& camera);
+    // Reads the bound framebuffer's depth (glReadPixels) and builds from it.
+    void buildFromBoundDepth(float margin, const CameraMatrices& camera);
+
+    // The occupied depth slices of `tile` (bit s: slice s) whose cell the sphere (centre in view space, radius)
+    // meets, its window-depth span being [nearDepth, farDepth] (sphereDepthSpan); 0: no surface of the tile can
+    // lie inside it. A pixel's surface lies in one cell, so the lights that mark a pixel of the tile are at most
+    // as many as the spheres meeting its fullest slice.
+    uint32_t slicesReached(int tile, const glm::vec3& viewCentre, float radius, float nearDepth, float farDepth) const;
+    // The window-depth span of a light's sphere on this camera (clamped to [0, 1]), widened for rounding; false
+    // when it lies wholly in front of the near plane.
+    static bool sphereDepthSpan(const CameraMatrices& camera, const glm::vec3& centre, float radius, float& nearDepth,
+                                float& farDepth);
+
+    int tileSize() const { return tileSize_; }
+    int tilesX() const { return tilesX_; }
+    int tilesY() const { return tilesY_; }
+    int tileCount() const { return tilesX_ * tilesY_; }
+    bool empty() const { return tileSize_ == 0; }
+
+private:
+    int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
+    std::vector<float> minDepth_, maxDepth_;  // per tile; min > max: no surface
+    std::vector<uint32_t> slices_;
+    // Tile boundaries as view-space slopes x / -z (columns) and y / -z (rows); window depth d -> distance in
+    // front of the eye: depthToDistance.x / (d + depthToDistance.y).
+    std::vector<float> slopeX_, slopeY_;
+    glm::vec2 depthToDistance_{0.0f};
+    std::vector<float> readback_;
+};
+
+}  // namespace lidr
