@@ -315,13 +315,15 @@ TEST_CASE("glTF: malformed files are errors naming the file and the cause", "[gl
         file.doc["accessors"][0]["count"] = 1000;
         file.node({{"mesh", 0}}, true);
         REQUIRE_THROWS_WITH(load(file, "count.gltf"),
-                            Contains("count.gltf: ") && Contains("POSITION accessor 0: 1000 elements from byte 0 do not fit buffer view 0 (36 bytes)"));
+                            Contains("count.gltf: /accessors/0/count: 1000 elements of 12 bytes (stride 12) from byte 0 do not fit "
+                                     "bufferView 0 (36 bytes)"));
     }
     SECTION("accessor index out of range") {
         GltfFile file = oneTriangle();
         file.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9;
         file.node({{"mesh", 0}}, true);
-        REQUIRE_THROWS_WITH(load(file, "accessor.gltf"), Contains("accessor 9 out of range (2 accessors)"));
+        REQUIRE_THROWS_WITH(load(file, "accessor.gltf"), Contains("accessor.gltf: /meshes/0/primitives/0/attributes/POSITION: index 9 is out "
+                                                                  "of range (2 accessors)"));
     }
     SECTION("positions that are not float VEC3") {
         GltfFile file = oneTriangle();
@@ -334,7 +336,7 @@ TEST_CASE("glTF: malformed files are errors naming the file and the cause", "[gl
         file.node({{"mesh", 0}}, true);
         file.doc["buffers"] = {{{"byteLength", file.bin.size()}, {"uri", "missing.bin"}}};
         REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("nobuffer.gltf", file.doc.dump())),
-                            Contains("nobuffer.gltf: malformed glTF: ") && Contains("missing.bin"));
+                            Contains("nobuffer.gltf: /buffers/0/uri: buffer file '") && Contains("missing.bin' not found"));
     }
     SECTION("lines are not triangles") {
         GltfFile file = oneTriangle();
@@ -349,19 +351,21 @@ TEST_CASE("glTF: malformed files are errors naming the file and the cause", "[gl
         const std::string whole = file.writeGlb(dir, "whole.glb");
         std::ifstream in(whole, std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        // The header's length no longer matches the file (the GLB rule the cut breaks first).
         for (size_t keep : {size_t(4), size_t(20), bytes.size() - 10}) {
             INFO("kept " << keep << " of " << bytes.size() << " bytes");
             REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("cut.glb", bytes.substr(0, keep))),
-                                Contains("cut.glb: malformed glTF: "));
+                                Contains("cut.glb: GLB header: ") &&
+                                    (Contains("a GLB header has 12") || Contains("differs from the file size " + std::to_string(keep))));
         }
     }
     SECTION("not JSON") {
-        REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("text.gltf", "{\"asset\": ")), Contains("text.gltf: malformed glTF: "));
+        REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("text.gltf", "{\"asset\": ")), Contains("text.gltf: /: malformed JSON: "));
     }
     SECTION("a node that is its own child") {
         GltfFile file = oneTriangle();
         file.node({{"mesh", 0}, {"children", {0}}}, true);
-        REQUIRE_THROWS_WITH(load(file, "cycle.gltf"), Contains("cycle.gltf: ") && Contains("deeper than 256 levels"));
+        REQUIRE_THROWS_WITH(load(file, "cycle.gltf"), Contains("cycle.gltf: /nodes/0/children/0: node 0 is its own child"));
     }
     SECTION("missing file, other model formats") {
         REQUIRE_THROWS_WITH(lidr::loadScene(dir.file("none.gltf")), Contains("none.gltf: glTF file not found"));
