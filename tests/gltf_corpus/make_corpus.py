@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the glTF validation corpus: malformed and extreme glTF 2.0 files, each with the outcome the glTF 2.0
+"""Writes the glTF validation corpus: malformed and extreme glTF 2.0 files (and OBJ / MTL / scene files for the
+same classes: file kinds, limits), each with the outcome the glTF 2.0
 specification (and lidr's documented limits, doc/scene-format.md) asks for.
 
     python3 tests/gltf_corpus/make_corpus.py OUT_DIR [--fuzz-seeds DIR]
@@ -641,6 +642,52 @@ def build():
     c.error("file-symlink-loop", None, "glTF file Too many levels of symbolic links", main="loop.gltf",
             setup=lambda d: os.symlink("loop.gltf", os.path.join(d, "loop.gltf")))
     c.error("file-missing", None, "glTF file not found", main="absent.gltf", setup=lambda d: None)
+
+    # ---- the same classes for OBJ / MTL and lidr scene files (doc/scene-format.md, "Limits") -------------------
+    obj = b"mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl a\nf 1/1 2/1 3/1\n"
+    mtl = b"newmtl a\nKd 1 1 1\nmap_Kd tex.png\n"
+    link = lambda target, name: (lambda d: os.symlink(target, os.path.join(d, name)))
+    ok("obj-valid", None, main="m.obj", raw=obj, files={"m.mtl": mtl, "tex.png": png(2, 2)})
+    c.add("obj-mtl-missing", None, "warning", "m.mtl", main="m.obj", raw=obj)
+    c.error("obj-mtl-directory", None, "line 1: MTL file", main="m.obj", raw=obj, setup=lambda d: os.mkdir(os.path.join(d, "m.mtl")))
+    c.error("obj-mtl-dev-zero", None, "m.mtl' is not a regular file", main="m.obj", raw=obj, setup=link("/dev/zero", "m.mtl"))
+    c.error("obj-mtl-fifo", None, "m.mtl' is not a regular file", main="m.obj", raw=obj, setup=lambda d: os.mkfifo(os.path.join(d, "m.mtl")))
+    c.error("obj-mtl-loop", None, "m.mtl' Too many levels of symbolic links", main="m.obj", raw=obj, setup=link("m.mtl", "m.mtl"))
+    c.error("obj-texture-png-100000", None, "tex.png' is 100000x100000, over the texture limit of 16384", main="m.obj", raw=obj,
+            files={"m.mtl": mtl, "tex.png": png(2, 2, declared=(100000, 100000))})
+    c.error("obj-texture-jpeg-20000", None, "tex.png' is 20000x100, over the texture limit of 16384", main="m.obj", raw=obj,
+            files={"m.mtl": mtl, "tex.png": jpeg_header(20000, 100)})
+    c.error("obj-texture-directory", None, "tex.png' is a directory", main="m.obj", raw=obj, files={"m.mtl": mtl},
+            setup=lambda d: os.mkdir(os.path.join(d, "tex.png")))
+    c.error("obj-texture-dev-zero", None, "tex.png' is not a regular file", main="m.obj", raw=obj, files={"m.mtl": mtl},
+            setup=link("/dev/zero", "tex.png"))
+    c.error("obj-texture-not-image", None, "tex.png' cannot be read", main="m.obj", raw=obj, files={"m.mtl": mtl, "tex.png": b"not an image"})
+    c.error("obj-nan", None, "line 3: vertex 2 coordinate 'nan' is not finite", main="m.obj", raw=obj.replace(b"v 1 0 0", b"v nan 0 0"),
+            files={"m.mtl": mtl, "tex.png": png(2, 2)})
+    c.error("obj-face-index", None, "vertex index 9 out of range", main="m.obj", raw=obj.replace(b"f 1/1 2/1 3/1", b"f 1/1 2/1 9/1"),
+            files={"m.mtl": mtl, "tex.png": png(2, 2)})
+    c.error("obj-file-directory", None, "OBJ file is a directory", main="d.obj", setup=lambda d: os.mkdir(os.path.join(d, "d.obj")))
+    c.error("obj-file-fifo", None, "OBJ file is not a regular file", main="p.obj", setup=lambda d: os.mkfifo(os.path.join(d, "p.obj")))
+    c.error("obj-file-dev-zero", None, "OBJ file is not a regular file", main="z.obj", setup=link("/dev/zero", "z.obj"))
+    scene = lambda extra: ('{"lights": [{"position": [0, 1, 0], "radius": 2}]%s}' % extra).encode()
+    ok("scene-valid", None, main="s.json", raw=scene(', "models": [{"file": "t.gltf"}]'), files={"t.gltf": json.dumps(triangle()).encode()})
+    c.error("scene-gltf-model-invalid", None, "models[0].file: ", main="s.json", raw=scene(', "models": [{"file": "t.gltf"}]'),
+            files={"t.gltf": json.dumps(mutate(triangle, lambda d: set_at(d, "/nodes/0/rotation", [0, 0, 0, 0]))).encode()})
+    c.error("scene-gltf-model-rule", None, "t.gltf: /nodes/0/rotation: must be a unit quaternion", main="s.json",
+            raw=scene(', "models": [{"file": "t.gltf"}]'),
+            files={"t.gltf": json.dumps(mutate(triangle, lambda d: set_at(d, "/nodes/0/rotation", [0, 0, 0, 0]))).encode()})
+    c.error("scene-obj-model-mtl-fifo", None, "m.mtl' is not a regular file", main="s.json", raw=scene(', "models": [{"file": "m.obj"}]'),
+            files={"m.obj": obj}, setup=lambda d: os.mkfifo(os.path.join(d, "m.mtl")))
+    c.error("scene-texture-png-100000", None, "materials[0].texture: texture", main="s.json",
+            raw=scene(', "materials": [{"name": "m", "texture": "big.png"}]'), files={"big.png": png(2, 2, declared=(100000, 100000))})
+    c.error("scene-texture-jpeg-20000", None, "is 20000x100, over the texture limit", main="s.json",
+            raw=scene(', "materials": [{"name": "m", "texture": "big.jpg"}]'), files={"big.jpg": jpeg_header(20000, 100)})
+    c.error("scene-deep-json", None, "nested deeper than 64", main="s.json", raw=b'{"description": ' + b"[" * 100000 + b"]" * 100000 + b"}")
+    c.error("scene-file-directory", None, "scene file is a directory", main="d.json", setup=lambda d: os.mkdir(os.path.join(d, "d.json")))
+    c.error("scene-file-fifo", None, "scene file is not a regular file", main="p.json", setup=lambda d: os.mkfifo(os.path.join(d, "p.json")))
+    c.error("scene-file-loop", None, "Too many levels of symbolic links", main="l.json", setup=link("l.json", "l.json"))
+    c.error("scene-lights-over-limit", None, "generate.count: must be in [0, 65535], got 70000", main="s.json",
+            raw=b'{"generate": {"count": 70000, "bounds_min": [0, 0, 0], "bounds_max": [1, 1, 1], "radius_min": 1, "radius_max": 1}}')
     return c
 
 

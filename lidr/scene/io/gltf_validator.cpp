@@ -38,7 +38,6 @@ constexpr uint32_t glbChunkJson = 0x4E4F534A;  // "JSON"
 constexpr uint32_t glbChunkBin = 0x004E4942;   // "BIN\0"
 
 uint32_t le32(const unsigned char* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
-uint32_t be32(const unsigned char* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]); }
 
 // A JSON pointer segment (RFC 6901): "~" and "/" escaped.
 std::string pointerSegment(const std::string& key) {
@@ -112,58 +111,6 @@ std::string percentDecoded(const std::string& uri) {
         }
     }
     return out;
-}
-
-// A PNG's or JPEG's kind and size from its first bytes; kind is empty when it is neither.
-struct ImageHeader {
-    std::string kind;  // "image/png", "image/jpeg"
-    uint64_t width = 0, height = 0;
-    bool sized = false;
-};
-
-ImageHeader imageHeader(const std::string& bytes) {
-    ImageHeader header;
-    const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
-    if (bytes.size() >= 8 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) {
-        header.kind = "image/png";
-        if (bytes.size() >= 24 && std::memcmp(b + 12, "IHDR", 4) == 0) {
-            header.width = be32(b + 16);
-            header.height = be32(b + 20);
-            header.sized = true;
-        }
-    } else if (bytes.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) {
-        header.kind = "image/jpeg";
-        // Walk the marker segments to the first start-of-frame (SOF0..SOF15 but DHT, JPG, DAC).
-        size_t at = 2;
-        while (at + 4 <= bytes.size() && b[at] == 0xFF) {
-            const unsigned char marker = b[at + 1];
-            if (marker == 0xFF) { ++at; continue; }
-            const size_t length = size_t(b[at + 2]) << 8 | b[at + 3];
-            if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC) {
-                if (at + 9 <= bytes.size()) {
-                    header.height = size_t(b[at + 5]) << 8 | b[at + 6];
-                    header.width = size_t(b[at + 7]) << 8 | b[at + 8];
-                    header.sized = true;
-                }
-                break;
-            }
-            if (length < 2) break;
-            at += 2 + length;
-        }
-    }
-    return header;
-}
-
-// Bytes a header scan reads at most (a JPEG's frame header follows its metadata segments).
-constexpr size_t imageHeaderBytes = size_t(1) << 20;
-
-std::string readBytes(const std::string& path, uint64_t offset, size_t count) {
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes(count, '\0');
-    in.seekg(std::streamoff(offset));
-    in.read(bytes.data(), std::streamsize(count));
-    bytes.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
-    return bytes;
 }
 
 class Validator {
@@ -340,7 +287,7 @@ private:
         if (fileSize_ > maxGltfJsonBytes)
             fail("", "the JSON is " + std::to_string(fileSize_) + " bytes; at most " + std::to_string(maxGltfJsonBytes) +
                          " are read");
-        std::string text = readBytes(path_, 0, size_t(fileSize_));
+        std::string text = readFileBytes(path_, 0, size_t(fileSize_));
         if (text.size() != fileSize_) throw Error(path_ + ": glTF file could not be read");
         if (text.empty()) fail("", "the file is empty");
         return text;
@@ -349,7 +296,7 @@ private:
     [[noreturn]] void failGlb(const std::string& rule) const { throw Error(path_ + ": GLB header: " + rule); }
 
     std::string readGlb() {
-        const std::string header = readBytes(path_, 0, 20);
+        const std::string header = readFileBytes(path_, 0, 20);
         if (header.size() < 12) failGlb("the file has " + std::to_string(header.size()) + " bytes; a GLB header has 12");
         const auto* h = reinterpret_cast<const unsigned char*>(header.data());
         if (le32(h) != glbMagic) failGlb("magic is not 'glTF' (not a binary glTF file)");
@@ -369,7 +316,7 @@ private:
                     " are read");
         uint64_t at = 20 + jsonLength;
         for (int chunk = 1; at < fileSize_; ++chunk) {
-            const std::string chunkHeader = readBytes(path_, at, 8);
+            const std::string chunkHeader = readFileBytes(path_, at, 8);
             if (chunkHeader.size() < 8) failGlb("chunk " + std::to_string(chunk) + " header is cut off at the end of the file");
             const auto* c = reinterpret_cast<const unsigned char*>(chunkHeader.data());
             const uint64_t chunkLength = le32(c);
@@ -388,7 +335,7 @@ private:
             }
             at += 8 + chunkLength;
         }
-        std::string text = readBytes(path_, 20, size_t(jsonLength));
+        std::string text = readFileBytes(path_, 20, size_t(jsonLength));
         // Trailing spaces pad the chunk to 4 bytes; NUL padding is tolerated too (written by some exporters).
         while (!text.empty() && text.back() == '\0') text.pop_back();
         return text;
@@ -711,15 +658,15 @@ private:
     std::string bufferBytes(int64_t bufferIndex, uint64_t offset, uint64_t length) const {
         const BufferInfo& buffer = buffers_[size_t(bufferIndex)];
         const size_t wanted = size_t(std::min<uint64_t>(length, imageHeaderBytes));
-        if (buffer.glbBin) return readBytes(path_, binOffset_ + offset, wanted);
-        if (!buffer.file.empty()) return readBytes(buffer.file, offset, wanted);
+        if (buffer.glbBin) return readFileBytes(path_, binOffset_ + offset, wanted);
+        if (!buffer.file.empty()) return readFileBytes(buffer.file, offset, wanted);
         std::string bytes = base64Decode(buffer.dataUri, size_t(offset / 3 * 4), wanted + 3);
         return bytes.substr(size_t(offset % 3), wanted);
     }
 
     void checkImageBytes(const std::string& bytes, const std::string& at, const std::string& declaredType,
                          const std::string& name) const {
-        const ImageHeader header = imageHeader(bytes);
+        const ImageHeader header = pngOrJpegHeader(bytes);
         if (header.kind.empty()) fail(at, name + " is neither PNG nor JPEG (the image formats of glTF 2.0)");
         if (!declaredType.empty() && declaredType != header.kind)
             fail(at, name + " is " + header.kind + " but declared " + clipped(declaredType));
@@ -756,7 +703,7 @@ private:
                 checkImageBytes(base64Decode(base64, 0, imageHeaderBytes), at + "/uri", type, name + " (data: URI)");
             } else {
                 const std::string file = externalFile(text, at + "/uri", "image");
-                checkImageBytes(readBytes(file, 0, imageHeaderBytes), at + "/uri", mimeType, name + " '" + file + "'");
+                checkImageBytes(readFileBytes(file, 0, imageHeaderBytes), at + "/uri", mimeType, name + " '" + file + "'");
             }
         });
     }
