@@ -595,8 +595,11 @@ def build():
             "/animations/0/channels/0/sampler: index 0 is out of range (0 samplers)")
 
     # ---- limits -----------------------------------------------------------------------------------------------
-    c.error("limit-nodes-1000001", None, "/nodes: 1000001 entries; lidr reads at most 1000000",
-            raw=b'{"asset":{"version":"2.0"},"nodes":[' + b",".join([b"{}"] * 1000001) + b"]}")
+    c.error("limit-nodes-200001", None, "/nodes: 200001 entries; lidr reads at most 200000",
+            raw=b'{"asset":{"version":"2.0"},"nodes":[' + b",".join([b"{}"] * 200001) + b"]}")
+    ok("limit-nodes-200000", mutate(triangle, lambda d: set_at(d, "/nodes", [{"mesh": 0}] + [{}] * 199999)))
+    c.error("limit-json-values", None, "/: JSON of about 2000003 values; lidr reads at most 2000000",
+            raw=b'{"asset":{"version":"2.0"},"extras":[' + b",".join([b"0"] * 2000000) + b"]}")
     c.error("limit-triangles-strip", mutate(triangle, lambda d: (remove_at(d, "/accessors/0/bufferView"),
                                                                set_at(d, "/accessors/0/count", 30000000),
                                                                remove_at(d, "/meshes/0/primitives/0/indices"),

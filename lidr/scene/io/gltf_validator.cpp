@@ -50,10 +50,16 @@ std::string pointerSegment(const std::string& key) {
     return out;
 }
 
-// The deepest nesting of arrays and objects in JSON text, scanned without recursion (strings skipped), so a
-// 100,000-deep document is refused before any parser recurses into it. Returns the byte offset where the limit
-// is passed, or npos.
-size_t offsetPastDepth(const std::string& text, int limit) {
+// The shape of JSON text, scanned without recursion (strings skipped) before any parser runs: a 100,000-deep
+// document is refused before a parser recurses into it, a huge number of values before two parsers (this one's
+// and tinygltf's) build trees of them.
+struct JsonShape {
+    size_t offsetPastDepth = std::string::npos;  // where the nesting first passes the limit
+    uint64_t values = 0;                          // about: arrays and objects, plus one per ',' (an upper bound)
+};
+
+JsonShape jsonShape(const std::string& text, int depthLimit) {
+    JsonShape shape;
     int depth = 0;
     bool inString = false;
     for (size_t i = 0; i < text.size(); ++i) {
@@ -64,12 +70,15 @@ size_t offsetPastDepth(const std::string& text, int limit) {
         } else if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
-            if (++depth > limit) return i;
+            ++shape.values;
+            if (++depth > depthLimit && shape.offsetPastDepth == std::string::npos) shape.offsetPastDepth = i;
         } else if (c == ']' || c == '}') {
             --depth;
+        } else if (c == ',') {
+            ++shape.values;
         }
     }
-    return std::string::npos;
+    return shape;
 }
 
 int base64Value(char c) {
@@ -123,10 +132,13 @@ public:
         fileSize_ = fs::file_size(path_);
         const bool binary = lowerCaseExtension(path_) == ".glb";
         const std::string text = binary ? readGlb() : readGltfText();
-        const size_t deep = offsetPastDepth(text, maxGltfJsonDepth);
-        if (deep != std::string::npos)
+        const JsonShape shape = jsonShape(text, maxGltfJsonDepth);
+        if (shape.offsetPastDepth != std::string::npos)
             fail("", "JSON nested deeper than " + std::to_string(maxGltfJsonDepth) + " arrays and objects (at byte " +
-                         std::to_string(deep) + " of the JSON)");
+                         std::to_string(shape.offsetPastDepth) + " of the JSON)");
+        if (shape.values > maxGltfJsonValues)
+            fail("", "JSON of about " + std::to_string(shape.values) + " values; lidr reads at most " +
+                         std::to_string(maxGltfJsonValues));
         try {
             root_ = Json::parse(text);
         } catch (const Json::exception& error) {

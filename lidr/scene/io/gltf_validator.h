@@ -17,7 +17,8 @@ constexpr int maxGltfJsonDepth = 128;                            // arrays and o
 constexpr uint64_t maxGltfJsonBytes = uint64_t(256) << 20;       // the JSON text (a .gltf, or a GLB's JSON chunk)
 constexpr uint64_t maxGltfBufferBytes = uint64_t(1) << 30;       // one buffer's byteLength
 constexpr uint64_t maxGltfTotalBufferBytes = uint64_t(2) << 30;  // all buffers of a file together
-constexpr uint64_t maxGltfArrayEntries = 1000000;                // nodes, meshes, accessors, ... per top-level array
+constexpr uint64_t maxGltfJsonValues = 2000000;   // numbers, strings, arrays, objects: up to ~300 B each once parsed
+constexpr uint64_t maxGltfArrayEntries = 200000;   // nodes, meshes, accessors, ... per top-level array (~600 B each)
 constexpr uint64_t maxGltfAccessorCount = 3 * uint64_t(maxSceneTriangles);  // elements of one accessor
 
 // Throws lidr::Error "<path>: <JSON pointer>: <rule>" (or "<path>: GLB header: <rule>") at the first violation;
