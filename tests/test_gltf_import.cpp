@@ -20,6 +20,7 @@
 #include "lidr/eval/image_compare.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/scene/camera.h"
+#include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -442,4 +443,48 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     size_t lit = 0;
     for (size_t k = 0; k < a.pixels.size(); k += 4) lit += a.pixels[k] > 40;
     CHECK(lit > size_t(a.width) * size_t(a.height) / 10);
+}
+
+// The header reader the glTF validator and the texture checks use to refuse huge images before decoding
+// (lidr/scene/io/file_checks.h): kind and size from the first bytes of a PNG or JPEG, nothing for anything else.
+TEST_CASE("image headers: PNG and JPEG kind and size read without decoding", "[gltf][cpu]") {
+    const auto be32 = [](uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    const auto pngHeader = [&](uint32_t width, uint32_t height) {
+        return std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" + be32(width) + be32(height) + std::string("\x08\x06\0\0\0", 5);
+    };
+    const auto jpegHeader = [](int width, int height, const std::string& before) {
+        const std::string app0 = std::string("\xFF\xE0\x00\x10JFIF\0\x01\x01\0\0\x01\0\x01\0\0", 18);
+        return std::string("\xFF\xD8", 2) + app0 + before + std::string("\xFF\xC0\x00\x11\x08", 5) + char(height >> 8) +
+               char(height & 255) + char(width >> 8) + char(width & 255) + std::string("\x01\x01\x11\x00", 4);
+    };
+    struct Case {
+        const char* what;
+        std::string bytes;
+        const char* kind;
+        bool sized;
+        uint64_t width, height;
+    };
+    const Case cases[] = {
+        {"PNG 2x3", pngHeader(2, 3), "image/png", true, 2, 3},
+        {"PNG 100000x100000 (stb_image refuses it without a size)", pngHeader(100000, 100000), "image/png", true, 100000, 100000},
+        {"PNG 4294967295 wide", pngHeader(0xFFFFFFFFu, 1), "image/png", true, 0xFFFFFFFFu, 1},
+        {"PNG cut before IHDR", pngHeader(2, 3).substr(0, 16), "image/png", false, 0, 0},
+        {"JPEG 20000x100", jpegHeader(20000, 100, ""), "image/jpeg", true, 20000, 100},
+        {"JPEG after a DHT segment and fill bytes", jpegHeader(640, 480, std::string("\xFF\xC4\x00\x04\x00\x00\xFF\xFF", 8)),
+         "image/jpeg", true, 640, 480},
+        {"JPEG cut inside its frame header", jpegHeader(640, 480, "").substr(0, 25), "image/jpeg", false, 0, 0},
+        {"text", "hello, world", "", false, 0, 0},
+        {"empty", "", "", false, 0, 0},
+    };
+    for (const Case& c : cases) {
+        DYNAMIC_SECTION(c.what) {
+            const lidr::ImageHeader header = lidr::pngOrJpegHeader(c.bytes);
+            CHECK(header.kind == c.kind);
+            CHECK(header.sized == c.sized);
+            CHECK(header.width == c.width);
+            CHECK(header.height == c.height);
+        }
+    }
 }
