@@ -402,6 +402,11 @@ def build():
     c.error("accessor-view-offset-misaligned", mutate(triangle, lambda d: (set_at(d, "/bufferViews/1/byteOffset", 37),
                                                                           set_at(d, "/bufferViews/1/byteLength", 6))),
             "/accessors/1/byteOffset: bufferView 1 offset 37 + 0 is not a multiple of the component size 2")
+    c.error("accessor-attribute-unaligned", mutate(triangle, lambda d: (
+        d["accessors"].append({"bufferView": 1, "byteOffset": 2, "componentType": 5123, "count": 1, "type": "VEC2"}),
+        set_at(d, "/meshes/0/primitives/0/attributes/TEXCOORD_0", 2), set_at(d, "/accessors/0/count", 1),
+        set_at(d, "/meshes/0/primitives/0/mode", 5), remove_at(d, "/meshes/0/primitives/0/indices"))),
+            "/meshes/0/primitives/0/attributes/TEXCOORD_0: accessor 2 starts at byte 36 + 2; vertex attributes must be 4-byte aligned")
     c.error("accessor-offset-negative", mutate(triangle, lambda d: set_at(d, "/accessors/0/byteOffset", -12)),
             "/accessors/0/byteOffset: must be >= 0")
     c.error("accessor-offset-without-view", mutate(triangle, lambda d: (remove_at(d, "/accessors/0/bufferView"),

@@ -129,7 +129,9 @@ public:
     void run() {
         const std::string problem = fileProblem(path_);
         if (problem.empty() == false) throw Error(path_ + ": glTF file " + problem);
-        fileSize_ = fs::file_size(path_);
+        std::error_code error;
+        fileSize_ = fs::file_size(path_, error);
+        if (error) throw Error(path_ + ": glTF file: " + error.message());
         const bool binary = lowerCaseExtension(path_) == ".glb";
         const std::string text = binary ? readGlb() : readGltfText();
         const JsonShape shape = jsonShape(text, maxGltfJsonDepth);
@@ -508,7 +510,9 @@ private:
                                                      std::to_string(base64Bytes(info.dataUri)));
                 } else {
                     info.file = externalFile(text, at + "/uri", "buffer");
-                    const uint64_t size = fs::file_size(info.file);
+                    std::error_code error;
+                    const uint64_t size = fs::file_size(info.file, error);
+                    if (error) fail(at + "/uri", "buffer file '" + info.file + "': " + error.message());
                     if (size < info.byteLength)
                         fail(at + "/byteLength", std::to_string(info.byteLength) + " bytes, but '" + info.file + "' has " +
                                                      std::to_string(size));
@@ -596,6 +600,7 @@ private:
         std::string type;
         uint64_t count = 0;
         int64_t bufferView = -1;
+        int64_t byteOffset = 0;
     };
 
     // Elements of `count` x `element` bytes from `offset` with `stride` fit `length` bytes, without overflow.
@@ -630,6 +635,7 @@ private:
             const int64_t offset = integer(accessor, at, "byteOffset", 0);
             if (offset < 0) fail(at + "/byteOffset", "must be >= 0, got " + std::to_string(offset));
             info.bufferView = index(accessor, at, "bufferView", "bufferViews");
+            info.byteOffset = offset;
             if (info.bufferView < 0) {
                 if (accessor.contains("byteOffset")) fail(at + "/byteOffset", "must not be given without a bufferView");
             } else {
@@ -849,7 +855,13 @@ private:
                 for (const auto& attribute : attributes->items()) {
                     const std::string key = where + "/attributes/" + pointerSegment(attribute.key());
                     const int64_t accessor = indexAt(attribute.value(), key, accessors_.size(), "accessors");
-                    const int64_t elements = int64_t(accessors_[size_t(accessor)].count);
+                    const AccessorInfo& info = accessors_[size_t(accessor)];
+                    // The specification's alignment of vertex attributes, stricter than the component size.
+                    if (info.bufferView >= 0 && (info.byteOffset % 4 != 0 || views_[size_t(info.bufferView)].byteOffset % 4 != 0))
+                        fail(key, "accessor " + std::to_string(accessor) + " starts at byte " +
+                                      std::to_string(views_[size_t(info.bufferView)].byteOffset) + " + " +
+                                      std::to_string(info.byteOffset) + "; vertex attributes must be 4-byte aligned");
+                    const int64_t elements = int64_t(info.count);
                     if (vertexCount >= 0 && elements != vertexCount)
                         fail(key, "accessor " + std::to_string(accessor) + " has " + std::to_string(elements) +
                                       " elements; the primitive's other attributes have " + std::to_string(vertexCount));
