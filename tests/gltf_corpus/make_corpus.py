@@ -261,6 +261,9 @@ def build():
             "/nodes/0/scale: must have 3 numbers, got 4")
     c.error("type-matrix-15", mutate(triangle, lambda d: set_at(d, "/nodes/0/matrix", [1] * 15)),
             "/nodes/0/matrix: must have 16 numbers, got 15")
+    c.error("type-name-number", mutate(triangle, lambda d: set_at(d, "/meshes/0/name", 7)), "/meshes/0/name: must be a string, got number")
+    c.error("type-node-extensions-array", mutate(triangle, lambda d: set_at(d, "/nodes/0/extensions", [])),
+            "/nodes/0/extensions: must be an object, got array")
     c.error("type-scene-string", mutate(triangle, lambda d: set_at(d, "/scene", "0")), "/scene: must be an integer, got string")
     c.error("type-extensions-array", mutate(triangle, lambda d: set_at(d, "/extensions", [])), "/extensions: must be an object")
     c.error("type-uri-number", mutate(triangle, lambda d: set_at(d, "/buffers/0/uri", 5)), "/buffers/0/uri: must be a string")

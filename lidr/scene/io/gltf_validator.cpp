@@ -401,8 +401,12 @@ private:
             if (array->size() > maxGltfArrayEntries)
                 fail("/" + std::string(name), std::to_string(array->size()) + " entries; lidr reads at most " +
                                                   std::to_string(maxGltfArrayEntries));
-            for (size_t i = 0; i < array->size(); ++i)
-                expect((*array)[i], "/" + std::string(name) + "/" + std::to_string(i), Kind::Object);
+            for (size_t i = 0; i < array->size(); ++i) {
+                const std::string at = "/" + std::string(name) + "/" + std::to_string(i);
+                expect((*array)[i], at, Kind::Object);
+                member((*array)[i], at, "name", Kind::String);  // every glTFChildOfRootProperty
+                member((*array)[i], at, "extensions", Kind::Object);
+            }
         }
         if (root_.contains("scene")) index(root_, "", "scene", "scenes");
         member(root_, "", "extensions", Kind::Object);
