@@ -121,8 +121,16 @@ set(bad_values
   "--scheme|auto|--budget|4@--scheme auto chooses the budget and the index width itself"
   "--index-bits|12@--index-bits must be auto, 4, 8, 16.*got '12'"
   "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
-  "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'")
+  "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'"
+  "--scene|${OUT}/version-1.gltf@version-1.gltf: /asset/version: glTF 1.0 is not 2.x"
+  "--scene|${OUT}/deep-extras.gltf@deep-extras.gltf: /: JSON nested deeper than 128 arrays and objects")
 file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
+# glTF files the validator refuses (tests/gltf_corpus has the whole set): a wrong version, and extras nested
+# 100,000 deep, which once overflowed the stack of the JSON parser.
+file(WRITE ${OUT}/version-1.gltf "{\"asset\": {\"version\": \"1.0\"}}")
+string(REPEAT "[" 100000 open)
+string(REPEAT "]" 100000 close)
+file(WRITE ${OUT}/deep-extras.gltf "{\"asset\": {\"version\": \"2.0\"}, \"extras\": ${open}${close}}")
 foreach(entry IN LISTS bad_values)
   string(REPLACE "@" ";" parts "${entry}")
   list(GET parts 0 args)
@@ -164,7 +172,7 @@ endif()
 file(WRITE ${OUT}/broken.glb "glTF")
 execute_process(COMMAND ${DEMO} --headless --scene ${OUT}/broken.glb --frames 1 --out ${OUT}/broken
                 RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(r EQUAL 0 OR NOT err MATCHES "broken.glb: malformed glTF" OR EXISTS ${OUT}/broken/summary.json)
+if(NOT r EQUAL 1 OR NOT err MATCHES "broken.glb: GLB header: the file has 4 bytes" OR EXISTS ${OUT}/broken/summary.json)
   message(FATAL_ERROR "lidr-demo on a truncated .glb: exit ${r}, stderr '${err}'")
 endif()
 

@@ -812,7 +812,7 @@ TEST_CASE("scene files: files that are not regular, unsupported formats and huge
         // glTF is read (tests/test_gltf_import.cpp): a 4-byte .glb is a malformed one, not an unsupported format
         dir.write("mesh.glb", "glTF");
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.glb"}])")),
-                            Contains("models[0].file: ") && Contains("mesh.glb: malformed glTF"));
+                            Contains("models[0].file: ") && Contains("mesh.glb: GLB header: the file has 4 bytes"));
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.gltf"}])")), Contains("mesh.gltf: glTF file not found"));
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "models": [{"file": "mesh.FBX"}])")), Contains("format not supported (FBX)"));
     }

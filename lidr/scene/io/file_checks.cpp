@@ -1,5 +1,6 @@
 #include "lidr/scene/io/file_checks.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cctype>
 #include <cmath>
@@ -42,32 +43,77 @@ std::string fileProblem(const std::string& path) {
     return {};
 }
 
+namespace {
+
+uint32_t bigEndian32(const unsigned char* p) {
+    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
+}
+
+}  // namespace
+
+ImageHeader pngOrJpegHeader(const std::string& firstBytes) {
+    ImageHeader header;
+    const auto* b = reinterpret_cast<const unsigned char*>(firstBytes.data());
+    const size_t size = firstBytes.size();
+    if (size >= 8 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) {
+        header.kind = "image/png";
+        if (size >= 24 && std::memcmp(b + 12, "IHDR", 4) == 0) {
+            header.width = bigEndian32(b + 16);
+            header.height = bigEndian32(b + 20);
+            header.sized = true;
+        }
+    } else if (size >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) {
+        header.kind = "image/jpeg";
+        // Walk the marker segments to the first start of frame (SOF0..SOF15 but DHT C4, JPG C8, DAC CC).
+        size_t at = 2;
+        while (at + 4 <= size && b[at] == 0xFF) {
+            const unsigned char marker = b[at + 1];
+            if (marker == 0xFF) {  // fill byte
+                ++at;
+                continue;
+            }
+            if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC) {
+                if (at + 9 <= size) {
+                    header.height = uint64_t(b[at + 5]) << 8 | b[at + 6];
+                    header.width = uint64_t(b[at + 7]) << 8 | b[at + 8];
+                    header.sized = true;
+                }
+                break;
+            }
+            const size_t length = size_t(b[at + 2]) << 8 | b[at + 3];
+            if (length < 2) break;
+            at += 2 + length;
+        }
+    }
+    return header;
+}
+
+std::string readFileBytes(const std::string& path, uint64_t offset, size_t count) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(count, '\0');
+    in.seekg(std::streamoff(offset));
+    in.read(bytes.data(), std::streamsize(count));
+    bytes.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    return bytes;
+}
+
 std::string imageProblem(const std::string& path) {
     const std::string problem = fileProblem(path);
     if (!problem.empty()) return "texture '" + path + "' " + problem;
+    const auto overLimit = [&](uint64_t width, uint64_t height) {
+        return "texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
+               ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
+    };
+    // stb_image refuses a huge PNG as "too large" before it tells its size: read the size from the header.
+    const ImageHeader header = pngOrJpegHeader(readFileBytes(path, 0, imageHeaderBytes));
+    if (header.sized && (header.width > uint64_t(maxTextureSide) || header.height > uint64_t(maxTextureSide)))
+        return overLimit(header.width, header.height);
     int width = 0, height = 0, channels = 0;
-    // stb_image refuses a huge PNG as "too large" before it tells its size: read the size from the IHDR chunk.
-    {
-        std::ifstream in(path, std::ios::binary);
-        unsigned char h[24] = {};
-        if (in.read(reinterpret_cast<char*>(h), sizeof h) &&
-            std::memcmp(h, "\x89PNG\r\n\x1a\n", 8) == 0 && std::memcmp(h + 12, "IHDR", 4) == 0) {
-            const auto be32 = [&](int at) {
-                return (uint32_t(h[at]) << 24) | (uint32_t(h[at + 1]) << 16) | (uint32_t(h[at + 2]) << 8) | h[at + 3];
-            };
-            const uint32_t w = be32(16), hgt = be32(20);
-            if (w > uint32_t(maxTextureSide) || hgt > uint32_t(maxTextureSide))
-                return "texture '" + path + "' is " + std::to_string(w) + "x" + std::to_string(hgt) +
-                       ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
-        }
-    }
     if (!stbi_info(path.c_str(), &width, &height, &channels)) {
         const char* reason = stbi_failure_reason();
         return "texture '" + path + "' cannot be read (" + (reason ? reason : "unknown format") + ")";
     }
-    if (width > maxTextureSide || height > maxTextureSide)
-        return "texture '" + path + "' is " + std::to_string(width) + "x" + std::to_string(height) +
-               ", over the texture limit of " + std::to_string(maxTextureSide) + " per side";
+    if (width > maxTextureSide || height > maxTextureSide) return overLimit(uint64_t(width), uint64_t(height));
     return {};
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 // Checks every importer makes on the files it is given, and the number formatting of their messages.
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -14,7 +16,21 @@ constexpr int maxTextureSide = 16384;  // the largest texture GL 2.1 contexts co
 std::string fileProblem(const std::string& path);
 
 // Empty if stb_image can read the image's header and its size fits a texture, else what is wrong with it.
+// A PNG's or JPEG's size is read from its header first (stb_image refuses a huge one without telling its size).
 std::string imageProblem(const std::string& path);
+
+// The kind and size of a PNG or JPEG read from its first bytes, without decoding: kind "image/png",
+// "image/jpeg", or empty for anything else; `sized` false when the header is cut off before the size.
+struct ImageHeader {
+    std::string kind;
+    uint64_t width = 0, height = 0;
+    bool sized = false;
+};
+ImageHeader pngOrJpegHeader(const std::string& firstBytes);
+constexpr size_t imageHeaderBytes = size_t(1) << 20;  // bytes to read for it (a JPEG's frame header follows its metadata)
+
+// Up to `count` bytes of a file from `offset` (fewer at its end).
+std::string readFileBytes(const std::string& path, uint64_t offset, size_t count);
 
 // The name of a model format lidr does not import, by extension ("PLY", "FBX"), or empty (OBJ, glTF, unknown).
 std::string unsupportedModelFormat(const std::string& path);

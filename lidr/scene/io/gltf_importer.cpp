@@ -24,6 +24,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/gltf_validator.h"
 #include "lidr/scene/io/mesh_split.h"
 
 namespace lidr {
@@ -37,8 +38,7 @@ constexpr int maxNodeDepth = 256;
 
 // Images are decoded by lidr, not by tinygltf's loader: the size is checked before decoding, and every image
 // becomes RGBA8 (16-bit PNGs included).
-bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
-               const unsigned char* bytes, int size, void*) {
+bool decodeImage(tinygltf::Image* image, const int index, std::string* err, const unsigned char* bytes, int size) {
     int width = 0, height = 0, channels = 0;
     const std::string name = "image " + std::to_string(index) + (image->uri.empty() ? "" : " '" + image->uri + "'");
     if (!stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
@@ -68,6 +68,20 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
     return true;
 }
 
+// Why each image that failed was not decoded, by image index (tinygltf turns a failure into a warning only).
+using ImageFailures = std::map<int, std::string>;
+
+bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+               const unsigned char* bytes, int size, void* failures) {
+    std::string reason;
+    const bool ok = decodeImage(image, index, &reason, bytes, size);
+    if (!ok) {
+        (*static_cast<ImageFailures*>(failures))[index] = reason;
+        if (err) *err += reason;
+    }
+    return ok;
+}
+
 glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
     const float length = glm::length(v);
     return std::isfinite(length) && length > 1e-20f ? v / length : fallback;
@@ -86,6 +100,7 @@ public:
     GltfContents read() {
         const std::string problem = fileProblem(path_);
         if (!problem.empty()) fail("glTF file " + problem);
+        validateGltfFile(path_, scene_.warnings);  // the specification's rules and lidr's limits, before tinygltf
         if (overrideMaterial_ >= int(scene_.materials.size())) fail("override material out of range");
         load();
         stem_ = fs::path(path_).stem().string();
@@ -117,7 +132,7 @@ private:
 
     void load() {
         tinygltf::TinyGLTF loader;
-        loader.SetImageLoader(loadImage, nullptr);
+        loader.SetImageLoader(loadImage, &imageFailures_);
         std::string error, warning;
         const bool binary = lowerCaseExtension(path_) == ".glb";
         const bool ok = binary ? loader.LoadBinaryFromFile(&model_, &error, &warning, path_)
@@ -261,6 +276,15 @@ private:
         return i;
     }
 
+    // Before the corner list is allocated: a strip or fan of n corners has n - 2 triangles, a list n / 3.
+    void checkTriangleLimit(const std::string& what, size_t corners, int mode) const {
+        const size_t triangles =
+            scene_.triangleCount() + (mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners < 2 ? 0 : corners - 2);
+        if (triangles > maxSceneTriangles)
+            fail(what + ": the scene would have at least " + std::to_string(triangles) + " triangles; at most " +
+                 std::to_string(maxSceneTriangles) + " are supported");
+    }
+
     void addPrimitive(const tinygltf::Mesh& mesh, int meshIndex, size_t primitiveIndex, const glm::mat4& world) {
         const tinygltf::Primitive& primitive = mesh.primitives[primitiveIndex];
         const std::string what = "mesh " + std::to_string(meshIndex) + (mesh.name.empty() ? "" : " '" + mesh.name + "'") +
@@ -288,12 +312,14 @@ private:
             fail(what + ": " + std::to_string(texCoords.count) + " texture coordinates for " +
                  std::to_string(positions.count) + " positions");
 
+        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         // The corner list: indices, or 0..count-1, then strips and fans unrolled into triangles.
         std::vector<uint32_t> corners;
         if (primitive.indices >= 0) {
             const AccessorView indices = view(primitive.indices, what + " indices", {TINYGLTF_TYPE_SCALAR},
                                               {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+            checkTriangleLimit(what, indices.count, mode);
             corners.resize(indices.count);
             for (size_t i = 0; i < indices.count; ++i) {
                 corners[i] = index(indices, i);
@@ -302,11 +328,11 @@ private:
                          ") out of range (" + std::to_string(positions.count) + " vertices)");
             }
         } else {
+            checkTriangleLimit(what, positions.count, mode);
             corners.resize(positions.count);
             for (size_t i = 0; i < corners.size(); ++i) corners[i] = uint32_t(i);
         }
         std::vector<uint32_t> triangles;
-        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         if (mode == TINYGLTF_MODE_TRIANGLES) {
             if (corners.size() % 3 != 0)
                 fail(what + ": " + std::to_string(corners.size()) + " corners is not a whole number of triangles");
@@ -424,8 +450,11 @@ private:
                 fail(name + ": texture " + std::to_string(texture) + " has no image (source " + std::to_string(source) + ")");
             const tinygltf::Image& image = model_.images[size_t(source)];
             auto decoded = std::make_shared<ImageRGBA8>(image.width, image.height);
-            if (image.image.size() != decoded->pixels.size())
-                fail(name + ": image " + std::to_string(source) + " was not decoded to RGBA8");
+            if (image.image.size() != decoded->pixels.size()) {
+                const auto failure = imageFailures_.find(source);
+                fail(name + ": " + (failure != imageFailures_.end() ? failure->second
+                                                                    : "image " + std::to_string(source) + " was not loaded"));
+            }
             decoded->pixels = image.image;
             material.diffuseImage = std::move(decoded);
             material.diffuseTexture = image.uri.rfind("data:", 0) == 0 || image.uri.empty()
@@ -501,6 +530,7 @@ private:
     tinygltf::Model model_;
     std::string stem_;
     std::map<int, int> sceneMaterialOf_;
+    ImageFailures imageFailures_;
     GltfContents contents_;
 };
 

@@ -25,12 +25,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999" overflows to inf) as 0 or inf without a
-// word; scan the v / vn / vt lines first and name the first coordinate that is not a finite float.
-void checkObjNumbers(const std::string& objPath, const std::function<void(const std::string&)>& fail) {
+// One pass over the lines before tinyobjloader reads (and allocates) anything:
+// - tinyobjloader reads a number it cannot parse ("nan", "inf", "1e999" overflows to inf) as 0 or inf without a
+//   word: the first v / vn / vt coordinate that is not a finite float is named;
+// - the triangles the faces make (a face of n corners: n - 2) and the vertices are counted against the scene
+//   limit, so a huge file is refused before its arrays are built;
+// - every mtllib file that is there but is not a regular file (a directory, a device such as /dev/zero, a FIFO
+//   that would block, a symbolic link loop) is named; a missing one stays tinyobjloader's warning.
+void checkObjLines(const std::string& objPath, const std::function<void(const std::string&)>& fail) {
     std::ifstream in(objPath, std::ios::binary);
     std::string line;
-    size_t lineNumber = 0, counts[3] = {0, 0, 0};
+    size_t lineNumber = 0, counts[3] = {0, 0, 0}, triangles = 0;
     static const char* const keywords[3] = {"v", "vn", "vt"};
     static const char* const names[3] = {"vertex", "normal", "texcoord"};
     static const int needed[3] = {3, 3, 2};
@@ -39,11 +44,32 @@ void checkObjNumbers(const std::string& objPath, const std::function<void(const 
         std::istringstream tokens(line);
         std::string keyword;
         if (!(tokens >> keyword)) continue;
+        const std::string where = "line " + std::to_string(lineNumber) + ": ";
+        if (keyword == "f") {
+            size_t corners = 0;
+            for (std::string corner; tokens >> corner;) ++corners;
+            triangles += corners >= 3 ? corners - 2 : 0;
+            if (triangles > maxSceneTriangles)
+                fail(where + "the faces so far make " + std::to_string(triangles) + " triangles; at most " +
+                     std::to_string(maxSceneTriangles) + " are supported");
+            continue;
+        }
+        if (keyword == "mtllib") {
+            for (std::string file; tokens >> file;) {
+                const std::string mtl = (fs::path(objPath).parent_path() / file).lexically_normal().string();
+                const std::string problem = fileProblem(mtl);
+                if (!problem.empty() && problem != "not found") fail(where + "MTL file '" + mtl + "' " + problem);
+            }
+            continue;
+        }
         int kind = -1;
         for (int k = 0; k < 3; ++k)
             if (keyword == keywords[k]) kind = k;
         if (kind < 0) continue;
         const size_t item = ++counts[kind];
+        if (item > 3 * maxSceneTriangles)
+            fail(where + "more than " + std::to_string(3 * maxSceneTriangles) + " " + names[kind] +
+                 " lines (3 x the scene's triangle limit)");
         std::string token;
         for (int c = 0; c < needed[kind] && tokens >> token; ++c) {
             char* end = nullptr;
@@ -164,7 +190,7 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
     const std::string problem = fileProblem(objPath);
     if (!problem.empty()) fail("OBJ file " + problem);
     if (overrideMaterial >= int(scene.materials.size())) fail("override material out of range");
-    checkObjNumbers(objPath, fail);
+    checkObjLines(objPath, fail);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;

@@ -352,6 +352,12 @@ Scene loadSceneFile(const std::string& path, const ObjImportOptions& objDefaults
     if (!fs::exists(path, error) && !error) throw Error(path + ": scene file not found");
     const std::string problem = fileProblem(path);
     if (!problem.empty()) throw Error(path + ": scene file " + problem);
+    // Read whole and parsed into a tree of several times its size: the size is bounded first.
+    constexpr uintmax_t maxSceneFileBytes = uintmax_t(64) << 20;
+    const uintmax_t size = fs::file_size(path, error);
+    if (!error && size > maxSceneFileBytes)
+        throw Error(path + ": scene file of " + std::to_string(size) + " bytes; at most " +
+                    std::to_string(maxSceneFileBytes) + " (64 MiB) are read");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot open the scene file");
     std::ostringstream text;
