@@ -392,6 +392,10 @@ EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     }
 }
 
+// A reason the page's script found (a file it could not fetch, a model past the memory estimate), shown as the
+// library's are.
+EMSCRIPTEN_KEEPALIVE void lidr_web_set_message(const char* text) { page->message = text; }
+
 // Back to the built-in room (its own lights, the count it had).
 EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
     DefaultSceneOptions sceneOptions;

@@ -14,6 +14,7 @@ two rasterisers and float units differ in the last bits, and an edge pixel may l
 A --large-triangles model then either renders or is refused with the page's memory estimate."""
 import argparse
 import functools
+import json
 import struct
 import urllib.parse
 import zlib
@@ -231,7 +232,15 @@ def run_model_check(args, url):
     os.makedirs(models, exist_ok=True)
     make_glb = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "make_glb.py")
     subprocess.run([sys.executable, make_glb, os.path.join(models, "check.glb")], check=True)
-    query = f"?check-model=models/check.glb&lights={args.lights}"
+    # A .gltf whose one triangle list claims 400 M vertices (its buffer is never written): refused by estimate.
+    with open(os.path.join(models, "huge.gltf"), "w") as f:
+        json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+                   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+                   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 400000000, "type": "VEC3",
+                                  "min": [0, 0, 0], "max": [1, 1, 1]}],
+                   "bufferViews": [{"buffer": 0, "byteLength": 4800000000}],
+                   "buffers": [{"uri": "huge.bin", "byteLength": 4800000000}]}, f)
+    query = f"?check-model=models/check.glb&lights={args.lights}&check-huge=models/huge.gltf"
     if args.large_triangles > 0:
         subprocess.run([sys.executable, make_glb, os.path.join(models, "large.glb"),
                         "--triangles", str(args.large_triangles)], check=True)
