@@ -260,8 +260,8 @@ void frame() {
         const ShadingParameters shading{page->scene.ambient, page->scene.backgroundColor};
         // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
         // target returns only when every command before it has run, so the clock from the first call to it is
-        // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: browsers offer
-        // it rarely (Chromium withdrew it from WebGL 1), and the read works everywhere.
+        // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
+        // has no timer queries, headless Chromium does not offer it, and the read works everywhere.
         const double start = emscripten_get_now();
         page->renderer->render(camera, lights, shading);
         glBindFramebuffer(GL_FRAMEBUFFER, page->renderer->targets().colorFramebuffer().id());
