@@ -138,6 +138,10 @@ bool applySettings(Settings wanted, bool sceneChanged = false) {
                 oldScene = std::move(page->scene);
                 page->scene = sceneWithLights(page->fileScene, page->model, wanted.lightCount);
             }
+            if (lightsChanged || sceneChanged) {  // the old scene's GL objects go before the new ones are made
+                page->reference.reset();
+                page->depthReadback.reset();
+            }
             try {
                 // Untimed passes: the frame is timed whole, finished by a 1-pixel read (frame()).
                 std::unique_ptr<Renderer> r = makeRenderer(wanted);
@@ -410,6 +414,14 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
     page->camera.reset(page->scene.camera);
     page->time = 2.0f;
     page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
+}
+
+// One animation frame with the current view, as the loop draws it (the model check's views); 1 when it drew
+// without an error, 0 otherwise (the reason in lidr_web_status()).
+EMSCRIPTEN_KEEPALIVE int lidr_web_draw_frame() {
+    page->message.clear();
+    frame();
+    return page->message.empty() ? 1 : 0;
 }
 
 // Starts the animation loop (the page calls it unless it runs its check).
