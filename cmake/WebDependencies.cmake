@@ -21,6 +21,23 @@ add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 set_target_properties(nlohmann_json::nlohmann_json PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${LIDR_WEB_INCLUDE})
 add_library(PkgConfig::STB INTERFACE IMPORTED)
 set_target_properties(PkgConfig::STB PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${LIDR_WEB_INCLUDE}/stb)
+# The scene importers (scene/io): tinygltf (libtinygltf-dev) and tinyobjloader (libtinyobjloader-dev) are single
+# headers; each is linked into web-include on its own (not /usr/include) and tinyobjloader's implementation,
+# which Debian ships compiled natively in libtinyobjloader.so, is compiled once into lidr_web like stb_image's.
+foreach(header tiny_gltf.h tiny_obj_loader.h)
+  if(NOT EXISTS /usr/include/${header})
+    message(FATAL_ERROR "LIDR_WEB: /usr/include/${header} not found (Debian: libtinygltf-dev, libtinyobjloader-dev)")
+  endif()
+  if(NOT EXISTS ${LIDR_WEB_INCLUDE}/${header})
+    file(CREATE_LINK /usr/include/${header} ${LIDR_WEB_INCLUDE}/${header} SYMBOLIC)
+  endif()
+endforeach()
+set(TINYGLTF_INCLUDE_DIRS ${LIDR_WEB_INCLUDE})
+add_library(tinyobjloader::tinyobjloader INTERFACE IMPORTED)
+set_target_properties(tinyobjloader::tinyobjloader PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${LIDR_WEB_INCLUDE})
+set(LIDR_WEB_TINYOBJ_SOURCE ${PROJECT_BINARY_DIR}/generated/tinyobjloader_web.cpp)
+file(WRITE ${LIDR_WEB_TINYOBJ_SOURCE}
+  "#define TINYOBJLOADER_IMPLEMENTATION\n#include <tiny_obj_loader.h>\n")
 # Debian's libstb.so holds stb_image's implementation natively; the web build compiles it once into lidr_web.
 set(LIDR_WEB_STB_SOURCE ${PROJECT_BINARY_DIR}/generated/stb_image_web.c)
 file(WRITE ${LIDR_WEB_STB_SOURCE} "#define STB_IMAGE_IMPLEMENTATION\n#include <stb_image.h>\n")

@@ -22,7 +22,10 @@ esac
 # Debian 12 packages only; nothing is downloaded at build time.
 # emscripten 3.1.6 ships its system libraries prebuilt in a frozen cache (EM_CACHE stays unset); node-acorn
 # comes with it (its optimising link steps need NODE_PATH=/usr/share/nodejs when Node.js is not Debian's).
-web_packages=(cmake emscripten chromium python3)
+# The page's model check compares it with lidr-web-native-frame, built natively: the library's packages too.
+web_packages=(cmake emscripten chromium python3
+  build-essential pkg-config libegl-dev libegl1-mesa-dev libgl-dev libgl1-mesa-dri libglew-dev libglm-dev
+  libstb-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev)
 if [ "$job" = web ]; then
   packages=("${web_packages[@]}")
 else
@@ -60,9 +63,17 @@ fi
 jobs="${JOBS:-$(nproc)}"
 # The page and its test only: the library's web layers, web/lidr_web.cpp, CTest web.chromium (doc/web.md).
 web_build_and_test() {
-  local web_build="${WEB_BUILD_DIR:-build-web}"
+  local web_build="${WEB_BUILD_DIR:-build-web}" native_build="${BUILD_DIR:-build}"
   export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
-  emcmake cmake -S . -B "$web_build" -DCMAKE_BUILD_TYPE=Release -DLIDR_WEB=ON >/dev/null
+  # lidr-web-native-frame: the native frames web.chromium's model check compares the page's with. An existing
+  # native build folder is used as it is configured; a new one builds the library and that tool alone.
+  if [ ! -f "$native_build/CMakeCache.txt" ]; then
+    cmake -S . -B "$native_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLIDR_BUILD_TESTS=OFF -DLIDR_BUILD_DEMO=OFF \
+      -DLIDR_BUILD_EXAMPLES=OFF >/dev/null
+  fi
+  cmake --build "$native_build" -j "$jobs" --target lidr-web-native-frame
+  emcmake cmake -S . -B "$web_build" -DCMAKE_BUILD_TYPE=Release -DLIDR_WEB=ON \
+    -DLIDR_NATIVE_FRAME_TOOL="$(cd "$native_build" && pwd)/web/lidr-web-native-frame" >/dev/null
   cmake --build "$web_build" -j "$jobs"
   ctest --test-dir "$web_build" --output-on-failure --no-tests=error
 }

@@ -90,6 +90,23 @@ grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$o
   fail "the settings sweep failed: $(tail -5 "$out/sweep.log")"
 echo "viewer.script: settings sweep: $(grep -c ' applied$' "$out/sweep.log" || true) applied, $(grep -c 'refused:' "$out/sweep.log") refused, no crash"
 
+# Files: a generated .glb opened by --scene, then dropped on the window (viewer_files.script), with scattered
+# lights in each mode: the dropped file's frames are the --scene frames, pixel for pixel.
+command -v python3 >/dev/null || fail "python3 is needed to write the test model (tests/make_glb.py)"
+python3 "$here/../tests/make_glb.py" "$out/model.glb" >/dev/null || fail "tests/make_glb.py failed"
+printf 'glTF' > "$out/broken.glb"
+for mode in lidr tiled forward-multipass; do
+  printf 'set scatter 256\nwait 1\nexpect-stat lights == 256\ncapture %s\n' "$out/scene-$mode.png" > "$out/scene-$mode.script"
+  "${x[@]}" "$viewer" "${size[@]}" --paused --mode "$mode" --scene "$out/model.glb" --out "$out" \
+    --script "$out/scene-$mode.script" >"$out/scene-$mode.log" 2>&1 || fail "--scene model.glb --mode $mode: $(tail -3 "$out/scene-$mode.log")"
+done
+sed "s|@OUT@|$out|g" "$here/viewer_files.script" > "$out/files.script"
+"${x[@]}" "$viewer" "${size[@]}" --paused --out "$out" --script "$out/files.script" >"$out/files.log" 2>&1 ||
+  fail "dropping a file: $(tail -5 "$out/files.log")"
+grep -q "open $out/broken.glb refused: .*broken.glb: malformed glTF" "$out/files.log" ||
+  fail "the broken file's refusal names no cause: $(grep refused "$out/files.log")"
+echo "viewer.script: a dropped .glb renders as with --scene in 3 modes; reload and refusals checked"
+
 # --fixed-size: the frame keeps its size when the window changes (it is scaled instead).
 printf 'resize 320 240\nwait 3\nexpect-size 160 120\n' > "$out/fixed-size.script"
 "${x[@]}" "$viewer" --width 160 --height 120 --paused --fixed-size --out "$out" --script "$out/fixed-size.script" \

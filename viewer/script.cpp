@@ -39,6 +39,7 @@ const std::map<std::string, VerbSpec>& verbs() {
         {"resize", {2, 2, "resize WIDTH HEIGHT (the window; the frame follows unless --fixed-size)"}},
         {"expect-size", {2, 2, "expect-size WIDTH HEIGHT (the rendered frame's size)"}},
         {"expect-mode-views", {0, 0, "expect-mode-views (the debug views of the mode that drew the last frame are offered and computed)"}},
+        {"drop", {1, 16, "drop FILE... (files dropped on the window, as GLFW's drop callback hands them over)"}},
         {"quit", {0, 0, "quit"}},
     };
     return v;

@@ -55,6 +55,9 @@ public:
 
     // Called from the GLFW key callback and from the script's press action.
     void onKeyPress(int key, int mods);
+    // Called from the GLFW drop callback and from the script's drop action: the file to open next frame
+    // (viewer_files.cpp).
+    void onDrop(const std::vector<std::string>& paths);
 
 private:
     struct Evaluation {  // what "compute" (C) found for one frame; stale once the frame changes
@@ -93,6 +96,14 @@ private:
     void saveAll(const std::string& dir);
     ImageRGBA8 readWindow(int fbw, int fbh) const;
     void resetAll();
+    // Files (viewer_files.cpp): open a scene file in place of the current one (kept, with the reason in the
+    // status line, when it cannot be read or rendered), reload it (F5), scatter lights over it.
+    void openPendingFile();
+    bool openScene(const std::string& path, const std::string& what, bool keepCamera);
+    void reloadScene();
+    // scene_ = fileScene_ plus `count` lights scattered over it (lidr::scatterLights); throws lidr::Error.
+    void scatterOver(int count);
+    void uiFile();
     // Script: runs actions until one waits; throws ScriptFailure on a failed check.
     void stepScript(int fbw, int fbh);
     void runAction(const ScriptAction& a, int fbw, int fbh);
@@ -100,7 +111,13 @@ private:
     demo::SceneChoice sceneChoice_;
     demo::RendererChoice initialChoice_, rc_;
     ViewerOptions options_;
-    Scene scene_;
+    Scene fileScene_;       // the scene as read (the built-in room, --scene or a dropped file)
+    Scene scene_;           // fileScene_ with scatteredLights_ more lights: what is rendered
+    std::string scenePath_;  // empty: the built-in room
+    int scatteredLights_ = 0;
+    int scatterDraft_ = 0;  // the panel's slider while it is dragged
+    bool scatterDragged_ = false;
+    std::optional<std::string> pendingOpen_;
     int width_ = 0, height_ = 0;          // the render size (follows the window unless --fixed-size)
     int refusedWidth_ = 0, refusedHeight_ = 0;  // a window size the library refused, not tried again
     std::unique_ptr<GlContext> context_;

@@ -1,6 +1,9 @@
-// lidr in the browser: the built-in room rendered with LIDR on WebGL 1 (the library's GLES 2.0 path), with the
-// page's HTML controls (web/shell.html) calling the exported lidr_web_* functions, and a fly camera (WASD + mouse
-// drag). ?check in the URL runs the page's own check instead (web/web_check.h; CTest web.chromium).
+// lidr in the browser: the built-in room, or the user's own glTF / OBJ / scene file (by URL, file picker or
+// drop; web/shell.html writes it into the page's memory file system and calls lidr_web_load), rendered with LIDR
+// on WebGL 1 (the library's GLES 2.0 path), with the page's HTML controls calling the exported lidr_web_*
+// functions, and a fly camera (WASD + mouse drag). A loaded model gets lights scattered over its surfaces
+// (lidr::scatterLights, as --lights N). ?check in the URL runs the page's own check instead (web/web_check.h;
+// CTest web.chromium).
 #include "lidr/base/gl.h"
 
 #include <emscripten.h>
@@ -23,6 +26,8 @@
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
 #include "lidr/scene/default_scene.h"
+#include "lidr/scene/io/scene_loader.h"
+#include "lidr/scene/light_scatter.h"
 #include "web_check.h"
 
 using namespace lidr;
@@ -39,13 +44,20 @@ struct Settings {
     int budget = 4;
     int indexBits = 8;
     std::string view = "frame";  // frame, reference, difference, index-lists, overlap
-    int lightCount = 255;
+    int lightCount = 255;  // the room: its first N lights; a model: its own, then scattered ones up to N
     bool paused = false;
 };
 
+// A model's light count reaches this many (16-bit indices hold 65535; the slider stops sooner, for a frame
+// time a browser bears).
+constexpr int kMaxModelLights = 16384;
+
 struct Page {
     std::unique_ptr<GlContext> context;
-    Scene scene;
+    Scene fileScene;  // the room or the model as read
+    Scene scene;      // what is rendered: fileScene, plus the lights scattered over a model
+    std::string sceneName = "built-in room";
+    bool model = false;  // a loaded file, not the room
     Settings settings;
     std::unique_ptr<Renderer> renderer;
     std::unique_ptr<ReferenceRenderer> reference;  // built on first use by a view that needs it
@@ -54,13 +66,30 @@ struct Page {
     viewer::FlyCamera camera;
     float moveSpeed = 3.0f;
     float time = 2.0f;
-    double lastFrameMs = 0.0, frameMsAverage = 0.0, renderMsAverage = 0.0;
+    double lastFrameMs = 0.0, frameMsAverage = 0.0, renderMsAverage = 0.0, renderMsLast = 0.0;
     std::set<std::string> keysDown;
     bool dragging = false;
     std::string message;  // the last refusal or error, shown in red
     std::string viewNote;  // what the current debug view shows
 };
 Page* page = nullptr;
+
+int maxLights() {
+    return page->model ? kMaxModelLights : int(page->fileScene.lights.size());
+}
+
+// The scene for a light count: the room keeps its lights (the count picks the first N when drawing); a model
+// gets count - its own lights scattered over it (none when it has enough).
+Scene sceneWithLights(const Scene& file, bool model, int count) {
+    Scene scene = file;
+    const int extra = count - int(file.lights.size());
+    if (model && extra > 0) {
+        LightScatterOptions o;
+        o.count = extra;
+        addScatteredLights(scene, o);
+    }
+    return scene;
+}
 
 std::vector<PointLight> currentLights() {
     std::vector<PointLight> lights = page->scene.lightsAt(page->time);
@@ -73,30 +102,61 @@ std::unique_ptr<Renderer> makeRenderer(const Settings& s) {
     o.mode = s.mode;
     o.lidr.packing = {parsePackingScheme(s.scheme), s.budget, s.indexBits};
     o.transparency = true;
+    // WebGL 1 (GLSL ES 1.00) gives gl_FragCoord.z at mediump only, which the tiled mode's depth bounds refuse.
+    o.tiled.depthBounds = false;
     return createRenderer(o, page->context->info(), page->scene, kWidth, kHeight);
 }
 
 // Applies new settings; anything the library refuses keeps the old ones and says why (as lidr-viewer does).
-bool applySettings(const Settings& wanted) {
-    const bool rebuild = wanted.mode != page->settings.mode || wanted.scheme != page->settings.scheme ||
-                         wanted.budget != page->settings.budget || wanted.indexBits != page->settings.indexBits ||
-                         !page->renderer;
+bool applySettings(Settings wanted, bool sceneChanged = false) {
     try {
-        if (wanted.lightCount < 1 || wanted.lightCount > int(page->scene.lights.size()))
-            throw Error("light count: 1 to " + std::to_string(page->scene.lights.size()) + ", got " +
+        if (wanted.lightCount < 1 || wanted.lightCount > maxLights())
+            throw Error("light count: 1 to " + std::to_string(maxLights()) + ", got " +
                         std::to_string(wanted.lightCount));
+        // A model's light count is its scene's: more lights are scattered over it, so the scene changes.
+        const bool lightsChanged = page->model && wanted.lightCount != page->settings.lightCount;
+        std::string note;
+        if (wanted.mode == "lidr" && wanted.lightCount > (1 << wanted.indexBits) - 1) {
+            // (as lidr-viewer's scheme choice does: a choice the library would refuse is made for the user)
+            note = std::to_string(wanted.indexBits) + "-bit indices hold " +
+                   std::to_string((1 << wanted.indexBits) - 1) + " lights: index bits set to 16 for " +
+                   std::to_string(wanted.lightCount);
+            wanted.indexBits = 16;
+        }
+        const bool rebuild = wanted.mode != page->settings.mode || wanted.scheme != page->settings.scheme ||
+                             wanted.budget != page->settings.budget ||
+                             wanted.indexBits != page->settings.indexBits || !page->renderer || sceneChanged ||
+                             lightsChanged;
         if (wanted.view != "frame" && wanted.view != "reference" && wanted.view != "difference" &&
             wanted.view != "index-lists" && wanted.view != "overlap")
             throw Error("view '" + wanted.view + "' (valid: frame, reference, difference, index-lists, overlap)");
         if ((wanted.view == "index-lists" || wanted.view == "overlap") && wanted.mode != "lidr")
             throw Error("the " + wanted.view + " view shows LIDR's index lists: choose mode lidr");
         if (rebuild) {
-            std::unique_ptr<Renderer> r = makeRenderer(wanted);
-            r->setTiming(true, true);  // CPU clock around glFinish per pass: WebGL 1 has no timer queries lidr uses
-            page->renderer = std::move(r);
+            Scene oldScene;
+            if (lightsChanged || sceneChanged) {
+                oldScene = std::move(page->scene);
+                page->scene = sceneWithLights(page->fileScene, page->model, wanted.lightCount);
+            }
+            if (lightsChanged || sceneChanged) {  // the old scene's GL objects go before the new ones are made
+                page->reference.reset();
+                page->depthReadback.reset();
+            }
+            try {
+                // Untimed passes: the frame is timed whole, finished by a 1-pixel read (frame()).
+                std::unique_ptr<Renderer> r = makeRenderer(wanted);
+                page->renderer = std::move(r);
+            } catch (...) {
+                if (lightsChanged || sceneChanged) page->scene = std::move(oldScene);
+                throw;
+            }
+            if (lightsChanged || sceneChanged) {
+                page->reference.reset();
+                page->depthReadback.reset();
+            }
         }
         page->settings = wanted;
-        page->message.clear();
+        page->message = note;
         return true;
     } catch (const std::exception& e) {
         page->message = e.what();
@@ -202,8 +262,19 @@ void frame() {
         const Camera camera = page->camera.camera();
         const std::vector<PointLight> lights = currentLights();
         const ShadingParameters shading{page->scene.ambient, page->scene.backgroundColor};
-        const FrameStats& stats = page->renderer->render(camera, lights, shading);
-        page->renderMsAverage = 0.9 * page->renderMsAverage + 0.1 * stats.frameMilliseconds();
+        // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
+        // target returns only when every command before it has run, so the clock from the first call to it is
+        // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
+        // has no timer queries, headless Chromium does not offer it, and the read works everywhere.
+        const double start = emscripten_get_now();
+        page->renderer->render(camera, lights, shading);
+        glBindFramebuffer(GL_FRAMEBUFFER, page->renderer->targets().colorFramebuffer().id());
+        uint8_t pixel[4];
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        page->renderMsLast = emscripten_get_now() - start;
+        page->renderMsAverage = page->renderMsAverage > 0.0 ? 0.9 * page->renderMsAverage + 0.1 * page->renderMsLast
+                                                            : page->renderMsLast;
         drawView(camera, lights, shading);
     } catch (const std::exception& e) {
         page->message = e.what();
@@ -265,6 +336,94 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
     return applySettings(s) ? 1 : 0;
 }
 
+// Opens a scene file the page wrote into its memory file system (glTF .gltf/.glb, .obj, a lidr .json scene)
+// with `lights` lights (its own, then scattered over it; 0: its own, or 256 when it has none). Returns 1 when
+// it renders, 0 when it was refused (the scene shown before stays; lidr_web_status() carries the reason).
+EMSCRIPTEN_KEEPALIVE int lidr_web_load(const char* path, int lights) {
+    Scene loaded;
+    try {
+        loaded = loadScene(path);
+    } catch (const std::exception& e) {
+        page->message = e.what();
+        return 0;
+    }
+    Scene oldFile = std::move(page->fileScene), oldScene = page->scene;
+    const std::string oldName = page->sceneName;
+    const bool oldModel = page->model;
+    const Settings oldSettings = page->settings;
+    page->fileScene = std::move(loaded);
+    page->model = true;
+    page->sceneName = path;
+    Settings wanted = page->settings;
+    wanted.lightCount = lights > 0 ? lights : page->fileScene.lights.empty() ? 256 : int(page->fileScene.lights.size());
+    wanted.lightCount = std::min(wanted.lightCount, kMaxModelLights);
+    if (!applySettings(wanted, true)) {
+        const std::string why = page->message;
+        page->fileScene = std::move(oldFile);
+        page->scene = std::move(oldScene);
+        page->sceneName = oldName;
+        page->model = oldModel;
+        page->settings = oldSettings;
+        applySettings(oldSettings, true);
+        page->message = std::string(path) + ": " + why + " (kept " + oldName + ")";
+        return 0;
+    }
+    page->camera.reset(page->scene.camera);
+    page->time = page->scene.time;
+    page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
+    if (page->message.empty() && !page->fileScene.warnings.empty())
+        page->message = std::to_string(page->fileScene.warnings.size()) + " warning(s) reading " + path;
+    return 1;
+}
+
+// One frame of the current scene and settings from its own camera at its own time, read back (the model check:
+// web/run_chromium_check.py compares it with the native renderer's frame). Returns the RGBA pixels, rows top
+// first, `kWidth` x `kHeight`; nullptr when the frame was refused (the reason in lidr_web_status()).
+EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
+    static ImageRGBA8 image;
+    try {
+        page->camera.reset(page->scene.camera);
+        page->time = page->scene.time;
+        const ShadingParameters shading{page->scene.ambient, page->scene.backgroundColor};
+        page->renderer->render(page->scene.camera, currentLights(), shading);  // as lidr-web-native-frame
+        image = page->renderer->targets().readColor();
+        page->presenter->present(page->renderer->targets(), 0);
+        showGlCanvas();
+        return image.pixels.data();
+    } catch (const std::exception& e) {
+        page->message = e.what();
+        return nullptr;
+    }
+}
+
+// A reason the page's script found (a file it could not fetch, a model past the memory estimate), shown as the
+// library's are.
+EMSCRIPTEN_KEEPALIVE void lidr_web_set_message(const char* text) { page->message = text; }
+
+// Back to the built-in room (its own lights, the count it had).
+EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
+    DefaultSceneOptions sceneOptions;
+    sceneOptions.width = kWidth;
+    sceneOptions.height = kHeight;
+    page->fileScene = makeDefaultScene(sceneOptions);
+    page->model = false;
+    page->sceneName = "built-in room";
+    Settings wanted = page->settings;
+    wanted.lightCount = int(page->fileScene.lights.size());
+    applySettings(wanted, true);
+    page->camera.reset(page->scene.camera);
+    page->time = 2.0f;
+    page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
+}
+
+// One animation frame with the current view, as the loop draws it (the model check's views); 1 when it drew
+// without an error, 0 otherwise (the reason in lidr_web_status()).
+EMSCRIPTEN_KEEPALIVE int lidr_web_draw_frame() {
+    page->message.clear();
+    frame();
+    return page->message.empty() ? 1 : 0;
+}
+
 // Starts the animation loop (the page calls it unless it runs its check).
 EMSCRIPTEN_KEEPALIVE void lidr_web_start() { emscripten_set_main_loop(frame, 0, 0); }
 
@@ -274,15 +433,23 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_reset_camera() { page->camera.reset(page->sce
 EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
     static std::string json;
     const Settings& s = page->settings;
-    char figures[256];
+    char figures[512];
+    size_t triangles = 0;
+    for (const Mesh& m : page->scene.meshes) triangles += m.indices.size() / 3;
     std::snprintf(figures, sizeof figures,
-                  "\"frameMs\":%.2f,\"renderMs\":%.2f,\"time\":%.2f,\"budget\":%d,\"indexBits\":%d,\"lights\":%d,"
-                  "\"paused\":%s",
-                  page->frameMsAverage, page->renderMsAverage, page->time, s.budget, s.indexBits, s.lightCount,
-                  s.paused ? "true" : "false");
+                  "\"frameMs\":%.2f,\"renderMs\":%.2f,\"renderMsLast\":%.2f,\"time\":%.2f,\"budget\":%d,"
+                  "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
+                  "\"model\":%s,\"paused\":%s",
+                  page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
+                  s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
+                  page->model ? "true" : "false", s.paused ? "true" : "false");
+    std::string warnings;
+    for (const std::string& w : page->fileScene.warnings)
+        warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";
     json = "{\"gl\":\"" + jsonEscape(page->context->info().summary()) + "\",\"mode\":\"" + s.mode +
            "\",\"scheme\":\"" + s.scheme + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
-           "\",\"message\":\"" + jsonEscape(page->message) + "\"," + figures + "}";
+           "\",\"message\":\"" + jsonEscape(page->message) + "\",\"scene\":\"" + jsonEscape(page->sceneName) +
+           "\",\"warnings\":[" + warnings + "]," + figures + "}";
     return json.c_str();
 }
 
@@ -307,7 +474,8 @@ int main() {
         DefaultSceneOptions sceneOptions;
         sceneOptions.width = kWidth;
         sceneOptions.height = kHeight;
-        page->scene = makeDefaultScene(sceneOptions);
+        page->fileScene = makeDefaultScene(sceneOptions);
+        page->scene = page->fileScene;
         page->camera.reset(page->scene.camera);
         page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
         page->presenter = std::make_unique<FramePresenter>();
