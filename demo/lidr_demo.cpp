@@ -309,7 +309,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"overflow_pixels", decision.overflowPixels}, {"repacks", decision.repacks},
                        {"transparent_budget", decision.transparentBudget},
                        {"measured_transparent_budget", decision.measuredTransparentBudget},
-                       {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped}};
+                       {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped},
+                       {"volume_pass_skipped", stats.volumePassSkipped},
+                       {"volume_area_per_pixel", decision.volumeAreaPerPixel}, {"area_bound", decision.areaBound}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
     summary["pass_counts"] = passCountsJson(stats.passes);
@@ -389,6 +391,12 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
             s << " (" << decision.budgetFallback << ")";
         else
             s << " (fixed)";
+        if (stats.volumePassSkipped)
+            s << ", no light reaches a visible surface: no volume pass, no index read";
+        else if (decision.volumeAreaPerPixel >= 0.0)
+            s << ", volume quads " << std::fixed << std::setprecision(2) << decision.volumeAreaPerPixel
+              << " px per pixel" << std::defaultfloat
+              << (decision.areaBound ? " (area-bound: tiled forward may be faster here; --mode auto times both)" : "");
         if (renderer.drawsTransparency())
             s << ", transparent volume pass "
               << (stats.transparentVolumePassSkipped ? std::string("skipped (none in view)")

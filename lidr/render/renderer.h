@@ -33,6 +33,13 @@ struct AutoDecision {
     // Non-empty where an automatic budget was asked for and the context cannot measure it (no occlusion
     // queries, OpenGL ES 2.0): the budget is LidrRenderer::kBudgetWithoutOcclusionQueries, fixed.
     const char* budgetFallback = "";
+    // Tile-culled volumes (LidrOptions::tileCulledVolumes): the pixels the main volume pass rasterised per screen
+    // pixel (every rank window and re-pack); -1 without tiles. Above kAreaBoundPerPixel the frame is area-bound:
+    // its volume pass costs more than a tiled forward pass's light loop may save (doc/auto.md), and the summary
+    // says so; `--mode auto` times the modes and picks the faster.
+    double volumeAreaPerPixel = -1.0;
+    bool areaBound = false;
+    static constexpr double kAreaBoundPerPixel = 16.0;
 };
 
 struct FrameStats {
@@ -44,6 +51,7 @@ struct FrameStats {
     GlCallCounters glCalls;  // what the frame asked of GL: state calls issued and skipped, draws, binds (gl_state.h)
     int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
     bool transparentVolumePassSkipped = false;  // LIDR: no transparent surface in view, no pass drawn
+    bool volumePassSkipped = false;  // LIDR: no light reaches a visible surface: no volume pass, no index read
     AutoDecision autoDecision;
     // Timing (Renderer::setTiming): `passes` belong to the frame this many frames before this one (deferred
     // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.

@@ -5,6 +5,7 @@
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/render/shading_pass.h"
 
 namespace lidr {
 
@@ -41,13 +42,34 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
         vertex = perSampleVersion(vertex);
         fragment = perSampleVersion(fragment);
     }
-    program_ = gl::Program::create(std::string(materialShader.empty() ? "lidr-forward-" : "lidr-material-") +
-                                       packingSchemeName(scheme.config().scheme) + (perSample ? "-per-sample" : ""),
-                                   vertex, fragment, geometryAttributes());
+    const std::string name = std::string(materialShader.empty() ? "lidr-forward-" : "lidr-material-") +
+                             packingSchemeName(scheme.config().scheme) + (perSample ? "-per-sample" : "");
+    program_ = gl::Program::create(name, vertex, fragment, geometryAttributes());
+    // The lightless variant's sources, compiled only if a frame needs it (the includes are resolved before the
+    // preprocessor drops the list code, so it takes the same ones).
+    ShaderDefines none = {{"LIDR_NO_LIGHTS", "1"}};
+    ShaderIncludes noUnpack = {{"lidr_unpack.glsl", scheme.unpackShaderFile()}};
+    depth.apply(none, noUnpack);
+    lightlessVertex_ = buildShaderSource("geometry.vert");
+    lightlessFragment_ = materialShader.empty() ? buildShaderSource("lidr_forward.frag", none, noUnpack)
+                                                : buildShaderSourceFromText("material shader", materialShader, none, noUnpack);
+    lightlessName_ = name + "-no-lights";
+    if (perSample) {  // shaded per sample like the lit program
+        lightlessVertex_ = perSampleVersion(lightlessVertex_);
+        lightlessFragment_ = perSampleVersion(lightlessFragment_);
+    }
 }
 
-void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
-                             const CameraMatrices& camera, const ShadingParameters& shading) const {
+const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices,
+                                           const LightTable& table, const CameraMatrices& camera,
+                                           const ShadingParameters& shading, bool lights) const {
+    if (!lights) {
+        if (!lightless_)
+            lightless_ = gl::Program::create(lightlessName_, lightlessVertex_, lightlessFragment_, geometryAttributes());
+        lightless_.use();
+        setShadingUniforms(lightless_, camera, shading);
+        return lightless_;
+    }
     useShadingProgram(program_, camera, shading, table);
     program_.setIfDeclared("uLidrMaxLights", maxLights_);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
@@ -55,11 +77,12 @@ void ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& i
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
         program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
+    return program_;
 }
 
-void ForwardPass::unbindInputs(const IndexTargets& indices) const {
+void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
     StateCache::current().apply(RenderState{});
-    for (int i = 0; i < indices.count(); ++i) {
+    for (int i = 0; lights && i < indices.count(); ++i) {
         glActiveTexture(GL_TEXTURE0 + gl::kUnitIndexTarget0 + i);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
@@ -68,24 +91,22 @@ void ForwardPass::unbindInputs(const IndexTargets& indices) const {
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                      bool afterPrepass) const {
+                      bool afterPrepass, bool lights) const {
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
-    bindInputs(targets, indices, table, camera, shading);
-    scene.draw(program_, DrawFilter::Opaque, true, &camera);
-    unbindInputs(indices);
+    scene.draw(bindInputs(targets, indices, table, camera, shading, lights), DrawFilter::Opaque, true, &camera);
+    unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
 
 void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                                  const LightTable& table, const CameraMatrices& camera,
-                                 const ShadingParameters& shading) const {
+                                 const ShadingParameters& shading, bool lights) const {
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
-    bindInputs(targets, indices, table, camera, shading);
-    scene.drawTransparentSorted(program_, camera.eye);
-    unbindInputs(indices);
+    scene.drawTransparentSorted(bindInputs(targets, indices, table, camera, shading, lights), camera.eye);
+    unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }
 

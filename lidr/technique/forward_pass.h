@@ -28,19 +28,25 @@ public:
     // Clears colour and draws opaque geometry into targets.bindColor(): depth EQUAL against a pre-pass
     // depth there, or LEQUAL with depth writes when that target had no pre-pass (so that, as with EQUAL,
     // the last fragment drawn at the nearest depth stays).
+    // lights false: the frame has no light to read (none reaches a visible surface); the program built for
+    // that (LIDR_NO_LIGHTS, on first use) reads no index texture and no light table.
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
              const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-             bool afterPrepass = true) const;
+             bool afterPrepass = true, bool lights = true) const;
     // Transparent geometry over the opaque image, back to front, alpha blended, depth-tested against the
     // opaque depth without writing it; `indices` must come from a front-face volume pass.
     void runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
-                        const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading) const;
+                        const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
+                        bool lights = true) const;
 
 private:
-    void bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
-                    const CameraMatrices& camera, const ShadingParameters& shading) const;
-    void unbindInputs(const IndexTargets& indices) const;
+    // The program for this frame (lights or not) with its inputs bound.
+    const gl::Program& bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
+                                  const CameraMatrices& camera, const ShadingParameters& shading, bool lights) const;
+    void unbindInputs(const IndexTargets& indices, bool lights) const;
     gl::Program program_;
+    mutable gl::Program lightless_;  // built on the first frame without lights
+    std::string lightlessVertex_, lightlessFragment_, lightlessName_;
     bool perSample_ = false;
     int maxLights_ = 0;
 };

@@ -322,9 +322,20 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     // the forward passes are queued, so the GPU is not left idle while the CPU waits for it; a frame found over
     // its budget then is packed and shaded again.
     int needTransparent = -1;
-    drawVolumes(cam, volumes, needTransparent);
-    shade(cam, shading);
-    while (autoBudget) {
+    // Nothing for nothing: a frame where no light can reach a visible surface draws no light volume, measures
+    // nothing and shades without reading an index texture or the light table.
+    lightlessFrame_ = volumes.empty();
+    volumeQuadPixels_ = 0;
+    stats_.volumePassSkipped = lightlessFrame_;
+    if (lightlessFrame_) {
+        stats_.transparentVolumeLights = 0;
+        stats_.transparentVolumePassSkipped = true;
+        shade(cam, shading, false);
+    } else {
+        drawVolumes(cam, volumes, needTransparent);
+        shade(cam, shading);
+    }
+    while (autoBudget && !lightlessFrame_) {
         const int need = measuredNeed();
         decision.measuredBudget = need;
         decision.measuredTransparentBudget = std::max(needTransparent, 0);
@@ -340,6 +351,12 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     }
     if (transparentIndexTargets_ && stats_.transparentVolumeLights > 0)
         decision.transparentBudget = currentTransparent_->scheme->config().budget;
+    decision.volumeAreaPerPixel = -1.0;
+    decision.areaBound = false;
+    if (volumeTiles_) {
+        decision.volumeAreaPerPixel = double(volumeQuadPixels_) / (double(targets_.width()) * targets_.height());
+        decision.areaBound = decision.volumeAreaPerPixel > AutoDecision::kAreaBoundPerPixel;
+    }
     decision.budget = current_->scheme->config().budget;
     for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
         if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
@@ -355,7 +372,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     return stats_;
 }
 
-void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading) {
+void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {
     const bool multisampled = targets_.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
         TimedPass msaaDepthPrepassTime(timer_, "msaa-depth-prepass");
@@ -364,12 +381,13 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     }
 
     TimedPass forwardTime(timer_, "forward");
-    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass);
+    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass, lights);
     forwardTime.end();
 
     if (drawTransparent_) {
         TimedPass forwardTransparentTime(timer_, "forward-transparent");
-        currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading);
+        currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading,
+                                                     lights);
     }
 }
 
@@ -441,6 +459,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     TimedPass lightVolumesTime(timer_, "light-volumes");
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
+    volumeQuadPixels_ += volumePass_.tileQuadPixels();
     volumePass_.end();
     lightVolumesTime.end();
     if (measure) {
@@ -485,6 +504,10 @@ bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
 
 std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
     std::vector<ImageRGBA8> out;
+    if (lightlessFrame_) {  // no volume pass: every list is empty (index 0)
+        for (int i = 0; i < indexTargets_->count(); ++i) out.emplace_back(indexTargets_->width(), indexTargets_->height());
+        return out;
+    }
     indexTargets_->framebuffer().bind();
     for (int i = 0; i < indexTargets_->count(); ++i) {
         if (info_.gles) {
@@ -514,6 +537,7 @@ std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight
 std::vector<uint8_t> LidrRenderer::readLightCounts() const {
     const int bits = volumePass_.stencilCountBits();
     if (bits == 0) return {};
+    if (lightlessFrame_) return std::vector<uint8_t>(size_t(targets_.width()) * size_t(targets_.height()), 0);
     std::vector<uint8_t> s = targets_.readStencil();
     const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
     for (uint8_t& v : s) v &= mask;

@@ -146,7 +146,7 @@ private:
     // probe issued (read by measuredNeed()).
     void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent);
     // The forward passes (opaque, transparent layers) from the current index lists.
-    void shade(const CameraMatrices& cam, const ShadingParameters& shading);
+    void shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights = true);
     // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
     int measuredNeed();
 
@@ -162,6 +162,10 @@ private:
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
     bool narrowingAsked_ = true, narrowingAskedTransparent_ = true;  // the last measurement asked below the budget
     std::vector<uint32_t> frameLights_;
+    // The last frame had no light to index: no volume pass was drawn and its lists are empty (the index targets
+    // still hold an earlier frame's; the read-backs answer with the empty lists).
+    bool lightlessFrame_ = false;
+    long volumeQuadPixels_ = 0;  // this frame's tile quads, every draw of the main volume pass
     GpuScene scene_;
     RenderTargets targets_;
     std::map<int, IndexTargets> indexTargetCache_, transparentTargetCache_;  // by target count

@@ -21,6 +21,27 @@
 // Index targets are read through LIDR_INDEX_SAMPLER / LIDR_FETCH_INDEX, so the per-sample MSAA path can swap
 // in sampler2DMS and texelFetch(..., gl_SampleID) (lidr/technique/forward_pass.cpp) without touching the
 // unpack files.
+// LIDR_NO_LIGHTS (a frame where no light reaches a visible surface): the same API over an empty list; no index
+// texture or light table is declared or read.
+#ifdef LIDR_NO_LIGHTS
+#define LIDR_MAX_LIGHTS 1
+struct LidrLight {
+    vec3 position;
+    float radius;
+    vec3 color;
+    float index;
+    vec2 indexBytes;
+};
+void lidrBeginLights() {}
+bool lidrNextLight(out LidrLight light) {
+    light.position = vec3(0.0);
+    light.radius = 0.0;
+    light.color = vec3(0.0);
+    light.index = 0.0;
+    light.indexBytes = vec2(0.0);
+    return false;
+}
+#else
 #ifndef LIDR_INDEX_SAMPLER
 #define LIDR_INDEX_SAMPLER sampler2D
 #define LIDR_FETCH_INDEX(s, uv) texture2D(s, uv)
@@ -96,3 +117,4 @@ bool lidrNextLight(out LidrLight light) {
     return false;
 #endif
 }
+#endif  // LIDR_NO_LIGHTS
