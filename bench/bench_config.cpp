@@ -310,12 +310,28 @@ std::vector<SweepGroup> fullPreset() {
     many.indexBits = {16};
     many.transparency = {false};  // the room's glass: opaque, so forward-multipass is measured too
     groups.push_back(many);
+
+    SweepGroup occluded;  // deep, occluded scenes (issue 25): the volume pass's cost against its culling
+    occluded.name = "occluded";
+    occluded.scenes = {"hall-255", "hall-1024", "city-255", "city-1024"};
+    occluded.resolutions = {{1024, 768}};
+    occluded.modes = availableModes();
+    occluded.schemes = {"bitshift", "auto"};
+    occluded.budgets = {8, 16};
+    occluded.indexBits = {16};  // 1,024 lights; the automatic width narrows where fewer are visible
+    occluded.volumeTests = {"sphere"};
+    occluded.volumeTiles = {true, false};
+    occluded.msaa = {0};
+    occluded.perSample = {false};
+    occluded.transparency = {false};
+    occluded.tiledDepthBounds = {true};
+    groups.push_back(occluded);
     for (const std::string& sweep : sweepNames())
         for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;
 }
 
-std::vector<std::string> sweepNames() { return {"lights", "triangles"}; }
+std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall"}; }
 
 std::vector<std::string> sweepVolumeTests() {
     std::vector<std::string> tests{"backface"};
@@ -366,6 +382,20 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
         g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
         g.indexBits = {8};
         groups.push_back(g);
+        return groups;
+    }
+    if (name == "hall") {
+        // The occluded hall against its light count: LIDR's volume pass against tiled forward's per-tile lists.
+        const std::vector<int> counts = quick ? std::vector<int>{64, 1024} : std::vector<int>{64, 256, 1024, 4096};
+        for (int n : counts) {
+            SweepGroup g = base;
+            g.name = "hall";
+            g.scenes = {"hall-" + std::to_string(n)};
+            g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
+            g.indexBits = {n > 255 ? 16 : 8};
+            g.reference = false;
+            groups.push_back(g);
+        }
         return groups;
     }
     throw Error("unknown sweep '" + name + "' (valid: " + joinNames(sweepNames()) + ")");

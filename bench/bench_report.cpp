@@ -780,6 +780,12 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
     if (!lightLines.empty())
         jobs.push_back({"lights_time.png", scalingPlot(lightLines, "frame time against light count (many-N-fp scenes)",
                                                        "lights in the scene (log scale)", true)});
+    const auto hallLines = sweepLines(rows_, [](const Row& r) {
+        return r.run.scene.rfind("hall-", 0) == 0 && r.run.group == "hall" ? double(r.sceneLights) : 0.0;
+    });
+    if (!hallLines.empty())
+        jobs.push_back({"hall_lights_time.png", scalingPlot(hallLines, "frame time against light count (hall-N scenes)",
+                                                            "lights in the scene (log scale)", true)});
     const auto triangleLines = sweepLines(rows_, [](const Row& r) {
         return r.run.scene == "room" || r.run.scene.rfind("heavy-", 0) == 0 ? double(r.sceneTriangles) : 0.0;
     });

@@ -4,7 +4,7 @@
 // machine, GL renderer, commit and command line, and the run's steadiness, and agrees with the CSV; the
 // interleaved rounds' columns hold (rounds >= 1, a baseline measured in the same scene and size, ratios
 // positive and finite with min <= median <= max, 1 for the baseline itself); summary.md exists; with
-// --expect-plots the PNGs are there and are PNGs (--expect-sweep-plots: the light-count and triangle plots). Prints each problem and exits 1 if there is any.
+// --expect-plots the PNGs are there and are PNGs (--expect-sweep-plots: the light-count, triangle and hall plots). Prints each problem and exits 1 if there is any.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
         if (!fs::exists(dir / "plots" / "overlap_time.png")) problem("no overlap plot");
     }
     if (expectSweepPlots)
-        for (const char* png : {"lights_time.png", "triangles_time.png"})
+        for (const char* png : {"lights_time.png", "triangles_time.png", "hall_lights_time.png"})
             if (!fs::exists(dir / "plots" / png) || !isPng(dir / "plots" / png)) problem(std::string("no sweep plot ") + png);
     if (problems) {
         std::cerr << problems << " problem(s) in " << dir << "\n";

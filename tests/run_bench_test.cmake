@@ -3,7 +3,7 @@
 #    plots when gnuplot is installed);
 #  - an interrupted sweep keeps the rows it measured and says it was interrupted (between scene sets, and in
 #    the middle of a set's interleaved rounds: the set's rows keep the rounds measured);
-#  - the scaling sweeps' seconds-long versions (--quick --sweep lights,triangles) write their rows and plots;
+#  - the scaling sweeps' seconds-long versions (--quick --sweep lights,triangles,hall) write their rows and plots;
 #  - bad input fails before the sweep with the list of valid names.
 # Inputs: BENCH, CHECK (executables), OUT (scratch folder).
 file(REMOVE_RECURSE ${OUT})
@@ -59,15 +59,15 @@ foreach(i RANGE ${last})
   endif()
 endforeach()
 
-# The scaling sweeps, seconds-long: light counts (timing only, no error columns) and triangles.
-run_bench(0 "rows in" --quick --sweep lights,triangles --frames 2 --no-progress --out ${OUT}/sweeps)
+# The scaling sweeps, seconds-long: light counts (timing only, no error columns), triangles and the hall.
+run_bench(0 "rows in" --quick --sweep lights,triangles,hall --frames 2 --no-progress --out ${OUT}/sweeps)
 if(GNUPLOT)
   check_output(${OUT}/sweeps --expect-sweep-plots --min-rows 8)
 else()
   check_output(${OUT}/sweeps --min-rows 8)
 endif()
 file(READ ${OUT}/sweeps/results.csv csv)
-foreach(scene many-64-fp many-1024-fp room heavy-100k)
+foreach(scene many-64-fp many-1024-fp room heavy-100k hall-64 hall-1024)
   if(NOT csv MATCHES ",${scene},")
     message(FATAL_ERROR "quick sweeps have no row for scene ${scene}")
   endif()
@@ -77,7 +77,10 @@ endforeach()
 run_bench(1 "unknown packing scheme 'nope'.*valid: .*bitshift" --schemes nope --out ${OUT}/bad)
 run_bench(1 "unknown render mode 'warp'.*valid: .*lidr.*forward-brute" --modes warp --out ${OUT}/bad)
 run_bench(1 "unknown scene 'kitchen'.*valid: room.*overlap-K" --scenes kitchen --out ${OUT}/bad)
-run_bench(1 "unknown volume test 'sideways'.*valid: backface, exact, frontface" --volume-tests sideways --out ${OUT}/bad)
+run_bench(1 "unknown volume test 'sideways'.*valid: backface, exact, frontface, sphere, sphere-ray" --volume-tests sideways --out ${OUT}/bad)
+run_bench(1 "bad scene name 'hall-0'.*hall-N with N lights" --scenes hall-0 --out ${OUT}/bad)
+# --list names every volume test, the default (sphere) first.
+run_bench(0 "volume tests: +sphere \\(the library's default\\), sphere-ray, backface, exact, frontface" --list)
 run_bench(1 "no configuration the library can run:.*budget.*got 3" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
 run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
           --volume-tests backface --msaa 4 --out ${OUT}/bad)
