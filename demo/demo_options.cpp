@@ -97,6 +97,12 @@ void RendererChoice::addOptions(CLI::App& app) {
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
     app.add_flag("--volume-detail", volumeDetail,
                  "Coarser light volumes (20 / 80 faces) for lights small on screen (LidrOptions::volumeDetail)");
+    app.add_option("--volume-tiles", volumeTiles,
+                   "Sphere test over depth-culled screen tiles: on (default; desktop GL) or off (volume meshes) "
+                   "(LidrOptions::tileCulledVolumes, doc/architecture.md)")
+        ->capture_default_str();
+    app.add_option("--volume-tile-size", volumeTileSize, "Tile size of --volume-tiles in pixels, 4..256")
+        ->capture_default_str();
     app.add_option("--depth-bits", depthBits,
                    "LIDR depth precision: 24 (default), 16 (a 16-bit depth buffer with a separate stencil, where the "
                    "driver holds it) or 16-emulated (16-bit levels inside the 24-bit buffer; doc/stability.md)");
@@ -127,6 +133,12 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
                     " needs --budget 1, 2, 4, 8 or 16");
     o.perSampleIndices = msaaPerSample;
     o.volumeDetail = volumeDetail;
+    if (volumeTiles != "on" && volumeTiles != "off")
+        throw Error("--volume-tiles must be on or off, got '" + volumeTiles + "'");
+    if (volumeTileSize < 4 || volumeTileSize > 256)
+        throw Error("--volume-tile-size must be in [4, 256], got " + std::to_string(volumeTileSize));
+    o.tileCulledVolumes = volumeTiles == "on";
+    o.volumeTileSize = volumeTileSize;
     if (depthBits == "16")
         o.depthBits = 16;
     else if (depthBits == "16-emulated")

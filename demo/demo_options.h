@@ -36,6 +36,8 @@ struct RendererChoice {
     std::string transparency = "scene";
     bool msaaPerSample = false;
     bool volumeDetail = false;
+    std::string volumeTiles = "on";
+    int volumeTileSize = 16;
     std::string depthBits;  // empty: 24
     std::string context = "auto";
     bool fixedLightTable = false;

@@ -270,10 +270,14 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
             }
         }
         depthPrepassTime.end();
-        if (volumeTiles_) {
+        // Tiles pay for a depth read-back and a CPU pass over it: worth it only where the lights' volumes would
+        // cover more than kTileCullingMinArea screens (their pixel rectangles, summed).
+        if (volumeTiles_ && lightRectArea(cam, lights) >= kTileCullingMinArea * double(targets_.width()) * targets_.height()) {
             TimedPass volumeTilesTime(timer_, "volume-tiles");
             volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam);  // the single-sample pre-pass depth
             volumePass_.setTiles(volumeTiles_.get(), cam);
+        } else {
+            volumePass_.setTiles(nullptr, cam);
         }
     } else {
         ClearAction clear;
@@ -353,7 +357,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         decision.transparentBudget = currentTransparent_->scheme->config().budget;
     decision.volumeAreaPerPixel = -1.0;
     decision.areaBound = false;
-    if (volumeTiles_) {
+    if (volumePass_.drawsScreenTiles()) {
         decision.volumeAreaPerPixel = double(volumeQuadPixels_) / (double(targets_.width()) * targets_.height());
         decision.areaBound = decision.volumeAreaPerPixel > AutoDecision::kAreaBoundPerPixel;
     }
@@ -466,6 +470,16 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
         TimedPass probeTime(timer_, "overlap-probe");  // apart: full-screen draws, not volume fragments
         probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_));
     }
+}
+
+double LidrRenderer::lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const {
+    double area = 0.0;
+    for (const PointLight& l : lights) {
+        glm::ivec4 r;
+        if (spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r))
+            area += double(r.z - r.x + 1) * double(r.w - r.y + 1);
+    }
+    return area;
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {

@@ -55,6 +55,8 @@ struct LidrOptions {
     // shader's test is); false: volume meshes.
     bool tileCulledVolumes = true;
     int volumeTileSize = 16;
+    // Used in a frame only where the lights' pixel rectangles add up to at least kTileCullingMinArea screens:
+    // below, the volume meshes cost less than the depth read-back (doc/benchmarks.md, "Deep, occluded scenes").
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
     // Depth buffer precision: 24 (DEPTH24_STENCIL8) or 16 (a DEPTH_COMPONENT16 renderbuffer with a separate
     // STENCIL_INDEX8, where the driver accepts the pair: checkDepthBits in lidr/gl/render_targets.h; Mesa's
@@ -79,6 +81,8 @@ public:
     // budget instead, the paper's main case (one RGBA8 target at 8-bit indices); options() holds it and
     // FrameStats::autoDecision.budgetFallback says so.
     static constexpr int kBudgetWithoutOcclusionQueries = 4;
+    // LidrOptions::tileCulledVolumes: the lights' summed pixel rectangles, in screens, from which a frame culls by tiles.
+    static constexpr double kTileCullingMinArea = 1.0;
 
     // Checks everything before any drawing: FBO support, resolution, scheme x budget x width, the volume test's
     // needs; throws UnsupportedError / lidr::Error with the reason.
@@ -166,6 +170,8 @@ private:
     // still hold an earlier frame's; the read-backs answer with the empty lists).
     bool lightlessFrame_ = false;
     long volumeQuadPixels_ = 0;  // this frame's tile quads, every draw of the main volume pass
+    // Summed pixel rectangles of the lights' spheres (a bound on what their volume meshes would cover).
+    double lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const;
     GpuScene scene_;
     RenderTargets targets_;
     std::map<int, IndexTargets> indexTargetCache_, transparentTargetCache_;  // by target count
