@@ -99,6 +99,21 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; --window: glfw or glfw-gles2)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
+    app.add_option("--tone-map", toneMap,
+                   std::string("Tone map of the linear frame before its sRGB encoding: ") + toneMapNames() +
+                       " (doc/colour.md)")
+        ->capture_default_str();
+    app.add_option("--exposure", exposure, "Exposure in stops: linear light x 2^stops before the tone map")
+        ->capture_default_str();
+}
+
+OutputTransform RendererChoice::outputTransform() const {
+    OutputTransform o;
+    o.toneMap = parseToneMap(toneMap, "--tone-map");
+    if (!std::isfinite(exposure) || exposure < -20.0 || exposure > 20.0)
+        throw Error("--exposure must be a number of stops from -20 to 20, got " + std::to_string(exposure));
+    o.exposureStops = float(exposure);
+    return o;
 }
 
 LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
@@ -153,6 +168,7 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
     o.forceFixedLightTable = fixedLightTable;
+    outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;
 }
 

@@ -40,7 +40,11 @@ struct RendererChoice {
     std::string context = "auto";
     bool fixedLightTable = false;
     std::string timer = "auto";
+    std::string toneMap = "pbr-neutral";
+    double exposure = 0.0;  // stops
     void addOptions(CLI::App& app);
+    // --tone-map and --exposure; throws lidr::Error on a bad name or an exposure outside [-20, 20] stops.
+    OutputTransform outputTransform() const;
     LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
     // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
     RenderModeOptions renderModeOptions(const Scene& scene) const;

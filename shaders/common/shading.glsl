@@ -1,5 +1,7 @@
-// The one shading function of lidr: Blinn-Phong with attenuation saturate(1 - d^2 / r^2). LIDR, tiled,
-// forward and the brute-force reference all call it, so their images differ only by which lights they sum.
+// The one shading function of lidr: Blinn-Phong with attenuation saturate(1 - d^2 / r^2), in linear light.
+// LIDR, tiled, forward and the brute-force reference all call it, so their images differ only by which lights
+// they sum; each ends with lidrOutput (output_transform.glsl), multi-pass forward once over its finished sum.
+#include "output_transform.glsl"
 uniform vec3 uEyePosition;
 uniform vec3 uAmbient;
 uniform vec3 uMaterialDiffuse;
@@ -13,6 +15,17 @@ uniform sampler2D uMaterialTexture;
 varying vec3 vWorldPos;
 varying vec3 vNormal;
 varying vec2 vTexCoord;
+
+// Base-colour textures hold sRGB-encoded texels. Desktop GL (2.1 has sRGB textures in core) uploads them as
+// SRGB8_ALPHA8 and the texture unit decodes, before filtering; OpenGL ES 2.0 / WebGL 1 have no sRGB texture
+// format without an extension, so the texel is decoded here, after filtering (lidr/render/gpu_scene.cpp).
+vec4 lidrBaseColorTexel(vec2 uv) {
+    vec4 texel = texture2D(uMaterialTexture, uv);
+#if defined(GL_ES) || defined(LIDR_SRGB_DECODE_IN_SHADER)
+    texel.rgb = lidrSrgbToLinear(texel.rgb);
+#endif
+    return texel;
+}
 
 struct LidrSurface {
     vec3 position;
@@ -28,7 +41,7 @@ LidrSurface lidrSurface() {
     if (!gl_FrontFacing) s.normal = -s.normal;  // two-sided: the back of a wall is lit from its own side
     s.toEye = normalize(uEyePosition - vWorldPos);
     s.albedo = uMaterialDiffuse;
-    if (uMaterialHasTexture > 0.5) s.albedo *= texture2D(uMaterialTexture, vTexCoord).rgb;
+    if (uMaterialHasTexture > 0.5) s.albedo *= lidrBaseColorTexel(vTexCoord).rgb;
     return s;
 }
 
