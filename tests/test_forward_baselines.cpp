@@ -7,6 +7,7 @@
 #include <random>
 
 #include <catch2/catch.hpp>
+#include "lidr/base/colour.h"
 
 #include "gl_test_context.h"
 #include "lidr/base/gl.h"
@@ -304,8 +305,19 @@ TEST_CASE("multi-pass forward with MSAA: samples shaded off their triangle get e
     DefaultSceneOptions room;
     room.width = 320;
     room.height = 240;
-    const Scene scene = makeDefaultScene(room);
-    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    // The room as it was when this was found: its colours as the linear values they were before they were
+    // decoded from sRGB on load (doc/colour.md), so the missed light's term is as large as it was then.
+    Scene scene = makeDefaultScene(room);
+    const auto encoded = [](const glm::vec3& linear) {
+        const float peak = std::max(linear.r, std::max(linear.g, linear.b));
+        const float scale = peak > 1.0f ? peak : 1.0f;  // displayColourToLinear keeps a strength above 1 linear
+        const glm::vec3 c = linear / scale;
+        return scale * glm::vec3(float(linearToSrgb(c.r)), float(linearToSrgb(c.g)), float(linearToSrgb(c.b)));
+    };
+    for (Material& m : scene.materials) m.diffuse = encoded(m.diffuse), m.specular = encoded(m.specular);
+    scene.ambient = encoded(scene.ambient);
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    for (PointLight& l : lights) l.color = encoded(l.color);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     ReferenceRenderer reference(info, scene, scene.width, scene.height, int(lights.size()), false, 4, false);
     reference.render(scene.camera, lights, shading);

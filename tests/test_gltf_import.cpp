@@ -3,6 +3,8 @@
 // and one glTF scene rendered against the same scene written as a lidr JSON file with an OBJ model.
 #include <catch2/catch.hpp>
 
+#include "lidr/base/colour.h"
+
 #include <unistd.h>
 
 #include <cstring>
@@ -410,7 +412,9 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
 
     dir.write("tent.obj", "mtllib tent.mtl\nv -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\nv -1 0 0\nv 1 0 0\nv 0 1.5 0.5\n"
                           "usemtl red\nf 1 3 2\nf 1 4 3\nf 5 6 7\n");
-    dir.write("tent.mtl", "newmtl red\nKd 0.8 0.2 0.2\nKs 0 0 0\nNs 1\n");
+    // MTL colours are display values (decoded on load), glTF factors linear: the same linear red written both ways
+    dir.write("tent.mtl", "newmtl red\nKd " + std::to_string(lidr::linearToSrgb(0.8)) + " " + std::to_string(lidr::linearToSrgb(0.2)) +
+                              " " + std::to_string(lidr::linearToSrgb(0.2)) + "\nKs 0 0 0\nNs 1\n");
     lidr::Scene fromJson = lidr::loadScene(dir.write("tent.json", R"({
         "camera": {"position": [0, 4, 8], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 50},
         "models": [{"file": "tent.obj"}],

@@ -1,6 +1,8 @@
 // Scene data, the default room, procedural primitives, light paths and the scene file / OBJ loaders.
 #include <catch2/catch.hpp>
 
+#include "lidr/base/colour.h"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -522,8 +524,8 @@ TEST_CASE("scene files: obj-demo with OBJ, MTL and texture", "[scene][cpu]") {
         if (scene.materials[i].name == "crate") crateMaterial = int(i);
     REQUIRE(crateMaterial >= 0);
     const lidr::Material& crate = scene.materials[size_t(crateMaterial)];
-    CHECK(crate.diffuse.r == Approx(0.9f));
-    CHECK(crate.specular.g == Approx(0.1f));
+    CHECK(crate.diffuse.r == Approx(lidr::srgbToLinear(0.9)));  // MTL colours are decoded (doc/colour.md)
+    CHECK(crate.specular.g == Approx(lidr::srgbToLinear(0.1)));
     CHECK(crate.shininess == 16.0f);
     CHECK(fs::equivalent(crate.diffuseTexture, mediaPath("models/checker.ppm")));
     size_t crateMeshes = 0;

@@ -24,10 +24,6 @@ ToneMap parseToneMap(const std::string& name, const std::string& what) {
     throw Error(what + ": unknown tone map '" + name + "' (one of " + toneMapNames() + ")");
 }
 
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-
-double linearToSrgb(double c) { return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
-
 namespace {
 glm::dvec3 pbrNeutral(glm::dvec3 c) {
     const double x = std::min({c.r, c.g, c.b});

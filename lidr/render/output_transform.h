@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "lidr/base/colour.h"  // srgbToLinear, linearToSrgb
+
 namespace lidr {
 
 enum class ToneMap {
@@ -29,8 +31,6 @@ const char* toneMapName(ToneMap t);
 ToneMap parseToneMap(const std::string& name, const std::string& what);
 const char* toneMapNames();  // "none, pbr-neutral, aces"
 
-double srgbToLinear(double encoded);
-double linearToSrgb(double linear);
 glm::dvec3 toneMapped(const glm::dvec3& color, ToneMap t);
 // The shader's lidrOutput: exposure, tone map, clamp, encoding; channels in [0, 1] before the 8-bit rounding.
 glm::dvec3 applyOutputTransform(const glm::dvec3& linearColor, const OutputTransform& output);

@@ -54,6 +54,7 @@ void FramePresenter::present(const RenderTargets& targets, GLuint framebuffer, i
 }
 
 OutputEncodePass::OutputEncodePass() {
+    SavedGlState saved;
     program_ = fullScreenProgram("output-encode", "output_encode.frag");
     triangle_ = fullScreenTriangle();
     checkGl("OutputEncodePass");

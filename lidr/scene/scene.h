@@ -12,6 +12,7 @@
 
 namespace lidr {
 
+// Colours are linear (importers decode display-value colours: doc/colour.md); textures are sRGB-encoded.
 struct Material {
     std::string name;
     glm::vec3 diffuse{0.8f};

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
@@ -135,6 +136,11 @@ private:
         }
         if (field.has("specular")) material.specular = color(field["specular"]);
         if (field.has("emissive")) material.emissive = color(field["emissive"]);
+        // Material colours are display values (sRGB-encoded, defaults included); lidr shades in linear light.
+        // Lights and the ambient are linear light already (doc/scene-format.md).
+        material.diffuse = displayColourToLinear(material.diffuse);
+        material.specular = displayColourToLinear(material.specular);
+        material.emissive = displayColourToLinear(material.emissive);
         if (field.has("shininess")) material.shininess = positive(field["shininess"]);
         if (field.has("opacity")) {
             material.opacity = field["opacity"].number();
