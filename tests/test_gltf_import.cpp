@@ -1,6 +1,8 @@
 // glTF 2.0 import (lidr/scene/io/gltf_importer.h): small files written by the tests themselves (JSON with a
 // base64 buffer, a separate .bin, or a .glb), checked for exact positions, lights, cameras, materials and errors;
 // and one glTF scene rendered against the same scene written as a lidr JSON file with an OBJ model.
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include "lidr/base/colour.h"
@@ -276,8 +278,10 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     REQUIRE(painted.diffuseImage);
     REQUIRE(painted.diffuseImage->width == 2);
     CHECK(std::memcmp(painted.diffuseImage->pixels.data(), pixels, 8) == 0);
-    requireNear(painted.specular, glm::vec3(0.04f * 0.25f));  // dielectric F0 x (1 - roughness)^2
-    CHECK(painted.shininess == Approx(30.0f));                  // 2 / 0.5^4 - 2
+    // the BRDF is glTF's: the factors go through as they are
+    CHECK(painted.metallicRoughness);
+    CHECK(painted.metallic == 0.0f);
+    CHECK(painted.roughness == 0.5f);
     // texture coordinates: glTF's v runs down the image, lidr's up
     const lidr::Mesh& mesh = scene.meshes[2];
     CHECK(mesh.texCoords[mesh.indices[2]] == glm::vec2(0.0f, 0.0f));
@@ -397,7 +401,8 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     GltfFile file;
     const int p = file.positions({{-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4}, {-1, 0, 0}, {1, 0, 0}, {0, 1.5f, 0.5f}});
     const int i = file.indices({0, 2, 1, 0, 3, 2, 4, 5, 6});
-    file.doc["materials"] = {{{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}}};
+    file.doc["materials"] = {{{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", std::pow(2.0 / 3.0, 0.25)}}}}};
+    // (the roughness the OBJ's Blinn-Phong "Ns 1" maps to: alpha^2 = 2 / (1 + 2), doc/colour.md)
     file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", i}, {"material", 0}});
     file.node({{"mesh", 0}}, true);
     file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"range", 5.0}},
@@ -425,7 +430,11 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
         scene->height = lidr::test::testHeight();
     }
     // the OBJ's face normals and the glTF's flat normals are the same; so are the materials' terms
-    REQUIRE(fromGltf.materials[size_t(fromGltf.meshes[0].material)].specular == glm::vec3(0.0f));
+    const lidr::MetallicRoughness gltfRed = lidr::metallicRoughnessOf(fromGltf.materials[size_t(fromGltf.meshes[0].material)]);
+    const lidr::MetallicRoughness objRed = lidr::metallicRoughnessOf(fromJson.materials[size_t(fromJson.meshes[0].material)]);
+    REQUIRE(gltfRed.metallic == objRed.metallic);
+    REQUIRE(gltfRed.roughness == Approx(objRed.roughness).epsilon(1e-6));
+    REQUIRE(glm::all(glm::lessThan(glm::abs(gltfRed.baseColor - objRed.baseColor), glm::vec3(1e-5f))));
     const auto render = [&](const lidr::Scene& scene) {
         lidr::RenderModeOptions options;
         auto renderer = lidr::createRenderer(options, lidr::test::testGl(), scene, scene.width, scene.height);

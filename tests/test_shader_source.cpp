@@ -81,9 +81,9 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
 
 TEST_CASE("a compile error in an included file names that file's source string and line", "[shader]") {
     testContext();
-    // shading.glsl line 7 is `uniform float uMaterialShininess;`: defined away it is a syntax error there.
-    REQUIRE(lines(shaderFile("shading.glsl")).at(6) == "uniform float uMaterialShininess;");
-    const std::string fs = buildShaderSource("forward_ambient.frag", {{"uMaterialShininess", "+"}});
+    // shading.glsl line 7 is `uniform vec3 uEyePosition;`: defined away it is a syntax error there.
+    REQUIRE(lines(shaderFile("shading.glsl")).at(6) == "uniform vec3 uEyePosition;");
+    const std::string fs = buildShaderSource("forward_ambient.frag", {{"uEyePosition", "+"}});
     try {
         gl::Program::create("broken", buildShaderSource("geometry.vert"), fs, {});
         FAIL("the broken shader compiled");

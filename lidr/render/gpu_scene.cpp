@@ -172,7 +172,11 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     if (setMaterials) {
         const Material& m = materials_[b.material];
         // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
-        program.setIfDeclared("uMaterialDiffuse", m.diffuse);
+        const MetallicRoughness pbr = metallicRoughnessOf(m);
+        program.setIfDeclared("uMaterialDiffuse", pbr.baseColor);
+        program.setIfDeclared("uMaterialMetallic", pbr.metallic);
+        program.setIfDeclared("uMaterialRoughness", pbr.roughness);
+        // Blinn-Phong's inputs, for user material shaders written against them (doc/embedding.md)
         program.setIfDeclared("uMaterialSpecular", m.specular);
         program.setIfDeclared("uMaterialShininess", m.shininess);
         program.setIfDeclared("uMaterialOpacity", m.opacity);

@@ -401,11 +401,10 @@ private:
         for (size_t c = 0; c < 3 && c < source.emissiveFactor.size(); ++c) material.emissive[int(c)] = float(source.emissiveFactor[c]);
         if (!(isFinite(material.emissive) && glm::all(glm::greaterThanEqual(material.emissive, glm::vec3(0.0f)))))
             fail(name + ": emissiveFactor must be finite and >= 0, got " + str(material.emissive));
-        // Blinn-Phong from metallic-roughness: the specular colour F0 (0.04 for dielectrics, the base colour for
-        // metals) fading out with roughness, and the exponent whose lobe width matches the roughness.
-        material.specular = glm::mix(glm::vec3(0.04f), glm::vec3(base), metallic) * (1.0f - roughness) * (1.0f - roughness);
-        const float r = std::max(roughness, 0.01f);
-        material.shininess = glm::clamp(2.0f / (r * r * r * r) - 2.0f, 1.0f, 1024.0f);
+        // lidr's BRDF is glTF's: the factors as they are (specular and shininess stay unused defaults)
+        material.metallicRoughness = true;
+        material.metallic = metallic;
+        material.roughness = roughness;
         if (source.alphaMode == "BLEND") {
             material.opacity = base.a;
         } else if (source.alphaMode == "MASK") {
