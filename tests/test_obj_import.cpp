@@ -2,6 +2,7 @@
 // request, MTL Ke / illum / Tf / d / Tr, and every fallback a warning on the Scene; the emissive term in every mode.
 #include <catch2/catch.hpp>
 
+#include "lidr/eval/brdf.h"
 #include "lidr/render/output_transform.h"
 
 #include <unistd.h>
@@ -198,9 +199,12 @@ TEST_CASE("emissive materials look the same in every mode, with no light at all"
         auto renderer = lidr::createRenderer(options, lidr::test::testGl(), scene, scene.width, scene.height);
         renderer->render(scene.camera, scene.lightsAt(scene.time), {scene.ambient});
         images.push_back(renderer->targets().readColor());
-        // the box's centre: ambient x albedo + emissive, the two colours decoded from sRGB, through the default
+        // the box's centre: the ambient term + emissive (colours decoded from sRGB; lidr/eval/brdf.h), through the default
         // output transform (PBR Neutral, sRGB): the CPU model's pixel, +- rounding
-        const glm::dvec3 linear = 0.1 * glm::dvec3(lidr::srgbToLinear(glm::vec3(0.5f))) +
+        // (the box's front face, normal +z, seen head-on from the camera at z = 4)
+        const lidr::BrdfSurface surface = lidr::brdfSurface(scene.materials[0], glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1),
+                                                            glm::dvec3(0, 0, 4));
+        const glm::dvec3 linear = lidr::shadeAmbient(surface, glm::dvec3(0.1)) +
                                   glm::dvec3(lidr::srgbToLinear(glm::vec3(0.6f, 0.2f, 0.0f)));
         // multi-pass forward sums in its 8-bit linear target, then encodes (doc/colour.md): rounded first
         const bool multipass = std::string(mode) == "forward-multipass";
