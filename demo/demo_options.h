@@ -18,6 +18,9 @@ struct SceneChoice {
     std::optional<double> time;  // unset: the scene's; set: a finite number of seconds >= 0
     unsigned seed = 1;
     bool smoothNormals = false;  // OBJ faces without normals get smooth ones (ObjImportOptions)
+    std::optional<int> lights;          // --lights N: N seeded lights scattered over the surfaces (light_scatter.h)
+    std::optional<double> lightRadius;  // --light-radius R (with --lights); unset: automatic
+    bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
 };

@@ -73,7 +73,7 @@ TEST_CASE("BRDF model: GGX normalisation and Fresnel limits", "[cpu][brdf]") {
 
 namespace {
 
-// A 4 x 4 sweep of flat tiles (metallic along x, roughness along z) on y = 0, lit by two lights and the ambient.
+// A 4 x 4 sweep of flat tiles (metallic along x, roughness along z) on y = 0, lit by three lights and the ambient.
 Scene sweepScene() {
     Scene scene;
     scene.name = "brdf-sweep";
@@ -97,7 +97,9 @@ Scene sweepScene() {
     scene.width = testWidth();
     scene.height = testHeight();
     scene.ambient = glm::vec3(0.05f);
-    scene.lights = {light({-1.0f, 2.5f, 1.0f}, 9.0f, {1.0f, 0.95f, 0.9f}), light({2.5f, 1.5f, -2.0f}, 6.0f, {0.4f, 0.6f, 1.2f})};
+    scene.lights = {light({-1.0f, 2.5f, 1.0f}, 9.0f, {1.0f, 0.95f, 0.9f}), light({2.5f, 1.5f, -2.0f}, 6.0f, {0.4f, 0.6f, 1.2f}),
+                    // at the eye (the default light rig's key light): v.h rounds to 1 and above there
+                    light(scene.camera.position, 30.0f, {0.3f, 0.3f, 0.3f})};
     return scene;
 }
 

@@ -32,7 +32,7 @@ glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& L) {
     const glm::dvec3 H = glm::normalize(L + s.toEye);
     const double nDotV = std::max(glm::dot(s.normal, s.toEye), 1e-4);
     const double nDotH = std::max(glm::dot(s.normal, H), 0.0);
-    const double vDotH = std::max(glm::dot(s.toEye, H), 0.0);
+    const double vDotH = std::clamp(glm::dot(s.toEye, H), 0.0, 1.0);
     const double alpha = alphaOf(s), a2 = alpha * alpha;
     const double denom = nDotH * nDotH * (a2 - 1.0) + 1.0;
     const double D = a2 / (kPi * denom * denom);

@@ -78,7 +78,8 @@ vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
     vec3 H = normalize(L + s.toEye);
     float nDotV = max(dot(s.normal, s.toEye), 1e-4);
     float nDotH = max(dot(s.normal, H), 0.0);
-    float vDotH = max(dot(s.toEye, H), 0.0);
+    float vDotH = clamp(dot(s.toEye, H), 0.0, 1.0);  // above 1 by rounding (a light at the eye), pow() of a
+                                                     // negative base would be undefined: speckled NaN pixels
     float a2 = s.alpha * s.alpha;
     float denom = nDotH * nDotH * (a2 - 1.0) + 1.0;
     float D = a2 / (LIDR_PI * denom * denom);
