@@ -452,3 +452,53 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     for (size_t k = 0; k < a.pixels.size(); k += 4) lit += a.pixels[k] > 40;
     CHECK(lit > size_t(a.width) * size_t(a.height) / 10);
 }
+
+TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread textures are warnings", "[gltf][cpu]") {
+    // The flat-white helmet: emissiveFactor [1, 1, 1] with an emissive texture that is mostly black. Drawn as the
+    // factor alone, every pixel of the material saturates; lidr draws the factor times the texture's mean.
+    TempDir dir;
+    GltfFile file;
+    const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
+    const int t = file.accessor(uv.data(), uv.size() * 4, 5126, "VEC2", 3);
+    for (int m = 0; m < 2; ++m) file.mesh({{"attributes", {{"POSITION", p}, {"TEXCOORD_0", t}}}, {"material", m}});
+    // 2x2: three black texels and one sRGB-white one (mean 0.25 linear); and an ORM-style texture (G 128, B 255)
+    lidr::ImageRGBA8 emission(2, 2), orm(2, 2);
+    for (size_t i = 0; i < 16; i += 4) {
+        for (int c = 0; c < 3; ++c) emission.pixels[i + size_t(c)] = i == 0 ? 255 : 0;
+        emission.pixels[i + 3] = 255;
+        orm.pixels[i] = 255, orm.pixels[i + 1] = 128, orm.pixels[i + 2] = 255, orm.pixels[i + 3] = 255;
+    }
+    std::vector<std::string> uris;
+    for (const auto& [name, image] : {std::pair<const char*, const lidr::ImageRGBA8*>{"e.png", &emission}, {"orm.png", &orm}}) {
+        lidr::writePng(dir.file(name), *image);
+        std::ifstream in(dir.file(name), std::ios::binary);
+        const std::vector<unsigned char> png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        uris.push_back("data:image/png;base64," + base64(png));
+    }
+    file.doc["images"] = {{{"uri", uris[0]}}, {{"uri", uris[1]}}};
+    file.doc["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33071}}};  // CLAMP_TO_EDGE: lidr repeats
+    file.doc["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
+    file.doc["materials"] = {
+        {{"name", "helmet"}, {"emissiveFactor", {1, 1, 1}}, {"emissiveTexture", {{"index", 0}}},
+         {"normalTexture", {{"index", 1}}}, {"occlusionTexture", {{"index", 1}}},
+         {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}, {"metallicRoughnessTexture", {{"index", 1}}},
+                                   {"metallicFactor", 1.0}, {"roughnessFactor", 0.8}}}},
+        {{"name", "lamp"}, {"emissiveFactor", {1, 0.5, 0.25}},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}}};
+    for (int m = 0; m < 2; ++m) file.node({{"mesh", m}}, true);
+    file.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "helmet.gltf"));
+    const lidr::Material& helmet = scene.materials[size_t(scene.meshes[0].material)];
+    requireNear(helmet.emissive, glm::vec3(0.25f));  // factor 1 x the texture's mean (one white texel in four)
+    CHECK(helmet.roughness == Approx(0.8f * 128.0f / 255.0f));
+    CHECK(helmet.metallic == Approx(1.0f));
+    const lidr::Material& lamp = scene.materials[size_t(scene.meshes[1].material)];
+    requireNear(lamp.emissive, glm::vec3(4.0f, 2.0f, 1.0f));  // emissiveFactor x emissiveStrength
+    std::string all;
+    for (const std::string& w : scene.warnings) all += w + "\n";
+    INFO(all);
+    for (const char* feature : {"emissiveTexture is drawn as its mean", "metallicRoughnessTexture is drawn as its mean",
+                                "normalTexture is not drawn", "occlusionTexture is not drawn", "sampler wrap 33071"})
+        CHECK_THAT(all, Contains(feature) && Contains("helmet.gltf") && Contains("'helmet'"));
+}
