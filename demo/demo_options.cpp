@@ -2,12 +2,14 @@
 
 #include "lidr/base/gl.h"
 #include "lidr/scene/default_scene.h"
+#include "lidr/scene/light_scatter.h"
 #include "lidr/base/error.h"
 #include "lidr/gl/render_targets.h"
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <iostream>
 #include <limits>
 #include <sstream>
 #include "lidr/technique/packing_scheme.h"
@@ -38,7 +40,13 @@ void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--width", width, "Override the scene's width in pixels");
     app.add_option("--height", height, "Override the scene's height in pixels");
     app.add_option("--time", time, "Animation time in seconds, a finite number >= 0 (default: the scene's)");
-    app.add_option("--seed", seed, "Seed of the built-in room's lights");
+    app.add_option("--seed", seed, "Seed of the built-in room's lights, and of --lights");
+    app.add_option("--lights", lights,
+                   "Add N seeded point lights scattered over the scene's surfaces (1 .. 65535 with the scene's own)");
+    app.add_option("--light-radius", lightRadius,
+                   "Radius of the --lights lights in scene units (default: automatic, from the surface area and N)");
+    app.add_flag("!--no-default-lights", defaultRig,
+                 "Leave a scene without lights unlit (default: a key light at the eye and ambient 0.1, doc/colour.md)");
 }
 
 Scene SceneChoice::load() const {
@@ -63,6 +71,23 @@ Scene SceneChoice::load() const {
         scene = loadScene(sceneFile, objOptions);
         if (time) scene.time = float(*time);
     }
+    if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
+    if (lights) {
+        LightScatterOptions scatter;
+        scatter.count = *lights;
+        scatter.seed = seed;
+        if (lightRadius) {
+            if (!(std::isfinite(*lightRadius) && *lightRadius > 0.0 && *lightRadius <= double(maxLightRadius)))
+                throw Error("--light-radius must be a finite number > 0, got " + std::to_string(*lightRadius));
+            scatter.radius = float(*lightRadius);
+        }
+        addScatteredLights(scene, scatter);
+        std::cout << "lights     " << *lights << " scattered over the surfaces, radius "
+                  << (lightRadius ? *lightRadius : double(defaultScatterRadius(scene, *lights))) << ", seed " << seed << "\n";
+    }
+    if (defaultRig && addDefaultLightRig(scene))
+        std::cout << "lights     none in the scene: the default rig (a key light at the eye, radius "
+                  << scene.lights.back().radius << "; ambient at least 0.1; --no-default-lights to leave it unlit)\n";
     if (width) scene.width = *width;
     if (height) scene.height = *height;
     scene.validate();
@@ -109,6 +134,21 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; --window: glfw or glfw-gles2)");
     app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
     app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
+    app.add_option("--tone-map", toneMap,
+                   std::string("Tone map of the linear frame before its sRGB encoding: ") + toneMapNames() +
+                       " (doc/colour.md)")
+        ->capture_default_str();
+    app.add_option("--exposure", exposure, "Exposure in stops: linear light x 2^stops before the tone map")
+        ->capture_default_str();
+}
+
+OutputTransform RendererChoice::outputTransform() const {
+    OutputTransform o;
+    o.toneMap = parseToneMap(toneMap, "--tone-map");
+    if (!std::isfinite(exposure) || exposure < -20.0 || exposure > 20.0)
+        throw Error("--exposure must be a number of stops from -20 to 20, got " + std::to_string(exposure));
+    o.exposureStops = float(exposure);
+    return o;
 }
 
 LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
@@ -169,6 +209,7 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
     o.forceFixedLightTable = fixedLightTable;
+    outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;
 }
 

@@ -18,6 +18,9 @@ struct SceneChoice {
     std::optional<double> time;  // unset: the scene's; set: a finite number of seconds >= 0
     unsigned seed = 1;
     bool smoothNormals = false;  // OBJ faces without normals get smooth ones (ObjImportOptions)
+    std::optional<int> lights;          // --lights N: N seeded lights scattered over the surfaces (light_scatter.h)
+    std::optional<double> lightRadius;  // --light-radius R (with --lights); unset: automatic
+    bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
 };
@@ -42,7 +45,11 @@ struct RendererChoice {
     std::string context = "auto";
     bool fixedLightTable = false;
     std::string timer = "auto";
+    std::string toneMap = "pbr-neutral";
+    double exposure = 0.0;  // stops
     void addOptions(CLI::App& app);
+    // --tone-map and --exposure; throws lidr::Error on a bad name or an exposure outside [-20, 20] stops.
+    OutputTransform outputTransform() const;
     LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
     // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
     RenderModeOptions renderModeOptions(const Scene& scene) const;

@@ -40,10 +40,11 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options) {
     return renderAndEvaluate(scene, options, testGl());
 }
 
-RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info) {
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info,
+                               const OutputTransform& output) {
     testContext();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor, output};
     RenderResult r;
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     r.stats = renderer.render(scene.camera, lights, shading);

@@ -27,7 +27,9 @@ struct RenderResult {
 // Renders `scene` at scene.time with LIDR (`options`) and the reference; `info` may be a modified copy of
 // the test context's (to take a fallback path).
 RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options);
-RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info);
+// `output`: the frames' output transform (default: lidr's, PBR Neutral + sRGB).
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info,
+                               const OutputTransform& output = OutputTransform{});
 
 // The render tests' common bound, "exact within the budget": no corrupted slot anywhere; no light that touches a
 // surface missing where the pixel was marked by no more lights than the budget; those pixels equal the reference

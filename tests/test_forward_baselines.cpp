@@ -1,11 +1,13 @@
 // The classic forward baselines and the render-mode factory: multi-pass forward against the brute-force
 // reference within the stated bound of additive 8-bit blending, the factory's modes and errors, scene files'
-// "mode" key. Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
+// "mode" key. Every bound here is in linear 8-bit steps (multi-pass rounds each pass's term as it blends), so
+// these frames are written with OutputTransform::linear(); test_colour.cpp checks the encoded output. Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
 // 580.159.04 (H100, EGL).
 #include <algorithm>
 #include <random>
 
 #include <catch2/catch.hpp>
+#include "lidr/base/colour.h"
 
 #include "gl_test_context.h"
 #include "lidr/base/gl.h"
@@ -48,7 +50,8 @@ struct MultipassCheck {
 MultipassCheck checkMultipass(const Scene& scene, const MultipassOptions& options) {
     testContext();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    // The bound is in linear 8-bit steps: both images written linear (test_colour.cpp checks the encode pass).
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     MultipassForwardRenderer mp(testGl(), scene, options, scene.width, scene.height);
     REQUIRE(mp.modeName() == "forward-multipass");
     mp.render(scene.camera, lights, shading);
@@ -117,9 +120,9 @@ TEST_CASE("multi-pass forward with MSAA stays within the bound of its most lit p
     MultipassOptions o;
     o.msaaSamples = 4;
     MultipassForwardRenderer mp(info, scene, o, scene.width, scene.height);
-    mp.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    mp.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor, OutputTransform::linear()});
     ReferenceRenderer reference(info, scene, scene.width, scene.height, int(scene.lights.size()), false, 4, false);
-    reference.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+    reference.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor, OutputTransform::linear()});
     // Each sample obeys the per-pixel bound; a resolved pixel averages samples, so the largest bound holds.
     const ImageError e = compareImages(mp.targets().readColor(), reference.targets().readColor());
     INFO("max " << e.maxAbsError << ", bound " << single.maxBound);
@@ -152,7 +155,8 @@ TEST_CASE("multi-pass forward: scissor and mesh culling never cut light off", "[
 TEST_CASE("render-mode factory builds every mode, all close to the reference", "[forward][modes]") {
     Scene scene = floorScene();
     scene.lights = {light({0.0f, 1.0f, 0.0f}, 4.0f, {1.0f, 0.8f, 0.6f}), light({3.0f, 0.5f, 2.0f}, 3.0f, {0.3f, 0.5f, 1.0f})};
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    // Bounds in linear 8-bit steps (multi-pass rounds each pass's term): linear output.
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 2);
     reference.render(scene.camera, scene.lights, shading);
     const ImageRGBA8 ref = reference.targets().readColor();
@@ -301,9 +305,21 @@ TEST_CASE("multi-pass forward with MSAA: samples shaded off their triangle get e
     DefaultSceneOptions room;
     room.width = 320;
     room.height = 240;
-    const Scene scene = makeDefaultScene(room);
-    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    // The room as it was when this was found: its colours as the linear values they were before they were
+    // decoded from sRGB on load (doc/colour.md), so the missed light's term is as large as it was then.
+    Scene scene = makeDefaultScene(room);
+    const auto encoded = [](const glm::vec3& linear) {
+        const float peak = std::max(linear.r, std::max(linear.g, linear.b));
+        const float scale = peak > 1.0f ? peak : 1.0f;  // displayColourToLinear keeps a strength above 1 linear
+        const glm::vec3 c = linear / scale;
+        return scale * glm::vec3(float(linearToSrgb(c.r)), float(linearToSrgb(c.g)), float(linearToSrgb(c.b)));
+    };
+    for (Material& m : scene.materials) m.diffuse = encoded(m.diffuse), m.specular = encoded(m.specular);
+    scene.ambient = encoded(scene.ambient);
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    // and at twice their strength: the BRDF (doc/colour.md) gives a grazing light less than Blinn-Phong did
+    for (PointLight& l : lights) l.color = 2.0f * encoded(l.color);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     ReferenceRenderer reference(info, scene, scene.width, scene.height, int(lights.size()), false, 4, false);
     reference.render(scene.camera, lights, shading);
     const ImageRGBA8 ref = reference.targets().readColor();

@@ -1,7 +1,11 @@
 // glTF 2.0 import (lidr/scene/io/gltf_importer.h): small files written by the tests themselves (JSON with a
 // base64 buffer, a separate .bin, or a .glb), checked for exact positions, lights, cameras, materials and errors;
 // and one glTF scene rendered against the same scene written as a lidr JSON file with an OBJ model.
+#include <cmath>
+
 #include <catch2/catch.hpp>
+
+#include "lidr/base/colour.h"
 
 #include <unistd.h>
 
@@ -275,8 +279,10 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     REQUIRE(painted.diffuseImage);
     REQUIRE(painted.diffuseImage->width == 2);
     CHECK(std::memcmp(painted.diffuseImage->pixels.data(), pixels, 8) == 0);
-    requireNear(painted.specular, glm::vec3(0.04f * 0.25f));  // dielectric F0 x (1 - roughness)^2
-    CHECK(painted.shininess == Approx(30.0f));                  // 2 / 0.5^4 - 2
+    // the BRDF is glTF's: the factors go through as they are
+    CHECK(painted.metallicRoughness);
+    CHECK(painted.metallic == 0.0f);
+    CHECK(painted.roughness == 0.5f);
     // texture coordinates: glTF's v runs down the image, lidr's up
     const lidr::Mesh& mesh = scene.meshes[2];
     CHECK(mesh.texCoords[mesh.indices[2]] == glm::vec2(0.0f, 0.0f));
@@ -400,7 +406,8 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     GltfFile file;
     const int p = file.positions({{-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4}, {-1, 0, 0}, {1, 0, 0}, {0, 1.5f, 0.5f}});
     const int i = file.indices({0, 2, 1, 0, 3, 2, 4, 5, 6});
-    file.doc["materials"] = {{{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}}};
+    file.doc["materials"] = {{{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1}}, {"metallicFactor", 0.0}, {"roughnessFactor", std::pow(2.0 / 3.0, 0.25)}}}}};
+    // (the roughness the OBJ's Blinn-Phong "Ns 1" maps to: alpha^2 = 2 / (1 + 2), doc/colour.md)
     file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", i}, {"material", 0}});
     file.node({{"mesh", 0}}, true);
     file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"range", 5.0}},
@@ -415,7 +422,9 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
 
     dir.write("tent.obj", "mtllib tent.mtl\nv -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\nv -1 0 0\nv 1 0 0\nv 0 1.5 0.5\n"
                           "usemtl red\nf 1 3 2\nf 1 4 3\nf 5 6 7\n");
-    dir.write("tent.mtl", "newmtl red\nKd 0.8 0.2 0.2\nKs 0 0 0\nNs 1\n");
+    // MTL colours are display values (decoded on load), glTF factors linear: the same linear red written both ways
+    dir.write("tent.mtl", "newmtl red\nKd " + std::to_string(lidr::linearToSrgb(0.8)) + " " + std::to_string(lidr::linearToSrgb(0.2)) +
+                              " " + std::to_string(lidr::linearToSrgb(0.2)) + "\nKs 0 0 0\nNs 1\n");
     lidr::Scene fromJson = lidr::loadScene(dir.write("tent.json", R"({
         "camera": {"position": [0, 4, 8], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 50},
         "models": [{"file": "tent.obj"}],
@@ -426,7 +435,11 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
         scene->height = lidr::test::testHeight();
     }
     // the OBJ's face normals and the glTF's flat normals are the same; so are the materials' terms
-    REQUIRE(fromGltf.materials[size_t(fromGltf.meshes[0].material)].specular == glm::vec3(0.0f));
+    const lidr::MetallicRoughness gltfRed = lidr::metallicRoughnessOf(fromGltf.materials[size_t(fromGltf.meshes[0].material)]);
+    const lidr::MetallicRoughness objRed = lidr::metallicRoughnessOf(fromJson.materials[size_t(fromJson.meshes[0].material)]);
+    REQUIRE(gltfRed.metallic == objRed.metallic);
+    REQUIRE(gltfRed.roughness == Approx(objRed.roughness).epsilon(1e-6));
+    REQUIRE(glm::all(glm::lessThan(glm::abs(gltfRed.baseColor - objRed.baseColor), glm::vec3(1e-5f))));
     const auto render = [&](const lidr::Scene& scene) {
         lidr::RenderModeOptions options;
         auto renderer = lidr::createRenderer(options, lidr::test::testGl(), scene, scene.width, scene.height);
@@ -487,4 +500,54 @@ TEST_CASE("image headers: PNG and JPEG kind and size read without decoding", "[g
             CHECK(header.height == c.height);
         }
     }
+}
+
+TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread textures are warnings", "[gltf][cpu]") {
+    // The flat-white helmet: emissiveFactor [1, 1, 1] with an emissive texture that is mostly black. Drawn as the
+    // factor alone, every pixel of the material saturates; lidr draws the factor times the texture's mean.
+    TempDir dir;
+    GltfFile file;
+    const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const std::vector<float> uv = {0, 0, 1, 0, 0, 1};
+    const int t = file.accessor(uv.data(), uv.size() * 4, 5126, "VEC2", 3);
+    for (int m = 0; m < 2; ++m) file.mesh({{"attributes", {{"POSITION", p}, {"TEXCOORD_0", t}}}, {"material", m}});
+    // 2x2: three black texels and one sRGB-white one (mean 0.25 linear); and an ORM-style texture (G 128, B 255)
+    lidr::ImageRGBA8 emission(2, 2), orm(2, 2);
+    for (size_t i = 0; i < 16; i += 4) {
+        for (int c = 0; c < 3; ++c) emission.pixels[i + size_t(c)] = i == 0 ? 255 : 0;
+        emission.pixels[i + 3] = 255;
+        orm.pixels[i] = 255, orm.pixels[i + 1] = 128, orm.pixels[i + 2] = 255, orm.pixels[i + 3] = 255;
+    }
+    std::vector<std::string> uris;
+    for (const auto& [name, image] : {std::pair<const char*, const lidr::ImageRGBA8*>{"e.png", &emission}, {"orm.png", &orm}}) {
+        lidr::writePng(dir.file(name), *image);
+        std::ifstream in(dir.file(name), std::ios::binary);
+        const std::vector<unsigned char> png((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        uris.push_back("data:image/png;base64," + base64(png));
+    }
+    file.doc["images"] = {{{"uri", uris[0]}}, {{"uri", uris[1]}}};
+    file.doc["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33071}}};  // CLAMP_TO_EDGE: lidr repeats
+    file.doc["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
+    file.doc["materials"] = {
+        {{"name", "helmet"}, {"emissiveFactor", {1, 1, 1}}, {"emissiveTexture", {{"index", 0}}},
+         {"normalTexture", {{"index", 1}}}, {"occlusionTexture", {{"index", 1}}},
+         {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}, {"metallicRoughnessTexture", {{"index", 1}}},
+                                   {"metallicFactor", 1.0}, {"roughnessFactor", 0.8}}}},
+        {{"name", "lamp"}, {"emissiveFactor", {1, 0.5, 0.25}},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}}};
+    for (int m = 0; m < 2; ++m) file.node({{"mesh", m}}, true);
+    file.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "helmet.gltf"));
+    const lidr::Material& helmet = scene.materials[size_t(scene.meshes[0].material)];
+    requireNear(helmet.emissive, glm::vec3(0.25f));  // factor 1 x the texture's mean (one white texel in four)
+    CHECK(helmet.roughness == Approx(0.8f * 128.0f / 255.0f));
+    CHECK(helmet.metallic == Approx(1.0f));
+    const lidr::Material& lamp = scene.materials[size_t(scene.meshes[1].material)];
+    requireNear(lamp.emissive, glm::vec3(4.0f, 2.0f, 1.0f));  // emissiveFactor x emissiveStrength
+    std::string all;
+    for (const std::string& w : scene.warnings) all += w + "\n";
+    INFO(all);
+    for (const char* feature : {"emissiveTexture is drawn as its mean", "metallicRoughnessTexture is drawn as its mean",
+                                "normalTexture is not drawn", "occlusionTexture is not drawn", "sampler wrap 33071"})
+        CHECK_THAT(all, Contains(feature) && Contains("helmet.gltf") && Contains("'helmet'"));
 }

@@ -83,3 +83,25 @@ TEST_CASE("scattering refuses what it cannot make, with the reason", "[cpu][scen
     o.radius = NAN;
     CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("radius"));
 }
+
+TEST_CASE("default light rig: a scene without lights gets a key light at the eye reaching the whole model", "[cpu][scene]") {
+    lidr::Scene scene;
+    scene.materials.push_back(lidr::Material{});
+    lidr::addBox(scene, glm::vec3(-1.0f, 0.0f, -2.0f), glm::vec3(3.0f, 1.0f, 2.0f), 0);
+    scene.camera.position = glm::vec3(0.0f, 2.0f, 6.0f);
+    scene.ambient = glm::vec3(0.04f);
+    REQUIRE(lidr::addDefaultLightRig(scene));
+    REQUIRE(scene.lights.size() == 1);
+    CHECK(scene.lights[0].position == scene.camera.position);
+    const float diagonal = glm::length(glm::vec3(4.0f, 1.0f, 4.0f));
+    CHECK(scene.lights[0].radius == Approx(3.0f * diagonal));
+    CHECK(scene.ambient == glm::vec3(0.1f));
+    // every corner of the model is inside the light's range, so every point of it is lit
+    for (const lidr::Mesh& m : scene.meshes)
+        for (const glm::vec3& p : m.positions) CHECK(glm::length(p - scene.lights[0].position) < scene.lights[0].radius);
+    // a scene with lights keeps them, and its ambient
+    scene.ambient = glm::vec3(0.02f);
+    REQUIRE_FALSE(lidr::addDefaultLightRig(scene));
+    CHECK(scene.lights.size() == 1);
+    CHECK(scene.ambient == glm::vec3(0.02f));
+}

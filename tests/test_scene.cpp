@@ -1,6 +1,8 @@
 // Scene data, the default room, procedural primitives, light paths and the scene file / OBJ loaders.
 #include <catch2/catch.hpp>
 
+#include "lidr/base/colour.h"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -522,8 +524,8 @@ TEST_CASE("scene files: obj-demo with OBJ, MTL and texture", "[scene][cpu]") {
         if (scene.materials[i].name == "crate") crateMaterial = int(i);
     REQUIRE(crateMaterial >= 0);
     const lidr::Material& crate = scene.materials[size_t(crateMaterial)];
-    CHECK(crate.diffuse.r == Approx(0.9f));
-    CHECK(crate.specular.g == Approx(0.1f));
+    CHECK(crate.diffuse.r == Approx(lidr::srgbToLinear(0.9)));  // MTL colours are decoded (doc/colour.md)
+    CHECK(crate.specular.g == Approx(lidr::srgbToLinear(0.1)));
     CHECK(crate.shininess == 16.0f);
     CHECK(fs::equivalent(crate.diffuseTexture, mediaPath("models/checker.ppm")));
     size_t crateMeshes = 0;
@@ -845,4 +847,38 @@ TEST_CASE("scene files: files that are not regular, unsupported formats and huge
         REQUIRE_THROWS_WITH(load(sceneWith(R"(, "materials": [{"name": "m", "texture": "huge.png"}])")),
                             Contains("huge.png' is 100000x100000, over the texture limit of 16384 per side"));
     }
+}
+
+TEST_CASE("materials: metallic / roughness in scene files, Blinn-Phong mapped onto them", "[scene][cpu][brdf]") {
+    TempDir dir;
+    const lidr::Scene scene = lidr::loadScene(dir.write("pbr.json", R"({
+        "materials": [{"name": "steel", "diffuse": [0.6, 0.6, 0.62], "metallic": 1, "roughness": 0.3},
+                      {"name": "matte", "diffuse": 0.5, "roughness": 0.9},
+                      {"name": "plastic", "diffuse": [0.75, 0.12, 0.1], "specular": 0.6, "shininess": 64},
+                      {"name": "gold", "diffuse": [0.8, 0.6, 0.22], "specular": [0.9, 0.75, 0.45], "shininess": 96}],
+        "primitives": [{"shape": "box", "min": [0, 0, 0], "max": [1, 1, 1], "material": "steel"}]})"));
+    const auto of = [&](const char* name) {
+        for (const lidr::Material& m : scene.materials)
+            if (m.name == name) return lidr::metallicRoughnessOf(m);
+        FAIL("no material " << name);
+        return lidr::MetallicRoughness{};
+    };
+    CHECK(of("steel").metallic == 1.0f);
+    CHECK(of("steel").roughness == Approx(0.3f));
+    CHECK(of("steel").baseColor.b == Approx(lidr::srgbToLinear(0.62)));  // colours still display values
+    CHECK(of("matte").metallic == 0.0f);
+    CHECK(of("matte").roughness == Approx(0.9f));
+    // Blinn-Phong: alpha^2 = 2 / (n + 2), roughness = alpha^(1/2); a grey specular stays dielectric
+    CHECK(of("plastic").metallic == 0.0f);
+    CHECK(of("plastic").roughness == Approx(std::pow(2.0 / 66.0, 0.25)));
+    CHECK(of("plastic").baseColor.r == Approx(lidr::srgbToLinear(0.75)));
+    // a strong chromatic specular is a metal of that colour
+    CHECK(of("gold").metallic == 1.0f);
+    CHECK(of("gold").baseColor.b == Approx(lidr::srgbToLinear(0.45)));
+    REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("both.json", R"({
+        "materials": [{"name": "x", "metallic": 0.5, "shininess": 8}]})")),
+                        Catch::Contains("materials[0]") && Catch::Contains("not both"));
+    REQUIRE_THROWS_WITH(lidr::loadScene(dir.write("range.json", R"({
+        "materials": [{"name": "x", "roughness": 1.5}]})")),
+                        Catch::Contains("roughness") && Catch::Contains("[0, 1]"));
 }

@@ -34,14 +34,14 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
         std::vector<std::string> files;
     };
     const std::vector<Case> cases = {
-        {"tiled_forward.frag", {{"LIDR_X", "1"}}, {}, {"tiled_forward.frag", "light_table.glsl", "shading.glsl", "tiled_grid.glsl"}},
+        {"tiled_forward.frag", {{"LIDR_X", "1"}}, {}, {"tiled_forward.frag", "light_table.glsl", "shading.glsl", "output_transform.glsl", "tiled_grid.glsl"}},
         {"lidr_forward.frag", {}, {{"lidr_unpack.glsl", "unpack_max_stencil.glsl"}},
-         {"lidr_forward.frag", "lidr_depth.glsl", "shading.glsl", "lidr_lights.glsl", "light_table.glsl",
+         {"lidr_forward.frag", "lidr_depth.glsl", "shading.glsl", "output_transform.glsl", "lidr_lights.glsl", "light_table.glsl",
           "unpack_max_stencil.glsl", "lidr_channel_stream.glsl", "lidr_bytes.glsl", "lidr_index_samplers.glsl"}},
         // Emulated 16-bit depth (LidrOptions::emulatedDepthBits): a second substitution, the same line mapping.
         {"lidr_forward.frag", {{"LIDR_DEPTH_STEPS", "65535.0"}},
          {{"lidr_unpack.glsl", "unpack_max_stencil.glsl"}, {"lidr_depth.glsl", "lidr_depth_emulated.glsl"}},
-         {"lidr_forward.frag", "lidr_depth_emulated.glsl", "shading.glsl", "lidr_lights.glsl", "light_table.glsl",
+         {"lidr_forward.frag", "lidr_depth_emulated.glsl", "shading.glsl", "output_transform.glsl", "lidr_lights.glsl", "light_table.glsl",
           "unpack_max_stencil.glsl", "lidr_channel_stream.glsl", "lidr_bytes.glsl", "lidr_index_samplers.glsl"}},
         {"geometry.vert", {}, {}, {"geometry.vert"}},
     };
@@ -81,9 +81,9 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
 
 TEST_CASE("a compile error in an included file names that file's source string and line", "[shader]") {
     testContext();
-    // shading.glsl line 7 is `uniform float uMaterialShininess;`: defined away it is a syntax error there.
-    REQUIRE(lines(shaderFile("shading.glsl")).at(6) == "uniform float uMaterialShininess;");
-    const std::string fs = buildShaderSource("forward_ambient.frag", {{"uMaterialShininess", "+"}});
+    // shading.glsl line 7 is `uniform vec3 uEyePosition;`: defined away it is a syntax error there.
+    REQUIRE(lines(shaderFile("shading.glsl")).at(6) == "uniform vec3 uEyePosition;");
+    const std::string fs = buildShaderSource("forward_ambient.frag", {{"uEyePosition", "+"}});
     try {
         gl::Program::create("broken", buildShaderSource("geometry.vert"), fs, {});
         FAIL("the broken shader compiled");

@@ -1,5 +1,7 @@
 #pragma once
-// Image error against a reference: the accuracy figures every mode and scheme is judged by.
+// Image error against a reference: the accuracy figures every mode and scheme is judged by. They compare the
+// 8-bit images as rendered, i.e. after the output transform (tone map, sRGB encoding; doc/colour.md): the
+// error a viewer sees, not an error in linear light.
 #include <optional>
 
 #include "lidr/base/image.h"

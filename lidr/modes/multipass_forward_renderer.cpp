@@ -63,7 +63,10 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     depthPrepassTime.end();
 
     TimedPass ambientTime(timer_, "ambient");
-    beginOpaqueShading(targets_, shading, true);
+    // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
+    ShadingParameters linearShading = shading;
+    linearShading.output = OutputTransform::linear();
+    beginOpaqueShading(targets_, linearShading, true);
     StateCache& cache = StateCache::current();
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
@@ -73,7 +76,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     GLint stamp = 1;
     cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
-    setShadingUniforms(ambient_, cam, shading);
+    setShadingUniforms(ambient_, cam, linearShading);
     scene_.draw(ambient_, DrawFilter::Opaque, true, &cam);
     ambientTime.end();
 
@@ -86,7 +89,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
     cache.apply(s);  // per light only the scissor box and the stamp change below (the cache sets only those)
     light_.use();
-    setShadingUniforms(light_, cam, shading);
+    setShadingUniforms(light_, cam, linearShading);
     lightTable_.bind(light_);
     const float reach = lightTable_.reachError();
     // Culling a mesh whose bounds the sphere misses is exact only where every shaded point lies on its
@@ -135,6 +138,12 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     cache.apply(RenderState{});
     lightPassesTime.end();
     targets_.resolve(timer_);
+    const OutputTransform& output = shading.output;
+    if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
+        TimedPass encodeTime(timer_, "output-encode");
+        outputEncode_.run(targets_, output);
+        encodeTime.end();
+    }
 
     StateCache::current().bindFramebuffer(0);
     checkGl("MultipassForwardRenderer::render");

@@ -17,6 +17,7 @@
 #include "lidr/gl/frame_timer.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/light_table.h"
+#include "lidr/render/present.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
 
@@ -57,6 +58,7 @@ private:
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     gl::Program ambient_, light_;
+    OutputEncodePass outputEncode_;  // its passes sum linear light; the output transform runs over the sum
     FrameTimer timer_;
     const GlInfo info_;
     long meshDraws_ = 0;

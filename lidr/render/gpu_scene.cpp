@@ -20,6 +20,16 @@ struct Vertex {
     float normal[3];
     float texCoord[2];
 };
+
+constexpr GLint kSrgb8Alpha8 = 0x8C43;  // GL_SRGB8_ALPHA8, core since GL 2.1
+
+// Base-colour texels are sRGB-encoded. Desktop GL decodes them in the texture unit (before filtering, as it
+// should be); an OpenGL ES 2.0 / WebGL 1 context gets RGBA8 and shading.glsl decodes under GL_ES.
+GLint baseColorTextureFormat() {
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    const bool gles = version && std::strncmp(version, "OpenGL ES", 9) == 0;
+    return gles ? GLint(GL_RGBA8) : kSrgb8Alpha8;
+}
 }  // namespace
 
 GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
@@ -74,7 +84,8 @@ gl::Texture GpuScene::loadTexture(const Material& m) const {
     for (int y = 0; y < h; ++y)
         std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], pixels + static_cast<size_t>(h - 1 - y) * w * 4,
                     static_cast<size_t>(w) * 4);
-    return gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(), GL_LINEAR_MIPMAP_LINEAR);
+    return gl::Texture::create2D(baseColorTextureFormat(), w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(),
+                                 GL_LINEAR_MIPMAP_LINEAR);
 }
 
 GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.materials), order_(order) {
@@ -161,7 +172,11 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     if (setMaterials) {
         const Material& m = materials_[b.material];
         // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
-        program.setIfDeclared("uMaterialDiffuse", m.diffuse);
+        const MetallicRoughness pbr = metallicRoughnessOf(m);
+        program.setIfDeclared("uMaterialDiffuse", pbr.baseColor);
+        program.setIfDeclared("uMaterialMetallic", pbr.metallic);
+        program.setIfDeclared("uMaterialRoughness", pbr.roughness);
+        // Blinn-Phong's inputs, for user material shaders written against them (doc/embedding.md)
         program.setIfDeclared("uMaterialSpecular", m.specular);
         program.setIfDeclared("uMaterialShininess", m.shininess);
         program.setIfDeclared("uMaterialOpacity", m.opacity);

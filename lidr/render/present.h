@@ -6,6 +6,7 @@
 #include "lidr/base/gl_types.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/render_targets.h"
+#include "lidr/render/output_transform.h"
 
 namespace lidr {
 
@@ -25,6 +26,24 @@ public:
 private:
     gl::Program program_;
     gl::Buffer triangle_;
+};
+
+// The output transform (exposure, tone map, sRGB) applied in place to a frame whose colour target holds linear
+// light: multi-pass forward sums its lights by additive blending, so no one shader sees a pixel's whole sum.
+// The frame is copied to a scratch texture (glCopyTexSubImage2D, GL 1.1 / ES 2.0) and drawn back through
+// output_encode.frag. Its linear sum was rounded to 8 bits per pass first: dark pixels carry that rounding
+// through the encoding's steep start (doc/colour.md).
+class OutputEncodePass {
+public:
+    OutputEncodePass();  // compiles its program; needs the context current
+    // Into targets.color() (after any MSAA resolve), through the single-sample colour FBO. Leaves the state
+    // cache's pass at that FBO with default state.
+    void run(const RenderTargets& targets, const OutputTransform& output);
+
+private:
+    gl::Program program_;
+    gl::Buffer triangle_;
+    gl::Texture scratch_;
 };
 
 }  // namespace lidr

@@ -10,13 +10,15 @@
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/saved_gl_state.h"
 #include "lidr/render/gpu_scene.h"
+#include "lidr/render/output_transform.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
 
 struct ShadingParameters {
-    glm::vec3 ambient{0.04f};
-    glm::vec3 background{0.0f};
+    glm::vec3 ambient{0.04f};     // linear
+    glm::vec3 background{0.0f};   // linear, cleared to its output-transformed value
+    OutputTransform output{};     // exposure, tone map, sRGB encoding (lidr/render/output_transform.h)
 };
 
 // What LIDR's automatic configuration chose for a frame (zeros in other modes and for fixed choices).

@@ -10,7 +10,8 @@ void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& s
     StateCache& cache = StateCache::current();
     ClearAction clear;
     clear.color = true;
-    clear.colorValue = glm::vec4(shading.background, 1.0f);
+    // The background is linear light like everything else: cleared to its output-transformed value.
+    clear.colorValue = glm::vec4(glm::vec3(applyOutputTransform(glm::dvec3(shading.background), shading.output)), 1.0f);
     clear.depth = clear.stencil = !afterPrepass;  // without a pre-pass this pass writes its own depth
     cache.beginPass(targets.colorPass(clear));
     RenderState s;
@@ -40,10 +41,17 @@ void beginTransparentShading(bool sampleShading) {
     StateCache::current().apply(s);
 }
 
+void setOutputUniforms(const gl::Program& program, const OutputTransform& output) {
+    program.setIfDeclared("uExposureStops", output.exposureStops);
+    program.setIfDeclared("uToneMap", float(int(output.toneMap)));
+    program.setIfDeclared("uSrgbOutput", output.srgb ? 1.0f : 0.0f);
+}
+
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
     program.set("uViewProj", camera.viewProjection);
     program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
     program.setIfDeclared("uAmbient", shading.ambient);
+    setOutputUniforms(program, shading.output);
     // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
     // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
     program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));

@@ -24,7 +24,9 @@ RenderState transparentBlendState();
 // Applies transparentBlendState() (with per-sample shading as asked) for the layers drawn next.
 void beginTransparentShading(bool sampleShading = false);
 
-// Sets the per-frame uniforms of shading.glsl (eye, ambient, the material texture's unit).
+// Sets output_transform.glsl's uniforms (every shading program's, and the multi-pass encode pass's).
+void setOutputUniforms(const gl::Program& program, const OutputTransform& output);
+// Sets the per-frame uniforms of shading.glsl (eye, ambient, the output transform, the material texture's unit).
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
 // Uses the program, sets shading.glsl's uniforms and binds the light table to it.
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,

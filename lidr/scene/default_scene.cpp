@@ -6,6 +6,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/primitives.h"
 
@@ -172,7 +173,11 @@ Scene makeDefaultScene(const DefaultSceneOptions& options) {
     scene.width = options.width;
     scene.height = options.height;
     scene.time = options.time;
-    scene.ambient = glm::vec3(0.06f);
+    // The room's colours were chosen as display values when frames were written linear: decoded here, so that
+    // shading in linear light and the sRGB output keep its look (ambient 0.06 still shows as 0.06).
+    scene.ambient = srgbToLinear(glm::vec3(0.06f));
+    for (Material& m : scene.materials)
+        m.diffuse = srgbToLinear(m.diffuse), m.specular = srgbToLinear(m.specular), m.emissive = srgbToLinear(m.emissive);
 
     const int largeCount = std::min(options.lightCount, 3);
     addLargeMovers(scene, largeCount, options.seed);
@@ -186,6 +191,8 @@ Scene makeDefaultScene(const DefaultSceneOptions& options) {
     particles.intensity = 1.5f;
     particles.speed = 1.5f;
     generateLights(scene, particles);
+    // The lights' colours were picked as display values too (strength above 1 kept linear).
+    for (PointLight& light : scene.lights) light.color = displayColourToLinear(light.color);
 
     scene.validate();
     return scene;

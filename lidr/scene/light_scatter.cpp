@@ -125,4 +125,18 @@ void addScatteredLights(Scene& scene, const LightScatterOptions& options) {
     }
 }
 
+bool addDefaultLightRig(Scene& scene) {
+    if (!scene.lights.empty() || scene.meshes.empty()) return false;
+    const float diagonal = glm::length(scene.boundsMax() - scene.boundsMin());
+    PointLight key;
+    key.position = scene.camera.position;
+    key.radius = std::max(3.0f * diagonal, 1e-3f);
+    key.color = glm::vec3(1.0f);
+    key.priority = 1.0f;
+    scene.lights.push_back(key);
+    if (!scene.lightPaths.empty()) scene.lightPaths.push_back(LightPath{});
+    scene.ambient = glm::max(scene.ambient, glm::vec3(0.1f));
+    return true;
+}
+
 }  // namespace lidr

@@ -30,4 +30,11 @@ std::vector<PointLight> scatterLights(const Scene& scene, const LightScatterOpti
 // Appends scatterLights(scene, options) to scene.lights (static: paths, if the scene has them, stay put).
 void addScatteredLights(Scene& scene, const LightScatterOptions& options);
 
+// The default rig of a scene that has no lights (a glTF without KHR_lights_punctual, an OBJ), so that any
+// model looks lit (doc/colour.md, "Lights for any model"): one white key light at the camera's eye with a
+// radius of three times the geometry's bounds diagonal (so the falloff 1 - d^2/r^2 keeps at least 8/9 of it
+// over the whole model), and the ambient raised to at least 0.1 (uniform light from every direction, lit
+// from behind included). Nothing changes where the scene has lights. Returns whether it added the rig.
+bool addDefaultLightRig(Scene& scene);
+
 }  // namespace lidr

@@ -1,5 +1,6 @@
 #include "lidr/scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -58,6 +59,10 @@ void validateMaterial(const Material& material, size_t index) {
     requireColor(item, "specular", material.specular);
     requirePositive(item, "shininess", material.shininess);
     requireColor(item, "emissive", material.emissive);
+    if (!(material.metallic >= 0.0f && material.metallic <= 1.0f))
+        fail(item, "metallic must be in [0, 1], got " + str(material.metallic));
+    if (!(material.roughness >= 0.0f && material.roughness <= 1.0f))
+        fail(item, "roughness must be in [0, 1], got " + str(material.roughness));
     if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
         fail(item, "opacity must be in [0, 1], got " + str(material.opacity));
     if (material.diffuseImage) {
@@ -227,13 +232,27 @@ void Scene::validate(int maxResolution) const {
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
 }
 
+MetallicRoughness metallicRoughnessOf(const Material& m) {
+    if (m.metallicRoughness) return {m.diffuse, m.metallic, m.roughness};
+    MetallicRoughness out;
+    out.roughness = float(std::pow(2.0 / (double(m.shininess) + 2.0), 0.25));
+    const float high = std::max(m.specular.r, std::max(m.specular.g, m.specular.b));
+    const float low = std::min(m.specular.r, std::min(m.specular.g, m.specular.b));
+    const bool metal = high > 0.25f && (high - low) > 0.2f * high;
+    out.metallic = metal ? 1.0f : 0.0f;
+    out.baseColor = metal ? m.specular : m.diffuse;
+    return out;
+}
+
 int findOrAddMaterial(Scene& scene, const Material& material) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& existing = scene.materials[i];
         if (existing.name == material.name && existing.diffuse == material.diffuse &&
             existing.diffuseTexture == material.diffuseTexture && existing.specular == material.specular &&
             existing.shininess == material.shininess && existing.opacity == material.opacity &&
-            existing.diffuseImage == material.diffuseImage && existing.emissive == material.emissive)
+            existing.diffuseImage == material.diffuseImage && existing.emissive == material.emissive &&
+            existing.metallicRoughness == material.metallicRoughness && existing.metallic == material.metallic &&
+            existing.roughness == material.roughness)
             return int(i);
     }
     scene.materials.push_back(material);

@@ -12,6 +12,7 @@
 
 namespace lidr {
 
+// Colours are linear (importers decode display-value colours: doc/colour.md); textures are sRGB-encoded.
 struct Material {
     std::string name;
     glm::vec3 diffuse{0.8f};
@@ -23,7 +24,23 @@ struct Material {
     // The texture's pixels when the importer decoded them (glTF images, embedded ones included; rows top to
     // bottom like a file): used instead of reading diffuseTexture, which then only names the image.
     std::shared_ptr<const ImageRGBA8> diffuseImage{};
+    // glTF metallic-roughness (the one shading model, shaders/common/shading.glsl): with metallicRoughness
+    // true, `diffuse` is the base colour and these two are used as they are; false (OBJ/MTL, scene files, code
+    // written for Blinn-Phong) maps specular and shininess onto them (metallicRoughnessOf).
+    bool metallicRoughness = false;
+    float metallic = 0.0f;   // [0, 1]
+    float roughness = 1.0f;  // [0, 1], perceptual (alpha = roughness^2)
 };
+
+// The material as the BRDF takes it. Blinn-Phong materials map (doc/colour.md, "Materials"): roughness from
+// the exponent by matching the lobe, alpha^2 = 2 / (shininess + 2); a chromatic, strong specular colour
+// (largest channel above 0.25, (max - min) / max above 0.2: gold, copper) makes a metal whose base colour is
+// that specular colour; otherwise a dielectric (F0 0.04) with the diffuse colour as base.
+struct MetallicRoughness {
+    glm::vec3 baseColor{0.8f};
+    float metallic = 0.0f, roughness = 1.0f;
+};
+MetallicRoughness metallicRoughnessOf(const Material& material);
 
 // One draw batch: triangles of one material, world space.
 struct Mesh {

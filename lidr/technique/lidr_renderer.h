@@ -71,7 +71,7 @@ struct LidrOptions {
     bool timing = false;  // per-pass times in FrameStats (Renderer::setTiming); off: no timer queries at all
     TimingMethod timingMethod = TimingMethod::Auto;
     // The program's own material: a GLSL 1.20 fragment shader for the forward pass (and transparent layers)
-    // that iterates this pixel's lights with lidr_lights.glsl (doc/embedding.md). Empty: lidr's Blinn-Phong.
+    // that iterates this pixel's lights with lidr_lights.glsl (doc/embedding.md). Empty: lidr's own shading (shading.glsl).
     std::string materialShader;
 };
 

@@ -1,10 +1,14 @@
-// The one shading function of lidr: Blinn-Phong with attenuation saturate(1 - d^2 / r^2). LIDR, tiled,
-// forward and the brute-force reference all call it, so their images differ only by which lights they sum.
+// The one shading function of lidr, in linear light: the glTF 2.0 metallic-roughness BRDF (the specification's
+// appendix B: Lambert diffuse, GGX distribution, height-correlated Smith-GGX visibility, Schlick Fresnel with F0
+// mixed by metallic) under point lights with attenuation saturate(1 - d^2 / r^2). LIDR, tiled, forward and the
+// brute-force reference all call it; each ends with lidrOutput (output_transform.glsl). CPU model: lidr/eval/brdf.h.
+#include "output_transform.glsl"
+#define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
 uniform vec3 uAmbient;
-uniform vec3 uMaterialDiffuse;
-uniform vec3 uMaterialSpecular;
-uniform float uMaterialShininess;
+uniform vec3 uMaterialDiffuse;   // the base colour factor (linear)
+uniform float uMaterialMetallic;
+uniform float uMaterialRoughness;  // perceptual roughness; alpha = roughness^2
 uniform float uMaterialOpacity;
 uniform vec3 uMaterialEmissive;
 uniform float uMaterialHasTexture;
@@ -14,11 +18,24 @@ varying vec3 vWorldPos;
 varying vec3 vNormal;
 varying vec2 vTexCoord;
 
+// Base-colour textures hold sRGB-encoded texels. Desktop GL (2.1 has sRGB textures in core) uploads them as
+// SRGB8_ALPHA8 and the texture unit decodes, before filtering; OpenGL ES 2.0 / WebGL 1 have no sRGB texture
+// format without an extension, so the texel is decoded here, after filtering (lidr/render/gpu_scene.cpp).
+vec4 lidrBaseColorTexel(vec2 uv) {
+    vec4 texel = texture2D(uMaterialTexture, uv);
+#if defined(GL_ES) || defined(LIDR_SRGB_DECODE_IN_SHADER)
+    texel.rgb = lidrSrgbToLinear(texel.rgb);
+#endif
+    return texel;
+}
+
 struct LidrSurface {
     vec3 position;
     vec3 normal;
     vec3 toEye;
-    vec3 albedo;
+    vec3 albedo;     // the diffuse colour: base colour x (1 - metallic)
+    vec3 f0;         // specular reflectance at normal incidence: mix(0.04, base colour, metallic)
+    float alpha;     // GGX alpha = roughness^2, at least 0.01 (a mirror has no lobe; alpha^2 stays normal in fp16)
 };
 
 LidrSurface lidrSurface() {
@@ -27,16 +44,28 @@ LidrSurface lidrSurface() {
     s.normal = normalize(vNormal);
     if (!gl_FrontFacing) s.normal = -s.normal;  // two-sided: the back of a wall is lit from its own side
     s.toEye = normalize(uEyePosition - vWorldPos);
-    s.albedo = uMaterialDiffuse;
-    if (uMaterialHasTexture > 0.5) s.albedo *= texture2D(uMaterialTexture, vTexCoord).rgb;
+    vec3 base = uMaterialDiffuse;
+    if (uMaterialHasTexture > 0.5) base *= lidrBaseColorTexel(vTexCoord).rgb;
+    s.albedo = base * (1.0 - uMaterialMetallic);
+    s.f0 = mix(vec3(0.04), base, uMaterialMetallic);
+    s.alpha = max(uMaterialRoughness * uMaterialRoughness, 0.01);
     return s;
 }
 
 // Ambient light plus the material's own emission: the light-independent term every mode adds once per pixel.
+// The ambient is uniform radiance from every direction: the diffuse part integrates to ambient x albedo, the
+// specular part to ambient x (F0 A + B), Karis' analytic fit of the split-sum environment BRDF.
 vec3 lidrAmbient(LidrSurface s) {
-    return uAmbient * s.albedo + uMaterialEmissive;
+    float nDotV = clamp(dot(s.normal, s.toEye), 0.0, 1.0);
+    float roughness = sqrt(s.alpha);
+    vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
+    float a004 = min(r.x * r.x, exp2(-9.28 * nDotV)) * r.x + r.y;
+    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) + uMaterialEmissive;
 }
 
+// One point light: BRDF x pi x colour x attenuation x n.l. The pi makes a light's colour what it gives a white
+// Lambert surface facing it at its centre (as lidr's lights did before the BRDF had its 1/pi; doc/colour.md).
 vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
     vec3 toLight = posRadius.xyz - s.position;
     float d2 = dot(toLight, toLight);
@@ -44,8 +73,19 @@ vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
     float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
     if (attenuation <= 0.0) return vec3(0.0);
     vec3 L = toLight * inversesqrt(max(d2, 1e-12));
-    float nDotL = max(dot(s.normal, L), 0.0);
+    float nDotL = dot(s.normal, L);
+    if (nDotL <= 0.0) return vec3(0.0);
     vec3 H = normalize(L + s.toEye);
-    float specular = nDotL > 0.0 ? pow(max(dot(s.normal, H), 0.0), uMaterialShininess) : 0.0;
-    return (s.albedo * nDotL + uMaterialSpecular * specular) * lightColor * attenuation;
+    float nDotV = max(dot(s.normal, s.toEye), 1e-4);
+    float nDotH = max(dot(s.normal, H), 0.0);
+    float vDotH = clamp(dot(s.toEye, H), 0.0, 1.0);  // above 1 by rounding (a light at the eye), pow() of a
+                                                     // negative base would be undefined: speckled NaN pixels
+    float a2 = s.alpha * s.alpha;
+    float denom = nDotH * nDotH * (a2 - 1.0) + 1.0;
+    float D = a2 / (LIDR_PI * denom * denom);
+    float visibility = 0.5 / (nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2));
+    float fresnelWeight = pow(1.0 - vDotH, 5.0);
+    vec3 F = s.f0 + (1.0 - s.f0) * fresnelWeight;
+    vec3 brdf = (1.0 - F) * s.albedo * (1.0 / LIDR_PI) + F * (D * visibility);
+    return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
 }

@@ -1,5 +1,6 @@
 #version 120
-// Multi-pass forward, pass 0: the ambient term alone. The per-light passes add onto it.
+// Multi-pass forward, pass 0: the ambient term alone, linear. The per-light passes add onto it; the output
+// transform runs over the finished sum (output_encode.frag).
 #include "shading.glsl"
 
 void main() {

@@ -17,5 +17,5 @@ void main() {
         lidrFetchLight(index, posRadius, lightColor);
         color += lidrShadeLight(s, posRadius, lightColor);
     }
-    gl_FragColor = vec4(color, uMaterialOpacity);
+    gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

@@ -1,6 +1,6 @@
 #version 120
-// LIDR forward pass, the built-in material: lidr's Blinn-Phong (shading.glsl) summed over this pixel's light
-// list, read with the same API a user material shader has (lidr_lights.glsl; LidrOptions::materialShader).
+// LIDR forward pass, the built-in material: lidr's shading (shading.glsl) summed over this pixel's light
+// list, then the output transform, read with the same API a user material shader has (lidr_lights.glsl; LidrOptions::materialShader).
 #include "lidr_depth.glsl"
 #include "shading.glsl"
 #include "lidr_lights.glsl"
@@ -15,5 +15,5 @@ void main() {
         if (!lidrNextLight(light)) break;
         color += lidrShadeLight(s, vec4(light.position, light.radius), light.color);
     }
-    gl_FragColor = vec4(color, uMaterialOpacity);
+    gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

@@ -13,7 +13,7 @@
 // (Mesa unrolls short constant loops), a SIMD rasteriser runs every iteration under a mask however short the
 // pixel's list: budget 4 cost twice budget 8 on llvmpipe (doc/benchmarks.md). GLSL ES 1.00 wants a constant.
 // Attenuation is the material's business: lidr's own is clamp(1 - d^2 / r^2, 0, 1) (lidrShadeLight in
-// shading.glsl, which also gives the surface varyings, material uniforms and Blinn-Phong).
+// shading.glsl, which also gives the surface varyings, material uniforms and the BRDF).
 // lidr fills uInvViewportSize, the index textures uIndexTex0.. and the light table (light_table.glsl); the
 // packing scheme's unpack file stands in for "lidr_unpack.glsl" (it defines LIDR_SLOTS, lidrUnpackBegin(uv),
 // lidrUnpackNext() returning the index as (low byte, high byte), and, where the first empty slot ends the list,

@@ -22,6 +22,7 @@
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #include <tiny_gltf.h>
 
+#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/gltf_validator.h"
@@ -404,6 +405,61 @@ private:
 
     // ---- materials -----------------------------------------------------------------------------------------
 
+    // The decoded image of glTF texture `texture`; fails naming `what` for an index out of range or an image
+    // that is missing or not decoded to RGBA8.
+    const tinygltf::Image& textureImage(int texture, const std::string& what) {
+        if (texture < 0 || size_t(texture) >= model_.textures.size())
+            fail(what + " " + std::to_string(texture) + " out of range (" + std::to_string(model_.textures.size()) +
+                 " textures)");
+        const int source = model_.textures[size_t(texture)].source;
+        if (source < 0 || size_t(source) >= model_.images.size())
+            fail(what + ": texture " + std::to_string(texture) + " has no image (source " + std::to_string(source) + ")");
+        const tinygltf::Image& image = model_.images[size_t(source)];
+        if (image.width <= 0 || image.height <= 0 || image.image.size() != size_t(image.width) * size_t(image.height) * 4) {
+            const auto failure = imageFailures_.find(source);  // the file and the decoder's reason, where known
+            fail(what + ": " + (failure != imageFailures_.end() ? failure->second
+                                                                : "image " + std::to_string(source) + " was not loaded"));
+        }
+        return image;
+    }
+
+    // The mean RGB of a texture's texels, sRGB-decoded first for colour textures (linear data otherwise).
+    glm::dvec3 textureMean(int texture, const std::string& what, bool srgb) {
+        const tinygltf::Image& image = textureImage(texture, what);
+        glm::dvec3 sum(0.0);
+        for (size_t i = 0; i < image.image.size(); i += 4)
+            for (int c = 0; c < 3; ++c) {
+                const double v = image.image[i + size_t(c)] / 255.0;
+                sum[c] += srgb ? srgbToLinear(v) : v;
+            }
+        return sum / double(image.image.size() / 4);
+    }
+
+    // lidr samples every texture with REPEAT and trilinear filtering: another wrap or filter is a warning.
+    void warnSampler(int texture, const std::string& what) {
+        const int sampler = model_.textures[size_t(texture)].sampler;
+        if (sampler < 0 || size_t(sampler) >= model_.samplers.size()) return;
+        const tinygltf::Sampler& s = model_.samplers[size_t(sampler)];
+        const int repeat = 10497, nearest = 9728, nearestMipmapNearest = 9984;
+        if (s.wrapS != repeat || s.wrapT != repeat)
+            warn(what + ": sampler wrap " + std::to_string(s.wrapS) + " / " + std::to_string(s.wrapT) +
+                 " is drawn as REPEAT");
+        if (s.magFilter == nearest || s.minFilter == nearest || s.minFilter == nearestMipmapNearest)
+            warn(what + ": sampler's nearest filtering is drawn trilinear");
+    }
+
+    // KHR_materials_emissive_strength: the emissive factor times emissiveStrength (>= 0).
+    void readEmissiveStrength(const tinygltf::Material& source, const std::string& name, Material& material) {
+        const auto it = source.extensions.find("KHR_materials_emissive_strength");
+        if (it == source.extensions.end()) return;
+        const tinygltf::Value& strength = it->second.Get("emissiveStrength");
+        if (!strength.IsNumber() && !strength.IsInt()) return;  // the extension's default, 1
+        const double v = strength.GetNumberAsDouble();
+        if (!(std::isfinite(v) && v >= 0.0))
+            fail(name + ": KHR_materials_emissive_strength emissiveStrength must be finite and >= 0, got " + std::to_string(v));
+        material.emissive *= float(v);
+    }
+
     int materialFor(int gltfMaterial) {
         if (overrideMaterial_ >= 0) return overrideMaterial_;
         if (gltfMaterial < 0) return findOrAddDefaultMaterial(scene_);
@@ -427,34 +483,48 @@ private:
         for (size_t c = 0; c < 3 && c < source.emissiveFactor.size(); ++c) material.emissive[int(c)] = float(source.emissiveFactor[c]);
         if (!(isFinite(material.emissive) && glm::all(glm::greaterThanEqual(material.emissive, glm::vec3(0.0f)))))
             fail(name + ": emissiveFactor must be finite and >= 0, got " + str(material.emissive));
-        // Blinn-Phong from metallic-roughness: the specular colour F0 (0.04 for dielectrics, the base colour for
-        // metals) fading out with roughness, and the exponent whose lobe width matches the roughness.
-        material.specular = glm::mix(glm::vec3(0.04f), glm::vec3(base), metallic) * (1.0f - roughness) * (1.0f - roughness);
-        const float r = std::max(roughness, 0.01f);
-        material.shininess = glm::clamp(2.0f / (r * r * r * r) - 2.0f, 1.0f, 1024.0f);
+        // lidr's BRDF is glTF's: the factors as they are (specular and shininess stay unused defaults)
+        material.metallicRoughness = true;
+        material.metallic = metallic;
+        material.roughness = roughness;
         if (source.alphaMode == "BLEND") {
             material.opacity = base.a;
         } else if (source.alphaMode == "MASK") {
             warn(name + ": alphaMode MASK is drawn opaque (lidr has no alpha test; alphaCutoff is not used)");
         }
+        readEmissiveStrength(source, name, material);
+        // Textures lidr does not draw per pixel yet (doc/colour.md, "glTF materials"): each is drawn as its mean
+        // (the factor times the texture's average), never as the factor alone, with a warning naming it. An
+        // emissive factor of 1 without its texture would light every pixel of the material fully.
+        if (source.emissiveTexture.index >= 0) {
+            const glm::dvec3 mean = textureMean(source.emissiveTexture.index, name + ": emissive texture", true);
+            material.emissive *= glm::vec3(mean);
+            warn(name + ": emissiveTexture is drawn as its mean colour (" + str(glm::vec3(mean)) +
+                 ") times emissiveFactor; lidr does not read emissive textures per pixel yet");
+        }
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            // glTF: roughness in G, metallic in B, linear data
+            const glm::dvec3 mean = textureMean(pbr.metallicRoughnessTexture.index, name + ": metallic-roughness texture", false);
+            material.roughness = glm::clamp(roughness * float(mean.g), 0.0f, 1.0f);
+            material.metallic = glm::clamp(metallic * float(mean.b), 0.0f, 1.0f);
+            warn(name + ": metallicRoughnessTexture is drawn as its mean (roughness x " + str(float(mean.g)) +
+                 ", metallic x " + str(float(mean.b)) + "); lidr does not read it per pixel yet");
+        }
+        if (source.normalTexture.index >= 0)
+            warn(name + ": normalTexture is not drawn (lidr shades with the vertex normals)");
+        if (source.occlusionTexture.index >= 0)
+            warn(name + ": occlusionTexture is not drawn (no ambient occlusion)");
         const int texture = pbr.baseColorTexture.index;
         if (texture >= 0) {
-            if (size_t(texture) >= model_.textures.size())
-                fail(name + ": base colour texture " + std::to_string(texture) + " out of range (" +
-                     std::to_string(model_.textures.size()) + " textures)");
             if (pbr.baseColorTexture.texCoord != 0)
                 warn(name + ": base colour texture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
                      "; lidr reads TEXCOORD_0");
+            if (pbr.baseColorTexture.extensions.count("KHR_texture_transform"))
+                warn(name + ": base colour texture's KHR_texture_transform is not applied");
+            warnSampler(texture, name + ": base colour texture");
+            const tinygltf::Image& image = textureImage(texture, name + ": base colour texture");
             const int source = model_.textures[size_t(texture)].source;
-            if (source < 0 || size_t(source) >= model_.images.size())
-                fail(name + ": texture " + std::to_string(texture) + " has no image (source " + std::to_string(source) + ")");
-            const tinygltf::Image& image = model_.images[size_t(source)];
             auto decoded = std::make_shared<ImageRGBA8>(image.width, image.height);
-            if (image.image.size() != decoded->pixels.size()) {
-                const auto failure = imageFailures_.find(source);
-                fail(name + ": " + (failure != imageFailures_.end() ? failure->second
-                                                                    : "image " + std::to_string(source) + " was not loaded"));
-            }
             decoded->pixels = image.image;
             material.diffuseImage = std::move(decoded);
             material.diffuseTexture = image.uri.rfind("data:", 0) == 0 || image.uri.empty()

@@ -15,6 +15,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/mesh_split.h"
@@ -240,6 +241,10 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             color("Kd", material.diffuse);
             color("Ks", material.specular);
             color("Ke", material.emissive);
+            // MTL colours are display values (sRGB-encoded, as colour pickers give them); lidr shades in linear light.
+            material.diffuse = displayColourToLinear(material.diffuse);
+            material.specular = displayColourToLinear(material.specular);
+            material.emissive = displayColourToLinear(material.emissive);
             if (!std::isfinite(material.shininess))
                 fail("material '" + source.name + "': Ns must be finite, got " + std::to_string(source.shininess));
             if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))

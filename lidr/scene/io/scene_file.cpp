@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
@@ -122,7 +123,8 @@ private:
     }
 
     void readMaterial(const Field& field) {
-        field.expectObject({"name", "diffuse", "texture", "specular", "shininess", "opacity", "emissive"});
+        field.expectObject({"name", "diffuse", "texture", "specular", "shininess", "opacity", "emissive", "metallic",
+                            "roughness"});
         Material material;
         material.name = field["name"].text();
         if (material.name.empty()) field["name"].fail("must not be empty");
@@ -135,11 +137,30 @@ private:
         }
         if (field.has("specular")) material.specular = color(field["specular"]);
         if (field.has("emissive")) material.emissive = color(field["emissive"]);
+        // Material colours are display values (sRGB-encoded, defaults included); lidr shades in linear light.
+        // Lights and the ambient are linear light already (doc/scene-format.md).
+        material.diffuse = displayColourToLinear(material.diffuse);
+        material.specular = displayColourToLinear(material.specular);
+        material.emissive = displayColourToLinear(material.emissive);
         if (field.has("shininess")) material.shininess = positive(field["shininess"]);
         if (field.has("opacity")) {
             material.opacity = field["opacity"].number();
             if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
                 field["opacity"].fail("must be in [0, 1], got " + str(material.opacity));
+        }
+        // metallic / roughness: the material is given in the BRDF's own terms (diffuse = base colour);
+        // specular and shininess then have nothing to say (doc/colour.md, "Materials").
+        if (field.has("metallic") || field.has("roughness")) {
+            if (field.has("specular") || field.has("shininess"))
+                field.fail("give either metallic / roughness or specular / shininess, not both");
+            material.metallicRoughness = true;
+            material.roughness = 0.5f;
+            for (const char* key : {"metallic", "roughness"}) {
+                if (!field.has(key)) continue;
+                const float v = field[key].number();
+                if (!(v >= 0.0f && v <= 1.0f)) field[key].fail("must be in [0, 1], got " + str(v));
+                (std::string(key) == "metallic" ? material.metallic : material.roughness) = v;
+            }
         }
         scene_.materials.push_back(material);
     }

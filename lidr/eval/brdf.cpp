@@ -1,0 +1,86 @@
+#include "lidr/eval/brdf.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lidr {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+double alphaOf(const BrdfSurface& s) { return std::max(s.roughness * s.roughness, 0.01); }  // as shading.glsl
+glm::dvec3 albedoOf(const BrdfSurface& s) { return s.baseColor * (1.0 - s.metallic); }
+glm::dvec3 f0Of(const BrdfSurface& s) { return glm::mix(glm::dvec3(0.04), s.baseColor, s.metallic); }
+}  // namespace
+
+BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, const glm::dvec3& normal,
+                        const glm::dvec3& eye) {
+    const MetallicRoughness m = metallicRoughnessOf(material);
+    BrdfSurface s;
+    s.position = position;
+    s.normal = glm::normalize(normal);
+    s.toEye = glm::normalize(eye - position);
+    s.baseColor = glm::dvec3(m.baseColor);
+    s.metallic = m.metallic;
+    s.roughness = m.roughness;
+    return s;
+}
+
+glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& L) {
+    const double nDotL = glm::dot(s.normal, L);
+    if (nDotL <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 H = glm::normalize(L + s.toEye);
+    const double nDotV = std::max(glm::dot(s.normal, s.toEye), 1e-4);
+    const double nDotH = std::max(glm::dot(s.normal, H), 0.0);
+    const double vDotH = std::clamp(glm::dot(s.toEye, H), 0.0, 1.0);
+    const double alpha = alphaOf(s), a2 = alpha * alpha;
+    const double denom = nDotH * nDotH * (a2 - 1.0) + 1.0;
+    const double D = a2 / (kPi * denom * denom);
+    const double visibility = 0.5 / (nDotL * std::sqrt(nDotV * nDotV * (1.0 - a2) + a2) +
+                                     nDotV * std::sqrt(nDotL * nDotL * (1.0 - a2) + a2));
+    const glm::dvec3 f0 = f0Of(s);
+    const glm::dvec3 F = f0 + (1.0 - f0) * std::pow(1.0 - vDotH, 5.0);
+    return (1.0 - F) * albedoOf(s) / kPi + F * (D * visibility);
+}
+
+glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light) {
+    const glm::dvec3 toLight = glm::dvec3(light.position) - s.position;
+    const double d2 = glm::dot(toLight, toLight), r = double(light.radius);
+    const double attenuation = std::clamp(1.0 - d2 / (r * r), 0.0, 1.0);
+    if (attenuation <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 L = toLight / std::sqrt(std::max(d2, 1e-24));
+    const double nDotL = glm::dot(s.normal, L);
+    if (nDotL <= 0.0) return glm::dvec3(0.0);
+    return evaluateBrdf(s, L) * (kPi * nDotL * attenuation) * glm::dvec3(light.color);
+}
+
+glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient) {
+    const double nDotV = std::clamp(glm::dot(s.normal, s.toEye), 0.0, 1.0);
+    const double roughness = std::sqrt(alphaOf(s));
+    const glm::dvec4 r = roughness * glm::dvec4(-1.0, -0.0275, -0.572, 0.022) + glm::dvec4(1.0, 0.0425, 1.04, -0.04);
+    const double a004 = std::min(r.x * r.x, std::exp2(-9.28 * nDotV)) * r.x + r.y;
+    const glm::dvec2 ab = glm::dvec2(-1.04, 1.04) * a004 + glm::dvec2(r.z, r.w);
+    return ambient * (albedoOf(s) + f0Of(s) * ab.x + ab.y);
+}
+
+glm::dvec3 directionalAlbedo(const BrdfSurface& s, int steps) {
+    // Midpoint rule in (theta, phi) about the normal, d(omega) = sin(theta) d(theta) d(phi): uniform in theta
+    // so that a narrow lobe gets steps anywhere in the hemisphere.
+    const glm::dvec3 n = s.normal;
+    const glm::dvec3 t = glm::normalize(std::abs(n.x) < 0.9 ? glm::cross(n, glm::dvec3(1, 0, 0)) : glm::cross(n, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 b = glm::cross(n, t);
+    const int phiSteps = 4 * steps;
+    const double dTheta = 0.5 * kPi / steps, dPhi = 2.0 * kPi / phiSteps;
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < steps; ++i) {
+        const double theta = (i + 0.5) * dTheta, cosTheta = std::cos(theta), sinTheta = std::sin(theta);
+        for (int j = 0; j < phiSteps; ++j) {
+            const double phi = (j + 0.5) * dPhi;
+            const glm::dvec3 L = cosTheta * n + sinTheta * (std::cos(phi) * t + std::sin(phi) * b);
+            sum += evaluateBrdf(s, L) * (cosTheta * sinTheta);
+        }
+    }
+    return sum * (dTheta * dPhi);
+}
+
+}  // namespace lidr

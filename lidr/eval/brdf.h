@@ -1,0 +1,30 @@
+#pragma once
+// The CPU model of lidr's shading (shaders/common/shading.glsl) in double precision: the glTF 2.0
+// metallic-roughness BRDF, lidr's point-light term and its ambient term. Tests check GPU pixels against it and
+// bound its energy (white furnace).
+#include <glm/glm.hpp>
+
+#include "lidr/scene/scene.h"
+
+namespace lidr {
+
+struct BrdfSurface {
+    glm::dvec3 position{0.0}, normal{0.0, 1.0, 0.0}, toEye{0.0, 1.0, 0.0};  // unit normal and toEye
+    glm::dvec3 baseColor{1.0};
+    double metallic = 0.0, roughness = 1.0;
+};
+
+// The surface of `material` (metallicRoughnessOf) at a point seen from `eye`; no texture.
+BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, const glm::dvec3& normal,
+                        const glm::dvec3& eye);
+// f(l, v): diffuse + specular, per colour channel (1/sr), for a unit direction towards the light.
+glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& toLight);
+// lidrShadeLight: f x pi x colour x saturate(1 - d^2 / r^2) x n.l.
+glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light);
+// lidrAmbient without the emission: ambient x (albedo + F0 A + B), Karis' environment-BRDF fit.
+glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient);
+// The integral of f x n.l over the hemisphere (the reflected fraction of light from every direction), by
+// numerical quadrature with `steps` x 4 steps: the white-furnace figure (<= 1 conserves energy).
+glm::dvec3 directionalAlbedo(const BrdfSurface& s, int steps = 256);
+
+}  // namespace lidr
