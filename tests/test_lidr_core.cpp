@@ -152,7 +152,9 @@ TEST_CASE("the sphere test marks exactly the lights that reach each surface poin
     const int batch = LightVolumePass(testGl(), VolumeTest::Sphere).batchSize();
     CHECK(batch >= 16);
     CHECK(rs.stats.volumeDrawCalls == (rs.stats.drawnLights + batch - 1) / batch);
-    CHECK(re.stats.volumeDrawCalls == 4L * rs.stats.drawnLights);
+    // Its own drawn lights: the sphere test also leaves out lights that reach no tile's surfaces (tile culling).
+    CHECK(re.stats.volumeDrawCalls == 4L * re.stats.drawnLights);
+    CHECK(rs.stats.drawnLights <= re.stats.drawnLights);
 }
 
 TEST_CASE("unlit pixels hold zero bytes and decode to the null light", "[lidr]") {
