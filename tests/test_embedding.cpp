@@ -88,6 +88,10 @@ StateList readGlState() {
     ints("read buffer", GL_READ_BUFFER);
     ints("array buffer", GL_ARRAY_BUFFER_BINDING);
     ints("element array buffer", GL_ELEMENT_ARRAY_BUFFER_BINDING);
+    if (!testGl().gles) {  // pixel buffers: GL 2.1 core, not in ES 2.0
+        ints("pixel pack buffer", GL_PIXEL_PACK_BUFFER_BINDING);
+        ints("pixel unpack buffer", GL_PIXEL_UNPACK_BUFFER_BINDING);
+    }
     for (GLuint a = 0; a < 8; ++a) {
         for (GLenum e : {GL_VERTEX_ATTRIB_ARRAY_ENABLED, GL_VERTEX_ATTRIB_ARRAY_SIZE, GL_VERTEX_ATTRIB_ARRAY_TYPE,
                          GL_VERTEX_ATTRIB_ARRAY_STRIDE, GL_VERTEX_ATTRIB_ARRAY_NORMALIZED,
@@ -143,6 +147,10 @@ struct CallerState {
         }
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+        if (!testGl().gles) {
+            glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+            glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
         glUseProgram(0);
@@ -229,6 +237,10 @@ struct CallerState {
         glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, 4, nullptr);
         glEnableVertexAttribArray(2);
         glBindBuffer(GL_ARRAY_BUFFER, elements.id());  // a different buffer bound than the attributes use
+        // Pixel buffers the program reads back into and uploads from: lidr's read-backs and light-table uploads
+        // would go to and come from them (a GL error, or the wrong light table).
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, vertices.id());
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, elements.id());
         REQUIRE(glGetError() == GL_NO_ERROR);
     }
 };

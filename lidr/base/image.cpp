@@ -60,7 +60,8 @@ ImageFloat readPfm(const std::string& path) {
 }
 
 namespace {
-// glReadPixels into a tightly packed buffer whatever pack state the program set; its pack state comes back.
+// glReadPixels into a tightly packed buffer whatever pack state (and pixel-pack buffer) the program set; both come
+// back.
 void readTight(int width, int height, GLenum format, GLenum type, GLint alignment, void* out, const char* where) {
     GLint oldAlignment = 4, oldRowLength = 0, oldSkipRows = 0, oldSkipPixels = 0;
     if (currentContextIsGles()) {  // OpenGL ES 2.0 packs by alignment alone (no row length or skips)
@@ -71,6 +72,10 @@ void readTight(int width, int height, GLenum format, GLenum type, GLint alignmen
         checkGl(where);
         return;
     }
+    // A pixel-pack buffer the program left bound (GL 2.1 core) would take the pixels instead of `out`.
+    GLint oldPackBuffer = 0;
+    glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &oldPackBuffer);
+    if (oldPackBuffer != 0) glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     glGetIntegerv(GL_PACK_ALIGNMENT, &oldAlignment);
     glGetIntegerv(GL_PACK_ROW_LENGTH, &oldRowLength);
     glGetIntegerv(GL_PACK_SKIP_ROWS, &oldSkipRows);
@@ -84,6 +89,7 @@ void readTight(int width, int height, GLenum format, GLenum type, GLint alignmen
     glPixelStorei(GL_PACK_ROW_LENGTH, oldRowLength);
     glPixelStorei(GL_PACK_SKIP_ROWS, oldSkipRows);
     glPixelStorei(GL_PACK_SKIP_PIXELS, oldSkipPixels);
+    if (oldPackBuffer != 0) glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(oldPackBuffer));
     checkGl(where);
 }
 }  // namespace

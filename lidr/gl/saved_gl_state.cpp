@@ -95,6 +95,8 @@ void SavedGlState::save() {
         glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_[3]);
         glGetIntegerv(GL_POLYGON_MODE, polygonMode_);
         logicOp_ = glIsEnabled(GL_COLOR_LOGIC_OP);
+        glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pixelPackBuffer_);  // GL 2.1 core; ES 2.0 has none
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &pixelUnpackBuffer_);
     }
     alphaToCoverage_ = glIsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glGetIntegerv(GL_VIEWPORT, viewport_);
@@ -165,6 +167,9 @@ void SavedGlState::save() {
         for (GLenum e : {GL_PACK_ROW_LENGTH, GL_UNPACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS,
                          GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS})
             glPixelStorei(e, 0);
+        // A program's pixel buffers would take lidr's read-backs and feed its uploads (the light table).
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
         glDisable(GL_COLOR_LOGIC_OP);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     }
@@ -208,6 +213,8 @@ void SavedGlState::restore() const {
         glPixelStorei(GL_PACK_SKIP_PIXELS, skip_[1]);
         glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_[2]);
         glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_[3]);
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, pixelPackBuffer_);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, pixelUnpackBuffer_);
         // GL_POLYGON_MODE reads front and back (compatibility profile); they are set together here.
         glPolygonMode(GL_FRONT, GLenum(polygonMode_[0]));
         glPolygonMode(GL_BACK, GLenum(polygonMode_[1]));

@@ -54,7 +54,7 @@ private:
     GLboolean colorMask_[4] = {1, 1, 1, 1};
     GLint cullFaceMode_ = 0, frontFace_ = 0;
     GLint drawFramebuffer_ = 0, readFramebufferBinding_ = 0, renderbuffer_ = 0;
-    GLint arrayBuffer_ = 0, elementArrayBuffer_ = 0;
+    GLint arrayBuffer_ = 0, elementArrayBuffer_ = 0, pixelPackBuffer_ = 0, pixelUnpackBuffer_ = 0;
     Attribute attribute_[kMaxAttributes];
 };
 
