@@ -22,7 +22,8 @@ last = {}  # pass -> instructions of its last dump (the second frame)
 order = []
 for f in sorted(glob.glob(os.path.join(sys.argv[1], "cg.out*")), key=lambda p: int((re.findall(r"\.(\d+)$", p) or [10**9])[0])):
     desc, total = None, None
-    for line in open(f, errors="replace"):
+    for line in open(f, "rb"):
+        line = line.decode("utf-8", "replace")
         if line.startswith("desc: Trigger: Client Request: lidr-pass "):
             desc = line.split("lidr-pass ", 1)[1].strip()
         elif line.startswith("summary:") or line.startswith("totals:"):

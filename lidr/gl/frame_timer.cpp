@@ -97,7 +97,10 @@ void FrameTimer::end() {
         glFinish();
         cpuMs_.push_back(nowMilliseconds() - cpuStart_);
 #ifdef LIDR_CALLGRIND_PASSES
-        if (RUNNING_ON_VALGRIND) CALLGRIND_DUMP_STATS_AT(("lidr-pass " + p.pass).c_str());
+        if (RUNNING_ON_VALGRIND) {
+            const std::string description = "lidr-pass " + p.pass;  // alive while valgrind reads it
+            CALLGRIND_DUMP_STATS_AT(description.c_str());
+        }
 #endif
     }
     if (p.fragments >= 0) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
