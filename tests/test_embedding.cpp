@@ -300,7 +300,7 @@ TEST_CASE("every mode's render() and present() leave the caller's GL state as fo
 // stays); the first frame of a renderer built afterwards must leave no GL error and the attribute as the
 // program left it: no buffer, disabled, and, these contexts having client-side arrays, the offset as it was.
 // (WebGL has none and refused that offset back; SavedGlState puts it back as 0 there, which web.chromium checks.)
-TEST_CASE("a frame after the caller deleted the buffer its attribute named leaves no GL error and the attribute as left",
+TEST_CASE("a frame after the caller deleted the buffer its attribute named: no GL error, the attribute as left",
           "[embed]") {
     testContext();
     const Scene scene = litFloorScene();
