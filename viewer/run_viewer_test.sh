@@ -103,7 +103,7 @@ done
 sed "s|@OUT@|$out|g" "$here/viewer_files.script" > "$out/files.script"
 "${x[@]}" "$viewer" "${size[@]}" --paused --out "$out" --script "$out/files.script" >"$out/files.log" 2>&1 ||
   fail "dropping a file: $(tail -5 "$out/files.log")"
-grep -q "open $out/broken.glb refused: .*broken.glb: malformed glTF" "$out/files.log" ||
+grep -q "open $out/broken.glb refused: .*broken.glb: GLB header: the file has 4 bytes" "$out/files.log" ||
   fail "the broken file's refusal names no cause: $(grep refused "$out/files.log")"
 echo "viewer.script: a dropped .glb renders as with --scene in 3 modes; reload and refusals checked"
 

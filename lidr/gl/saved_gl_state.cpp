@@ -17,7 +17,7 @@ namespace {
 // What the current context has, from its version and extension strings (GLEW's flags cannot say: with
 // glewExperimental they report whatever entry points the driver exports, e.g. GL 4.0 on softpipe's 3.3).
 struct Features {
-    bool gles, vao, readFramebuffer, depthClamp, sampleShading, multisampleTexture;
+    bool gles, vao, readFramebuffer, depthClamp, sampleShading, multisampleTexture, clientArrays;
 };
 
 bool hasExtension(const char* list, const char* name) {
@@ -36,6 +36,9 @@ Features currentFeatures() {
     const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
     Features f;
     f.gles = currentContextIsGles();
+    // WebGL has no client-side vertex arrays; its GL_VERSION names it ("WebGL 1.0 ...", which emscripten reports
+    // as "OpenGL ES 2.0 (WebGL 1.0 ...)").
+    f.clientArrays = !(version && std::strstr(version, "WebGL"));
     if (f.gles) {  // OpenGL ES 2.0: lidr binds no VAO and no read framebuffer there, so neither is saved
         f.vao = f.readFramebuffer = f.sampleShading = f.multisampleTexture = false;
         f.depthClamp = hasExtension(ext, "GL_EXT_depth_clamp");
@@ -59,6 +62,7 @@ SavedGlState::SavedGlState() {
     depthClamp_ = f.depthClamp;
     sampleShading_ = f.sampleShading;
     multisampleTex_ = f.multisampleTexture;
+    clientArrays_ = f.clientArrays;
     save();
     StateCache::current().invalidate();  // the caller's state is unknown to lidr's cache
 }
@@ -185,7 +189,12 @@ void SavedGlState::restore() const {
     for (int i = 0; i < attributes_; ++i) {
         const Attribute& a = attribute_[i];
         glBindBuffer(GL_ARRAY_BUFFER, a.buffer);
-        glVertexAttribPointer(i, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, a.stride, a.pointer);
+        // No buffer and no client-side arrays (WebGL): the caller's buffer was deleted while the attribute named
+        // it (deleting a buffer unbinds it from the current attributes, the offset stays). WebGL refuses an offset
+        // without a buffer (GL_INVALID_OPERATION), and one into a buffer that is gone means nothing: put back
+        // with none, as WebGL allows. (Contexts with client-side arrays take the pointer as it was.)
+        const void* pointer = a.buffer == 0 && !clientArrays_ ? nullptr : a.pointer;
+        glVertexAttribPointer(i, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, a.stride, pointer);
         a.enabled ? glEnableVertexAttribArray(i) : glDisableVertexAttribArray(i);
     }
     glBindBuffer(GL_ARRAY_BUFFER, arrayBuffer_);

@@ -32,6 +32,8 @@ private:
 
     // gles_: OpenGL ES 2.0 has no row length / skip pixel store, polygon mode or logic op to save.
     bool gles_ = false;
+    // clientArrays_: an attribute pointer without a buffer is client memory; false in WebGL, which has none.
+    bool clientArrays_ = true;
     bool vao_ = false, readFramebuffer_ = false, depthClamp_ = false, sampleShading_ = false, multisampleTex_ = false;
     int units_ = 0, attributes_ = 0;
     GLint vertexArray_ = 0, program_ = 0, activeTexture_ = 0;
