@@ -115,7 +115,9 @@ TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volu
         CHECK(tiled.lidr.pixels == meshes.lidr.pixels);
         requireExactWithinBudget(tiled.evaluation, c.scene);
         // Tiles are used where the lights' pixel rectangles add up to a screen or more (LidrRenderer::kTileCullingMinArea).
-        if (std::string(c.scene) != "city-255") CHECK(tiled.stats.autoDecision.volumeAreaPerPixel >= 0.0);
+        // OpenGL ES keeps the volume meshes (no depth read-back).
+        if (testGl().gles) CHECK(tiled.stats.autoDecision.volumeAreaPerPixel < 0.0);
+        else if (std::string(c.scene) != "city-255") CHECK(tiled.stats.autoDecision.volumeAreaPerPixel >= 0.0);
         CHECK(meshes.stats.autoDecision.volumeAreaPerPixel < 0.0);
     }
 }
@@ -129,7 +131,7 @@ TEST_CASE("tile culling is skipped where the lights cover less than a screen", "
     requireExactWithinBudget(small.evaluation, "two small lights");
     for (int i = 0; i < 40; ++i) scene.lights.push_back(light(glm::vec3(-10.0f + 0.5f * float(i), 0.5f, 0.0f), 4.0f));
     const RenderResult many = renderAndEvaluate(scene, LidrOptions{});
-    CHECK(many.stats.autoDecision.volumeAreaPerPixel >= 0.0);
+    CHECK((many.stats.autoDecision.volumeAreaPerPixel >= 0.0) == !testGl().gles);  // ES: no depth read-back
     requireExactWithinBudget(many.evaluation, "42 large lights");
 }
 
@@ -149,6 +151,10 @@ TEST_CASE("tile-culled volumes rasterise at most 3x the true light-pixel pairs o
     for (size_t p = 0; p < truth.surface.size(); ++p)
         if (truth.surface[p]) pairs += truth.count(p);
     REQUIRE(pairs > 0);
+    if (testGl().gles) {  // OpenGL ES keeps the volume meshes: no depth read-back
+        CHECK(stats.autoDecision.volumeAreaPerPixel < 0.0);
+        return;
+    }
     const double quads = stats.autoDecision.volumeAreaPerPixel * double(scene.width) * double(scene.height);
     INFO("volume quad pixels " << quads << ", true light-pixel pairs " << pairs);
     CHECK(quads <= 3.0 * double(pairs));

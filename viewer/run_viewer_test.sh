@@ -96,7 +96,7 @@ command -v python3 >/dev/null || fail "python3 is needed to write the test model
 python3 "$here/../tests/make_glb.py" "$out/model.glb" >/dev/null || fail "tests/make_glb.py failed"
 printf 'glTF' > "$out/broken.glb"
 for mode in lidr tiled forward-multipass; do
-  printf 'set scatter 256\nwait 1\nexpect-stat lights == 256\ncapture %s\n' "$out/scene-$mode.png" > "$out/scene-$mode.script"
+  printf 'set scatter 256\nwait 1\nexpect-stat lights == 257\ncapture %s\n' "$out/scene-$mode.png" > "$out/scene-$mode.script"
   "${x[@]}" "$viewer" "${size[@]}" --paused --mode "$mode" --scene "$out/model.glb" --out "$out" \
     --script "$out/scene-$mode.script" >"$out/scene-$mode.log" 2>&1 || fail "--scene model.glb --mode $mode: $(tail -3 "$out/scene-$mode.log")"
 done

@@ -6,6 +6,7 @@
 #include "lidr/scene/default_scene.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/primitives.h"
+#include "lidr/scene/random.h"
 
 namespace lidr {
 
@@ -87,21 +88,7 @@ Scene makeHeavyScene(long totalTriangles, int width, int height, uint32_t seed) 
 
 namespace {
 
-// splitmix64, as the default scene's: the same stream on every platform.
-class SceneRandom {
-public:
-    explicit SceneRandom(uint64_t seed) : state_(seed) {}
-    float uniform() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return float((z ^ (z >> 31)) >> 40) * (1.0f / 16777216.0f);
-    }
-    float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-    uint64_t state_;
-};
+using SceneRandom = SplitMix64;
 
 // A half ring standing in a vertical plane: the arch between two pillar tops. `center` is the middle of the
 // span at the springing height, `along` the unit horizontal direction of the span, `across` the unit

@@ -9,6 +9,7 @@
 #include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/primitives.h"
+#include "lidr/scene/random.h"
 
 namespace lidr {
 
@@ -16,24 +17,7 @@ namespace {
 
 constexpr int maxLights = 65535;
 
-// splitmix64: tiny, and its output is the same everywhere (std:: distributions differ between libraries).
-class Random {
-public:
-    explicit Random(uint64_t seed) : state_(seed) {}
-
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    // Uniform in [0, 1): the top 24 bits, exactly representable as a float.
-    float uniform() { return float(next() >> 40) * (1.0f / 16777216.0f); }
-    float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-    uint64_t state_;
-};
+using Random = SplitMix64;
 
 // A fully bright colour of the given hue in [0, 1), saturation in [0, 1].
 glm::vec3 saturatedColor(float hue, float saturation) {

@@ -7,26 +7,12 @@
 #include <glm/gtc/constants.hpp>
 
 #include "lidr/base/error.h"
+#include "lidr/scene/random.h"
 
 namespace lidr {
 
 namespace {
 
-// splitmix64: small, seedable, the same on every platform (std:: distributions are not).
-class Stream {
-public:
-    explicit Stream(uint64_t seed) : state_(seed) {}
-    uint64_t next() {
-        uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }  // [0, 1)
-
-private:
-    uint64_t state_;
-};
 
 double triangleArea(const Mesh& m, size_t t) {
     const glm::dvec3 a(m.positions[m.indices[3 * t]]), b(m.positions[m.indices[3 * t + 1]]),
@@ -89,24 +75,24 @@ std::vector<PointLight> scatterLights(const Scene& scene, const LightScatterOpti
     if (triangles.empty()) throw Error("scattered lights: the scene has no triangle with an area to put them on");
     const float radius = o.radius > 0.0f ? o.radius : defaultScatterRadius(scene, o.count);
 
-    Stream random((uint64_t(o.seed) << 32) ^ 0x5C47u);
+    SplitMix64 random((uint64_t(o.seed) << 32) ^ 0x5C47u);
     std::vector<PointLight> lights;
     lights.reserve(size_t(o.count));
     for (int i = 0; i < o.count; ++i) {
-        const double pick = random.uniform() * total;
+        const double pick = random.uniformDouble() * total;
         const size_t k = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
         const auto [mi, t] = triangles[std::min(k, triangles.size() - 1)];
         const Mesh& m = scene.meshes[mi];
         const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
                         c = m.positions[m.indices[3 * t + 2]];
-        double u = random.uniform(), v = random.uniform();
+        double u = random.uniformDouble(), v = random.uniformDouble();
         if (u + v > 1.0) u = 1.0 - u, v = 1.0 - v;
         const glm::vec3 onSurface = a + float(u) * (b - a) + float(v) * (c - a);
         const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
         PointLight light;
         light.position = onSurface + normal * (0.25f * radius);
         light.radius = radius;
-        light.color = hueColor(random.uniform()) * o.intensity;
+        light.color = hueColor(random.uniformDouble()) * o.intensity;
         lights.push_back(light);
     }
     return lights;

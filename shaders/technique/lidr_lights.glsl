@@ -23,22 +23,28 @@
 // unpack files.
 // LIDR_NO_LIGHTS (a frame where no light reaches a visible surface): the same API over an empty list; no index
 // texture or light table is declared or read.
-#ifdef LIDR_NO_LIGHTS
-#define LIDR_MAX_LIGHTS 1
 struct LidrLight {
     vec3 position;
     float radius;
     vec3 color;
-    float index;
-    vec2 indexBytes;
+    float index;       // the light's index in the frame's light list plus one (0 is the null light); above 2048
+                       // not exact where fragments compute in fp16
+    vec2 indexBytes;   // the same as its two bytes (low, high): exact in any precision
 };
-void lidrBeginLights() {}
-bool lidrNextLight(out LidrLight light) {
+
+void lidrNoLight(out LidrLight light) {
     light.position = vec3(0.0);
     light.radius = 0.0;
     light.color = vec3(0.0);
     light.index = 0.0;
     light.indexBytes = vec2(0.0);
+}
+
+#ifdef LIDR_NO_LIGHTS
+#define LIDR_MAX_LIGHTS 1
+void lidrBeginLights() {}
+bool lidrNextLight(out LidrLight light) {
+    lidrNoLight(light);
     return false;
 }
 #else
@@ -57,15 +63,6 @@ uniform int uLidrMaxLights;  // LIDR_SLOTS
 #endif
 
 uniform vec2 uInvViewportSize;
-
-struct LidrLight {
-    vec3 position;
-    float radius;
-    vec3 color;
-    float index;       // the light's index in the frame's light list plus one (0 is the null light); above 2048
-                       // not exact where fragments compute in fp16
-    vec2 indexBytes;   // the same as its two bytes (low, high): exact in any precision
-};
 
 float lidrSlotsLeft;
 
@@ -86,11 +83,7 @@ void lidrSetLight(out LidrLight light, vec2 index) {
 }
 
 bool lidrNextLight(out LidrLight light) {
-    light.position = vec3(0.0);
-    light.radius = 0.0;
-    light.color = vec3(0.0);
-    light.index = 0.0;
-    light.indexBytes = vec2(0.0);
+    lidrNoLight(light);
 #ifdef LIDR_NULL_ENDS_LIST
     // One slot per call, no inner loop (unrolled inside the caller's loop it would run LIDR_SLOTS times).
     if (lidrSlotsLeft < 0.5) return false;
