@@ -39,6 +39,13 @@
 using namespace lidr;
 
 namespace {
+// A number with `digits` decimals, without touching the stream it is written to (its precision stays).
+std::string formatFixed(double v, int digits) {
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(digits) << v;
+    return o.str();
+}
+
 
 struct MedianTimes {
     std::vector<std::string> order;
@@ -394,8 +401,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         if (stats.volumePassSkipped)
             s << ", no light reaches a visible surface: no volume pass, no index read";
         else if (decision.volumeAreaPerPixel >= 0.0)
-            s << ", volume quads " << std::fixed << std::setprecision(2) << decision.volumeAreaPerPixel
-              << " px per pixel" << std::defaultfloat
+            s << ", volume quads " << formatFixed(decision.volumeAreaPerPixel, 2) << " px per pixel"
               << (decision.areaBound ? " (area-bound: tiled forward may be faster here; --mode auto times both)" : "");
         if (renderer.drawsTransparency())
             s << ", transparent volume pass "
