@@ -94,6 +94,21 @@ def full():
     return doc
 
 
+def instanced(primitives, corners, nodes):
+    """One triangle strip of `corners` u8 indices, `primitives` times in one mesh, instanced by `nodes` nodes:
+    a small file declaring nodes x primitives x (corners - 2) triangles."""
+    strip = bytes(i % 3 for i in range(corners))
+    data = POSITIONS + strip
+    doc = triangle()
+    doc["accessors"][1] = {"bufferView": 1, "componentType": 5121, "count": corners, "type": "SCALAR"}
+    doc["bufferViews"][1] = {"buffer": 0, "byteOffset": 36, "byteLength": corners}
+    doc["buffers"] = [{"byteLength": len(data), "uri": data_uri("application/octet-stream", data)}]
+    doc["meshes"][0]["primitives"] = [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 5}] * primitives
+    doc["nodes"] = [{"mesh": 0} for _ in range(nodes)]
+    doc["scenes"][0]["nodes"] = list(range(nodes))
+    return doc
+
+
 def glb(doc, bin_chunk=BIN, version=2, length_delta=0, json_type=b"JSON", bin_type=b"BIN\x00", swap=False,
         json_pad=b" ", extra=b"", byte_length=None, text=None):
     """A GLB of `doc` (its buffer 0 made the BIN chunk) or of JSON `text`, with the given defects."""
@@ -171,7 +186,9 @@ def build():
     ok("valid-strip", mutate(triangle, lambda d: set_at(d, "/meshes/0/primitives/0/mode", 5)))
     ok("valid-fan", mutate(triangle, lambda d: set_at(d, "/meshes/0/primitives/0/mode", 6)))
     ok("valid-no-indices", mutate(triangle, lambda d: remove_at(d, "/meshes/0/primitives/0/indices")))
-    ok("valid-zero-positions", mutate(triangle, lambda d: remove_at(d, "/accessors/0/bufferView")))
+    # Valid, but all-zero positions draw nothing: the primitive is left out with a warning (lights keep the file).
+    c.add("valid-zero-positions", mutate(lit, lambda d: remove_at(d, "/accessors/0/bufferView")), "warning",
+          "POSITION has no buffer view (all zeros)")
     ok("valid-external-bin", mutate(triangle, lambda d: set_at(d, "/buffers/0/uri", "tri.bin")), files={"tri.bin": BIN})
     ok("valid-external-bin-space", mutate(triangle, lambda d: set_at(d, "/buffers/0/uri", "my%20tri.bin")),
        files={"my tri.bin": BIN})
@@ -415,6 +432,17 @@ def build():
     c.error("accessor-offset-without-view", mutate(triangle, lambda d: (remove_at(d, "/accessors/0/bufferView"),
                                                                        set_at(d, "/accessors/0/byteOffset", 0))),
             "/accessors/0/byteOffset: must not be given without a bufferView")
+    # Amplification: a few hundred bytes that would expand into millions of triangles (fuzz.gltf found the first).
+    c.error("accessor-position-zeros-30m", mutate(triangle, lambda d: (
+        remove_at(d, "/accessors/0/bufferView"), set_at(d, "/accessors/0/count", 30000000),
+        remove_at(d, "/meshes/0/primitives/0/indices"))), "no triangles and no lights")
+    c.add("accessor-position-zeros-warning", mutate(lit, lambda d: (
+        remove_at(d, "/accessors/0/bufferView"), set_at(d, "/accessors/0/count", 30000000),
+        remove_at(d, "/meshes/0/primitives/0/indices"))), "warning", "POSITION has no buffer view (all zeros)")
+    c.error("accessor-indices-zeros-30m", mutate(triangle, lambda d: (
+        remove_at(d, "/accessors/1/bufferView"), set_at(d, "/accessors/1/count", 30000000))), "accessor[1] invalid bufferView")
+    c.error("nodes-instance-over-limit", instanced(primitives=1000, corners=1000, nodes=25),
+            "the scene would have at least 20")
     c.error("accessor-componenttype-bad", mutate(triangle, lambda d: set_at(d, "/accessors/0/componentType", 5124)),
             "/accessors/0/componentType: must be 5120, 5121, 5122, 5123, 5125 or 5126, got 5124")
     c.error("accessor-componenttype-missing", mutate(triangle, lambda d: remove_at(d, "/accessors/0/componentType")),

@@ -120,6 +120,7 @@ public:
             for (size_t i = 0; i < model_.nodes.size(); ++i)
                 if (!isChild[i]) roots.push_back(int(i));
         }
+        checkInstancedTriangles(roots);
         const size_t trianglesBefore = scene_.triangleCount();
         for (int root : roots) visit(root, transform_, 0);
         if (scene_.triangleCount() == trianglesBefore && contents_.lights == 0) fail("no triangles and no lights");
@@ -165,6 +166,42 @@ private:
                 glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]))));
         if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
         return m;
+    }
+
+    // Triangles one primitive declares (its index or position count by mode), from the accessors alone.
+    size_t declaredTriangles(const tinygltf::Primitive& primitive) const {
+        const auto position = primitive.attributes.find("POSITION");
+        const int accessor = primitive.indices >= 0 ? primitive.indices
+                             : position != primitive.attributes.end() ? position->second : -1;
+        if (accessor < 0 || size_t(accessor) >= model_.accessors.size()) return 0;
+        const size_t corners = model_.accessors[size_t(accessor)].count;
+        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+        return mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners < 2 ? 0 : corners - 2;
+    }
+
+    // Before anything is expanded: a small file can instance one mesh from many nodes, so the scene's triangle
+    // total is summed over the node tree from the accessors' counts and checked against the limit first.
+    void checkInstancedTriangles(const std::vector<int>& roots) const {
+        std::vector<size_t> meshTriangles(model_.meshes.size(), 0);
+        for (size_t m = 0; m < model_.meshes.size(); ++m)
+            for (const tinygltf::Primitive& primitive : model_.meshes[m].primitives)
+                meshTriangles[m] += declaredTriangles(primitive);
+        size_t total = scene_.triangleCount();
+        std::vector<std::pair<int, int>> stack;  // node, depth; explicit so a deep tree cannot overflow the stack
+        for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, 0);
+        while (!stack.empty()) {
+            const auto [nodeIndex, depth] = stack.back();
+            stack.pop_back();
+            if (nodeIndex < 0 || size_t(nodeIndex) >= model_.nodes.size() || depth > maxNodeDepth) continue;  // visit() names it
+            const tinygltf::Node& node = model_.nodes[size_t(nodeIndex)];
+            if (node.mesh >= 0 && size_t(node.mesh) < meshTriangles.size()) {
+                total += meshTriangles[size_t(node.mesh)];
+                if (total > maxSceneTriangles)
+                    fail("the scene would have at least " + std::to_string(total) + " triangles; at most " +
+                         std::to_string(maxSceneTriangles) + " are supported (counted over the nodes' meshes before loading)");
+            }
+            for (int child : node.children) stack.emplace_back(child, depth + 1);
+        }
     }
 
     void visit(int nodeIndex, const glm::mat4& parent, int depth) {
@@ -307,6 +344,11 @@ private:
                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
                          : AccessorView{};
+        // An accessor without a buffer view is all zeros: every triangle would be degenerate and draw nothing.
+        if (!positions.data) {
+            warn(what + ": POSITION has no buffer view (all zeros); the primitive draws nothing and is left out");
+            return;
+        }
         if (hasNormals && normals.count != positions.count)
             fail(what + ": " + std::to_string(normals.count) + " normals for " + std::to_string(positions.count) + " positions");
         if (hasTexCoords && texCoords.count != positions.count)
@@ -320,6 +362,10 @@ private:
             const AccessorView indices = view(primitive.indices, what + " indices", {TINYGLTF_TYPE_SCALAR},
                                               {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+            if (!indices.data) {
+                warn(what + ": indices have no buffer view (all zero); the primitive draws nothing and is left out");
+                return;
+            }
             checkTriangleLimit(what, indices.count, mode);
             corners.resize(indices.count);
             for (size_t i = 0; i < indices.count; ++i) {
