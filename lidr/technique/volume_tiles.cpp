@@ -77,6 +77,19 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
             slices_[t] |= sliceMask(first, last);
         }
     }
+    // Pass 3: each occupied slice's distances, widened by a tenth of a slice (rounding in the floors above) and
+    // by relative slack, computed once here rather than for every light that reaches the tile.
+    sliceDistances_.resize(tiles * size_t(kSlices));
+    auto distance = [&](float d) { return depthToDistance_.x / (d + depthToDistance_.y); };
+    for (size_t t = 0; t < tiles; ++t) {
+        const float lo = minDepth_[t], width = (maxDepth_[t] - lo) / float(kSlices);
+        for (uint32_t bits = slices_[t]; bits != 0; bits &= bits - 1) {
+            const int s = __builtin_ctz(bits);
+            const float d0 = std::max(lo + (float(s) - 0.1f) * width, 0.0f), d1 = std::min(lo + (float(s) + 1.1f) * width, 1.0f);
+            const float D0 = distance(d0), D1 = distance(d1);
+            sliceDistances_[t * size_t(kSlices) + size_t(s)] = {D0 - 1e-5f * D0, D1 + 1e-5f * D1};
+        }
+    }
 }
 
 void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera) {
@@ -90,7 +103,7 @@ void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera
 uint32_t VolumeTiles::slicesReached(int tile, const glm::vec3& c, float radius, float nearDepth, float farDepth) const {
     const float lo = minDepth_[size_t(tile)], hi = maxDepth_[size_t(tile)];
     if (!(hi > lo) || farDepth < lo || nearDepth > hi) return 0;
-    const float scale = float(kSlices) / (hi - lo), width = (hi - lo) / float(kSlices);
+    const float scale = float(kSlices) / (hi - lo);
     // Slices are widened by one on each side: the pixels' slices were found with the same float formula, so a
     // depth on a slice boundary may have landed on either side of it.
     const int first = std::clamp(int(std::floor((nearDepth - lo) * scale)) - 1, 0, kSlices - 1);
@@ -103,21 +116,17 @@ uint32_t VolumeTiles::slicesReached(int tile, const glm::vec3& c, float radius, 
     const float sx0 = slopeX_[size_t(tx)], sx1 = slopeX_[size_t(tx) + 1];
     const float sy0 = slopeY_[size_t(ty)], sy1 = slopeY_[size_t(ty) + 1];
     const float r2 = radius * radius * (1.0f + 1e-4f) + 1e-12f;
-    auto distance = [&](float d) { return depthToDistance_.x / (d + depthToDistance_.y); };
+    const float slack = 1e-5f * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + radius);
+    const float reach2 = r2 + 2.0f * radius * slack + slack * slack;
+    const glm::vec2* distances = sliceDistances_.data() + size_t(tile) * size_t(kSlices);
     uint32_t reached = 0;
-    for (int s = first; s <= last; ++s) {
-        if (!(occupied & (1u << s))) continue;
-        // The slice's depths widened by a tenth of a slice (rounding in floor above), as distances, with slack.
-        const float d0 = std::max(lo + (float(s) - 0.1f) * width, 0.0f), d1 = std::min(lo + (float(s) + 1.1f) * width, 1.0f);
-        float D0 = distance(d0), D1 = distance(d1);
-        D0 -= 1e-5f * D0;
-        D1 += 1e-5f * D1;
+    for (uint32_t bits = occupied; bits != 0; bits &= bits - 1) {
+        const int s = __builtin_ctz(bits);
+        const float D0 = distances[s].x, D1 = distances[s].y;
         const glm::vec3 boxMin(std::min(sx0 * D0, sx0 * D1), std::min(sy0 * D0, sy0 * D1), -D1);
         const glm::vec3 boxMax(std::max(sx1 * D0, sx1 * D1), std::max(sy1 * D0, sy1 * D1), -D0);
-        const glm::vec3 nearest = glm::clamp(c, boxMin, boxMax);
-        const glm::vec3 e = c - nearest;
-        const float slack = 1e-5f * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + radius);
-        if (glm::dot(e, e) <= r2 + 2.0f * radius * slack + slack * slack) reached |= 1u << s;
+        const glm::vec3 e = c - glm::clamp(c, boxMin, boxMax);
+        if (glm::dot(e, e) <= reach2) reached |= 1u << s;
     }
     return reached;
 }

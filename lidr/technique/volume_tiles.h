@@ -50,6 +50,9 @@ private:
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
     std::vector<float> minDepth_, maxDepth_;  // per tile; min > max: no surface
     std::vector<uint32_t> slices_;
+    // Per tile and occupied slice, the slice's distance span [near, far] in front of the eye (widened as
+    // slicesReached needs it): 2 x 32 floats a tile, filled once per build instead of per light and tile.
+    std::vector<glm::vec2> sliceDistances_;
     // Tile boundaries as view-space slopes x / -z (columns) and y / -z (rows); window depth d -> distance in
     // front of the eye: depthToDistance.x / (d + depthToDistance.y).
     std::vector<float> slopeX_, slopeY_;
