@@ -128,6 +128,10 @@ void RendererChoice::addOptions(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--volume-tile-size", volumeTileSize, "Tile size of --volume-tiles in pixels, 4..256")
         ->capture_default_str();
+    app.add_option("--regional-indices", regionalIndices,
+                   "Over 255 lights with --volume-tiles: 8-bit indices numbered per screen region (on, default) or "
+                   "16-bit global ones (off) (LidrOptions::regionalIndices, doc/architecture.md)")
+        ->capture_default_str();
     app.add_option("--depth-bits", depthBits,
                    "LIDR depth precision: 24 (default), 16 (a 16-bit depth buffer with a separate stencil, where the "
                    "driver holds it) or 16-emulated (16-bit levels inside the 24-bit buffer; doc/stability.md)");
@@ -178,6 +182,9 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     if (volumeTileSize < 4 || volumeTileSize > 256)
         throw Error("--volume-tile-size must be in [4, 256], got " + std::to_string(volumeTileSize));
     o.tileCulledVolumes = volumeTiles == "on";
+    if (regionalIndices != "on" && regionalIndices != "off")
+        throw Error("--regional-indices must be on or off, got '" + regionalIndices + "'");
+    o.regionalIndices = regionalIndices == "on";
     o.volumeTileSize = volumeTileSize;
     if (depthBits == "16")
         o.depthBits = 16;

@@ -41,6 +41,7 @@ struct RendererChoice {
     bool volumeDetail = false;
     std::string volumeTiles = "on";
     int volumeTileSize = 16;
+    std::string regionalIndices = "on";
     std::string depthBits;  // empty: 24
     std::string context = "auto";
     bool fixedLightTable = false;

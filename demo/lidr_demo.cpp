@@ -335,7 +335,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         // Compact numbering: the dump holds the frame's own light table (index k is entry k), so that an outside
         // decoder reads it as it reads any frame.
         artefacts.lights.clear();
-        for (uint32_t sceneIndex : renderer.frameLightIndices()) artefacts.lights.push_back(lights[sceneIndex - 1]);
+        for (uint32_t sceneIndex : renderer.frameLightIndices())  // 0: an unused entry (region-local numbering)
+            artefacts.lights.push_back(sceneIndex ? lights[sceneIndex - 1] : PointLight{glm::vec3(0.0f), 1.0f, glm::vec3(0.0f), 0.0f});
     }
     artefacts.drawOrder = LidrRenderer::drawOrder(artefacts.lights);
 
@@ -530,6 +531,8 @@ int main(int argc, char** argv) {
             return demo::runSoak(sceneChoice, rc, outDir, frames, *timeStep);
         }
         if (frames > 1000) throw Error("--frames must be in [1, 1000] without --time-step, got " + std::to_string(frames));
+        // A dump holds one light table for the frame: global numbering (doc/architecture.md, region-local indices).
+        if (!dumpDir.empty()) rc.regionalIndices = "off";
         return runHeadless(sceneChoice, rc, outDir, dumpDir, frames, !noReference);
     } catch (const std::exception& e) {
         std::cerr << "lidr-demo: error: " << e.what() << "\n";

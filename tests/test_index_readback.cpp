@@ -144,7 +144,7 @@ void renderAndReadTwice(const ReadBackCase& c) {
             const AutoDecision& d = stats.autoDecision;
             const CoverageTruth truth = computeCoverage(renderer.targets().readDepth(), cam, lights);
             const ListCheck lists = checkIndexLists(truth, renderer.scheme(), firstRead, uint32_t(lights.size()),
-                                                    renderer.frameLightIndices());
+                                                    renderer.frameLightIndices(), renderer.frameIndexRegions());
             long differing = 0, checked = 0, countsOff = 0;
             const bool same = sameBytes(firstRead, secondRead, differing);
             const long offModel = pixelsOffModel(renderer, truth, lights, firstRead, k, checked);

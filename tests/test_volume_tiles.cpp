@@ -179,3 +179,42 @@ TEST_CASE("a frame without a reachable light draws no light volume and reads no 
         CHECK(r.lidr.pixels == r.reference.pixels);
     }
 }
+
+TEST_CASE("region-local indices: 8-bit lists of over 255 lights, the same lists and image as 16-bit global ones",
+          "[volume-tiles][regions][lidr]") {
+    // hall-1024 at 384 x 288: about 700 lights reach the view, so global numbering needs 16-bit indices; split
+    // into regions of whole tiles, each region's lights fit 8 bits. Exactness is judged against the CPU truth
+    // (every list, decoded through the frame's regions) and the image against the 16-bit frame, byte for byte.
+    if (testGl().gles) {
+        WARN("OpenGL ES keeps the volume meshes (no depth read-back): no tiles, no regions");
+        return;
+    }
+    const char* name = GENERATE("hall-1024", "hall-255");
+    DYNAMIC_SECTION(name) {
+        Scene scene;
+        REQUIRE(makeOccludedSceneByName(name, scene));
+        scene.width = 384;
+        scene.height = 288;
+        scene.transparency = false;
+        LidrOptions o;  // automatic scheme, budget and width
+        o.transparency = false;
+        const RenderResult regional = renderAndEvaluate(scene, o);
+        o.regionalIndices = false;
+        const RenderResult global = renderAndEvaluate(scene, o);
+        requireExactWithinBudget(regional.evaluation, name);
+        CHECK(regional.evaluation.lists.droppedLightPixels == 0);
+        CHECK(regional.evaluation.lists.invalidSlots == 0);
+        CHECK(regional.lidr.pixels == global.lidr.pixels);
+        CHECK(regional.stats.drawnLights == global.stats.drawnLights);
+        if (std::string(name) == "hall-1024") {
+            REQUIRE(global.stats.drawnLights > 255);
+            CHECK(global.stats.autoDecision.indexBits == 16);
+            CHECK(regional.stats.autoDecision.indexBits == 8);
+            CHECK(regional.indexTargets.size() * 2 == global.indexTargets.size());
+        } else {  // under 256 lights: one numbering, nothing changes
+            CHECK(regional.stats.autoDecision.indexBits == global.stats.autoDecision.indexBits);
+            for (size_t t = 0; t < regional.indexTargets.size(); ++t)
+                CHECK(regional.indexTargets[t].pixels == global.indexTargets[t].pixels);
+        }
+    }
+}

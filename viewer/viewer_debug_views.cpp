@@ -132,9 +132,13 @@ void Viewer::saveAll(const std::string& dir) {
         a.lightCounts = lidr->readLightCounts();
         a.camera = cameraMatrices(camera_.camera(), width_, height_);
         a.lights = lights;
+        if (lidr->frameIndexRegions().on())
+            throw Error("the dump writes one light table for the whole frame; this frame numbers its lights per "
+                        "screen region (LidrOptions::regionalIndices)");
         if (!lidr->frameLightIndices().empty()) {  // compact numbering (automatic width), as lidr-demo --dump
             a.lights.clear();
-            for (uint32_t sceneIndex : lidr->frameLightIndices()) a.lights.push_back(lights[sceneIndex - 1]);
+            for (uint32_t sceneIndex : lidr->frameLightIndices())
+                a.lights.push_back(sceneIndex ? lights[sceneIndex - 1] : PointLight{glm::vec3(0.0f), 1.0f, glm::vec3(0.0f), 0.0f});
         }
         a.drawOrder = LidrRenderer::drawOrder(a.lights);
         writeFrameArtefacts(path("dump"), a, lidr->scheme());

@@ -223,7 +223,7 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
     const CameraMatrices m = cameraMatrices(camera, kWidth, kHeight);
     const CoverageTruth truth = computeCoverage(page->depthReadback->read(m), m, lights);
     const ListCheck lists = checkIndexLists(truth, lidr.scheme(), lidr.readIndexTargets(), uint32_t(lights.size()),
-                                            lidr.frameLightIndices());
+                                            lidr.frameLightIndices(), lidr.frameIndexRegions());
     const int budget = lidr.scheme().config().budget;
     if (view == "index-lists") {
         showCpuImage(indexListImage(kWidth, kHeight, lists.decoded));

@@ -83,7 +83,8 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
             renderer->render(camera, lights, shading);
             const ImageRGBA8 image = renderer->targets().readColor();
             const ListCheck lists = checkIndexLists(truth, renderer->scheme(), renderer->readIndexTargets(),
-                                                    uint32_t(lights.size()), renderer->frameLightIndices());
+                                                    uint32_t(lights.size()), renderer->frameLightIndices(),
+                                                    renderer->frameIndexRegions());
             // The lights the volume test marked per pixel (the GPU's stencil count), as lidr::evaluateFrame
             // takes them: a pixel marked by no more lights than the budget keeps them all.
             const std::vector<uint8_t> marked = stencilReadback.read(renderer->targets());

@@ -22,7 +22,8 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.truth = computeCoverage(t.readDepth(), cam, lights);
     e.maxTruthOverlap = e.truth.maxOverlap();
     e.lists = checkIndexLists(e.truth, renderer.scheme(), renderer.readIndexTargets(),
-                              static_cast<uint32_t>(lights.size()), renderer.frameLightIndices());
+                              static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
+                              renderer.frameIndexRegions());
     const std::vector<uint8_t> counts = renderer.readLightCounts();
     const size_t n = size_t(t.width()) * t.height();
     e.marked.assign(n, 0);

@@ -136,7 +136,7 @@ std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& 
 
 ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
                           const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount,
-                          const std::vector<uint32_t>& sceneIndexOf) {
+                          const std::vector<uint32_t>& sceneIndexOf, const IndexRegions& regions) {
     const int targets = scheme.targetCount();
     if (static_cast<int>(indexTargets.size()) != targets) throw Error("checkIndexLists: wrong number of targets");
     for (const auto& img : indexTargets)
@@ -150,10 +150,19 @@ ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& schem
         for (int t = 0; t < targets; ++t)
             std::copy_n(&indexTargets[t].pixels[p * 4], 4, &texels[size_t(t) * 4]);
         std::vector<uint32_t>& list = c.decoded[p];
+        // Region-local numbering: the pixel's region is its row of entries (images run top to bottom, GL's y up).
+        const uint32_t row = regions.on() ? uint32_t(regions.regionOfPixel(int(p % size_t(truth.width)),
+                                                                            truth.height - 1 - int(p / size_t(truth.width))))
+                                          : 0u;
         for (uint32_t idx : scheme.decodePixel(texels.data())) {
             if (idx == 0) continue;
+            if (regions.on()) {
+                idx = idx < 256 ? row * 256 + idx : 0xFFFFFFFFu;
+                if (idx <= sceneIndexOf.size() && sceneIndexOf[idx - 1] == 0) idx = 0xFFFFFFFFu;  // an unused entry
+            }
             // Compact numbering: back to scene indices (an index past the frame's lights stays invalid).
-            if (!sceneIndexOf.empty()) idx = idx <= sceneIndexOf.size() ? sceneIndexOf[idx - 1] : lightCount + 1;
+            if (!sceneIndexOf.empty())
+                idx = idx != 0xFFFFFFFFu && idx <= sceneIndexOf.size() ? sceneIndexOf[idx - 1] : lightCount + 1;
             list.push_back(idx);
         }
         c.slotsUsed += static_cast<long>(list.size());

@@ -7,6 +7,7 @@
 #include "lidr/scene/camera.h"
 #include "lidr/base/image.h"
 #include "lidr/technique/packing_scheme.h"
+#include "lidr/technique/volume_tiles.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
@@ -48,9 +49,9 @@ struct ListCheck {
 
 // Decodes every pixel of the index targets with the scheme's CPU model and checks it against the truth.
 // sceneIndexOf: the frame's compact numbering (LidrRenderer::frameLightIndices); empty when indices are the
-// scene's own.
+// scene's own. regions: the frame's region-local numbering (LidrRenderer::frameIndexRegions), where on.
 ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& scheme,
                           const std::vector<ImageRGBA8>& indexTargets, uint32_t lightCount,
-                          const std::vector<uint32_t>& sceneIndexOf = {});
+                          const std::vector<uint32_t>& sceneIndexOf = {}, const IndexRegions& regions = {});
 
 }  // namespace lidr

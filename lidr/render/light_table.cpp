@@ -40,6 +40,18 @@ ShaderDefines LightTable::defines() const {
     return {};
 }
 
+void LightTable::setRegionMap(std::vector<float> tileRows, int firstRow, int tileSize, int tilesX) {
+    if (!tileRows.empty() &&
+        (format_ != LightTableFormat::Float ||
+         size_t(firstRow) * kWidth + tileRows.size() > size_t(kWidth) * size_t(rows_) || firstRow < 0))
+        throw Error("light table: no room for the region map (" + std::to_string(tileRows.size()) + " tiles from row " +
+                    std::to_string(firstRow) + " of " + std::to_string(rows_) + ")");
+    regionMap_ = std::move(tileRows);
+    regionMapFirstRow_ = firstRow;
+    regionMapUniform_ = regionMap_.empty() ? glm::vec4(0.0f)
+                                           : glm::vec4(1.0f / float(tileSize), float(tilesX), float(firstRow), 1.0f);
+}
+
 void LightTable::update(const std::vector<PointLight>& lights) {
     if (static_cast<int>(lights.size()) > capacity_)
         throw Error("light table holds " + std::to_string(capacity_) + " lights, scene has " +
@@ -59,6 +71,9 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             float* c = &col[(i + 1) * 4];
             c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = 1.0f;
         }
+        if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
+            throw Error("light table: the region map would overwrite lights");
+        for (size_t t = 0; t < regionMap_.size(); ++t) pos[(size_t(regionMapFirstRow_) * kWidth + t) * 4] = regionMap_[t];
         glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, pos.data());
         glBindTexture(GL_TEXTURE_2D, set.color.id());

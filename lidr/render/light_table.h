@@ -35,8 +35,17 @@ public:
     // float table; for fixed16, half a 1/65535 step of the lights' box (positions round to nearest) plus a
     // 1/65535 step of the largest radius (radii round up). Light assignment widens spheres by it.
     float reachError() const;
+    // Region-local indices (lidr/technique/volume_tiles.h, IndexRegions; float table only): `tileRows` holds a
+    // table row per screen tile (row-major, rows bottom to top), written by the next update() into the
+    // position texture's x from row `firstRow` on, after the regions' rows. Empty: off. The forward pass reads
+    // it through regionMapUniform() = (1 / tile size, tiles per row, first row, 1 when on).
+    void setRegionMap(std::vector<float> tileRows, int firstRow, int tileSize, int tilesX);
+    glm::vec4 regionMapUniform() const { return regionMapUniform_; }
 
 private:
+    std::vector<float> regionMap_;
+    int regionMapFirstRow_ = 0;
+    glm::vec4 regionMapUniform_{0.0f};
     LightTableFormat format_ = LightTableFormat::Float;
     int capacity_ = 0, rows_ = 1, count_ = 0;
     struct TextureSet {

@@ -73,6 +73,7 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
     useShadingProgram(program_, camera, shading, table);
     program_.setIfDeclared("uLidrMaxLights", maxLights_);
     program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
+    program_.setIfDeclared("uLidrRegionMap", table.regionMapUniform());
     for (int i = 0; i < indices.count(); ++i) {
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
         program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);

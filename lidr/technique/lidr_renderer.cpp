@@ -115,10 +115,17 @@ int largestBudget(const GlInfo& info, const PackingConfig& c, int widestBits) {
     throw UnsupportedError("no budget of bit-shift packing fits this context at " + std::to_string(widestBits) + "-bit");
 }
 
-int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingConfig& first) {
+int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingConfig& first, int width, int height) {
     if (!o.packing.autoIndexBits()) return static_cast<int>((1u << first.indexBits) - 1u);
-    // Compact numbering: never more than the scene's lights (the 8-bit table's one row at least).
-    return std::max<int>(255, static_cast<int>(scene.lights.size()));
+    // Compact numbering: never more than the scene's lights (the 8-bit table's one row at least); with more
+    // than 255, region-local indices may need a row per region (LidrOptions::regionalIndices).
+    const int lights = static_cast<int>(scene.lights.size());
+    if (lights > 255 && o.regionalIndices && o.tileCulledVolumes) {  // a row per region, then the tile map's rows
+        const long tiles = long((width + o.volumeTileSize - 1) / o.volumeTileSize) * ((height + o.volumeTileSize - 1) / o.volumeTileSize);
+        const long capacity = (LidrRenderer::kMaxIndexRegions + (tiles + 255) / 256) * 256 - 1;
+        if (capacity <= 65535) return std::max<int>(lights, int(capacity));  // else too many tiles: global numbering
+    }
+    return std::max<int>(255, lights);
 }
 }  // namespace
 
@@ -133,7 +140,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       timer_(info, options_.timingMethod) {
     requestedAutoBudget_ = requested.packing.autoBudget();
     const PackingConfig& first = firstPacking_;
-    lightTable_ = LightTable(info, lightTableCapacity(scene, options_, first), options_.forceFixedLightTable);
+    lightTable_ = LightTable(info, lightTableCapacity(scene, options_, first, width, height), options_.forceFixedLightTable);
     if (options_.packing.autoBudget()) {
         const int widest = options_.packing.autoIndexBits()
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
@@ -308,13 +315,30 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         }
         volumes.push_back({index, posRadius});
     }
-    lightTable_.update(autoBits ? tableLights : lights);
     stats_.drawnLights = static_cast<int>(volumes.size());
+    frameRegions_ = IndexRegions{};
+    if (autoBits && options_.regionalIndices && volumes.size() > 255 && volumePass_.drawsScreenTiles() &&
+        !drawTransparent_ && targets_.samples() == 0 && !options_.perSampleIndices)
+        numberByRegion(volumes, tableLights);
+    volumePass_.setRegions(frameRegions_);
+    if (frameRegions_.on()) {
+        // The tile -> row map sits in the light table's rows after the regions' (the forward pass reads it).
+        std::vector<float> map(frameRegions_.regionOfTiles.begin(), frameRegions_.regionOfTiles.end());
+        lightTable_.setRegionMap(std::move(map), frameRegions_.count, frameRegions_.tileSize, frameRegions_.tilesX);
+    } else {
+        lightTable_.setRegionMap({}, 0, 1, 1);
+    }
+    lightTable_.update(autoBits ? tableLights : lights);
     AutoDecision& decision = stats_.autoDecision;
     decision.autoBudget = autoBudget;
     decision.autoIndexBits = autoBits;
     decision.visibleLights = stats_.drawnLights;
-    const int bits = autoBits ? auto_.chooseIndexBits(stats_.drawnLights) : fixed.indexBits;
+    int widestList = stats_.drawnLights;  // the most lights one numbering holds (a region's with regions)
+    if (frameRegions_.on()) {
+        widestList = 0;
+        for (const VolumeLight& v : volumes) widestList = std::max(widestList, int(v.index));
+    }
+    const int bits = autoBits ? auto_.chooseIndexBits(widestList) : fixed.indexBits;
     selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
     selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
     lightTableTime.end();
@@ -374,6 +398,67 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     StateCache::current().bindFramebuffer(0);
     checkGl("LidrRenderer::render");
     return stats_;
+}
+
+void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector<PointLight>& table) {
+    // A k-d split of the tiles: the region reached by the most lights is halved across its longer side until
+    // every region is reached by at most 255 lights (8-bit indices), or that cannot be had within
+    // kMaxIndexRegions regions, or a single tile is reached by more (then global numbering stays).
+    const int tilesX = volumeTiles_->tilesX(), tilesY = volumeTiles_->tilesY();
+    const size_t mapRows = (size_t(tilesX) * size_t(tilesY) + LightTable::kWidth - 1) / LightTable::kWidth;
+    if (lightTable_.format() != LightTableFormat::Float) return;  // the map needs exact small integers in the table
+    struct Rect {
+        int x0, y0, x1, y1;  // tiles, ends exclusive
+    };
+    std::vector<Rect> rects{{0, 0, tilesX, tilesY}};
+    IndexRegions regions;
+    regions.tilesX = tilesX;
+    regions.tileSize = volumeTiles_->tileSize();
+    regions.regionOfTiles.assign(size_t(tilesX) * size_t(tilesY), 0);
+    std::vector<uint32_t> reached(volumes.size());
+    std::vector<int> perRegion;
+    for (;;) {
+        regions.count = int(rects.size());
+        if ((size_t(regions.count) + mapRows) * LightTable::kWidth - 1 > size_t(lightTable_.capacity())) return;
+        perRegion.assign(rects.size(), 0);
+        for (size_t i = 0; i < volumes.size(); ++i) {
+            reached[i] = volumePass_.sphereRegions(volumes[i].posRadius, regions);
+            for (uint32_t bits = reached[i]; bits; bits &= bits - 1) ++perRegion[size_t(__builtin_ctz(bits))];
+        }
+        const size_t worst = size_t(std::max_element(perRegion.begin(), perRegion.end()) - perRegion.begin());
+        if (perRegion[worst] <= 255) break;
+        Rect& r = rects[worst];
+        if (rects.size() >= size_t(kMaxIndexRegions) || (r.x1 - r.x0 == 1 && r.y1 - r.y0 == 1)) return;
+        Rect half = r;
+        if (r.x1 - r.x0 >= r.y1 - r.y0)
+            r.x1 = half.x0 = (r.x0 + r.x1) / 2;
+        else
+            r.y1 = half.y0 = (r.y0 + r.y1) / 2;
+        rects.push_back(half);
+        for (int y = half.y0; y < half.y1; ++y)
+            for (int x = half.x0; x < half.x1; ++x) regions.regionOfTiles[size_t(y) * size_t(tilesX) + size_t(x)] = uint8_t(rects.size() - 1);
+    }
+    // Entries in the lights' draw order, each light once per region it reaches: a pixel lies in one region, so
+    // its list keeps the lights' order. Entry (region r, index k) is the table's texel (k, r).
+    const std::vector<PointLight> lights = std::move(table);
+    const std::vector<uint32_t> sceneIndex = std::move(frameLights_);
+    const size_t last = size_t(regions.count - 1);
+    table.assign(last * 256 + size_t(perRegion[last]),
+                 PointLight{lights.front().position, lights.front().radius, glm::vec3(0.0f), 0.0f});  // unused: black
+    frameLights_.assign(table.size(), 0u);
+    std::vector<VolumeLight> entries;
+    std::fill(perRegion.begin(), perRegion.end(), 0);
+    for (size_t i = 0; i < volumes.size(); ++i)
+        for (uint32_t bits = reached[i]; bits; bits &= bits - 1) {
+            const int r = __builtin_ctz(bits);
+            const uint32_t k = uint32_t(++perRegion[size_t(r)]);
+            const size_t entry = size_t(r) * 256 + k - 1;
+            table[entry] = lights[volumes[i].index - 1];
+            frameLights_[entry] = sceneIndex[volumes[i].index - 1];
+            entries.push_back({k, volumes[i].posRadius, r});
+        }
+    volumes = std::move(entries);
+    frameRegions_ = std::move(regions);
 }
 
 void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {

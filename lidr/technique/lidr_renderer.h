@@ -55,6 +55,12 @@ struct LidrOptions {
     // shader's test is); false: volume meshes.
     bool tileCulledVolumes = true;
     int volumeTileSize = 16;
+    // With tile-culled volumes and more than 255 lights reaching the view (automatic index width, opaque
+    // frame, single-sampled): the screen is split into the fewest regions (a grid of tiles, at most
+    // kMaxIndexRegions) in which at most 255 lights each reach a tile, and each region numbers its own lights in its
+    // own row of the light table, so indices stay 8-bit: half the index targets, written and read, of 16-bit
+    // global numbering. The lists hold the same lights (frameLightIndices, frameIndexRegions). false: global.
+    bool regionalIndices = true;
     // Used in a frame only where the lights' pixel rectangles add up to at least kTileCullingMinArea screens:
     // below, the volume meshes cost less than the depth read-back (doc/benchmarks.md, "Deep, occluded scenes").
     bool forceFixedLightTable = false;  // test the no-float-texture light table path
@@ -107,7 +113,11 @@ public:
     const IndexTargets& indexTargets() const { return *indexTargets_; }
     // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
     // index (1-based) of index k. Empty: indices are the scene's own.
+    // With region-local indices (frameIndexRegions().on()): entry row * 256 + k - 1 is the scene index of index k
+    // in region `row` (0: an unused entry); IndexRegions::regionOfPixel gives a pixel's row.
     const std::vector<uint32_t>& frameLightIndices() const { return frameLights_; }
+    const IndexRegions& frameIndexRegions() const { return frameRegions_; }
+    static constexpr int kMaxIndexRegions = 32;
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
     bool drawsTransparency() const { return drawTransparent_; }
@@ -166,6 +176,9 @@ private:
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
     bool narrowingAsked_ = true, narrowingAskedTransparent_ = true;  // the last measurement asked below the budget
     std::vector<uint32_t> frameLights_;
+    IndexRegions frameRegions_;
+    // Region-local numbering of `volumes` (global numbering, scene lights `table`) where it fits in 8 bits.
+    void numberByRegion(std::vector<VolumeLight>& volumes, std::vector<PointLight>& table);
     // The last frame had no light to index: no volume pass was drawn and its lists are empty (the index targets
     // still hold an earlier frame's; the read-backs answer with the empty lists).
     bool lightlessFrame_ = false;

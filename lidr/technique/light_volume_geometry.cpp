@@ -255,6 +255,8 @@ void LightVolumeGeometry::setTiles(const VolumeTiles* tiles, const CameraMatrice
     camera_ = camera;
     sphereTiles_.clear();  // a new frame's tiles
     tiledLights_.clear();
+    tiledRegions_.clear();
+    regions_ = IndexRegions{};
 }
 
 const LightVolumeGeometry::SphereTiles& LightVolumeGeometry::tilesOf(const glm::vec4& posRadius) {
@@ -288,20 +290,29 @@ bool LightVolumeGeometry::sphereReachesTiles(const glm::vec4& posRadius) {
     return !tilesOf(posRadius).tiles.empty();
 }
 
+uint32_t LightVolumeGeometry::sphereRegions(const glm::vec4& posRadius, const IndexRegions& regions) {
+    if (!tiles_) throw Error("sphereRegions without tiles");
+    uint32_t reached = 0;
+    for (const TileReach& r : tilesOf(posRadius).tiles) reached |= 1u << regions.regionOfTile(r.tile);
+    return reached;
+}
+
 void LightVolumeGeometry::cullToTiles(const std::vector<VolumeLight>& lights) {
-    if (tiledLights_.size() == lights.size() &&
-        std::equal(lights.begin(), lights.end(), tiledLights_.begin(),
-                   [](const VolumeLight& a, const glm::vec4& b) { return a.posRadius == b; }))
-        return;  // the frame's earlier draw (another rank window) gathered these lights already
+    bool same = tiledLights_.size() == lights.size();
+    for (size_t i = 0; same && i < lights.size(); ++i)
+        same = lights[i].posRadius == tiledLights_[i] && lights[i].region == tiledRegions_[i];
+    if (same) return;  // the frame's earlier draw (another rank window) gathered these lights already
     tiledLights_.clear();
+    tiledRegions_.clear();
     lightTiles_.clear();
     const size_t tiles = size_t(tiles_->tileCount());
     sliceCounts_.assign(tiles * 32, 0);
     for (const VolumeLight& l : lights) {
         tiledLights_.push_back(l.posRadius);
+        tiledRegions_.push_back(l.region);
         lightTiles_.push_back(&tilesOf(l.posRadius));
         for (const TileReach& r : lightTiles_.back()->tiles)
-            for (uint32_t bits = r.slices; bits; bits &= bits - 1) {
+            for (uint32_t bits = tileInRegion(r.tile, l.region) ? r.slices : 0u; bits; bits &= bits - 1) {
                 uint8_t& n = sliceCounts_[size_t(r.tile) * 32 + size_t(__builtin_ctz(bits))];
                 if (n < 255) ++n;
             }
@@ -325,17 +336,18 @@ void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {
     const int tilesX = tiles_->tilesX(), size = tiles_->tileSize();
     for (int slot = 0; slot < step.lightCount; ++slot) {
         const SphereTiles& sphere = *lightTiles_[size_t(step.firstLight + slot)];
+        const int region = tiledRegions_[size_t(step.firstLight + slot)];
         const std::vector<TileReach>& tiles = sphere.tiles;
         for (size_t k = 0; k < tiles.size();) {
-            // A run of kept tiles along one row becomes one quad.
+            // A run of kept tiles along one row (and within the entry's region) becomes one quad.
             const int first = tiles[k].tile;
-            if (tileCandidates_[size_t(first)] <= skipTilesUpTo_) {
+            if (tileCandidates_[size_t(first)] <= skipTilesUpTo_ || !tileInRegion(first, region)) {
                 ++k;
                 continue;
             }
             int last = first;
             while (k + 1 < tiles.size() && tiles[k + 1].tile == last + 1 && (last + 1) % tilesX != 0 &&
-                   tileCandidates_[size_t(last + 1)] > skipTilesUpTo_)
+                   tileCandidates_[size_t(last + 1)] > skipTilesUpTo_ && tileInRegion(last + 1, region))
                 last = tiles[++k].tile;
             ++k;
             // The run's pixels, clipped to the sphere's own rectangle (inclusive there, exclusive here).

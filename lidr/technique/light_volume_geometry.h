@@ -30,6 +30,7 @@ using IndexColorsFor = std::function<IndexColors(uint32_t index)>;
 struct VolumeLight {
     uint32_t index = 0;
     glm::vec4 posRadius{0.0f};
+    int region = -1;  // tile-culled volumes with IndexRegions: the only region whose tiles this entry marks
 };
 
 class VolumeGeometry {
@@ -90,6 +91,10 @@ public:
     // With tiles: whether the sphere (centre, radius) may mark any pixel of this frame (some tile may hold a
     // surface inside it). Its tiles are kept for the frame's draws.
     bool sphereReachesTiles(const glm::vec4& posRadius);
+    // With tiles: the regions of `regions` whose tiles the sphere reaches (bit r: region r; at most 32 regions).
+    uint32_t sphereRegions(const glm::vec4& posRadius, const IndexRegions& regions);
+    // The frame's regions (VolumeLight::region refers to them); off: every light marks all its tiles.
+    void setRegions(const IndexRegions& regions) { regions_ = regions; }
     // The depth margin of the sphere test, in window depth: what VolumeTiles::build takes.
     float depthMargin() const { return kSphereDepthSteps / depthUnits_; }
     // Rasterised area of the last frame's tile quads, in pixels (0 without tiles): what the culling kept.
@@ -117,6 +122,9 @@ private:
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
     const SphereTiles& tilesOf(const glm::vec4& posRadius);  // the sphere's tiles this frame (cached)
     void cullToTiles(const std::vector<VolumeLight>& lights);     // lightTiles_, tileCandidates_ for a draw
+    bool tileInRegion(int tile, int region) const {
+        return region < 0 || !regions_.on() || regions_.regionOfTile(tile) == region;
+    }
     void drawTileQuads(const VolumeStep& step);
     static int batchFor(int batch, int maxVertexUniformVectors, int targetCount);
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
@@ -155,7 +163,9 @@ private:
     };
     std::unordered_map<SphereKey, SphereTiles, SphereHash> sphereTiles_;  // this frame's, by sphere
     std::vector<glm::vec4> tiledLights_;           // the spheres lightTiles_ was gathered for
+    std::vector<int> tiledRegions_;                // and their regions
     std::vector<const SphereTiles*> lightTiles_;
+    IndexRegions regions_;
     // Per tile: at most this many lights mark one of its pixels (the most spheres meeting one of its slices).
     std::vector<int> tileCandidates_;
     std::vector<uint8_t> sliceCounts_;  // per tile and slice, saturating at 255 (a bound above 16 is as good)

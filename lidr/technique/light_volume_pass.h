@@ -81,6 +81,10 @@ public:
     bool drawsScreenTiles() const { return volumes_.drawsScreenTiles(); }
     // With tiles: whether the sphere may mark any pixel this frame (LightVolumeGeometry::sphereReachesTiles).
     bool sphereReachesTiles(const glm::vec4& posRadius) { return volumes_.sphereReachesTiles(posRadius); }
+    uint32_t sphereRegions(const glm::vec4& posRadius, const IndexRegions& regions) {
+        return volumes_.sphereRegions(posRadius, regions);
+    }
+    void setRegions(const IndexRegions& regions) { volumes_.setRegions(regions); }
     float tileDepthMargin() const { return volumes_.depthMargin(); }
     // Pixels the tile quads of the last pass covered (0 without tile culling).
     long tileQuadPixels() const { return volumes_.tileQuadPixels(); }

@@ -8,6 +8,7 @@
 // any fragment (LightVolumeGeometry draws the rest as screen quads; doc/architecture.md). Conservative: each
 // pixel marks the slices of its depth widened by the sphere test's margin, and a cell is the box around the
 // tile's corner rays between its slice's depths.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +17,22 @@
 #include "lidr/scene/camera.h"
 
 namespace lidr {
+
+// Screen regions for region-local light indices (doc/architecture.md, "Region-local indices"): a partition of
+// the tiles into at most 32 rectangles. With more than 255 lights reaching the view, each region numbers only
+// the lights that reach its tiles, 1..n, and keeps them in its own row of the light table, so the index targets
+// hold 8-bit indices where global numbering would need 16 bits; the forward pass finds the row from the pixel's
+// tile (a map kept in the light table). count == 0: off (global numbering).
+struct IndexRegions {
+    int count = 0;
+    int tilesX = 0, tileSize = 16;
+    std::vector<uint8_t> regionOfTiles;  // per tile (row-major, rows bottom to top as VolumeTiles numbers them)
+    bool on() const { return count > 0; }
+    int regionOfTile(int tile) const { return regionOfTiles[size_t(tile)]; }
+    int regionOfPixel(int x, int y) const {  // window pixel, y up
+        return regionOfTiles[size_t((y / tileSize) * tilesX + x / tileSize)];
+    }
+};
 
 class VolumeTiles {
 public:

@@ -27,8 +27,9 @@ struct LidrLight {
     vec3 position;
     float radius;
     vec3 color;
-    float index;       // the light's index in the frame's light list plus one (0 is the null light); above 2048
-                       // not exact where fragments compute in fp16
+    float index;       // the light's entry in the light table (its index in the frame's light list plus one, 0
+                       // being the null light; with region-local indices, row * 256 + the region's index); above
+                       // 2048 not exact where fragments compute in fp16
     vec2 indexBytes;   // the same as its two bytes (low, high): exact in any precision
 };
 
@@ -63,15 +64,34 @@ uniform int uLidrMaxLights;  // LIDR_SLOTS
 #endif
 
 uniform vec2 uInvViewportSize;
+#ifndef GL_ES
+// Region-local indices (lidr/technique/volume_tiles.h, IndexRegions; desktop GL with the float light table):
+// (1 / tile size, tiles per row, first map row, 1 when on). The pixel's tile's entry in the map, kept in the
+// light table's position texture from the first map row on, is the pixel's region: its row of the table, added
+// to the index's high byte. Off: row 0 (global numbering). Pixel centres lie half a pixel inside a tile, so the
+// floors are exact; tile numbers and rows are small integers, exact in fp32.
+uniform vec4 uLidrRegionMap;
+#endif
 
 float lidrSlotsLeft;
+float lidrRegionRow;
 
 void lidrBeginLights() {
     lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
     lidrSlotsLeft = float(LIDR_SLOTS);
+    lidrRegionRow = 0.0;
+#ifndef GL_ES
+    if (uLidrRegionMap.w > 0.5) {
+        float tile = floor(gl_FragCoord.x * uLidrRegionMap.x) + uLidrRegionMap.y * floor(gl_FragCoord.y * uLidrRegionMap.x);
+        float row = floor(tile * (1.0 / 256.0));
+        vec2 uv = vec2((tile - row * 256.0 + 0.5) * (1.0 / 256.0), (uLidrRegionMap.z + row + 0.5) / uLightTableRows);
+        lidrRegionRow = texture2D(uLightPosRadius, uv).x;
+    }
+#endif
 }
 
 void lidrSetLight(out LidrLight light, vec2 index) {
+    index.y += lidrRegionRow;
     vec4 posRadius;
     vec3 color;
     lidrFetchLight(index, posRadius, color);
