@@ -117,7 +117,8 @@ std::string ModeConfig::label() const {
                                : !volumeTiles          ? " meshes"
                                : volumeTileSize != 16  ? " tiles" + std::to_string(volumeTileSize)
                                                        : "";
-    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "") + meshes;
+    const std::string global = volumeTest == "sphere" && volumeTiles && !regionalIndices ? " global-indices" : "";
+    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "") + meshes + global;
     if (mode == "lidr")
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
                (volumeDetail ? " detail" : "") + meshes;
@@ -158,6 +159,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.volumeDetail = c.volumeDetail;
     o.tileCulledVolumes = c.volumeTiles;
     o.volumeTileSize = c.volumeTileSize;
+    o.regionalIndices = c.regionalIndices;
     o.msaaSamples = c.msaa;
     o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;
@@ -503,8 +505,10 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                             for (const auto& vt : g.volumeTests)
                                                 for (bool detail : g.volumeDetail)
                                                     for (bool tiles : g.volumeTiles)
-                                                    for (int tileSize : g.volumeTileSizes) {
+                                                    for (int tileSize : g.volumeTileSizes)
+                                                    for (bool regional : g.regionalIndices) {
                                                         ModeConfig c = base;
+                                                        c.regionalIndices = regional;
                                                         c.scheme = scheme;
                                                         c.budget = budget;
                                                         c.indexBits = bits;
@@ -517,6 +521,10 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                                         if (!tiles && c.volumeTest != "sphere") continue;
                                                         if ((!tiles || c.volumeTest != "sphere") &&
                                                             tileSize != g.volumeTileSizes.front())
+                                                            continue;
+                                                        // Regions need tiles and the automatic width.
+                                                        if ((!tiles || c.volumeTest != "sphere" || scheme != "auto") &&
+                                                            regional != g.regionalIndices.front())
                                                             continue;
                                                         configs.push_back(c);
                                                     }

@@ -34,6 +34,7 @@ struct ModeConfig {
     bool volumeDetail = false;    // LidrOptions::volumeDetail: coarse volumes for lights small on screen
     bool volumeTiles = true;      // LidrOptions::tileCulledVolumes (the sphere test): false draws volume meshes
     int volumeTileSize = 16;      // LidrOptions::volumeTileSize
+    bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
     // mode "tiled"
     bool tiledDepthBounds = false;
     // every mode
@@ -74,6 +75,7 @@ struct SweepGroup {
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
     std::vector<int> volumeTileSizes{16};
+    std::vector<bool> regionalIndices{true};
     // Dimensions whose list a person typed ("mode", "scheme", "budget", "index width", "volume test",
     // "MSAA", "transparency"): a typed value that no combination can use is an error. Lists left at their
     // defaults and the presets sweep "whatever the library supports" and only list what it refused.

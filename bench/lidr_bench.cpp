@@ -332,7 +332,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, resolutions{"1024x768"};
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     std::vector<std::string> sweeps;
@@ -354,6 +354,10 @@ int main(int argc, char** argv) {
     app.add_option("--volume-tiles", volumeTiles,
                    "LIDR sphere test over depth-culled screen tiles (LidrOptions::tileCulledVolumes; off: volume meshes): "
                    "on, off")
+        ->capture_default_str();
+    app.add_option("--regional-indices", regionalIndices,
+                   "LIDR over 255 lights with tiles and the automatic width: 8-bit indices numbered per screen region "
+                   "(on) or 16-bit global ones (off) (LidrOptions::regionalIndices): on, off")
         ->capture_default_str();
     app.add_option("--volume-tile-size", volumeTileSizes,
                    "LIDR tile-culled volumes: tile sizes in pixels, 4..256 (LidrOptions::volumeTileSize)")
@@ -463,6 +467,7 @@ int main(int argc, char** argv) {
             g.volumeDetail = onOffList(volumeDetail, "--volume-detail value");
             g.volumeTiles = onOffList(volumeTiles, "--volume-tiles value");
             g.volumeTileSizes = intList(volumeTileSizes, "--volume-tile-size value");
+            g.regionalIndices = onOffList(regionalIndices, "--regional-indices value");
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
             // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
             const std::pair<const char*, const char*> typed[] = {

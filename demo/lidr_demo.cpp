@@ -389,7 +389,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
     if (decision.autoBudget || decision.autoIndexBits || *decision.budgetFallback) {
         s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
-          << (decision.autoIndexBits ? " (narrowest)" : " (fixed)") << ", budget " << decision.budget;
+          << (decision.autoIndexBits ? " (narrowest)" : " (fixed)")
+          << (decision.indexRegions > 0 ? " numbered in " + std::to_string(decision.indexRegions) + " screen regions" : "")
+          << ", budget " << decision.budget;
         if (decision.autoBudget)
             s << " (measured: " << (decision.measuredBudget ? "overlap fits " + std::to_string(decision.measuredBudget)
                                                             : "overlap above 16, " + std::to_string(decision.overflowPixels) +

@@ -27,6 +27,7 @@ struct AutoDecision {
     int budget = 0;          // packed with (after any re-pack)
     int indexBits = 0;
     int visibleLights = 0;   // lights given an index this frame
+    int indexRegions = 0;    // screen regions numbering their own lights (LidrOptions::regionalIndices); 0: one numbering
     int measuredBudget = 0;  // the smallest budget that dropped nothing, measured (0: more than 16 overlap)
     long overflowPixels = 0; // pixels whose overlap exceeded the final budget (nonzero only above 16)
     int repacks = 0;         // volume passes drawn again this frame with a larger budget

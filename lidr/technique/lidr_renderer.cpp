@@ -333,6 +333,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     decision.autoBudget = autoBudget;
     decision.autoIndexBits = autoBits;
     decision.visibleLights = stats_.drawnLights;
+    decision.indexRegions = frameRegions_.count;
     int widestList = stats_.drawnLights;  // the most lights one numbering holds (a region's with regions)
     if (frameRegions_.on()) {
         widestList = 0;
