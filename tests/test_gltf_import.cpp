@@ -244,7 +244,7 @@ TEST_CASE("glTF: the first perspective camera is the view, else the default view
     }
 }
 
-TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with a warning, embedded texture", "[gltf][cpu]") {
+TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK an alpha test, embedded texture", "[gltf][cpu]") {
     TempDir dir;
     GltfFile file;
     const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
@@ -262,7 +262,8 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     file.doc["textures"] = {{{"source", 0}}};
     file.doc["materials"] = {
         {{"name", "glass"}, {"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 0.5}}}}},
-        {{"name", "leaves"}, {"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.3}}}}},
+        {{"name", "leaves"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.25}, {"doubleSided", true},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.3}}}}},
         {{"name", "painted"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
     for (int m = 0; m < 3; ++m) file.node({{"mesh", m}}, true);
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "materials.gltf"));
@@ -273,8 +274,12 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     CHECK(glass.opacity == 0.5f);  // transparent: drawn after the opaque geometry, blended
     const lidr::Material& leaves = scene.materials[size_t(scene.meshes[1].material)];
     CHECK(leaves.opacity == 1.0f);
-    REQUIRE(scene.warnings.size() == 1);
-    CHECK_THAT(scene.warnings[0], Contains("'leaves'") && Contains("MASK is drawn opaque"));
+    CHECK(leaves.alphaMode == lidr::AlphaMode::Mask);
+    CHECK(leaves.alphaCutoff == 0.25f);
+    CHECK(leaves.doubleSided);
+    CHECK(glass.alphaMode == lidr::AlphaMode::Opaque);
+    CHECK_FALSE(glass.doubleSided);  // glTF's default
+    CHECK(scene.warnings.empty());
     const lidr::Material& painted = scene.materials[size_t(scene.meshes[2].material)];
     REQUIRE(painted.diffuseImage);
     REQUIRE(painted.diffuseImage->width == 2);
@@ -502,9 +507,9 @@ TEST_CASE("image headers: PNG and JPEG kind and size read without decoding", "[g
     }
 }
 
-TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread textures are warnings", "[gltf][cpu]") {
+TEST_CASE("glTF: every material texture is read with its set, strength, scale and transform; samplers warn", "[gltf][cpu]") {
     // The flat-white helmet: emissiveFactor [1, 1, 1] with an emissive texture that is mostly black. Drawn as the
-    // factor alone, every pixel of the material saturates; lidr draws the factor times the texture's mean.
+    // factor alone, every pixel of the material saturates; lidr reads the texture per pixel (the factor stays).
     TempDir dir;
     GltfFile file;
     const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
@@ -530,7 +535,7 @@ TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread t
     file.doc["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
     file.doc["materials"] = {
         {{"name", "helmet"}, {"emissiveFactor", {1, 1, 1}}, {"emissiveTexture", {{"index", 0}}},
-         {"normalTexture", {{"index", 1}}}, {"occlusionTexture", {{"index", 1}}},
+         {"normalTexture", {{"index", 1}, {"scale", 0.5}}}, {"occlusionTexture", {{"index", 1}, {"strength", 0.75}, {"texCoord", 1}}},
          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}, {"metallicRoughnessTexture", {{"index", 1}}},
                                    {"metallicFactor", 1.0}, {"roughnessFactor", 0.8}}}},
         {{"name", "lamp"}, {"emissiveFactor", {1, 0.5, 0.25}},
@@ -539,15 +544,65 @@ TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread t
     file.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "helmet.gltf"));
     const lidr::Material& helmet = scene.materials[size_t(scene.meshes[0].material)];
-    requireNear(helmet.emissive, glm::vec3(0.25f));  // factor 1 x the texture's mean (one white texel in four)
-    CHECK(helmet.roughness == Approx(0.8f * 128.0f / 255.0f));
-    CHECK(helmet.metallic == Approx(1.0f));
+    requireNear(helmet.emissive, glm::vec3(1.0f));  // the factor; the texture multiplies it per pixel
+    REQUIRE(helmet.emissiveTexture.present());
+    CHECK(helmet.emissiveTexture.image->width == 2);
+    CHECK(std::memcmp(helmet.emissiveTexture.image->pixels.data(), emission.pixels.data(), 16) == 0);
+    CHECK(helmet.roughness == 0.8f);
+    CHECK(helmet.metallic == 1.0f);
+    REQUIRE(helmet.metallicRoughnessTexture.present());
+    CHECK(helmet.metallicRoughnessTexture.image == helmet.normalTexture.image);  // one image, decoded once
+    CHECK(helmet.normalTexture.scale == 0.5f);
+    CHECK(helmet.occlusionTexture.scale == 0.75f);
+    CHECK(helmet.occlusionTexture.mapping.texCoord == 1);
+    CHECK(helmet.normalTexture.mapping.texCoord == 0);
+    CHECK(helmet.diffuseImage == helmet.normalTexture.image);
     const lidr::Material& lamp = scene.materials[size_t(scene.meshes[1].material)];
     requireNear(lamp.emissive, glm::vec3(4.0f, 2.0f, 1.0f));  // emissiveFactor x emissiveStrength
     std::string all;
     for (const std::string& w : scene.warnings) all += w + "\n";
     INFO(all);
-    for (const char* feature : {"emissiveTexture is drawn as its mean", "metallicRoughnessTexture is drawn as its mean",
-                                "normalTexture is not drawn", "occlusionTexture is not drawn", "sampler wrap 33071"})
-        CHECK_THAT(all, Contains(feature) && Contains("helmet.gltf") && Contains("'helmet'"));
+    CHECK_THAT(all, Contains("sampler wrap 33071") && Contains("helmet.gltf") && Contains("'helmet'"));
+    // the occlusion texture reads TEXCOORD_1, which the primitive lacks: drawn with TEXCOORD_0, said so
+    CHECK_THAT(all, Contains("occlusion texture reads TEXCOORD_1"));
+    CHECK_THAT(all, !Contains("drawn as its mean") && !Contains("is not drawn"));
+}
+
+TEST_CASE("glTF: KHR_texture_transform in lidr's texture space; required extensions lidr reads load", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    lidr::ImageRGBA8 image(1, 1);
+    image.pixels = {255, 255, 255, 255};
+    lidr::writePng(dir.file("white.png"), image);
+    file.doc["images"] = {{{"uri", "white.png"}}};
+    file.doc["textures"] = {{{"source", 0}}};
+    // the extension's own example: offset (0, 1), rotation pi/2, scale 0.5 reads the lower left quadrant
+    const Json transform = {{"offset", {0, 1}}, {"rotation", 1.57079632679}, {"scale", {0.5, 0.5}}, {"texCoord", 1}};
+    file.doc["materials"] = {{{"emissiveTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}};
+    file.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    file.node({{"mesh", 0}}, true);
+    const std::vector<std::vector<std::string>> requiredLists = {
+        {"KHR_texture_transform"}, {"KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform"}};
+    for (const std::vector<std::string>& required : requiredLists) {
+        file.doc["extensionsUsed"] = required;
+        file.doc["extensionsRequired"] = required;
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "transform.gltf"));
+        const lidr::Material& m = scene.materials[size_t(scene.meshes[0].material)];
+        CHECK(m.emissiveTexture.mapping.texCoord == 1);  // the extension's texCoord overrides the textureInfo's
+        // glTF (u, v) -> (0.5 v, 1 - 0.5 u) on these: lidr's (u, 1 - v) in and out
+        const auto lidrUv = [&](glm::vec2 gltf) {
+            const glm::vec3 out = m.emissiveTexture.mapping.transform * glm::vec3(gltf.x, 1.0f - gltf.y, 1.0f);
+            return glm::vec2(out.x, 1.0f - out.y);  // back to glTF's, to compare with the extension's formula
+        };
+        for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f), glm::vec2(1.0f)}) {
+            const glm::vec2 expected(0.5f * uv.y, 1.0f - 0.5f * uv.x);
+            const glm::vec2 got = lidrUv(uv);
+            INFO("(" << uv.x << ", " << uv.y << ") -> (" << got.x << ", " << got.y << ")");
+            CHECK(glm::length(got - expected) < 1e-5f);
+        }
+    }
+    file.doc["extensionsUsed"] = {"KHR_texture_transform", "EXT_unknown_thing"};
+    file.doc["extensionsRequired"] = {"KHR_texture_transform", "EXT_unknown_thing"};
+    REQUIRE_THROWS_WITH(lidr::loadScene(file.writeGltf(dir, "unknown.gltf")),
+                        Contains("unknown.gltf") && Contains("required extension EXT_unknown_thing is not implemented"));
 }
