@@ -356,9 +356,10 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
     StateCache& cache = StateCache::current();
     // Culling goes through the cache on top of the pass's state, which is applied again after; a pass that culls
     // itself, or state the cache does not know, is left alone.
-    const bool mayCull = camera && cullClosedMeshes_ && cache.valid() && !cache.known().cull;
+    const bool mayCull = cache.valid() && !cache.known().cull;
+    const bool cullInner = mayCull && camera && cullClosedMeshes_;
     const RenderState pass = mayCull ? cache.known() : RenderState{};
-    const float reach = mayCull ? nearPlaneReach(*camera) : 0.0f;
+    const float reach = cullInner ? nearPlaneReach(*camera) : 0.0f;
     int drawn = 0;
     DrawState state{program, &program, {}};
     for (size_t i = 0; i < batches_.size(); ++i) {
@@ -369,7 +370,11 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
         if (!select(i, b.boundsMin, b.boundsMax)) continue;
         if (mayCull) {
             RenderState s = pass;
-            const GLenum side = culledSide(b, camera->eye, reach);
+            GLenum side = cullInner ? culledSide(b, camera->eye, reach) : 0;
+            // A one-sided material (glTF's doubleSided false) has no back: its back faces are culled in every
+            // pass, so nothing is lit or drawn from behind. Mesh fronts are counter-clockwise.
+            if (!materials_[size_t(b.material)].doubleSided)
+                side = glm::determinant(glm::mat3(b.transform)) < 0.0f ? GL_FRONT : GL_BACK;
             s.cull = side != 0;
             if (side) s.cullFace = side;
             cache.apply(s);
