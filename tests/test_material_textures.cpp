@@ -117,8 +117,6 @@ long forBand(const Scene& scene, const ImageFloat& depth, double lo, double hi, 
     return count;
 }
 
-glm::dvec3 srgbTexel(int value) { return glm::dvec3(srgbToLinear(value / 255.0)); }
-
 }  // namespace
 
 TEST_CASE("material textures: each texture per pixel against the BRDF model, every mode as the reference",
@@ -338,6 +336,7 @@ TEST_CASE("material variants: a context with fewer texture units leaves out the 
     CHECK((features & material_feature::texture(TextureSlot::Occlusion)) == 0);
     REQUIRE(limited.warnings().size() == 1);
     CHECK_THAT(limited.warnings()[0], Catch::Contains("occlusion texture is not drawn") && Catch::Contains("unit 14"));
+    CHECK(textureUnitWarnings(scene, 13) == limited.warnings());  // what tools print before drawing
     // The context's own units: Mesa's (desktop GL and ES 2.0 alike) has room for every material texture.
     const int units = testGl().maxTextureUnits;
     CAPTURE(units);

@@ -117,11 +117,8 @@ void GpuScene::loadMaterial(const Material& m) {
         const TextureSlot slot = TextureSlot(i);
         gl::Texture t = loadTexture(m, slot);
         if (!t) continue;
-        if (textureSlotInfo(slot).unit >= units) {  // OpenGL ES 2.0 guarantees 8 (doc/colour.md)
-            warnings_.push_back("material '" + m.name + "': the " + textureSlotInfo(slot).what +
-                                " texture is not drawn: it needs texture unit " +
-                                std::to_string(textureSlotInfo(slot).unit) + " and this context has " +
-                                std::to_string(units));
+        if (!textureSlotFits(slot, units)) {  // OpenGL ES 2.0 guarantees 8 (doc/colour.md)
+            warnings_.push_back(textureUnitWarning(m, slot, units));
             continue;
         }
         textures[size_t(i)] = std::move(t);

@@ -70,4 +70,23 @@ ShaderDefines materialDefines(uint32_t features) {
     return defines;
 }
 
+bool textureSlotFits(TextureSlot slot, int textureUnits) { return textureSlotInfo(slot).unit < textureUnits; }
+
+std::string textureUnitWarning(const Material& material, TextureSlot slot, int textureUnits) {
+    return "material '" + material.name + "': the " + textureSlotInfo(slot).what + " texture is not drawn: it needs texture unit " +
+           std::to_string(textureSlotInfo(slot).unit) + " and this context has " + std::to_string(textureUnits);
+}
+
+std::vector<std::string> textureUnitWarnings(const Scene& scene, int textureUnits) {
+    std::vector<std::string> lines;
+    for (const Material& m : scene.materials)
+        for (int i = 0; i < kTextureSlots; ++i) {
+            const TextureSlot slot = TextureSlot(i);
+            const MaterialTexture* t = materialTexture(m, slot);
+            const bool present = t ? t->present() : (m.diffuseImage || !m.diffuseTexture.empty());
+            if (present && !textureSlotFits(slot, textureUnits)) lines.push_back(textureUnitWarning(m, slot, textureUnits));
+        }
+    return lines;
+}
+
 }  // namespace lidr

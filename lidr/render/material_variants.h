@@ -7,6 +7,7 @@
 // defines.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "lidr/gl/shader_source.h"
 #include "lidr/scene/scene.h"
@@ -45,5 +46,12 @@ ShaderDefines materialDefines(uint32_t features);
 const MaterialTexture* materialTexture(const Material& material, TextureSlot slot);
 // The slot's mapping (texture coordinate set and transform).
 const TextureMapping& textureMapping(const Material& material, TextureSlot slot);
+
+// A texture whose unit the context does not have (OpenGL ES 2.0 guarantees 8) is left out of its material's
+// variant. The warning line for it; and the lines for every such texture of a scene (tools print them with the
+// scene's warnings, before drawing).
+bool textureSlotFits(TextureSlot slot, int textureUnits);
+std::string textureUnitWarning(const Material& material, TextureSlot slot, int textureUnits);
+std::vector<std::string> textureUnitWarnings(const Scene& scene, int textureUnits);
 
 }  // namespace lidr

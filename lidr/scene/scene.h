@@ -55,11 +55,11 @@ struct Material {
     float metallic = 0.0f;   // [0, 1]
     float roughness = 1.0f;  // [0, 1], perceptual (alpha = roughness^2)
     // Per-pixel textures (glTF), each drawn by the shader variant that has it (lidr/render/material_variants.h).
-    TextureMapping diffuseMapping;       // of the base colour texture (sRGB)
-    MaterialTexture emissiveTexture;     // sRGB, times `emissive`
-    MaterialTexture metallicRoughnessTexture;  // linear: G x roughness, B x metallic
-    MaterialTexture occlusionTexture;    // linear: R, mixed in by `scale` (glTF's strength); ambient light only
-    MaterialTexture normalTexture;       // linear, tangent space; `scale` scales its x and y
+    TextureMapping diffuseMapping{};     // of the base colour texture (sRGB)
+    MaterialTexture emissiveTexture{};   // sRGB, times `emissive`
+    MaterialTexture metallicRoughnessTexture{};  // linear: G x roughness, B x metallic
+    MaterialTexture occlusionTexture{};  // linear: R, mixed in by `scale` (glTF's strength); ambient light only
+    MaterialTexture normalTexture{};     // linear, tangent space; `scale` scales its x and y
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;            // MASK: base colour alpha below it is cut out (no depth, no light)
     bool doubleSided = true;             // false: the back of each triangle is culled (glTF's default is false)
@@ -83,8 +83,8 @@ struct Mesh {
     std::vector<glm::vec2> texCoords;  // empty or one per position
     std::vector<uint32_t> indices;     // triangles
     int material = 0;
-    std::vector<glm::vec2> texCoords1; // the second set (glTF TEXCOORD_1): empty or one per position
-    std::vector<glm::vec4> tangents;   // empty or one per position: xyz unit tangent along +u, w = +-1 handedness
+    std::vector<glm::vec2> texCoords1{};  // the second set (glTF TEXCOORD_1): empty or one per position
+    std::vector<glm::vec4> tangents{};    // empty or one per position: xyz unit tangent along +u, w = +-1 handedness
     size_t triangleCount() const { return indices.size() / 3; }
 };
 

@@ -3,10 +3,11 @@
 // mixed by metallic) under point lights with attenuation saturate(1 - d^2 / r^2). LIDR, tiled, forward and the
 // brute-force reference all call it; each ends with lidrOutput (output_transform.glsl). CPU model: lidr/eval/brdf.h.
 #include "output_transform.glsl"
-#include "material.glsl"
 #define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
 uniform vec3 uAmbient;
+#include "material.glsl"
+
 struct LidrSurface {
     vec3 position;
     vec3 normal;
