@@ -208,7 +208,7 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK an alpha tes
     const lidr::Material& leaves = scene.materials[size_t(scene.meshes[1].material)];
     CHECK(leaves.opacity == 1.0f);
     CHECK(leaves.alphaMode == lidr::AlphaMode::Mask);
-    CHECK(leaves.alphaCutoff == 0.25f);
+    CHECK(leaves.alphaCutoff == Approx(0.25f / 0.3f));  // factor alpha 0.3 x texel alpha < 0.25: texel < 0.833
     CHECK(leaves.doubleSided);
     CHECK(glass.alphaMode == lidr::AlphaMode::Opaque);
     CHECK_FALSE(glass.doubleSided);  // glTF's default

@@ -86,8 +86,8 @@ void validateMaterial(const Material& material, size_t index) {
                            std::to_string(texture->mapping.texCoord) + "; lidr has sets 0 and 1");
         if (!std::isfinite(texture->scale)) fail(item, std::string(what) + " texture scale is not finite");
     }
-    if (!(material.alphaCutoff >= 0.0f && material.alphaCutoff <= 1.0f))
-        fail(item, "alphaCutoff must be in [0, 1], got " + str(material.alphaCutoff));
+    if (!(material.alphaCutoff >= 0.0f && std::isfinite(material.alphaCutoff)))
+        fail(item, "alphaCutoff must be finite and >= 0, got " + str(material.alphaCutoff));
 }
 
 void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {

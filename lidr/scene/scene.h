@@ -61,7 +61,7 @@ struct Material {
     MaterialTexture occlusionTexture{};  // linear: R, mixed in by `scale` (glTF's strength); ambient light only
     MaterialTexture normalTexture{};     // linear, tangent space; `scale` scales its x and y
     AlphaMode alphaMode = AlphaMode::Opaque;
-    float alphaCutoff = 0.5f;            // MASK: base colour alpha below it is cut out (no depth, no light)
+    float alphaCutoff = 0.5f;            // MASK: texture alpha below it is cut out (glTF's cutoff / factor alpha)
     bool doubleSided = true;             // false: the back of each triangle is culled (glTF's default is false)
 };
 

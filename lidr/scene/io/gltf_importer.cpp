@@ -628,7 +628,10 @@ private:
             material.alphaMode = AlphaMode::Mask;
             if (!(std::isfinite(source.alphaCutoff) && source.alphaCutoff >= 0.0 && source.alphaCutoff <= 1.0))
                 fail(name + ": alphaCutoff must be in [0, 1], got " + std::to_string(source.alphaCutoff));
-            material.alphaCutoff = float(source.alphaCutoff);
+            // The test is factor alpha x texel alpha < cutoff; the shaders test the texel alone against the cutoff
+            // divided by the factor's alpha (above 1: everything is cut, as factor alpha 0 cuts everything).
+            const float cutoff = float(source.alphaCutoff);
+            material.alphaCutoff = base.a > 0.0f ? std::min(cutoff / base.a, 2.0f) : (cutoff > 0.0f ? 2.0f : 0.0f);
         }
         material.doubleSided = source.doubleSided;
         readEmissiveStrength(source, name, material);
