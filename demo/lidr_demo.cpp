@@ -29,6 +29,7 @@
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/material_variants.h"
 #include "lidr/render/present.h"
 #include "lidr/base/visualize.h"
 
@@ -155,6 +156,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                     bool withReference, const demo::RendererChoice& rc) {
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
+    std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
+    for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
@@ -174,7 +177,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
                         {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
-                        {"warnings", scene.warnings}};
+                        {"warnings", warnings}};
     summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
@@ -183,7 +186,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
-    for (const std::string& warning : scene.warnings) s << "warning    " << warning << "\n";
+    for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
     if (autoMode) {
@@ -272,6 +275,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const LidrOptions options = rc.lidrOptions(scene);
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
+    std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
+    for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
 
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
@@ -295,7 +300,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
                         {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
-                        {"warnings", scene.warnings}};
+                        {"warnings", warnings}};
     const AutoDecision& decision = stats.autoDecision;
     const int budget = renderer.scheme().config().budget;
     summary["lidr"] = {{"scheme", packingSchemeName(renderer.scheme().config().scheme)}, {"budget", budget},
@@ -382,7 +387,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
-    for (const std::string& warning : scene.warnings) s << "warning    " << warning << "\n";
+    for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")

@@ -1,14 +1,48 @@
 #!/usr/bin/env python3
 """Writes a glTF 2.0 binary (.glb) test model: a floor, four boxes and a sphere with five materials and no
 lights, so a viewer or page has to scatter its lights (lidr::scatterLights). --triangles N adds a finely
-tessellated sphere to reach about N triangles (the page's large-model check). Python's standard library only.
+tessellated sphere to reach about N triangles (the page's large-model check). --textured gives the parts
+texture coordinates and glTF textures, embedded as PNG: the floor a base colour checker, a normal texture of
+grooves, metallic-roughness and occlusion (repeated by KHR_texture_transform), the sphere emissive stripes
+with emissiveFactor 1 and a metallic-roughness texture, one box an alpha MASK cut-out, double-sided.
+Python's standard library only.
 
-    python3 tests/make_glb.py OUT.glb [--triangles N]
+    python3 tests/make_glb.py OUT.glb [--triangles N] [--textured]
 """
 import argparse
 import json
 import math
 import struct
+import zlib
+
+
+def png(width, height, texel):
+    """An RGBA8 PNG of texel(x, y) -> (r, g, b, a), rows top to bottom."""
+    rows = b"".join(b"\0" + bytes(c for x in range(width) for c in texel(x, y)) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+
+
+def textures():
+    """The --textured model's images: checker, grooves (normal), MR, occlusion, emissive stripes, cut-out."""
+    def grooves(x, y):  # tangent-space normals of a groove every 16 texels in x and y
+        gx = math.sin(2 * math.pi * x / 16) * 0.6 if x % 16 < 4 else 0.0
+        gy = math.sin(2 * math.pi * y / 16) * 0.6 if y % 16 < 4 else 0.0
+        n = (-gx, gy, 1.0)
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(int(round((c / length * 0.5 + 0.5) * 255)) for c in n) + (255,)
+    return [
+        png(64, 64, lambda x, y: (200, 190, 170, 255) if (x // 16 + y // 16) % 2 else (90, 60, 50, 255)),
+        png(64, 64, grooves),
+        png(64, 64, lambda x, y: (0, 60 if (x // 16 + y // 16) % 2 else 220, 0, 255)),
+        png(64, 64, lambda x, y: ((90 if x % 16 < 4 or y % 16 < 4 else 255), 0, 0, 255)),
+        png(64, 16, lambda x, y: (255, 160, 40, 255) if x % 16 < 3 else (0, 0, 0, 255)),
+        png(32, 32, lambda x, y: (230, 230, 240, 0 if ((x - 16) ** 2 + (y - 16) ** 2) < 64 or x % 8 < 2 else 255)),
+        png(8, 8, lambda x, y: (0, 90, 255, 255)),  # sphere: smooth metal
+    ]
 
 
 def box(cx, cy, cz, sx, sy, sz):
@@ -64,6 +98,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--triangles", type=int, default=0,
                     help="add a tessellated sphere so the model has about this many triangles")
+    ap.add_argument("--textured", action="store_true", help="texture coordinates and glTF textures (see above)")
     args = ap.parse_args()
 
     parts = [
@@ -86,9 +121,27 @@ def main():
     def add_view(data, target):
         while len(binary) % 4:
             binary.append(0)
-        views.append({"buffer": 0, "byteOffset": len(binary), "byteLength": len(data), "target": target})
+        views.append({"buffer": 0, "byteOffset": len(binary), "byteLength": len(data)})
+        if target:
+            views[-1]["target"] = target
         binary.extend(data)
         return len(views) - 1
+
+    images = []
+    if args.textured:
+        for data in textures():
+            images.append({"bufferView": add_view(data, None), "mimeType": "image/png"})
+
+    def uv_of(k, p, n):
+        """Texture coordinates: the floor's world x, z; the sphere's longitude, latitude; a box's face plane."""
+        if k == 0:
+            return ((p[0] + 4.0) / 8.0, (p[2] + 4.0) / 8.0)
+        if k == 5:
+            d = [p[0] - 0.0, p[1] - 1.0, p[2] - 0.0]
+            return (math.atan2(d[2], d[0]) / (2 * math.pi) + 0.5, math.acos(max(-1.0, min(1.0, d[1]))) / math.pi)
+        axis = max(range(3), key=lambda i: abs(n[i]))
+        a, b = [i for i in range(3) if i != axis]
+        return (p[a] * 0.8, p[b] * 0.8)
 
     for k, ((pos, nor, idx), colour) in enumerate(parts):
         pv = add_view(struct.pack("<%df" % (3 * len(pos)), *[c for p in pos for c in p]), 34962)
@@ -96,16 +149,38 @@ def main():
         iv = add_view(struct.pack("<%dI" % len(idx), *idx), 34963)
         lo = [min(p[i] for p in pos) for i in range(3)]
         hi = [max(p[i] for p in pos) for i in range(3)]
+        attributes = {"POSITION": len(accessors), "NORMAL": len(accessors) + 1}
         accessors += [
             {"bufferView": pv, "componentType": 5126, "count": len(pos), "type": "VEC3", "min": lo, "max": hi},
             {"bufferView": nv, "componentType": 5126, "count": len(nor), "type": "VEC3"},
             {"bufferView": iv, "componentType": 5125, "count": len(idx), "type": "SCALAR"},
         ]
-        materials.append({"name": "material%d" % k,
-                          "pbrMetallicRoughness": {"baseColorFactor": list(colour) + [1.0],
-                                                   "metallicFactor": 0.0, "roughnessFactor": 0.6}})
+        material = {"name": "material%d" % k,
+                    "pbrMetallicRoughness": {"baseColorFactor": list(colour) + [1.0],
+                                             "metallicFactor": 0.0, "roughnessFactor": 0.6}}
+        if args.textured:
+            uvs = [c for p, n in zip(pos, nor) for c in uv_of(k, p, n)]
+            attributes["TEXCOORD_0"] = len(accessors)
+            accessors.append({"bufferView": add_view(struct.pack("<%df" % len(uvs), *uvs), 34962),
+                              "componentType": 5126, "count": len(pos), "type": "VEC2"})
+            repeat = {"extensions": {"KHR_texture_transform": {"scale": [4, 4]}}}
+            pbr = material["pbrMetallicRoughness"]
+            if k == 0:  # floor: checker, grooves, MR, occlusion, repeated 4 times
+                pbr.update({"baseColorFactor": [1, 1, 1, 1], "baseColorTexture": dict({"index": 0}, **repeat),
+                            "metallicRoughnessTexture": dict({"index": 2}, **repeat), "metallicFactor": 1.0,
+                            "roughnessFactor": 1.0})
+                material["normalTexture"] = dict({"index": 1, "scale": 1.0}, **repeat)
+                material["occlusionTexture"] = dict({"index": 3, "strength": 1.0}, **repeat)
+            elif k == 5:  # sphere: emissive stripes at factor 1, smooth metal
+                material["emissiveFactor"] = [1, 1, 1]
+                material["emissiveTexture"] = {"index": 4}
+                pbr.update({"metallicRoughnessTexture": {"index": 6}, "metallicFactor": 1.0, "roughnessFactor": 1.0})
+            elif k == 1:  # a cut-out box, seen through its holes
+                pbr["baseColorTexture"] = {"index": 5}
+                material.update({"alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True})
+        materials.append(material)
         meshes.append({"name": "part%d" % k, "primitives": [
-            {"attributes": {"POSITION": 3 * k, "NORMAL": 3 * k + 1}, "indices": 3 * k + 2, "material": k}]})
+            {"attributes": attributes, "indices": attributes["NORMAL"] + 1, "material": k}]})
         nodes.append({"mesh": k})
     while len(binary) % 4:
         binary.append(0)
@@ -114,6 +189,9 @@ def main():
            "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
            "materials": materials, "accessors": accessors, "bufferViews": views,
            "buffers": [{"byteLength": len(binary)}]}
+    if images:
+        doc.update({"images": images, "textures": [{"source": i} for i in range(len(images))],
+                    "extensionsUsed": ["KHR_texture_transform"]})
     text = json.dumps(doc, separators=(",", ":")).encode()
     text += b" " * (-len(text) % 4)
     total = 12 + 8 + len(text) + 8 + len(binary)

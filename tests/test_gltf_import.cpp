@@ -18,6 +18,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "gltf_file.h"
 #include "temp_dir.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
@@ -36,76 +37,8 @@ using lidr::test::TempDir;
 namespace {
 
 
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = uint32_t(bytes[i]) << 16;
-        if (i + 1 < bytes.size()) v |= uint32_t(bytes[i + 1]) << 8;
-        if (i + 2 < bytes.size()) v |= bytes[i + 2];
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
-    }
-    return out;
-}
-
-// A glTF document under construction: one binary buffer, accessors appended to it.
-struct GltfFile {
-    Json doc = Json{{"asset", {{"version", "2.0"}}}, {"buffers", Json::array()}, {"bufferViews", Json::array()},
-                    {"accessors", Json::array()}, {"meshes", Json::array()}, {"nodes", Json::array()},
-                    {"scenes", Json::array({Json{{"nodes", Json::array()}}})}, {"scene", 0}};
-    std::vector<unsigned char> bin;
-
-    int accessor(const void* data, size_t bytes, int componentType, const char* type, size_t count) {
-        while (bin.size() % 4) bin.push_back(0);
-        const size_t offset = bin.size();
-        bin.insert(bin.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
-        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
-        doc["accessors"].push_back({{"bufferView", doc["bufferViews"].size() - 1}, {"componentType", componentType},
-                                    {"type", type}, {"count", count}});
-        return int(doc["accessors"].size() - 1);
-    }
-    int positions(const std::vector<glm::vec3>& p) { return accessor(p.data(), p.size() * 12, 5126, "VEC3", p.size()); }
-    int indices(const std::vector<uint16_t>& i) { return accessor(i.data(), i.size() * 2, 5123, "SCALAR", i.size()); }
-
-    // A mesh of one primitive; returns its index.
-    int mesh(Json primitive) {
-        doc["meshes"].push_back({{"primitives", Json::array({primitive})}});
-        return int(doc["meshes"].size() - 1);
-    }
-    int node(Json node, bool root) {
-        doc["nodes"].push_back(node);
-        const int index = int(doc["nodes"].size() - 1);
-        if (root) doc["scenes"][0]["nodes"].push_back(index);
-        return index;
-    }
-
-    std::string writeGltf(const TempDir& dir, const std::string& name) {
-        doc["buffers"] = Json::array({{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
-        return dir.write(name, doc.dump());
-    }
-    std::string writeGlb(const TempDir& dir, const std::string& name) {
-        doc["buffers"] = Json::array({{{"byteLength", bin.size()}}});
-        std::string json = doc.dump();
-        while (json.size() % 4) json += ' ';
-        std::vector<unsigned char> binary = bin;
-        while (binary.size() % 4) binary.push_back(0);
-        std::string out;
-        const auto u32 = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-        out += "glTF";
-        u32(2);
-        u32(uint32_t(12 + 8 + json.size() + 8 + binary.size()));
-        u32(uint32_t(json.size()));
-        out += "JSON";
-        out += json;
-        u32(uint32_t(binary.size()));
-        out.append("BIN\0", 4);
-        out.append(reinterpret_cast<const char*>(binary.data()), binary.size());
-        return dir.write(name, out);
-    }
-};
+using lidr::test::base64;
+using lidr::test::GltfFile;
 
 // One triangle (0,0,0) (1,0,0) (0,1,0), indexed, as mesh 0.
 GltfFile oneTriangle() {
@@ -244,7 +177,7 @@ TEST_CASE("glTF: the first perspective camera is the view, else the default view
     }
 }
 
-TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with a warning, embedded texture", "[gltf][cpu]") {
+TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK an alpha test, embedded texture", "[gltf][cpu]") {
     TempDir dir;
     GltfFile file;
     const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
@@ -262,7 +195,8 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     file.doc["textures"] = {{{"source", 0}}};
     file.doc["materials"] = {
         {{"name", "glass"}, {"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 0.5}}}}},
-        {{"name", "leaves"}, {"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.3}}}}},
+        {{"name", "leaves"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.25}, {"doubleSided", true},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.3}}}}},
         {{"name", "painted"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
     for (int m = 0; m < 3; ++m) file.node({{"mesh", m}}, true);
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "materials.gltf"));
@@ -273,8 +207,12 @@ TEST_CASE("glTF: materials: base colour, BLEND is transparent, MASK opaque with 
     CHECK(glass.opacity == 0.5f);  // transparent: drawn after the opaque geometry, blended
     const lidr::Material& leaves = scene.materials[size_t(scene.meshes[1].material)];
     CHECK(leaves.opacity == 1.0f);
-    REQUIRE(scene.warnings.size() == 1);
-    CHECK_THAT(scene.warnings[0], Contains("'leaves'") && Contains("MASK is drawn opaque"));
+    CHECK(leaves.alphaMode == lidr::AlphaMode::Mask);
+    CHECK(leaves.alphaCutoff == Approx(0.25f / 0.3f));  // factor alpha 0.3 x texel alpha < 0.25: texel < 0.833
+    CHECK(leaves.doubleSided);
+    CHECK(glass.alphaMode == lidr::AlphaMode::Opaque);
+    CHECK_FALSE(glass.doubleSided);  // glTF's default
+    CHECK(scene.warnings.empty());
     const lidr::Material& painted = scene.materials[size_t(scene.meshes[2].material)];
     REQUIRE(painted.diffuseImage);
     REQUIRE(painted.diffuseImage->width == 2);
@@ -502,9 +440,9 @@ TEST_CASE("image headers: PNG and JPEG kind and size read without decoding", "[g
     }
 }
 
-TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread textures are warnings", "[gltf][cpu]") {
+TEST_CASE("glTF: every material texture is read with its set, strength, scale and transform; samplers warn", "[gltf][cpu]") {
     // The flat-white helmet: emissiveFactor [1, 1, 1] with an emissive texture that is mostly black. Drawn as the
-    // factor alone, every pixel of the material saturates; lidr draws the factor times the texture's mean.
+    // factor alone, every pixel of the material saturates; lidr reads the texture per pixel (the factor stays).
     TempDir dir;
     GltfFile file;
     const int p = file.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
@@ -530,7 +468,7 @@ TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread t
     file.doc["textures"] = {{{"source", 0}}, {{"source", 1}, {"sampler", 0}}};
     file.doc["materials"] = {
         {{"name", "helmet"}, {"emissiveFactor", {1, 1, 1}}, {"emissiveTexture", {{"index", 0}}},
-         {"normalTexture", {{"index", 1}}}, {"occlusionTexture", {{"index", 1}}},
+         {"normalTexture", {{"index", 1}, {"scale", 0.5}}}, {"occlusionTexture", {{"index", 1}, {"strength", 0.75}, {"texCoord", 1}}},
          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}, {"metallicRoughnessTexture", {{"index", 1}}},
                                    {"metallicFactor", 1.0}, {"roughnessFactor", 0.8}}}},
         {{"name", "lamp"}, {"emissiveFactor", {1, 0.5, 0.25}},
@@ -539,15 +477,65 @@ TEST_CASE("glTF: an emissive factor is never drawn without its texture; unread t
     file.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "helmet.gltf"));
     const lidr::Material& helmet = scene.materials[size_t(scene.meshes[0].material)];
-    requireNear(helmet.emissive, glm::vec3(0.25f));  // factor 1 x the texture's mean (one white texel in four)
-    CHECK(helmet.roughness == Approx(0.8f * 128.0f / 255.0f));
-    CHECK(helmet.metallic == Approx(1.0f));
+    requireNear(helmet.emissive, glm::vec3(1.0f));  // the factor; the texture multiplies it per pixel
+    REQUIRE(helmet.emissiveTexture.present());
+    CHECK(helmet.emissiveTexture.image->width == 2);
+    CHECK(std::memcmp(helmet.emissiveTexture.image->pixels.data(), emission.pixels.data(), 16) == 0);
+    CHECK(helmet.roughness == 0.8f);
+    CHECK(helmet.metallic == 1.0f);
+    REQUIRE(helmet.metallicRoughnessTexture.present());
+    CHECK(helmet.metallicRoughnessTexture.image == helmet.normalTexture.image);  // one image, decoded once
+    CHECK(helmet.normalTexture.scale == 0.5f);
+    CHECK(helmet.occlusionTexture.scale == 0.75f);
+    CHECK(helmet.occlusionTexture.mapping.texCoord == 1);
+    CHECK(helmet.normalTexture.mapping.texCoord == 0);
+    CHECK(helmet.diffuseImage == helmet.normalTexture.image);
     const lidr::Material& lamp = scene.materials[size_t(scene.meshes[1].material)];
     requireNear(lamp.emissive, glm::vec3(4.0f, 2.0f, 1.0f));  // emissiveFactor x emissiveStrength
     std::string all;
     for (const std::string& w : scene.warnings) all += w + "\n";
     INFO(all);
-    for (const char* feature : {"emissiveTexture is drawn as its mean", "metallicRoughnessTexture is drawn as its mean",
-                                "normalTexture is not drawn", "occlusionTexture is not drawn", "sampler wrap 33071"})
-        CHECK_THAT(all, Contains(feature) && Contains("helmet.gltf") && Contains("'helmet'"));
+    CHECK_THAT(all, Contains("sampler wrap 33071") && Contains("helmet.gltf") && Contains("'helmet'"));
+    // the occlusion texture reads TEXCOORD_1, which the primitive lacks: drawn with TEXCOORD_0, said so
+    CHECK_THAT(all, Contains("occlusion texture reads TEXCOORD_1"));
+    CHECK_THAT(all, !Contains("drawn as its mean") && !Contains("is not drawn"));
+}
+
+TEST_CASE("glTF: KHR_texture_transform in lidr's texture space; required extensions lidr reads load", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    lidr::ImageRGBA8 image(1, 1);
+    image.pixels = {255, 255, 255, 255};
+    lidr::writePng(dir.file("white.png"), image);
+    file.doc["images"] = {{{"uri", "white.png"}}};
+    file.doc["textures"] = {{{"source", 0}}};
+    // the extension's own example: offset (0, 1), rotation pi/2, scale 0.5 reads the lower left quadrant
+    const Json transform = {{"offset", {0, 1}}, {"rotation", 1.57079632679}, {"scale", {0.5, 0.5}}, {"texCoord", 1}};
+    file.doc["materials"] = {{{"emissiveTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}};
+    file.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    file.node({{"mesh", 0}}, true);
+    const std::vector<std::vector<std::string>> requiredLists = {
+        {"KHR_texture_transform"}, {"KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_texture_transform"}};
+    for (const std::vector<std::string>& required : requiredLists) {
+        file.doc["extensionsUsed"] = required;
+        file.doc["extensionsRequired"] = required;
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "transform.gltf"));
+        const lidr::Material& m = scene.materials[size_t(scene.meshes[0].material)];
+        CHECK(m.emissiveTexture.mapping.texCoord == 1);  // the extension's texCoord overrides the textureInfo's
+        // glTF (u, v) -> (0.5 v, 1 - 0.5 u) on these: lidr's (u, 1 - v) in and out
+        const auto lidrUv = [&](glm::vec2 gltf) {
+            const glm::vec3 out = m.emissiveTexture.mapping.transform * glm::vec3(gltf.x, 1.0f - gltf.y, 1.0f);
+            return glm::vec2(out.x, 1.0f - out.y);  // back to glTF's, to compare with the extension's formula
+        };
+        for (const glm::vec2 uv : {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f), glm::vec2(1.0f)}) {
+            const glm::vec2 expected(0.5f * uv.y, 1.0f - 0.5f * uv.x);
+            const glm::vec2 got = lidrUv(uv);
+            INFO("(" << uv.x << ", " << uv.y << ") -> (" << got.x << ", " << got.y << ")");
+            CHECK(glm::length(got - expected) < 1e-5f);
+        }
+    }
+    file.doc["extensionsUsed"] = {"KHR_texture_transform", "EXT_unknown_thing"};
+    file.doc["extensionsRequired"] = {"KHR_texture_transform", "EXT_unknown_thing"};
+    REQUIRE_THROWS_WITH(lidr::loadScene(file.writeGltf(dir, "unknown.gltf")),
+                        Contains("unknown.gltf") && Contains("required extension EXT_unknown_thing is not implemented"));
 }

@@ -26,8 +26,14 @@ enum TextureUnit : int {
     kUnitLightPosRadius = 8,
     kUnitLightColor = 9,
     kUnitLightPosRadiusLow = 10,
-    // Every shading pass: the material's texture.
+    // Every shading pass: the material's base colour texture.
     kUnitMaterial = 11,
+    // The other material textures, bound only by the shader variants that read them (lidr/render/material_variants.h);
+    // a context with fewer units draws the material without the textures that do not fit (doc/colour.md).
+    kUnitEmissive = 12,
+    kUnitMetallicRoughness = 13,
+    kUnitOcclusion = 14,
+    kUnitNormal = 15,
     // FramePresenter: the frame.
     kUnitPresentedFrame = 0,
     // The highest unit a shading pass binds (capability checks).
@@ -40,6 +46,8 @@ enum Attribute : GLuint {
     kNormal = 1,
     kTexCoord = 2,
     kVolumeSlot = 3,  // light volume batches: the copy a vertex belongs to (lidr/technique/light_volume_pass.h)
+    kTexCoord1 = 4,   // scene geometry: the second texture coordinate set (material variants that read it)
+    kTangent = 5,     // scene geometry: the tangent (material variants with a normal texture)
 };
 
 }  // namespace lidr::gl

@@ -265,7 +265,90 @@ Program Program::create(const std::string& name, const std::string& vs, const st
         throw GlError("program '" + name + "' failed to link:\n" + log);
     }
     checkGl(("Program::create " + name).c_str());
+    p.sources_ = std::make_unique<Sources>();
+    p.sources_->vertex = vs;
+    p.sources_->fragment = fs;
+    p.sources_->attributes = attributes;
     return p;
+}
+
+namespace {
+// `defines` as lines after the first line (the #version, and with it anything the source needs first).
+std::string withDefines(const std::string& source, const std::vector<std::pair<std::string, std::string>>& defines) {
+    std::string lines;
+    for (const auto& [name, value] : defines) lines += "#define " + name + " " + value + "\n";
+    const size_t eol = source.find('\n');
+    if (source.compare(0, 8, "#version") != 0 || eol == std::string::npos) return lines + source;
+    return source.substr(0, eol + 1) + lines + source.substr(eol + 1);
+}
+}  // namespace
+
+const Program& Program::variant(uint32_t key, const std::vector<std::pair<std::string, std::string>>& defines) const {
+    if (key == 0 || !sources_) return *this;
+    auto it = sources_->variants.find(key);
+    if (it == sources_->variants.end()) {
+        Program v = create(name_ + "-variant-" + std::to_string(key), withDefines(sources_->vertex, defines),
+                           withDefines(sources_->fragment, defines), sources_->attributes);
+        v.sources_.reset();
+        it = sources_->variants.emplace(key, std::make_unique<Program>(std::move(v))).first;
+    }
+    return *it->second;
+}
+
+namespace {
+bool floatUniform(GLenum type) {
+    return type == GL_FLOAT || type == GL_FLOAT_VEC2 || type == GL_FLOAT_VEC3 || type == GL_FLOAT_VEC4 ||
+           type == GL_FLOAT_MAT2 || type == GL_FLOAT_MAT3 || type == GL_FLOAT_MAT4;
+}
+}  // namespace
+
+void Program::copyUniformsFrom(const Program& source) const {
+    if (copiesFrom_ != source.id_) {  // the plan: matching locations, element by element for arrays
+        copies_.clear();
+        GLint count = 0, longest = 0;
+        glGetProgramiv(source.id_, GL_ACTIVE_UNIFORMS, &count);
+        glGetProgramiv(source.id_, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+        std::vector<char> buffer(size_t(std::max(longest, 1)) + 16);
+        for (GLint i = 0; i < count; ++i) {
+            GLint size = 0;
+            GLenum type = 0;
+            glGetActiveUniform(source.id_, GLuint(i), GLsizei(buffer.size()), nullptr, &size, &type, buffer.data());
+            std::string name = buffer.data();
+            if (name.compare(0, 3, "gl_") == 0) continue;
+            if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
+            for (GLint e = 0; e < size; ++e) {
+                const std::string element = size > 1 ? name + "[" + std::to_string(e) + "]" : name;
+                const GLint from = glGetUniformLocation(source.id_, element.c_str());
+                const GLint to = glGetUniformLocation(id_, element.c_str());
+                if (from >= 0 && to >= 0) copies_.push_back({from, to, type});
+            }
+        }
+        copiesFrom_ = source.id_;
+    }
+    for (const UniformCopy& c : copies_) {
+        if (floatUniform(c.type)) {
+            GLfloat v[16] = {};
+            glGetUniformfv(source.id_, c.from, v);
+            switch (c.type) {
+            case GL_FLOAT: glUniform1fv(c.to, 1, v); break;
+            case GL_FLOAT_VEC2: glUniform2fv(c.to, 1, v); break;
+            case GL_FLOAT_VEC3: glUniform3fv(c.to, 1, v); break;
+            case GL_FLOAT_VEC4: glUniform4fv(c.to, 1, v); break;
+            case GL_FLOAT_MAT2: glUniformMatrix2fv(c.to, 1, GL_FALSE, v); break;
+            case GL_FLOAT_MAT3: glUniformMatrix3fv(c.to, 1, GL_FALSE, v); break;
+            default: glUniformMatrix4fv(c.to, 1, GL_FALSE, v); break;
+            }
+        } else {  // int, bool and sampler types
+            GLint v[4] = {};
+            glGetUniformiv(source.id_, c.from, v);
+            switch (c.type) {
+            case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(c.to, 1, v); break;
+            case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(c.to, 1, v); break;
+            case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(c.to, 1, v); break;
+            default: glUniform1iv(c.to, 1, v); break;
+            }
+        }
+    }
 }
 
 void Program::use() const {

@@ -1,6 +1,9 @@
 #pragma once
 // Thin RAII owners of GL objects. Each one deletes its object in the destructor, so a renderer that is
 // destroyed leaves nothing behind; liveGlObjects() counts what is alive (tests check it returns to zero).
+#include <cstdint>
+#include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -147,7 +150,27 @@ public:
     void set(const char* name, const glm::mat4& v) const;
     const std::string& name() const { return name_; }
 
+    // Shader variants, the Filament / bgfx way: this program's own sources compiled again with `defines` added
+    // after each `#version` line, on first use, and kept under `key` (a bit set the caller defines; equal keys
+    // must mean equal defines). Key 0 is this program itself. The variant lives as long as this program.
+    const Program& variant(uint32_t key, const std::vector<std::pair<std::string, std::string>>& defines) const;
+    // Sets every active uniform this program shares with `source` (same name and type) to source's value: a
+    // variant takes the per-frame state its base program was given (samplers' units included).
+    void copyUniformsFrom(const Program& source) const;
+
 private:
+    struct Sources {
+        std::string vertex, fragment;
+        std::vector<std::pair<std::string, GLuint>> attributes;
+        std::map<uint32_t, std::unique_ptr<Program>> variants;
+    };
+    struct UniformCopy {
+        GLint from = -1, to = -1;
+        GLenum type = 0;
+    };
+    std::unique_ptr<Sources> sources_;  // the base program's (variants have none: they make no variants)
+    mutable std::vector<UniformCopy> copies_;  // from the base program, found on the first copy
+    mutable GLuint copiesFrom_ = 0;
     std::string name_;
     std::vector<std::string> declared_;  // uniform names the sources declare
     mutable std::unordered_map<std::string, GLint> uniforms_;

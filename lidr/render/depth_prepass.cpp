@@ -9,7 +9,8 @@ namespace lidr {
 
 const std::vector<std::pair<std::string, GLuint>>& geometryAttributes() {
     static const std::vector<std::pair<std::string, GLuint>> attributes = {
-        {"aPosition", gl::kPosition}, {"aNormal", gl::kNormal}, {"aTexCoord", gl::kTexCoord}};
+        {"aPosition", gl::kPosition}, {"aNormal", gl::kNormal}, {"aTexCoord", gl::kTexCoord},
+        {"aTexCoord1", gl::kTexCoord1}, {"aTangent", gl::kTangent}};  // the last two: material variants only
     return attributes;
 }
 

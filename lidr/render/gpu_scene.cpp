@@ -11,6 +11,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/scene/tangents.h"
 
 namespace lidr {
 
@@ -25,14 +26,24 @@ constexpr GLint kSrgb8Alpha8 = 0x8C43;  // GL_SRGB8_ALPHA8, core since GL 2.1
 
 // Base-colour texels are sRGB-encoded. Desktop GL decodes them in the texture unit (before filtering, as it
 // should be); an OpenGL ES 2.0 / WebGL 1 context gets RGBA8 and shading.glsl decodes under GL_ES.
-GLint baseColorTextureFormat() {
+GLint colorTextureFormat() {
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     const bool gles = version && std::strncmp(version, "OpenGL ES", 9) == 0;
     return gles ? GLint(GL_RGBA8) : kSrgb8Alpha8;
 }
+
+int textureUnitLimitForTests = 0;  // 0: the context's own
+
+int materialTextureUnits() {
+    GLint units = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+    return textureUnitLimitForTests > 0 ? std::min(int(units), textureUnitLimitForTests) : int(units);
+}
 }  // namespace
 
-GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
+void GpuScene::setTextureUnitLimitForTests(int units) { textureUnitLimitForTests = units; }
+
+GpuScene::Batch GpuScene::upload(const Mesh& mesh, const Material& material, uint32_t features, DrawOrder order) const {
     std::vector<Vertex> vertices(mesh.positions.size());
     glm::vec3 sum(0.0f);
     for (size_t i = 0; i < vertices.size(); ++i) {
@@ -53,6 +64,13 @@ GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
             reversed.insert(reversed.end(), mesh.indices.begin() + 3 * t, mesh.indices.begin() + 3 * t + 3);
     }
     const std::vector<uint32_t>& indices = order == DrawOrder::Reversed ? reversed : mesh.indices;
+    if (!mesh.texCoords1.empty())
+        b.texCoords1 = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.texCoords1.data(), mesh.texCoords1.size() * sizeof(glm::vec2));
+    if (features & material_feature::texture(TextureSlot::Normal)) {  // the file's tangents, or made here
+        const std::vector<glm::vec4> tangents =
+            mesh.tangents.empty() ? generateTangents(mesh, material.normalTexture.mapping.texCoord) : mesh.tangents;
+        b.tangents = gl::Buffer::create(GL_ARRAY_BUFFER, tangents.data(), tangents.size() * sizeof(glm::vec4));
+    }
     b.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint32_t));
     b.indexCount = static_cast<GLsizei>(indices.size());
     b.triangles = mesh.triangleCount();
@@ -65,41 +83,64 @@ GpuScene::Batch GpuScene::upload(const Mesh& mesh, DrawOrder order) const {
     return b;
 }
 
-gl::Texture GpuScene::loadTexture(const Material& m) const {
-    if (m.diffuseTexture.empty() && !m.diffuseImage) return {};
+gl::Texture GpuScene::loadTexture(const Material& m, TextureSlot slot) const {
+    const MaterialTexture* texture = materialTexture(m, slot);
+    const std::shared_ptr<const ImageRGBA8>& image = texture ? texture->image : m.diffuseImage;
+    const std::string& path = texture ? texture->name : m.diffuseTexture;
+    if (!image && (texture || path.empty())) return {};
     int w = 0, h = 0, n = 0;
     std::unique_ptr<stbi_uc, void (*)(void*)> data(nullptr, stbi_image_free);
-    if (m.diffuseImage) {  // decoded by the importer (glTF)
-        w = m.diffuseImage->width;
-        h = m.diffuseImage->height;
+    if (image) {  // decoded by the importer (glTF)
+        w = image->width;
+        h = image->height;
     } else {
-        data.reset(stbi_load(m.diffuseTexture.c_str(), &w, &h, &n, 4));
+        data.reset(stbi_load(path.c_str(), &w, &h, &n, 4));
         if (!data)
-            throw Error("material '" + m.name + "': cannot load texture '" + m.diffuseTexture + "': " + stbi_failure_reason());
+            throw Error("material '" + m.name + "': cannot load texture '" + path + "': " + stbi_failure_reason());
     }
-    const uint8_t* pixels = m.diffuseImage ? m.diffuseImage->pixels.data() : data.get();
+    const uint8_t* pixels = image ? image->pixels.data() : data.get();
     // Image rows run top to bottom; OBJ texture coordinates (and glTF's, flipped on import) have v up, so flip
     // rows on upload.
     std::vector<uint8_t> flipped(static_cast<size_t>(w) * h * 4);
     for (int y = 0; y < h; ++y)
         std::memcpy(&flipped[static_cast<size_t>(y) * w * 4], pixels + static_cast<size_t>(h - 1 - y) * w * 4,
                     static_cast<size_t>(w) * 4);
-    return gl::Texture::create2D(baseColorTextureFormat(), w, h, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data(),
-                                 GL_LINEAR_MIPMAP_LINEAR);
+    return gl::Texture::create2D(textureSlotInfo(slot).srgb ? colorTextureFormat() : GLint(GL_RGBA8), w, h, GL_RGBA,
+                                 GL_UNSIGNED_BYTE, flipped.data(), GL_LINEAR_MIPMAP_LINEAR);
 }
 
-GpuScene::GpuScene(const Scene& scene, DrawOrder order) : materials_(scene.materials), order_(order) {
+void GpuScene::loadMaterial(const Material& m) {
+    std::array<gl::Texture, kTextureSlots> textures;
+    uint32_t loaded = 0;
+    const int units = materialTextureUnits();
+    for (int i = 0; i < kTextureSlots; ++i) {
+        const TextureSlot slot = TextureSlot(i);
+        gl::Texture t = loadTexture(m, slot);
+        if (!t) continue;
+        if (!textureSlotFits(slot, units)) {  // OpenGL ES 2.0 guarantees 8 (doc/colour.md)
+            warnings_.push_back(textureUnitWarning(m, slot, units));
+            continue;
+        }
+        textures[size_t(i)] = std::move(t);
+        loaded |= 1u << i;
+    }
+    materials_.push_back(m);
+    textures_.push_back(std::move(textures));
+    features_.push_back(lidr::materialFeatures(m, loaded));
+}
+
+GpuScene::GpuScene(const Scene& scene, DrawOrder order) : order_(order) {
+    for (const Material& m : scene.materials) loadMaterial(m);
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
         if (mesh.indices.empty()) continue;
-        Batch b = upload(mesh, order);
+        Batch b = upload(mesh, materials_.at(size_t(mesh.material)), features_.at(size_t(mesh.material)), order);
         b.id = i;
         triangles_ += b.triangles;
         batches_.push_back(std::move(b));
     }
     nextId_ = scene.meshes.size();
     if (order == DrawOrder::Reversed) std::reverse(batches_.begin(), batches_.end());
-    for (const Material& m : materials_) textures_.push_back(loadTexture(m));
     checkGl("GpuScene upload");
 }
 
@@ -141,13 +182,11 @@ void GpuScene::setTransform(ObjectId id, const glm::mat4& objectToWorld) {
 
 ObjectId GpuScene::add(const Mesh& mesh, const Material& material) {
     validateObject(mesh, material);
-    gl::Texture texture = loadTexture(material);
     Mesh m = mesh;
     m.material = int(materials_.size());
-    Batch b = upload(m, order_);
+    loadMaterial(material);
+    Batch b = upload(m, material, features_.back(), order_);
     b.id = nextId_;
-    materials_.push_back(material);
-    textures_.push_back(std::move(texture));
     triangles_ += b.triangles;
     // Drawn after the objects already there (or before them, in reversed order): depth-EQUAL ties resolve as
     // if the object had been the scene's last mesh.
@@ -168,26 +207,49 @@ bool GpuScene::hasTransparent() const {
                        [&](const Batch& b) { return materials_[b.material].opacity < 1.0f; });
 }
 
-void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const {
-    if (setMaterials) {
-        const Material& m = materials_[b.material];
-        // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
-        const MetallicRoughness pbr = metallicRoughnessOf(m);
-        program.setIfDeclared("uMaterialDiffuse", pbr.baseColor);
-        program.setIfDeclared("uMaterialMetallic", pbr.metallic);
-        program.setIfDeclared("uMaterialRoughness", pbr.roughness);
-        // Blinn-Phong's inputs, for user material shaders written against them (doc/embedding.md)
-        program.setIfDeclared("uMaterialSpecular", m.specular);
-        program.setIfDeclared("uMaterialShininess", m.shininess);
-        program.setIfDeclared("uMaterialOpacity", m.opacity);
-        program.setIfDeclared("uMaterialEmissive", m.emissive);
-        const gl::Texture& tex = textures_[b.material];
-        program.setIfDeclared("uMaterialHasTexture", tex ? 1.0f : 0.0f);
-        if (tex) {
-            tex.bind(gl::kUnitMaterial);
-            program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
-        }
+const gl::Program& GpuScene::useVariant(DrawState& state, uint32_t features) const {
+    const gl::Program& program = state.base.variant(features, materialDefines(features));
+    if (&program == state.current) return program;
+    program.use();
+    state.current = &program;
+    if (&program != &state.base &&
+        std::find(state.prepared.begin(), state.prepared.end(), &program) == state.prepared.end()) {
+        program.copyUniformsFrom(state.base);  // this frame's camera, lights, units... as the caller set them
+        state.prepared.push_back(&program);
     }
+    return program;
+}
+
+void GpuScene::setMaterialUniforms(const gl::Program& program, const Material& m, size_t material) const {
+    // shading.glsl's material uniforms: a program's own material shader may leave any of them out.
+    const MetallicRoughness pbr = metallicRoughnessOf(m);
+    program.setIfDeclared("uMaterialDiffuse", pbr.baseColor);
+    program.setIfDeclared("uMaterialMetallic", pbr.metallic);
+    program.setIfDeclared("uMaterialRoughness", pbr.roughness);
+    // Blinn-Phong's inputs, for user material shaders written against them (doc/embedding.md)
+    program.setIfDeclared("uMaterialSpecular", m.specular);
+    program.setIfDeclared("uMaterialShininess", m.shininess);
+    program.setIfDeclared("uMaterialOpacity", m.opacity);
+    program.setIfDeclared("uMaterialEmissive", m.emissive);
+    const std::array<gl::Texture, kTextureSlots>& textures = textures_[material];
+    program.setIfDeclared("uMaterialHasTexture", textures[0] ? 1.0f : 0.0f);
+    for (int i = 0; i < kTextureSlots; ++i) {
+        if (!textures[size_t(i)]) continue;
+        const TextureSlotInfo& slot = textureSlotInfo(TextureSlot(i));
+        textures[size_t(i)].bind(slot.unit);
+        program.setIfDeclared(slot.sampler, slot.unit);
+        program.setIfDeclared(slot.transform, textureMapping(m, TextureSlot(i)).transform);
+    }
+    program.setIfDeclared("uOcclusionStrength", m.occlusionTexture.scale);
+    program.setIfDeclared("uNormalScale", m.normalTexture.scale);
+    program.setIfDeclared("uAlphaCutoff", m.alphaCutoff);
+}
+
+void GpuScene::drawBatch(DrawState& state, const Batch& b, bool setMaterials) const {
+    const uint32_t all = features_[size_t(b.material)];
+    const uint32_t features = setMaterials ? all : depthFeatures(all);
+    const gl::Program& program = useVariant(state, features);
+    if (setMaterials || features) setMaterialUniforms(program, materials_[size_t(b.material)], size_t(b.material));
     program.set("uModel", b.transform);
     program.set("uNormalMatrix", b.normalMatrix);
     glBindBuffer(GL_ARRAY_BUFFER, b.vertices.id());
@@ -200,6 +262,27 @@ void GpuScene::drawBatch(const gl::Program& program, const Batch& b, bool setMat
     glEnableVertexAttribArray(gl::kTexCoord);
     glVertexAttribPointer(gl::kTexCoord, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offsetof(Vertex, texCoord)));
+    bool secondSet = false;
+    for (int i = 0; i < kTextureSlots; ++i) secondSet = secondSet || (features & material_feature::secondSet(TextureSlot(i)));
+    if (secondSet) {  // a mesh without a second set reads its first (the importer warned)
+        if (b.texCoords1) {
+            glBindBuffer(GL_ARRAY_BUFFER, b.texCoords1.id());
+            glVertexAttribPointer(gl::kTexCoord1, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+        } else {
+            glVertexAttribPointer(gl::kTexCoord1, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                                  reinterpret_cast<const void*>(offsetof(Vertex, texCoord)));
+        }
+        glEnableVertexAttribArray(gl::kTexCoord1);
+    } else {
+        glDisableVertexAttribArray(gl::kTexCoord1);
+    }
+    if (features & material_feature::texture(TextureSlot::Normal)) {
+        glBindBuffer(GL_ARRAY_BUFFER, b.tangents.id());
+        glVertexAttribPointer(gl::kTangent, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(gl::kTangent);
+    } else {
+        glDisableVertexAttribArray(gl::kTangent);
+    }
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices.id());
     StateCache::current().drawElements(GL_TRIANGLES, b.indexCount, GL_UNSIGNED_INT, nullptr);
 }
@@ -208,6 +291,8 @@ void GpuScene::unbindGeometry() const {
     glDisableVertexAttribArray(gl::kPosition);
     glDisableVertexAttribArray(gl::kNormal);
     glDisableVertexAttribArray(gl::kTexCoord);
+    glDisableVertexAttribArray(gl::kTexCoord1);
+    glDisableVertexAttribArray(gl::kTangent);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
@@ -251,7 +336,9 @@ void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3
     std::stable_sort(order.begin(), order.end(), [&](const Batch* a, const Batch* b) {
         return glm::length(a->centroid - eye) > glm::length(b->centroid - eye);
     });
-    for (const Batch* b : order) drawBatch(program, *b, true);
+    DrawState state{program, &program, {}};
+    for (const Batch* b : order) drawBatch(state, *b, true);
+    if (state.current != &program) program.use();
     unbindGeometry();
 }
 
@@ -266,10 +353,12 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
     StateCache& cache = StateCache::current();
     // Culling goes through the cache on top of the pass's state, which is applied again after; a pass that culls
     // itself, or state the cache does not know, is left alone.
-    const bool mayCull = camera && cullClosedMeshes_ && cache.valid() && !cache.known().cull;
+    const bool mayCull = cache.valid() && !cache.known().cull;
+    const bool cullInner = mayCull && camera && cullClosedMeshes_;
     const RenderState pass = mayCull ? cache.known() : RenderState{};
-    const float reach = mayCull ? nearPlaneReach(*camera) : 0.0f;
+    const float reach = cullInner ? nearPlaneReach(*camera) : 0.0f;
     int drawn = 0;
+    DrawState state{program, &program, {}};
     for (size_t i = 0; i < batches_.size(); ++i) {
         const Batch& b = batches_[i];
         const bool transparent = materials_[b.material].opacity < 1.0f;
@@ -278,14 +367,19 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
         if (!select(i, b.boundsMin, b.boundsMax)) continue;
         if (mayCull) {
             RenderState s = pass;
-            const GLenum side = culledSide(b, camera->eye, reach);
+            GLenum side = cullInner ? culledSide(b, camera->eye, reach) : 0;
+            // A one-sided material (glTF's doubleSided false) has no back: its back faces are culled in every
+            // pass, so nothing is lit or drawn from behind. Mesh fronts are counter-clockwise.
+            if (!materials_[size_t(b.material)].doubleSided)
+                side = glm::determinant(glm::mat3(b.transform)) < 0.0f ? GL_FRONT : GL_BACK;
             s.cull = side != 0;
             if (side) s.cullFace = side;
             cache.apply(s);
         }
-        drawBatch(program, b, setMaterials);
+        drawBatch(state, b, setMaterials);
         ++drawn;
     }
+    if (state.current != &program) program.use();
     if (mayCull) cache.apply(pass);
     unbindGeometry();
     return drawn;

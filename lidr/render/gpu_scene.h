@@ -1,9 +1,12 @@
 #pragma once
 // The scene's geometry and material textures in GL buffers, drawn the same way by every pass and mode.
+#include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "lidr/gl/gl_resources.h"
+#include "lidr/render/material_variants.h"
 #include "lidr/scene/camera.h"
 #include "lidr/scene/closed_mesh.h"
 #include "lidr/scene/scene.h"
@@ -31,7 +34,10 @@ public:
     // Uploads geometry; loads material textures (stb_image) relative to nothing: paths are as in the Scene.
     explicit GpuScene(const Scene& scene, DrawOrder order = DrawOrder::AsGiven);
     // Draws meshes passing `filter`, setting the shading.glsl material uniforms on `program` when
-    // `setMaterials` (a depth-only pass does not need them). The program must be in use. With `camera`, opaque
+    // `setMaterials` (a depth-only pass does not need them). The program must be in use. A material with
+    // textures or alpha MASK is drawn with the program's variant for its features (material_variants.h; a
+    // depth-only pass: its MASK variant), compiled on first use, given the program's uniforms; `program` is in
+    // use again after. With `camera`, opaque
     // closed meshes that the eye and the near plane are outside of are drawn with their inner side culled
     // (cullsInnerSide); the pass's own state is restored after.
     void draw(const gl::Program& program, DrawFilter filter, bool setMaterials,
@@ -56,6 +62,14 @@ public:
     bool hasTransparent() const;
     bool batchTransparent(size_t batch) const { return materials_[size_t(batches_.at(batch).material)].opacity < 1.0f; }
     size_t triangleCount() const { return triangles_; }
+    // The shader-variant key each material is drawn with (material_variants.h), by material index.
+    uint32_t materialFeatures(size_t material) const { return features_.at(material); }
+    // What the scene could not draw as its materials ask (a texture left out for want of texture units), one
+    // line each; tools print them with the scene's warnings.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    // For tests: the texture units material textures may use (the context's own count by default); textures on
+    // units at or above it are left out as on a context that has fewer. Applies to materials loaded after.
+    static void setTextureUnitLimitForTests(int units);
 
     // Dynamic scenes. setTransform places an object (object -> world; the Scene's meshes start at identity, their
     // positions being world space); its bounds, used for light culling, follow. add uploads a mesh with its own
@@ -69,6 +83,7 @@ private:
     struct Batch {
         ObjectId id = 0;
         gl::Buffer vertices, indices;
+        gl::Buffer texCoords1, tangents;  // only where the mesh has a second set / its material a normal texture
         GLsizei indexCount = 0;
         size_t triangles = 0;
         int material = 0;
@@ -79,16 +94,27 @@ private:
         glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
         OuterWinding outer = OuterWinding::Open;  // of the mesh as uploaded
     };
-    Batch upload(const Mesh& mesh, DrawOrder order) const;
-    gl::Texture loadTexture(const Material& m) const;
+    Batch upload(const Mesh& mesh, const Material& material, uint32_t features, DrawOrder order) const;
+    void loadMaterial(const Material& m);  // its textures, its features, warnings
+    gl::Texture loadTexture(const Material& m, TextureSlot slot) const;
+    // The program in use while a draw call draws its batches: the caller's, or a variant of it.
+    struct DrawState {
+        const gl::Program& base;
+        const gl::Program* current;
+        std::vector<const gl::Program*> prepared;  // variants given base's uniforms in this draw call
+    };
+    const gl::Program& useVariant(DrawState& state, uint32_t features) const;
+    void setMaterialUniforms(const gl::Program& program, const Material& m, size_t material) const;
     void placeBatch(Batch& b) const;  // world centroid and bounds from the transform
     size_t batchIndex(ObjectId id) const;  // throws lidr::Error for an id that is not (or no longer) there
-    void drawBatch(const gl::Program& program, const Batch& b, bool setMaterials) const;
+    void drawBatch(DrawState& state, const Batch& b, bool setMaterials) const;
     GLenum culledSide(const Batch& b, const glm::vec3& eye, float nearReach) const;
     void unbindGeometry() const;
     std::vector<Batch> batches_;
     std::vector<Material> materials_;
-    std::vector<gl::Texture> textures_;  // one per material; empty texture when none
+    std::vector<std::array<gl::Texture, kTextureSlots>> textures_;  // per material, by TextureSlot; empty: none
+    std::vector<uint32_t> features_;                                // per material
+    std::vector<std::string> warnings_;
     size_t triangles_ = 0;
     DrawOrder order_ = DrawOrder::AsGiven;
     bool cullClosedMeshes_ = true;

@@ -71,6 +71,23 @@ void validateMaterial(const Material& material, size_t index) {
             fail(item, "texture image is " + std::to_string(image.width) + "x" + std::to_string(image.height) + " with " +
                            std::to_string(image.pixels.size()) + " bytes");
     }
+    const std::pair<const char*, const MaterialTexture*> textures[] = {
+        {"emissive", &material.emissiveTexture}, {"metallic-roughness", &material.metallicRoughnessTexture},
+        {"occlusion", &material.occlusionTexture}, {"normal", &material.normalTexture}};
+    for (const auto& [what, texture] : textures) {
+        if (texture->image) {
+            const ImageRGBA8& image = *texture->image;
+            if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height) * 4)
+                fail(item, std::string(what) + " texture image is " + std::to_string(image.width) + "x" +
+                               std::to_string(image.height) + " with " + std::to_string(image.pixels.size()) + " bytes");
+        }
+        if (texture->mapping.texCoord != 0 && texture->mapping.texCoord != 1)
+            fail(item, std::string(what) + " texture reads texture coordinate set " +
+                           std::to_string(texture->mapping.texCoord) + "; lidr has sets 0 and 1");
+        if (!std::isfinite(texture->scale)) fail(item, std::string(what) + " texture scale is not finite");
+    }
+    if (!(material.alphaCutoff >= 0.0f && std::isfinite(material.alphaCutoff)))
+        fail(item, "alphaCutoff must be finite and >= 0, got " + str(material.alphaCutoff));
 }
 
 void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
@@ -84,6 +101,12 @@ void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
     if (!mesh.texCoords.empty() && mesh.texCoords.size() != mesh.positions.size())
         fail(item, std::to_string(mesh.texCoords.size()) + " texCoords for " +
                        std::to_string(mesh.positions.size()) + " positions; need none or one per position");
+    if (!mesh.texCoords1.empty() && mesh.texCoords1.size() != mesh.positions.size())
+        fail(item, std::to_string(mesh.texCoords1.size()) + " texCoords1 for " +
+                       std::to_string(mesh.positions.size()) + " positions; need none or one per position");
+    if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.positions.size())
+        fail(item, std::to_string(mesh.tangents.size()) + " tangents for " + std::to_string(mesh.positions.size()) +
+                       " positions; need none or one per position");
     if (mesh.indices.size() % 3 != 0)
         fail(item, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -252,7 +275,12 @@ int findOrAddMaterial(Scene& scene, const Material& material) {
             existing.shininess == material.shininess && existing.opacity == material.opacity &&
             existing.diffuseImage == material.diffuseImage && existing.emissive == material.emissive &&
             existing.metallicRoughness == material.metallicRoughness && existing.metallic == material.metallic &&
-            existing.roughness == material.roughness)
+            existing.roughness == material.roughness && existing.diffuseMapping == material.diffuseMapping &&
+            existing.emissiveTexture == material.emissiveTexture &&
+            existing.metallicRoughnessTexture == material.metallicRoughnessTexture &&
+            existing.occlusionTexture == material.occlusionTexture && existing.normalTexture == material.normalTexture &&
+            existing.alphaMode == material.alphaMode && existing.alphaCutoff == material.alphaCutoff &&
+            existing.doubleSided == material.doubleSided)
             return int(i);
     }
     scene.materials.push_back(material);

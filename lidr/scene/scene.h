@@ -12,6 +12,30 @@
 
 namespace lidr {
 
+// Where a texture is sampled: texture coordinate set 0 or 1 (glTF TEXCOORD_n), moved by a 3x3 transform
+// (KHR_texture_transform, already in lidr's texture space, v up: uv' = (transform * (uv, 1)).xy).
+struct TextureMapping {
+    int texCoord = 0;
+    glm::mat3 transform{1.0f};
+    bool operator==(const TextureMapping& o) const { return texCoord == o.texCoord && transform == o.transform; }
+};
+
+// A material texture besides the base colour (glTF's emissive, metallic-roughness, occlusion and normal textures):
+// the decoded image, the name it had (a path, or file#imageN for an embedded one), where it is sampled, and a
+// `scale`: the normal texture's scale, the occlusion texture's strength (unused by the others).
+struct MaterialTexture {
+    std::string name;
+    std::shared_ptr<const ImageRGBA8> image{};
+    TextureMapping mapping;
+    float scale = 1.0f;
+    bool present() const { return bool(image); }
+    bool operator==(const MaterialTexture& o) const {
+        return name == o.name && image == o.image && mapping == o.mapping && scale == o.scale;
+    }
+};
+
+enum class AlphaMode { Opaque, Mask };  // glTF's OPAQUE and MASK (BLEND is opacity < 1)
+
 // Colours are linear (importers decode display-value colours: doc/colour.md); textures are sRGB-encoded.
 struct Material {
     std::string name;
@@ -30,6 +54,15 @@ struct Material {
     bool metallicRoughness = false;
     float metallic = 0.0f;   // [0, 1]
     float roughness = 1.0f;  // [0, 1], perceptual (alpha = roughness^2)
+    // Per-pixel textures (glTF), each drawn by the shader variant that has it (lidr/render/material_variants.h).
+    TextureMapping diffuseMapping{};     // of the base colour texture (sRGB)
+    MaterialTexture emissiveTexture{};   // sRGB, times `emissive`
+    MaterialTexture metallicRoughnessTexture{};  // linear: G x roughness, B x metallic
+    MaterialTexture occlusionTexture{};  // linear: R, mixed in by `scale` (glTF's strength); ambient light only
+    MaterialTexture normalTexture{};     // linear, tangent space; `scale` scales its x and y
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;            // MASK: texture alpha below it is cut out (glTF's cutoff / factor alpha)
+    bool doubleSided = true;             // false: the back of each triangle is culled (glTF's default is false)
 };
 
 // The material as the BRDF takes it. Blinn-Phong materials map (doc/colour.md, "Materials"): roughness from
@@ -50,6 +83,8 @@ struct Mesh {
     std::vector<glm::vec2> texCoords;  // empty or one per position
     std::vector<uint32_t> indices;     // triangles
     int material = 0;
+    std::vector<glm::vec2> texCoords1{};  // the second set (glTF TEXCOORD_1): empty or one per position
+    std::vector<glm::vec4> tangents{};    // empty or one per position: xyz unit tangent along +u, w = +-1 handedness
     size_t triangleCount() const { return indices.size() / 3; }
 };
 

@@ -6,28 +6,7 @@
 #define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
 uniform vec3 uAmbient;
-uniform vec3 uMaterialDiffuse;   // the base colour factor (linear)
-uniform float uMaterialMetallic;
-uniform float uMaterialRoughness;  // perceptual roughness; alpha = roughness^2
-uniform float uMaterialOpacity;
-uniform vec3 uMaterialEmissive;
-uniform float uMaterialHasTexture;
-uniform sampler2D uMaterialTexture;
-
-varying vec3 vWorldPos;
-varying vec3 vNormal;
-varying vec2 vTexCoord;
-
-// Base-colour textures hold sRGB-encoded texels. Desktop GL (2.1 has sRGB textures in core) uploads them as
-// SRGB8_ALPHA8 and the texture unit decodes, before filtering; OpenGL ES 2.0 / WebGL 1 have no sRGB texture
-// format without an extension, so the texel is decoded here, after filtering (lidr/render/gpu_scene.cpp).
-vec4 lidrBaseColorTexel(vec2 uv) {
-    vec4 texel = texture2D(uMaterialTexture, uv);
-#if defined(GL_ES) || defined(LIDR_SRGB_DECODE_IN_SHADER)
-    texel.rgb = lidrSrgbToLinear(texel.rgb);
-#endif
-    return texel;
-}
+#include "material.glsl"
 
 struct LidrSurface {
     vec3 position;
@@ -36,23 +15,59 @@ struct LidrSurface {
     vec3 albedo;     // the diffuse colour: base colour x (1 - metallic)
     vec3 f0;         // specular reflectance at normal incidence: mix(0.04, base colour, metallic)
     float alpha;     // GGX alpha = roughness^2, at least 0.01 (a mirror has no lobe; alpha^2 stays normal in fp16)
+    float occlusion; // of the ambient light only (glTF: occlusion applies to indirect light)
+    vec3 emission;   // emissive factor x emissive texel
 };
+
+// The shading normal: the interpolated normal, turned to the side the eye sees (a double-sided surface is lit
+// from its own side), then bent by the normal texture in the tangent frame of the pixel.
+vec3 lidrShadingNormal() {
+    vec3 n = normalize(vNormal);
+    float side = gl_FrontFacing ? 1.0 : -1.0;
+    n *= side;
+#ifdef LIDR_NORMAL_TEXTURE
+    vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);  // Gram-Schmidt: interpolation bends the frame
+    t = dot(t, t) > 1e-12 ? normalize(t) : vec3(0.0);
+    vec3 b = cross(n, t) * (vTangent.w * side);
+    vec3 m = texture2D(uNormalTexture, LIDR_TRANSFORMED_UV(uNormalUvTransform, LIDR_NORMAL_UV)).xyz * 2.0 - 1.0;
+    m.xy *= uNormalScale;
+    vec3 bent = t * m.x + b * m.y + n * m.z;
+    n = dot(bent, bent) > 1e-12 ? normalize(bent) : n;
+#endif
+    return n;
+}
 
 LidrSurface lidrSurface() {
     LidrSurface s;
     s.position = vWorldPos;
-    s.normal = normalize(vNormal);
-    if (!gl_FrontFacing) s.normal = -s.normal;  // two-sided: the back of a wall is lit from its own side
+    s.normal = lidrShadingNormal();
     s.toEye = normalize(uEyePosition - vWorldPos);
-    vec3 base = uMaterialDiffuse;
-    if (uMaterialHasTexture > 0.5) base *= lidrBaseColorTexel(vTexCoord).rgb;
-    s.albedo = base * (1.0 - uMaterialMetallic);
-    s.f0 = mix(vec3(0.04), base, uMaterialMetallic);
-    s.alpha = max(uMaterialRoughness * uMaterialRoughness, 0.01);
+    vec4 baseColor = lidrBaseColor();
+    lidrAlphaTest(baseColor.a);
+    vec3 base = baseColor.rgb;
+    float metallic = uMaterialMetallic;
+    float roughness = uMaterialRoughness;
+#ifdef LIDR_METALLIC_ROUGHNESS_TEXTURE
+    vec4 mr = texture2D(uMetallicRoughnessTexture, LIDR_TRANSFORMED_UV(uMetallicRoughnessUvTransform, LIDR_METALLIC_ROUGHNESS_UV));
+    roughness *= mr.g;
+    metallic *= mr.b;
+#endif
+    s.albedo = base * (1.0 - metallic);
+    s.f0 = mix(vec3(0.04), base, metallic);
+    s.alpha = max(roughness * roughness, 0.01);
+    s.occlusion = 1.0;
+#ifdef LIDR_OCCLUSION_TEXTURE
+    float ao = texture2D(uOcclusionTexture, LIDR_TRANSFORMED_UV(uOcclusionUvTransform, LIDR_OCCLUSION_UV)).r;
+    s.occlusion = 1.0 + uOcclusionStrength * (ao - 1.0);
+#endif
+    s.emission = uMaterialEmissive;
+#ifdef LIDR_EMISSIVE_TEXTURE
+    s.emission *= lidrColorTexel(uEmissiveTexture, LIDR_TRANSFORMED_UV(uEmissiveUvTransform, LIDR_EMISSIVE_UV)).rgb;
+#endif
     return s;
 }
 
-// Ambient light plus the material's own emission: the light-independent term every mode adds once per pixel.
+// Ambient light (darkened by the occlusion texture) plus the material's own emission: the light-independent term every mode adds once per pixel.
 // The ambient is uniform radiance from every direction: the diffuse part integrates to ambient x albedo, the
 // specular part to ambient x (F0 A + B), Karis' analytic fit of the split-sum environment BRDF.
 vec3 lidrAmbient(LidrSurface s) {
@@ -61,7 +76,7 @@ vec3 lidrAmbient(LidrSurface s) {
     vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
     float a004 = min(r.x * r.x, exp2(-9.28 * nDotV)) * r.x + r.y;
     vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-    return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) + uMaterialEmissive;
+    return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) * s.occlusion + s.emission;
 }
 
 // One point light: BRDF x pi x colour x attenuation x n.l. The pi makes a light's colour what it gives a white

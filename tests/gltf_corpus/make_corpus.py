@@ -211,8 +211,10 @@ def build():
           "warning", "animations are not played")
     c.add("warn-morph", mutate(triangle, lambda d: set_at(d, "/meshes/0/primitives/0/targets", [{"POSITION": 0}])),
           "warning", "morph targets are not applied")
-    c.add("warn-alpha-mask", mutate(textured, lambda d: set_at(d, "/materials/0/alphaMode", "MASK")),
-          "warning", "MASK is drawn opaque")
+    ok("valid-alpha-mask", mutate(textured, lambda d: (set_at(d, "/materials/0/alphaMode", "MASK"),
+                                                        set_at(d, "/materials/0/alphaCutoff", 0.3))))
+    c.add("warn-texcoord1-missing", mutate(textured, lambda d: set_at(d, "/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", 1)),
+          "warning", "reads TEXCOORD_1, which the primitive does not have")
     c.add("warn-spot-light", mutate(lit, lambda d: set_at(d, "/extensions/KHR_lights_punctual/lights/0",
                                                           {"type": "spot", "spot": {"outerConeAngle": 0.5}})),
           "warning", "spot lights are not supported")
@@ -531,6 +533,10 @@ def build():
     c.error("extension-used-twice", mutate(triangle, lambda d: set_at(d, "/extensionsUsed", ["A_b", "A_b"])),
             "/extensionsUsed/1: extension listed twice")
     ok("extension-required-lights", mutate(lit, lambda d: set_at(d, "/extensionsRequired", ["KHR_lights_punctual"])))
+    ok("extension-required-texture-transform", mutate(textured, lambda d: (
+        set_at(d, "/extensionsUsed", ["KHR_texture_transform"]), set_at(d, "/extensionsRequired", ["KHR_texture_transform"]),
+        set_at(d, "/materials/0/pbrMetallicRoughness/baseColorTexture/extensions",
+               {"KHR_texture_transform": {"offset": [0.5, 0], "rotation": 0.5, "scale": [2, 2]}}))))
 
     # ---- KHR_lights_punctual ----------------------------------------------------------------------------------
     L = "/extensions/KHR_lights_punctual/lights/0"

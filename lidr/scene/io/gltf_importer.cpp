@@ -344,6 +344,17 @@ private:
                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
                          : AccessorView{};
+        const bool hasTexCoords1 = attribute("TEXCOORD_1") >= 0;
+        const AccessorView texCoords1 =
+            hasTexCoords1 ? view(attribute("TEXCOORD_1"), what + " TEXCOORD_1", {TINYGLTF_TYPE_VEC2},
+                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
+                          : AccessorView{};
+        // glTF: without NORMAL the flat normals are computed and TANGENT is ignored.
+        const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
+        const AccessorView tangents = hasTangents ? view(attribute("TANGENT"), what + " TANGENT", {TINYGLTF_TYPE_VEC4},
+                                                         {TINYGLTF_COMPONENT_TYPE_FLOAT})
+                                                  : AccessorView{};
         // An accessor without a buffer view is all zeros: every triangle would be degenerate and draw nothing.
         if (!positions.data) {
             warn(what + ": POSITION has no buffer view (all zeros); the primitive draws nothing and is left out");
@@ -354,6 +365,12 @@ private:
         if (hasTexCoords && texCoords.count != positions.count)
             fail(what + ": " + std::to_string(texCoords.count) + " texture coordinates for " +
                  std::to_string(positions.count) + " positions");
+
+        if (hasTexCoords1 && texCoords1.count != positions.count)
+            fail(what + ": " + std::to_string(texCoords1.count) + " TEXCOORD_1 coordinates for " +
+                 std::to_string(positions.count) + " positions");
+        if (hasTangents && tangents.count != positions.count)
+            fail(what + ": " + std::to_string(tangents.count) + " tangents for " + std::to_string(positions.count) + " positions");
 
         const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
         // The corner list: indices, or 0..count-1, then strips and fans unrolled into triangles.
@@ -411,12 +428,24 @@ private:
             if (!isFinite(p)) fail(what + ": position " + std::to_string(i) + " is not finite");
             return glm::vec3(world * glm::vec4(p, 1.0f));
         };
-        const auto texCoord = [&](uint32_t i) {
+        const auto texCoordOf = [&](const AccessorView& set, uint32_t i) {
             // glTF puts v = 0 at the image's top; lidr (like OBJ) at the bottom.
-            const glm::vec2 t(component(texCoords, i, 0), 1.0f - component(texCoords, i, 1));
+            const glm::vec2 t(component(set, i, 0), 1.0f - component(set, i, 1));
             if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail(what + ": texture coordinate " + std::to_string(i) + " is not finite");
             return t;
         };
+        const auto texCoord = [&](uint32_t i) { return texCoordOf(texCoords, i); };
+        const auto tangent = [&](uint32_t i) {
+            const glm::vec4 t(component(tangents, i, 0), component(tangents, i, 1), component(tangents, i, 2),
+                              component(tangents, i, 3));
+            if (!isFinite(glm::vec3(t)) || !std::isfinite(t.w)) fail(what + ": tangent " + std::to_string(i) + " is not finite");
+            // A mirroring transform turns the frame's handedness over (the normal follows the inverse transpose).
+            const float w = (t.w < 0.0f ? -1.0f : 1.0f) * (mirrored ? -1.0f : 1.0f);
+            return glm::vec4(normalizedOr(linear * glm::vec3(t), glm::vec3(1.0f, 0.0f, 0.0f)), w);
+        };
+        const std::string needsSecond = secondSetUser(primitive.material);
+        if (!needsSecond.empty() && !hasTexCoords1)
+            warn(what + ": " + needsSecond + " reads TEXCOORD_1, which the primitive does not have; drawn with TEXCOORD_0");
         if (hasNormals) {  // shared vertices, as the file has them
             std::vector<uint32_t> remap(positions.count, ~0u);
             for (size_t c = 0; c < triangles.size(); ++c) {
@@ -429,6 +458,8 @@ private:
                     if (!isFinite(n)) fail(what + ": normal " + std::to_string(source) + " is not finite");
                     out.normals.push_back(normalizedOr(normalMatrix * n, glm::vec3(0.0f, 1.0f, 0.0f)));
                     if (hasTexCoords) out.texCoords.push_back(texCoord(source));
+                    if (hasTexCoords1) out.texCoords1.push_back(texCoordOf(texCoords1, source));
+                    if (hasTangents) out.tangents.push_back(tangent(source));
                 }
                 out.indices.push_back(remap[source]);
             }
@@ -443,6 +474,7 @@ private:
                     out.positions.push_back(p[k]);
                     out.normals.push_back(normal);
                     if (hasTexCoords) out.texCoords.push_back(texCoord(source[k]));
+                    if (hasTexCoords1) out.texCoords1.push_back(texCoordOf(texCoords1, source[k]));
                 }
             }
         }
@@ -469,16 +501,73 @@ private:
         return image;
     }
 
-    // The mean RGB of a texture's texels, sRGB-decoded first for colour textures (linear data otherwise).
-    glm::dvec3 textureMean(int texture, const std::string& what, bool srgb) {
+    // A glTF textureInfo as lidr draws it: the decoded image (shared by every texture of the same image), its
+    // name, the coordinate set (texCoord, or KHR_texture_transform's override) and the transform, turned into
+    // lidr's texture space (v up: flipped on import, rows flipped on upload) as F T F with F (u, v) = (u, 1 - v).
+    MaterialTexture readTexture(int texture, int texCoord, const tinygltf::ExtensionMap& extensions, const std::string& what) {
+        warnSampler(texture, what);
         const tinygltf::Image& image = textureImage(texture, what);
-        glm::dvec3 sum(0.0);
-        for (size_t i = 0; i < image.image.size(); i += 4)
-            for (int c = 0; c < 3; ++c) {
-                const double v = image.image[i + size_t(c)] / 255.0;
-                sum[c] += srgb ? srgbToLinear(v) : v;
-            }
-        return sum / double(image.image.size() / 4);
+        const int source = model_.textures[size_t(texture)].source;
+        MaterialTexture out;
+        std::shared_ptr<const ImageRGBA8>& decoded = decodedImages_[source];
+        if (!decoded) {
+            auto pixels = std::make_shared<ImageRGBA8>(image.width, image.height);
+            pixels->pixels = image.image;
+            decoded = std::move(pixels);
+        }
+        out.image = decoded;
+        out.name = image.uri.rfind("data:", 0) == 0 || image.uri.empty()
+                       ? path_ + "#image" + std::to_string(source)
+                       : (fs::path(path_).parent_path() / image.uri).lexically_normal().string();
+        glm::dvec2 offset(0.0), scale(1.0);
+        double rotation = 0.0;
+        const auto transform = extensions.find("KHR_texture_transform");
+        if (transform != extensions.end()) {
+            const tinygltf::Value& t = transform->second;
+            const auto number = [&](const tinygltf::Value& v, const std::string& field) {
+                if (!v.IsNumber() && !v.IsInt()) fail(what + ": KHR_texture_transform " + field + " is not a number");
+                const double d = v.GetNumberAsDouble();
+                if (!std::isfinite(d)) fail(what + ": KHR_texture_transform " + field + " is not finite");
+                return d;
+            };
+            const auto pair = [&](const char* field, glm::dvec2& into) {
+                if (!t.Has(field)) return;
+                const tinygltf::Value& v = t.Get(field);
+                if (!v.IsArray() || v.ArrayLen() != 2) fail(what + ": KHR_texture_transform " + field + " is not two numbers");
+                into = glm::dvec2(number(v.Get(0), field), number(v.Get(1), field));
+            };
+            pair("offset", offset);
+            pair("scale", scale);
+            if (t.Has("rotation")) rotation = number(t.Get("rotation"), "rotation");
+            if (t.Has("texCoord")) texCoord = int(number(t.Get("texCoord"), "texCoord"));
+        }
+        if (texCoord != 0 && texCoord != 1) {
+            warn(what + " uses TEXCOORD_" + std::to_string(texCoord) + "; lidr reads TEXCOORD_0 and TEXCOORD_1, drawn with TEXCOORD_0");
+            texCoord = 0;
+        }
+        out.mapping.texCoord = texCoord;
+        // The extension's matrix: translation x rotation x scale, rotating the UVs counter-clockwise by `rotation`
+        // (its example: offset (0, 1), rotation pi/2, scale 0.5 reads the image's lower left quadrant).
+        const double c = std::cos(rotation), s = std::sin(rotation);
+        const glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+        const glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
+        const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+        const glm::dmat3 flip(1, 0, 0, 0, -1, 0, 0, 1, 1);
+        out.mapping.transform = glm::mat3(flip * translate * rotate * scaling * flip);
+        return out;
+    }
+
+    // The name of a texture of glTF material `gltfMaterial` that reads the second coordinate set; empty if none.
+    std::string secondSetUser(int gltfMaterial) {
+        if (overrideMaterial_ >= 0 || gltfMaterial < 0 || size_t(gltfMaterial) >= model_.materials.size()) return {};
+        const int scene = materialFor(gltfMaterial);
+        const Material& m = scene_.materials[size_t(scene)];
+        if (m.diffuseMapping.texCoord == 1) return "the base colour texture";
+        if (m.emissiveTexture.mapping.texCoord == 1) return "the emissive texture";
+        if (m.metallicRoughnessTexture.mapping.texCoord == 1) return "the metallic-roughness texture";
+        if (m.occlusionTexture.mapping.texCoord == 1) return "the occlusion texture";
+        if (m.normalTexture.mapping.texCoord == 1) return "the normal texture";
+        return {};
     }
 
     // lidr samples every texture with REPEAT and trilinear filtering: another wrap or filter is a warning.
@@ -536,46 +625,47 @@ private:
         if (source.alphaMode == "BLEND") {
             material.opacity = base.a;
         } else if (source.alphaMode == "MASK") {
-            warn(name + ": alphaMode MASK is drawn opaque (lidr has no alpha test; alphaCutoff is not used)");
+            material.alphaMode = AlphaMode::Mask;
+            if (!(std::isfinite(source.alphaCutoff) && source.alphaCutoff >= 0.0 && source.alphaCutoff <= 1.0))
+                fail(name + ": alphaCutoff must be in [0, 1], got " + std::to_string(source.alphaCutoff));
+            // The test is factor alpha x texel alpha < cutoff; the shaders test the texel alone against the cutoff
+            // divided by the factor's alpha (above 1: everything is cut, as factor alpha 0 cuts everything).
+            const float cutoff = float(source.alphaCutoff);
+            material.alphaCutoff = base.a > 0.0f ? std::min(cutoff / base.a, 2.0f) : (cutoff > 0.0f ? 2.0f : 0.0f);
         }
+        material.doubleSided = source.doubleSided;
         readEmissiveStrength(source, name, material);
-        // Textures lidr does not draw per pixel yet (doc/colour.md, "glTF materials"): each is drawn as its mean
-        // (the factor times the texture's average), never as the factor alone, with a warning naming it. An
-        // emissive factor of 1 without its texture would light every pixel of the material fully.
-        if (source.emissiveTexture.index >= 0) {
-            const glm::dvec3 mean = textureMean(source.emissiveTexture.index, name + ": emissive texture", true);
-            material.emissive *= glm::vec3(mean);
-            warn(name + ": emissiveTexture is drawn as its mean colour (" + str(glm::vec3(mean)) +
-                 ") times emissiveFactor; lidr does not read emissive textures per pixel yet");
+        // Every texture is read per pixel by the material's shader variant (lidr/render/material_variants.h).
+        if (source.emissiveTexture.index >= 0)
+            material.emissiveTexture = readTexture(source.emissiveTexture.index, source.emissiveTexture.texCoord,
+                                                   source.emissiveTexture.extensions, name + ": emissive texture");
+        if (pbr.metallicRoughnessTexture.index >= 0)  // glTF: roughness in G, metallic in B, linear data
+            material.metallicRoughnessTexture =
+                readTexture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                            pbr.metallicRoughnessTexture.extensions, name + ": metallic-roughness texture");
+        if (source.occlusionTexture.index >= 0) {
+            material.occlusionTexture = readTexture(source.occlusionTexture.index, source.occlusionTexture.texCoord,
+                                                    source.occlusionTexture.extensions, name + ": occlusion texture");
+            if (!(std::isfinite(source.occlusionTexture.strength) && source.occlusionTexture.strength >= 0.0 &&
+                  source.occlusionTexture.strength <= 1.0))
+                fail(name + ": occlusionTexture strength must be in [0, 1], got " +
+                     std::to_string(source.occlusionTexture.strength));
+            material.occlusionTexture.scale = float(source.occlusionTexture.strength);
         }
-        if (pbr.metallicRoughnessTexture.index >= 0) {
-            // glTF: roughness in G, metallic in B, linear data
-            const glm::dvec3 mean = textureMean(pbr.metallicRoughnessTexture.index, name + ": metallic-roughness texture", false);
-            material.roughness = glm::clamp(roughness * float(mean.g), 0.0f, 1.0f);
-            material.metallic = glm::clamp(metallic * float(mean.b), 0.0f, 1.0f);
-            warn(name + ": metallicRoughnessTexture is drawn as its mean (roughness x " + str(float(mean.g)) +
-                 ", metallic x " + str(float(mean.b)) + "); lidr does not read it per pixel yet");
+        if (source.normalTexture.index >= 0) {
+            material.normalTexture = readTexture(source.normalTexture.index, source.normalTexture.texCoord,
+                                                 source.normalTexture.extensions, name + ": normal texture");
+            if (!std::isfinite(source.normalTexture.scale))
+                fail(name + ": normalTexture scale is not finite");
+            material.normalTexture.scale = float(source.normalTexture.scale);
         }
-        if (source.normalTexture.index >= 0)
-            warn(name + ": normalTexture is not drawn (lidr shades with the vertex normals)");
-        if (source.occlusionTexture.index >= 0)
-            warn(name + ": occlusionTexture is not drawn (no ambient occlusion)");
         const int texture = pbr.baseColorTexture.index;
         if (texture >= 0) {
-            if (pbr.baseColorTexture.texCoord != 0)
-                warn(name + ": base colour texture uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
-                     "; lidr reads TEXCOORD_0");
-            if (pbr.baseColorTexture.extensions.count("KHR_texture_transform"))
-                warn(name + ": base colour texture's KHR_texture_transform is not applied");
-            warnSampler(texture, name + ": base colour texture");
-            const tinygltf::Image& image = textureImage(texture, name + ": base colour texture");
-            const int source = model_.textures[size_t(texture)].source;
-            auto decoded = std::make_shared<ImageRGBA8>(image.width, image.height);
-            decoded->pixels = image.image;
-            material.diffuseImage = std::move(decoded);
-            material.diffuseTexture = image.uri.rfind("data:", 0) == 0 || image.uri.empty()
-                                          ? path_ + "#image" + std::to_string(source)
-                                          : (fs::path(path_).parent_path() / image.uri).lexically_normal().string();
+            const MaterialTexture read = readTexture(texture, pbr.baseColorTexture.texCoord,
+                                                     pbr.baseColorTexture.extensions, name + ": base colour texture");
+            material.diffuseImage = read.image;
+            material.diffuseTexture = read.name;
+            material.diffuseMapping = read.mapping;
         }
         const int index = findOrAddMaterial(scene_, material);
         sceneMaterialOf_[gltfMaterial] = index;
@@ -646,6 +736,7 @@ private:
     tinygltf::Model model_;
     std::string stem_;
     std::map<int, int> sceneMaterialOf_;
+    std::map<int, std::shared_ptr<const ImageRGBA8>> decodedImages_;  // by glTF image index
     ImageFailures imageFailures_;
     GltfContents contents_;
 };

@@ -57,6 +57,8 @@ std::vector<Mesh> splitMeshSpatially(Mesh mesh, size_t maxTriangles) {
                     part.positions.push_back(mesh.positions[source]);
                     part.normals.push_back(mesh.normals[source]);
                     if (!mesh.texCoords.empty()) part.texCoords.push_back(mesh.texCoords[source]);
+                    if (!mesh.texCoords1.empty()) part.texCoords1.push_back(mesh.texCoords1[source]);
+                    if (!mesh.tangents.empty()) part.tangents.push_back(mesh.tangents[source]);
                 }
                 part.indices.push_back(newIndex[source]);
             }
