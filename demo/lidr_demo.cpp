@@ -156,7 +156,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
@@ -274,7 +274,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const GlInfo& info = context->info();
 
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
     std::cout << "LIDR: "
@@ -451,7 +451,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
     renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     // ES 2.0 has no glBlitFramebuffer: the frame goes to the window as one textured triangle there.
     std::optional<FramePresenter> presenter;

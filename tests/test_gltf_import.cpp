@@ -169,7 +169,8 @@ TEST_CASE("glTF: a mirroring transform keeps triangles counter-clockwise; strips
     for (const glm::vec3& normal : mesh.normals) requireNear(normal, {0, 0, 1});
 }
 
-TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and directional are warnings", "[gltf][cpu]") {
+TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; directional lights down their node's -z; spot is a warning",
+          "[gltf][cpu]") {
     TempDir dir;
     GltfFile file = oneTriangle();
     file.doc["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -177,7 +178,7 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
         {{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 2.0}, {"range", 3.0}},
         {{"type", "point"}, {"intensity", 4.0}},
         {{"type", "spot"}, {"spot", Json::object()}},
-        {{"type", "directional"}}};
+        {{"type", "directional"}, {"color", {1.0, 0.8, 0.5}}, {"intensity", 3.0}}};
     file.node({{"mesh", 0}}, true);
     const auto lightNode = [&](int light, Json node) {
         node["extensions"]["KHR_lights_punctual"]["light"] = light;
@@ -186,7 +187,11 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
     file.node(lightNode(0, {{"translation", {1, 2, 3}}, {"scale", {1, 2, 1}}}), true);
     file.node(lightNode(1, {{"translation", {0, 5, 0}}}), true);
     file.node(lightNode(2, Json::object()), true);
-    file.node(lightNode(3, Json::object()), true);
+    // -90 degrees about x turns -z to -y (straight down); the translation and scale do not matter.
+    file.node(lightNode(3, {{"rotation", {-0.70710678, 0.0, 0.0, 0.70710678}}, {"translation", {4, 4, 4}},
+                            {"scale", {3, 3, 3}}}),
+              true);
+    file.node(lightNode(3, Json::object()), true);  // unrotated: down -z
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "lights.gltf"));
     REQUIRE(scene.lights.size() == 2);
     requireNear(scene.lights[0].position, {1, 2, 3});
@@ -197,9 +202,32 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
     CHECK(lidr::gltfLightRadiusWithoutRange(1.0f) == Approx(16.0f));
     CHECK(lidr::gltfLightRadiusWithoutRange(1e12f) == Approx(1000.0f));
     CHECK(lidr::gltfLightRadiusWithoutRange(0.0f) == Approx(0.01f));
-    REQUIRE(scene.warnings.size() == 2);
+    REQUIRE(scene.directionalLights.size() == 2);
+    requireNear(scene.directionalLights[0].direction, {0, -1, 0});
+    requireNear(scene.directionalLights[0].color, {3.0f, 2.4f, 1.5f});
+    requireNear(scene.directionalLights[1].direction, {0, 0, -1});
+    REQUIRE(scene.warnings.size() == 1);
     CHECK_THAT(scene.warnings[0], Contains("lights.gltf") && Contains("spot lights are not supported"));
-    CHECK_THAT(scene.warnings[1], Contains("directional lights are not supported"));
+}
+
+TEST_CASE("glTF: directional lights past the forward shaders' 4, or with no direction, are left out with a warning",
+          "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}}};
+    file.node({{"mesh", 0}}, true);
+    Json sun;
+    sun["extensions"]["KHR_lights_punctual"]["light"] = 0;
+    Json flat = sun;
+    flat["scale"] = {1, 1, 0};  // -z maps to zero
+    file.node(flat, true);
+    for (int i = 0; i < 5; ++i) file.node(sun, true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "suns.gltf"));
+    CHECK(scene.directionalLights.size() == lidr::maxDirectionalLights);
+    REQUIRE(scene.warnings.size() == 2);
+    CHECK_THAT(scene.warnings[0], Contains("suns.gltf") && Contains("gives no direction"));
+    CHECK_THAT(scene.warnings[1], Contains("more than 4 directional lights"));
 }
 
 TEST_CASE("glTF: the first perspective camera is the view, else the default view frames the bounds", "[gltf][cpu]") {

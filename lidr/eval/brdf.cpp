@@ -54,6 +54,13 @@ glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light) {
     return evaluateBrdf(s, L) * (kPi * nDotL * attenuation) * glm::dvec3(light.color);
 }
 
+glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light) {
+    const glm::dvec3 L = -glm::normalize(glm::dvec3(light.direction));
+    const double nDotL = glm::dot(s.normal, L);
+    if (nDotL <= 0.0) return glm::dvec3(0.0);
+    return evaluateBrdf(s, L) * (kPi * nDotL) * glm::dvec3(light.color);
+}
+
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient) {
     const double nDotV = std::clamp(glm::dot(s.normal, s.toEye), 0.0, 1.0);
     const double roughness = std::sqrt(alphaOf(s));

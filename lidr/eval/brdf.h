@@ -1,6 +1,6 @@
 #pragma once
 // The CPU model of lidr's shading (shaders/common/shading.glsl) in double precision: the glTF 2.0
-// metallic-roughness BRDF, lidr's point-light term and its ambient term. Tests check GPU pixels against it and
+// metallic-roughness BRDF, lidr's point- and directional-light terms and its ambient term. Tests check GPU pixels against it and
 // bound its energy (white furnace).
 #include <glm/glm.hpp>
 
@@ -21,6 +21,8 @@ BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, co
 glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& toLight);
 // lidrShadeLight: f x pi x colour x saturate(1 - d^2 / r^2) x n.l.
 glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light);
+// lidrDirectionalLights' term of one light: f x pi x colour x n.l, from -direction (no attenuation).
+glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light);
 // lidrAmbient without the emission: ambient x (albedo + F0 A + B), Karis' environment-BRDF fit.
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient);
 // The integral of f x n.l over the hemisphere (the reflected fraction of light from every direction), by

@@ -112,7 +112,7 @@ void addScatteredLights(Scene& scene, const LightScatterOptions& options) {
 }
 
 bool addDefaultLightRig(Scene& scene) {
-    if (!scene.lights.empty() || scene.meshes.empty()) return false;
+    if (!scene.lights.empty() || !scene.directionalLights.empty() || scene.meshes.empty()) return false;
     const float diagonal = glm::length(scene.boundsMax() - scene.boundsMin());
     PointLight key;
     key.position = scene.camera.position;

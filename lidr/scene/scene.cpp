@@ -111,6 +111,27 @@ void validateLight(const PointLight& light, size_t index) {
     requireFinite(item, "priority", light.priority);
 }
 
+}  // namespace
+
+void validateDirectionalLights(const std::vector<DirectionalLight>& lights) {
+    if (lights.size() > maxDirectionalLights)
+        fail("directional lights", std::to_string(lights.size()) + " directional lights; at most " +
+                                       std::to_string(maxDirectionalLights) +
+                                       " are supported (uniforms of every forward shader)");
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const std::string item = "directional light " + std::to_string(i);
+        requireFinite(item, "direction", lights[i].direction);
+        const float length = glm::length(lights[i].direction);
+        // Its square must be a normal float for normalize(): 1e-18 .. 1e18 leaves room either side.
+        if (!(length >= 1e-18f && length <= 1e18f))
+            fail(item, "direction " + str(lights[i].direction) + " has length " + str(length) +
+                           "; it must be between 1e-18 and 1e18 (the way the light travels)");
+        requireColor(item, "color", lights[i].color);
+    }
+}
+
+namespace {
+
 void validatePath(const LightPath& path, size_t index) {
     const std::string item = "light path " + std::to_string(index);
     requireFinite(item, "center", path.center);
@@ -230,6 +251,7 @@ void Scene::validate(int maxResolution) const {
         fail("lightPaths", std::to_string(lightPaths.size()) + " paths for " + std::to_string(lights.size()) +
                                " lights; need none or one per light");
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
+    validateDirectionalLights(directionalLights);
 }
 
 MetallicRoughness metallicRoughnessOf(const Material& m) {

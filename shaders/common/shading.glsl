@@ -1,7 +1,8 @@
 // The one shading function of lidr, in linear light: the glTF 2.0 metallic-roughness BRDF (the specification's
 // appendix B: Lambert diffuse, GGX distribution, height-correlated Smith-GGX visibility, Schlick Fresnel with F0
-// mixed by metallic) under point lights with attenuation saturate(1 - d^2 / r^2). LIDR, tiled, forward and the
-// brute-force reference all call it; each ends with lidrOutput (output_transform.glsl). CPU model: lidr/eval/brdf.h.
+// mixed by metallic) under point lights with attenuation saturate(1 - d^2 / r^2) and directional lights. LIDR,
+// tiled, forward and the brute-force reference all call it; each ends with lidrOutput (output_transform.glsl).
+// CPU model: lidr/eval/brdf.h.
 #include "output_transform.glsl"
 #define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
@@ -64,15 +65,10 @@ vec3 lidrAmbient(LidrSurface s) {
     return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) + uMaterialEmissive;
 }
 
-// One point light: BRDF x pi x colour x attenuation x n.l. The pi makes a light's colour what it gives a white
-// Lambert surface facing it at its centre (as lidr's lights did before the BRDF had its 1/pi; doc/colour.md).
-vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
-    vec3 toLight = posRadius.xyz - s.position;
-    float d2 = dot(toLight, toLight);
-    float r2 = posRadius.w * posRadius.w;
-    float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
-    if (attenuation <= 0.0) return vec3(0.0);
-    vec3 L = toLight * inversesqrt(max(d2, 1e-12));
+// Light arriving from direction L (unit, towards the light) with colour x attenuation: BRDF x pi x colour x
+// attenuation x n.l. The pi makes a light's colour what it gives a white Lambert surface facing it at its centre
+// (as lidr's lights did before the BRDF had its 1/pi; doc/colour.md). Every light type ends here.
+vec3 lidrShadeIncoming(LidrSurface s, vec3 L, float attenuation, vec3 lightColor) {
     float nDotL = dot(s.normal, L);
     if (nDotL <= 0.0) return vec3(0.0);
     vec3 H = normalize(L + s.toEye);
@@ -88,4 +84,33 @@ vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
     vec3 F = s.f0 + (1.0 - s.f0) * fresnelWeight;
     vec3 brdf = (1.0 - F) * s.albedo * (1.0 / LIDR_PI) + F * (D * visibility);
     return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
+}
+
+// One point light, attenuated by saturate(1 - d^2 / r^2).
+vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
+    vec3 toLight = posRadius.xyz - s.position;
+    float d2 = dot(toLight, toLight);
+    float r2 = posRadius.w * posRadius.w;
+    float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
+    if (attenuation <= 0.0) return vec3(0.0);
+    vec3 L = toLight * inversesqrt(max(d2, 1e-12));
+    return lidrShadeIncoming(s, L, attenuation, lightColor);
+}
+
+// Directional lights (the sun) touch every pixel, so they are not indexed: every mode adds this sum once per
+// pixel, right after lidrAmbient, in its forward pass (the reference too), so the modes stay equal. lidr sets
+// the uniforms from ShadingParameters::directionalLights (lidr/render/shading_pass.cpp): xyz towards the light,
+// unit; the colour in rgb. At most LIDR_MAX_DIRECTIONAL_LIGHTS (lidr::maxDirectionalLights).
+#define LIDR_MAX_DIRECTIONAL_LIGHTS 4
+uniform vec4 uDirectionalLightToLight[LIDR_MAX_DIRECTIONAL_LIGHTS];
+uniform vec4 uDirectionalLightColor[LIDR_MAX_DIRECTIONAL_LIGHTS];
+uniform float uDirectionalLightCount;
+
+vec3 lidrDirectionalLights(LidrSurface s) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < LIDR_MAX_DIRECTIONAL_LIGHTS; ++i) {
+        if (float(i) >= uDirectionalLightCount) break;
+        sum += lidrShadeIncoming(s, uDirectionalLightToLight[i].xyz, 1.0, uDirectionalLightColor[i].rgb);
+    }
+    return sum;
 }

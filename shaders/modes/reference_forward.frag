@@ -8,7 +8,7 @@ uniform float uLightCount;
 
 void main() {
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     for (int i = 1; i <= LIDR_MAX_LIGHTS; ++i) {
         float index = float(i);
         if (index > uLightCount) break;

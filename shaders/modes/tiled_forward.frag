@@ -9,7 +9,7 @@
 
 void main() {
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     float offset = lidrTileListOffset();
     for (int i = 0; i < LIDR_MAX_TILE_LIGHTS; ++i) {
         float index = lidrTileListEntry(offset + float(i));

@@ -8,7 +8,7 @@
 void main() {
     lidrWriteDepth();
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     lidrBeginLights();
     LidrLight light;
     for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {

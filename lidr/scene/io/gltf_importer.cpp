@@ -592,16 +592,21 @@ private:
                  " lights)");
         const tinygltf::Light& source = model_.lights[size_t(lightIndex)];
         const std::string name = "light " + std::to_string(lightIndex) + (source.name.empty() ? "" : " '" + source.name + "'");
-        if (source.type != "point") {
-            warn(name + ": " + source.type + " lights are not supported (lidr draws point lights); left out");
+        if (source.type != "point" && source.type != "directional") {
+            warn(name + ": " + source.type + " lights are not supported (lidr draws point and directional lights); left out");
+            return;
+        }
+        glm::vec3 color(1.0f);
+        for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
+        color *= float(source.intensity);
+        if (!(isFinite(color) && color.r >= 0 && color.g >= 0 && color.b >= 0))
+            fail(name + ": colour x intensity must be finite and >= 0, got " + str(color));
+        if (source.type == "directional") {
+            readDirectionalLight(name, nodeName, color, world);
             return;
         }
         PointLight light;
-        glm::vec3 color(1.0f);
-        for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
-        light.color = color * float(source.intensity);
-        if (!(isFinite(light.color) && light.color.r >= 0 && light.color.g >= 0 && light.color.b >= 0))
-            fail(name + ": colour x intensity must be finite and >= 0, got " + str(light.color));
+        light.color = color;
         light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         // The node's scale scales the range (its largest axis: the light stays a sphere).
         const glm::mat3 linear(world);
@@ -616,6 +621,25 @@ private:
         scene_.lights.push_back(light);
         if (!scene_.lightPaths.empty()) scene_.lightPaths.emplace_back();
         ++contents_.lights;
+    }
+
+    // A directional light shines down its node's -z (KHR_lights_punctual); the node's position and scale do
+    // not matter. Past maxDirectionalLights (the forward shaders' uniforms) the rest are left out with a warning.
+    void readDirectionalLight(const std::string& name, const std::string& nodeName, const glm::vec3& color,
+                              const glm::mat4& world) {
+        const glm::vec3 direction(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+        const float length = glm::length(direction);
+        if (!(std::isfinite(length) && length >= 1e-18f && length <= 1e18f)) {
+            warn(name + " on node " + nodeName + ": the node's transform gives no direction (-z maps to " +
+                 str(direction) + "); left out");
+            return;
+        }
+        if (scene_.directionalLights.size() >= maxDirectionalLights) {
+            warn(name + " on node " + nodeName + ": more than " + std::to_string(maxDirectionalLights) +
+                 " directional lights (the forward shaders' limit); left out");
+            return;
+        }
+        scene_.directionalLights.push_back({direction / length, color});
     }
 
     void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {

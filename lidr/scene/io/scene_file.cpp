@@ -42,7 +42,7 @@ public:
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
                            "ambient", "background", "materials", "models", "primitives", "lights", "generate",
-                           "msaa", "transparency", "mode"});
+                           "directional_lights", "msaa", "transparency", "mode"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
@@ -74,6 +74,7 @@ public:
         if (root.has("lights"))
             for (const Field& light : root["lights"].items()) readLight(light);
         if (root.has("generate")) readGenerators(root["generate"]);
+        if (root.has("directional_lights")) readDirectionalLights(root["directional_lights"]);
         bool anyMoves = false;
         for (const LightPath& path : scene_.lightPaths) anyMoves = anyMoves || path.kind != LightPath::Kind::Static;
         if (!anyMoves) scene_.lightPaths.clear();
@@ -101,6 +102,7 @@ private:
         if (!(root.has("base_lights") && root["base_lights"].boolean())) {
             scene_.lights.clear();
             scene_.lightPaths.clear();
+            scene_.directionalLights.clear();
         }
     }
 
@@ -262,6 +264,26 @@ private:
         if (field.has("priority")) light.priority = field["priority"].number();
         scene_.lights.push_back(light);
         scene_.lightPaths.push_back(path);
+    }
+
+    // Not indexed (every mode adds them in its forward pass), so they have their own key, after the models'.
+    void readDirectionalLights(const Field& field) {
+        const std::vector<Field> items = field.items();
+        if (scene_.directionalLights.size() + items.size() > maxDirectionalLights)
+            field.fail(std::to_string(scene_.directionalLights.size() + items.size()) + " directional lights" +
+                       (scene_.directionalLights.empty() ? std::string() : " with the models'") + "; at most " +
+                       std::to_string(maxDirectionalLights) + " are supported (uniforms of every forward shader)");
+        for (const Field& item : items) {
+            item.expectObject({"direction", "color"});
+            DirectionalLight light;
+            light.direction = item["direction"].vec3();
+            const float length = glm::length(light.direction);
+            if (!(length >= 1e-18f && length <= 1e18f))
+                item["direction"].fail("length " + str(length) + "; it must be between 1e-18 and 1e18 (the way the "
+                                       "light travels, e.g. [0, -1, 0] straight down)");
+            if (item.has("color")) light.color = color(item["color"]);
+            scene_.directionalLights.push_back(light);
+        }
     }
 
     LightPath readPath(const Field& field) {
