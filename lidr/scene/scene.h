@@ -53,12 +53,26 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// A point light, or, with outerConeAngle > 0, a spot light (KHR_lights_punctual): light leaves `position` only
+// inside the cone around `direction`, full between the axis and innerConeAngle, falling smoothly to nothing at
+// outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
+// `radius` (the range) bounds both, and a spot light is indexed by that bounding sphere today: the light lists
+// hold it wherever its sphere reaches a surface, and the shading's cone term is exactly 0 outside the cone.
 struct PointLight {
     glm::vec3 position{0.0f};
     float radius = 1.0f;
     glm::vec3 color{1.0f};
     float priority = 0.0f;  // higher is kept first when a pixel has more lights than the budget
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot lights: the cone's axis, the way the light shines
+    float innerConeAngle = 0.0f;             // radians, [0, outerConeAngle)
+    float outerConeAngle = 0.0f;             // radians, (0, pi/2] for a spot light; 0: a point light
+    bool isSpot() const { return outerConeAngle > 0.0f; }
 };
+
+// A light's cone term as the shaders take it (shading.glsl, lidrShadeLight): (unit direction x scale, offset)
+// with scale = 1 / max(1e-3, cos inner - cos outer) and offset = -cos outer x scale, so the term is
+// saturate(dot(-L, xyz) + w)^2 for L towards the light; (0, 0, 0, 1) for a point light (the term is 1).
+glm::vec4 spotCone(const PointLight& light);
 
 // A light infinitely far away (the sun): the same direction and colour at every point, so it touches every
 // pixel and is not indexed. Every mode adds up to maxDirectionalLights of them in its forward pass, as uniforms,

@@ -86,15 +86,25 @@ vec3 lidrShadeIncoming(LidrSurface s, vec3 L, float attenuation, vec3 lightColor
     return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
 }
 
-// One point light, attenuated by saturate(1 - d^2 / r^2).
-vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
+// One point or spot light, attenuated by saturate(1 - d^2 / r^2) and the spot cone: spot = (axis x scale, offset)
+// from the light table (lidr::spotCone), the term saturate(dot(-L, axis) x scale + offset)^2, KHR_lights_punctual's
+// smooth falloff from the inner to the outer cone; a point light's (0, 0, 0, 1) makes it exactly 1.
+vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor, vec4 spot) {
     vec3 toLight = posRadius.xyz - s.position;
     float d2 = dot(toLight, toLight);
     float r2 = posRadius.w * posRadius.w;
     float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
     if (attenuation <= 0.0) return vec3(0.0);
     vec3 L = toLight * inversesqrt(max(d2, 1e-12));
+    float cone = clamp(spot.w - dot(L, spot.xyz), 0.0, 1.0);
+    attenuation *= cone * cone;
+    if (attenuation <= 0.0) return vec3(0.0);
     return lidrShadeIncoming(s, L, attenuation, lightColor);
+}
+
+// A point light (a material shader's own lights).
+vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
+    return lidrShadeLight(s, posRadius, lightColor, vec4(0.0, 0.0, 0.0, 1.0));
 }
 
 // Directional lights (the sun) touch every pixel, so they are not indexed: every mode adds this sum once per

@@ -14,10 +14,10 @@ void main() {
     for (int i = 0; i < LIDR_MAX_TILE_LIGHTS; ++i) {
         float index = lidrTileListEntry(offset + float(i));
         if (index < 0.5) break;
-        vec4 posRadius;
+        vec4 posRadius, spot;
         vec3 lightColor;
-        lidrFetchLight(index, posRadius, lightColor);
-        color += lidrShadeLight(s, posRadius, lightColor);
+        lidrFetchLight(index, posRadius, lightColor, spot);
+        color += lidrShadeLight(s, posRadius, lightColor, spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

@@ -13,7 +13,7 @@ void main() {
     LidrLight light;
     for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
         if (!lidrNextLight(light)) break;
-        color += lidrShadeLight(s, vec4(light.position, light.radius), light.color);
+        color += lidrShadeLight(s, vec4(light.position, light.radius), light.color, light.spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }
