@@ -169,7 +169,7 @@ TEST_CASE("glTF: a mirroring transform keeps triangles counter-clockwise; strips
     for (const glm::vec3& normal : mesh.normals) requireNear(normal, {0, 0, 1});
 }
 
-TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; directional lights down their node's -z; spot is a warning",
+TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; spot and directional lights down their node's -z",
           "[gltf][cpu]") {
     TempDir dir;
     GltfFile file = oneTriangle();
@@ -178,7 +178,8 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; directional 
         {{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 2.0}, {"range", 3.0}},
         {{"type", "point"}, {"intensity", 4.0}},
         {{"type", "spot"}, {"spot", Json::object()}},
-        {{"type", "directional"}, {"color", {1.0, 0.8, 0.5}}, {"intensity", 3.0}}};
+        {{"type", "directional"}, {"color", {1.0, 0.8, 0.5}}, {"intensity", 3.0}},
+        {{"type", "spot"}, {"range", 5.0}, {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 1.5707963}}}}};
     file.node({{"mesh", 0}}, true);
     const auto lightNode = [&](int light, Json node) {
         node["extensions"]["KHR_lights_punctual"]["light"] = light;
@@ -192,8 +193,21 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; directional 
                             {"scale", {3, 3, 3}}}),
               true);
     file.node(lightNode(3, Json::object()), true);  // unrotated: down -z
+    file.node(lightNode(4, {{"rotation", {-0.70710678, 0.0, 0.0, 0.70710678}}, {"translation", {0, 3, 0}}}), true);
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "lights.gltf"));
-    REQUIRE(scene.lights.size() == 2);
+    REQUIRE(scene.lights.size() == 4);
+    // The spot with KHR_lights_punctual's defaults (inner 0, outer pi/4), down -z; the other turned down -y.
+    CHECK(scene.lights[2].isSpot());
+    requireNear(scene.lights[2].direction, {0, 0, -1});
+    CHECK(scene.lights[2].innerConeAngle == 0.0f);
+    CHECK(scene.lights[2].outerConeAngle == Approx(0.7853981634f));
+    requireNear(scene.lights[3].position, {0, 3, 0});
+    requireNear(scene.lights[3].direction, {0, -1, 0});
+    CHECK(scene.lights[3].radius == Approx(5.0f));
+    CHECK(scene.lights[3].innerConeAngle == Approx(0.25f));
+    CHECK(scene.lights[3].outerConeAngle == Approx(1.5707963f));
+    REQUIRE_NOTHROW(scene.validate());
+    CHECK_FALSE(scene.lights[0].isSpot());
     requireNear(scene.lights[0].position, {1, 2, 3});
     CHECK(scene.lights[0].radius == Approx(6.0f));  // range 3 x the node's largest scale, 2
     requireNear(scene.lights[0].color, {2.0f, 1.0f, 0.5f});
@@ -206,8 +220,7 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; directional 
     requireNear(scene.directionalLights[0].direction, {0, -1, 0});
     requireNear(scene.directionalLights[0].color, {3.0f, 2.4f, 1.5f});
     requireNear(scene.directionalLights[1].direction, {0, 0, -1});
-    REQUIRE(scene.warnings.size() == 1);
-    CHECK_THAT(scene.warnings[0], Contains("lights.gltf") && Contains("spot lights are not supported"));
+    CHECK(scene.warnings.empty());
 }
 
 TEST_CASE("glTF: directional lights past the forward shaders' 4, or with no direction, are left out with a warning",

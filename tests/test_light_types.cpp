@@ -143,6 +143,48 @@ TEST_CASE("scene files: directional_lights, with their errors named by field", "
     CHECK_THAT(error(five + "]}"), Contains("directional_lights") && Contains("5 directional lights; at most 4"));
 }
 
+TEST_CASE("scene files: spot lights (\"type\": \"spot\", cone angles in degrees), with their errors", "[lights][cpu][bad-input]") {
+    const Scene scene = parseSceneJson(R"({"lights": [
+        {"position": [0, 4, 0], "radius": 6, "type": "spot", "direction": [0, -1, 0], "inner_cone_angle": 20,
+         "outer_cone_angle": 30},
+        {"position": [1, 4, 0], "radius": 6, "type": "spot", "direction": [1, -1, 0]},
+        {"position": [2, 4, 0], "radius": 6, "type": "point"}]})", ".", "spots.json");
+    REQUIRE(scene.lights.size() == 3);
+    CHECK(scene.lights[0].isSpot());
+    CHECK(scene.lights[0].innerConeAngle == Approx(glm::radians(20.0f)));
+    CHECK(scene.lights[0].outerConeAngle == Approx(glm::radians(30.0f)));
+    CHECK(scene.lights[0].direction == glm::vec3(0.0f, -1.0f, 0.0f));
+    CHECK(scene.lights[1].innerConeAngle == 0.0f);  // KHR_lights_punctual's defaults
+    CHECK(scene.lights[1].outerConeAngle == Approx(glm::radians(45.0f)));
+    CHECK_FALSE(scene.lights[2].isSpot());
+    const auto error = [](const std::string& light) {
+        try {
+            parseSceneJson(R"({"lights": [)" + light + "]}", ".", "bad.json");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(accepted)");
+    };
+    const std::string at = R"({"position": [0, 1, 0], "radius": 2, )";
+    CHECK_THAT(error(at + R"("type": "spot"})"), Contains("bad.json") && Contains("lights[0].direction") &&
+                                                   Contains("missing"));
+    CHECK_THAT(error(at + R"("type": "spot", "direction": [0, 0, 0]})"), Contains("lights[0].direction"));
+    CHECK_THAT(error(at + R"("type": "spot", "direction": [0, -1, 0], "outer_cone_angle": 95})"),
+               Contains("lights[0].outer_cone_angle") && Contains("(0, 90]"));
+    CHECK_THAT(error(at + R"("type": "spot", "direction": [0, -1, 0], "inner_cone_angle": 45})"),
+               Contains("lights[0].inner_cone_angle") && Contains("[0, outer_cone_angle 45)"));
+    CHECK_THAT(error(at + R"("direction": [0, -1, 0]})"), Contains("lights[0].direction") && Contains("only for spot"));
+    CHECK_THAT(error(at + R"("type": "area"})"), Contains("lights[0].type") && Contains("unknown light type 'area'"));
+}
+
+TEST_CASE("media/scenes/lamp-street.json: 16 spot lamps, 3 point lights and a sun", "[lights][cpu]") {
+    const Scene scene = loadSceneFile(sourcePath("media/scenes/lamp-street.json"));
+    REQUIRE(scene.lights.size() == 19);
+    CHECK(std::count_if(scene.lights.begin(), scene.lights.end(), [](const PointLight& l) { return l.isSpot(); }) == 16);
+    CHECK(scene.directionalLights.size() == 1);
+    CHECK(scene.warnings.empty());
+}
+
 TEST_CASE("every mode equals the reference with directional lights present, and with spot lights", "[lights]") {
     testContext();
     struct Case {

@@ -592,8 +592,8 @@ private:
                  " lights)");
         const tinygltf::Light& source = model_.lights[size_t(lightIndex)];
         const std::string name = "light " + std::to_string(lightIndex) + (source.name.empty() ? "" : " '" + source.name + "'");
-        if (source.type != "point" && source.type != "directional") {
-            warn(name + ": " + source.type + " lights are not supported (lidr draws point and directional lights); left out");
+        if (source.type != "point" && source.type != "spot" && source.type != "directional") {
+            warn(name + ": " + source.type + " lights are not supported (lidr draws point, spot and directional lights); left out");
             return;
         }
         glm::vec3 color(1.0f);
@@ -607,6 +607,21 @@ private:
         }
         PointLight light;
         light.color = color;
+        if (source.type == "spot") {
+            // The validator held the angles to 0 <= inner < outer <= pi/2; a spot shines down its node's -z.
+            const glm::vec3 axis(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+            const float length = glm::length(axis);
+            if (!(std::isfinite(length) && length >= 1e-18f && length <= 1e18f)) {
+                warn(name + " on node " + nodeName + ": the node's transform gives no direction (-z maps to " +
+                     str(axis) + "); left out");
+                return;
+            }
+            light.direction = axis / length;
+            light.innerConeAngle = float(source.spot.innerConeAngle);
+            light.outerConeAngle = float(source.spot.outerConeAngle);
+            // inner < outer in double may round to equal floats
+            light.innerConeAngle = std::min(light.innerConeAngle, std::nextafter(light.outerConeAngle, 0.0f));
+        }
         light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         // The node's scale scales the range (its largest axis: the light stays a sphere).
         const glm::mat3 linear(world);
