@@ -63,7 +63,7 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             float* q = &pos[(texels + i + 1) * 4];
             q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
             float* c = &col[(i + 1) * 4];
-            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = 1.0f;
+            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = l.isSpot() ? 0.0f : 1.0f;  // 0: read the cone
         }
         glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
@@ -87,15 +87,16 @@ void LightTable::update(const std::vector<PointLight>& lights) {
         radiusScale_ = std::max(maxRadius, 1e-6f);
         colorScale_ = std::max(maxColor, 1e-6f);
         // Rows [rows, 2 rows): the spot cone, 16-bit fractions: high/low bytes of the axis as (d + 1) / 2 and
-        // cos(outer cone angle) in the position textures, cos(inner) in the colour texture's red and green, and
-        // blue 255 for a spot light (0: a point light, whose cone term is 1).
+        // cos(outer cone angle) in the position textures, cos(inner) in the colour texture's red and green; the
+        // colour's alpha is 0 for a spot light (255: a point light, whose cone is not read: its term is 1).
         std::vector<uint8_t> high(texels * 8, 0), low(texels * 8, 0), col(texels * 8, 0);
         auto put16 = [&](size_t at, float unit) {
             const int v = static_cast<int>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
             high[at] = static_cast<uint8_t>(v >> 8);
             low[at] = static_cast<uint8_t>(v & 0xFF);
         };
-        put16(3, 1.0f);  // null light: radius = the scale, black
+        put16(3, 1.0f);  // null light: radius = the scale, black, a point light
+        col[3] = 255;
         for (size_t i = 0; i < lights.size(); ++i) {
             const PointLight& l = lights[i];
             const glm::vec3 unit = (l.position - boundsMin_) / boundsExtent_;
@@ -109,7 +110,7 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
             for (int c = 0; c < 3; ++c)
                 col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
-            col[t + 3] = 255;
+            col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
             if (!l.isSpot()) continue;
             const size_t cone = (texels + i + 1) * 4;
             const glm::vec3 axis = glm::normalize(l.direction);
@@ -118,7 +119,6 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             const int inner = static_cast<int>(std::lround(std::clamp(std::cos(l.innerConeAngle), 0.0f, 1.0f) * 65535.0f));
             col[cone + 0] = static_cast<uint8_t>(inner >> 8);
             col[cone + 1] = static_cast<uint8_t>(inner & 0xFF);
-            col[cone + 2] = 255;
         }
         glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
