@@ -11,6 +11,7 @@
 
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
+#include "lidr/eval/brdf.h"
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/reference_renderer.h"
@@ -300,4 +301,54 @@ TEST_CASE("spot lights: the cone term and the checks of the cone", "[lights][cpu
     bad = l;
     bad.outerConeAngle = NAN;
     CHECK_THAT(problem(bad), Contains("outer cone angle"));
+}
+
+TEST_CASE("spot lights: the CPU truth holds a spot where its cone reaches the surface, and only there", "[lights]") {
+    testContext();
+    Scene scene = loadSceneFile(sourcePath("media/scenes/lamp-street.json"));
+    scene.width = testWidth();
+    scene.height = testHeight();
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
+    reference.render(scene.camera, lights, sceneShading(scene));
+    const ImageFloat depth = reference.targets().readDepth();
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    const float band = 2e-3f;
+    const CoverageTruth cones = computeCoverage(depth, cam, lights, band);
+    std::vector<PointLight> spheres = lights;  // the same lights as points: their bounding spheres
+    for (PointLight& l : spheres) l.outerConeAngle = 0.0f;
+    const CoverageTruth bounds = computeCoverage(depth, cam, spheres, band);
+    long conePairs = 0, spherePairs = 0, spotSpherePairs = 0, missing = 0, outside = 0;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const size_t p = size_t(y) * scene.width + x;
+            if (!cones.surface[p]) continue;
+            const glm::dvec3 surface(unprojectPixel(cam, x, y, depth.at(x, y)));
+            const auto has = [](const CoverageTruth& t, size_t pixel, uint32_t light) {
+                return std::binary_search(t.lights.begin() + t.offsets[pixel], t.lights.begin() + t.offsets[pixel + 1], light);
+            };
+            for (size_t i = 0; i < lights.size(); ++i) {
+                const PointLight& l = lights[i];
+                const bool inCone = has(cones, p, uint32_t(i + 1)), inSphere = has(bounds, p, uint32_t(i + 1));
+                conePairs += inCone;
+                spherePairs += inSphere;
+                if (!l.isSpot()) continue;
+                spotSpherePairs += inSphere;
+                // What the light gives there apart from the BRDF: range attenuation x cone term.
+                const glm::dvec3 toLight = glm::dvec3(l.position) - surface;
+                const double d2 = glm::dot(toLight, toLight), r = double(l.radius);
+                const double reach = std::max(0.0, 1.0 - d2 / (r * r)) * spotTerm(l, toLight / std::sqrt(d2));
+                if (reach > 0.02 && !inCone) ++missing;     // well inside cone and range: must be listed
+                if (inCone && reach <= 0.0) ++outside;      // listed where the spot gives nothing
+            }
+        }
+    INFO("lamp-street at " << scene.width << "x" << scene.height << ": light-pixel pairs, cones exact " << conePairs
+                           << ", spots as their spheres " << spherePairs << " (the 16 spots' spheres: " << spotSpherePairs
+                           << "); missing " << missing << ", listed outside " << outside);
+    REQUIRE(missing == 0);
+    REQUIRE(outside == 0);
+    REQUIRE(conePairs < spherePairs);
+    // The cones of lamps aimed down light a fraction of their spheres' surfaces (the measured figure is in
+    // doc/architecture.md, "Light types").
+    CHECK(double(spherePairs - conePairs) > 0.3 * double(spotSpherePairs));
 }
