@@ -15,7 +15,13 @@ struct LightScatterOptions {
     // Light radius in scene units; <= 0: automatic (defaultScatterRadius).
     float radius = 0.0f;
     float intensity = 1.0f;  // colour scale
+    // The share of the lights that are spot lights, [0, 1]: each aims back at the surface it sits over, its
+    // outer cone kScatterSpotOuterDegrees; every (1 / spotShare)-th light, so the points stay where they were.
+    float spotShare = 0.0f;
 };
+
+// The cone of a scattered spot light: a lamp over its surface, lighting a disc of about its radius.
+constexpr float kScatterSpotOuterDegrees = 60.0f, kScatterSpotInnerDegrees = 40.0f;
 
 // The automatic radius: lights of this radius over the scene's surfaces cover each surface point about
 // kScatterMeanOverlap times on average (N pi r^2 = overlap x area, counting one side of every triangle), so

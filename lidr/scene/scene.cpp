@@ -117,14 +117,18 @@ void validateLight(const PointLight& light, size_t index) {
             fail(item, "inner cone angle " + str(light.innerConeAngle) + " must be in [0, outer cone angle " +
                            str(light.outerConeAngle) + ")");
         requireFinite(item, "direction", light.direction);
-        const float length = glm::length(light.direction);
-        if (!(length >= 1e-18f && length <= 1e18f))
-            fail(item, "spot direction " + str(light.direction) + " has length " + str(length) +
+        if (!isUsableDirection(light.direction))
+            fail(item, "spot direction " + str(light.direction) + " has length " + str(glm::length(light.direction)) +
                            "; it must be between 1e-18 and 1e18");
     }
 }
 
 }  // namespace
+
+bool isUsableDirection(const glm::vec3& direction) {
+    const float length = glm::length(direction);  // NaN or infinite for a direction not finite
+    return length >= 1e-18f && length <= 1e18f;
+}
 
 void validateDirectionalLights(const std::vector<DirectionalLight>& lights) {
     if (lights.size() > maxDirectionalLights)
@@ -134,10 +138,8 @@ void validateDirectionalLights(const std::vector<DirectionalLight>& lights) {
     for (size_t i = 0; i < lights.size(); ++i) {
         const std::string item = "directional light " + std::to_string(i);
         requireFinite(item, "direction", lights[i].direction);
-        const float length = glm::length(lights[i].direction);
-        // Its square must be a normal float for normalize(): 1e-18 .. 1e18 leaves room either side.
-        if (!(length >= 1e-18f && length <= 1e18f))
-            fail(item, "direction " + str(lights[i].direction) + " has length " + str(length) +
+        if (!isUsableDirection(lights[i].direction))
+            fail(item, "direction " + str(lights[i].direction) + " has length " + str(glm::length(lights[i].direction)) +
                            "; it must be between 1e-18 and 1e18 (the way the light travels)");
         requireColor(item, "color", lights[i].color);
     }

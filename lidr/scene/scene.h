@@ -149,6 +149,10 @@ struct Scene {
     void validate(int maxResolution = 16384) const;
 };
 
+// A direction a light may have: finite, of length in [1e-18, 1e18], so its square is a normal float and it
+// normalises (spot axes, directional lights).
+bool isUsableDirection(const glm::vec3& direction);
+
 // Throws lidr::Error naming the first bad directional light: more than maxDirectionalLights, a direction not
 // finite or zero (or too long to normalise in float), a colour not finite or negative. Scene::validate and
 // every mode's render() (through ShadingParameters) call it.

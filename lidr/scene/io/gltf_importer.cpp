@@ -608,15 +608,8 @@ private:
         PointLight light;
         light.color = color;
         if (source.type == "spot") {
-            // The validator held the angles to 0 <= inner < outer <= pi/2; a spot shines down its node's -z.
-            const glm::vec3 axis(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
-            const float length = glm::length(axis);
-            if (!(std::isfinite(length) && length >= 1e-18f && length <= 1e18f)) {
-                warn(name + " on node " + nodeName + ": the node's transform gives no direction (-z maps to " +
-                     str(axis) + "); left out");
-                return;
-            }
-            light.direction = axis / length;
+            // The validator held the angles to 0 <= inner < outer <= pi/2.
+            if (!nodeDirection(world, name, nodeName, light.direction)) return;
             light.innerConeAngle = float(source.spot.innerConeAngle);
             light.outerConeAngle = float(source.spot.outerConeAngle);
             // inner < outer in double may round to equal floats
@@ -638,23 +631,31 @@ private:
         ++contents_.lights;
     }
 
-    // A directional light shines down its node's -z (KHR_lights_punctual); the node's position and scale do
-    // not matter. Past maxDirectionalLights (the forward shaders' uniforms) the rest are left out with a warning.
-    void readDirectionalLight(const std::string& name, const std::string& nodeName, const glm::vec3& color,
-                              const glm::mat4& world) {
+    // Spot and directional lights shine down their node's -z (KHR_lights_punctual): the unit direction, or
+    // false with a warning (the light is left out) where the node's transform flattens -z to nothing.
+    bool nodeDirection(const glm::mat4& world, const std::string& name, const std::string& nodeName, glm::vec3& out) {
         const glm::vec3 direction(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
-        const float length = glm::length(direction);
-        if (!(std::isfinite(length) && length >= 1e-18f && length <= 1e18f)) {
+        if (!isUsableDirection(direction)) {
             warn(name + " on node " + nodeName + ": the node's transform gives no direction (-z maps to " +
                  str(direction) + "); left out");
-            return;
+            return false;
         }
+        out = glm::normalize(direction);
+        return true;
+    }
+
+    // The node's position and scale do not matter. Past maxDirectionalLights (the forward shaders' uniforms)
+    // the rest are left out with a warning.
+    void readDirectionalLight(const std::string& name, const std::string& nodeName, const glm::vec3& color,
+                              const glm::mat4& world) {
+        DirectionalLight light{glm::vec3(0.0f), color};
+        if (!nodeDirection(world, name, nodeName, light.direction)) return;
         if (scene_.directionalLights.size() >= maxDirectionalLights) {
             warn(name + " on node " + nodeName + ": more than " + std::to_string(maxDirectionalLights) +
                  " directional lights (the forward shaders' limit); left out");
             return;
         }
-        scene_.directionalLights.push_back({direction / length, color});
+        scene_.directionalLights.push_back(light);
     }
 
     void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {

@@ -282,9 +282,8 @@ private:
         if (type != "spot") field["type"].fail("unknown light type '" + type + "' (point or spot; directional "
                                                "lights are \"directional_lights\")");
         light.direction = field["direction"].vec3();
-        const float length = glm::length(light.direction);
-        if (!(length >= 1e-18f && length <= 1e18f))
-            field["direction"].fail("length " + str(length) + "; it must be between 1e-18 and 1e18");
+        if (!isUsableDirection(light.direction))
+            field["direction"].fail("length " + str(glm::length(light.direction)) + "; it must be between 1e-18 and 1e18");
         const float outer = field.has("outer_cone_angle") ? field["outer_cone_angle"].number() : 45.0f;
         const float inner = field.has("inner_cone_angle") ? field["inner_cone_angle"].number() : 0.0f;
         if (!(outer > 0.0f && outer <= 90.0f))  // the default, 45, is in range
@@ -306,10 +305,9 @@ private:
             item.expectObject({"direction", "color"});
             DirectionalLight light;
             light.direction = item["direction"].vec3();
-            const float length = glm::length(light.direction);
-            if (!(length >= 1e-18f && length <= 1e18f))
-                item["direction"].fail("length " + str(length) + "; it must be between 1e-18 and 1e18 (the way the "
-                                       "light travels, e.g. [0, -1, 0] straight down)");
+            if (!isUsableDirection(light.direction))
+                item["direction"].fail("length " + str(glm::length(light.direction)) + "; it must be between 1e-18 and "
+                                       "1e18 (the way the light travels, e.g. [0, -1, 0] straight down)");
             if (item.has("color")) light.color = color(item["color"]);
             scene_.directionalLights.push_back(light);
         }
