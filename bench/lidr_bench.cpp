@@ -205,7 +205,7 @@ struct Slot {
 // Renders one frame and waits for it; returns the wall time in ms.
 double renderFrame(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights) {
     const double t0 = nowMilliseconds();
-    renderer.render(scene.camera, lights, ShadingParameters{scene.ambient, scene.backgroundColor});
+    renderer.render(scene.camera, lights, sceneShading(scene));
     glFinish();
     return nowMilliseconds() - t0;
 }

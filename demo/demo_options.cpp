@@ -45,6 +45,9 @@ void SceneChoice::addOptions(CLI::App& app) {
                    "Add N seeded point lights scattered over the scene's surfaces (1 .. 65535 with the scene's own)");
     app.add_option("--light-radius", lightRadius,
                    "Radius of the --lights lights in scene units (default: automatic, from the surface area and N)");
+    app.add_option("--spot-share", spotShare,
+                   "Make this share (0..1) of the --lights lights spot lights aimed back at their surface (60-degree "
+                   "cones; default 0)");
     app.add_flag("!--no-default-lights", defaultRig,
                  "Leave a scene without lights unlit (default: a key light at the eye and ambient 0.1, doc/colour.md)");
 }
@@ -72,6 +75,7 @@ Scene SceneChoice::load() const {
         if (time) scene.time = float(*time);
     }
     if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
+    if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");
     if (lights) {
         LightScatterOptions scatter;
         scatter.count = *lights;
@@ -81,9 +85,16 @@ Scene SceneChoice::load() const {
                 throw Error("--light-radius must be a finite number > 0, got " + std::to_string(*lightRadius));
             scatter.radius = float(*lightRadius);
         }
+        if (spotShare) {
+            if (!(*spotShare >= 0.0 && *spotShare <= 1.0))
+                throw Error("--spot-share must be a number in [0, 1], got " + std::to_string(*spotShare));
+            scatter.spotShare = float(*spotShare);
+        }
         addScatteredLights(scene, scatter);
         std::cout << "lights     " << *lights << " scattered over the surfaces, radius "
-                  << (lightRadius ? *lightRadius : double(defaultScatterRadius(scene, *lights))) << ", seed " << seed << "\n";
+                  << (lightRadius ? *lightRadius : double(defaultScatterRadius(scene, *lights))) << ", seed " << seed
+                  << (scatter.spotShare > 0.0f ? ", spot share " + std::to_string(scatter.spotShare) : std::string())
+                  << "\n";
     }
     if (defaultRig && addDefaultLightRig(scene))
         std::cout << "lights     none in the scene: the default rig (a key light at the eye, radius "

@@ -20,6 +20,7 @@ struct SceneChoice {
     bool smoothNormals = false;  // OBJ faces without normals get smooth ones (ObjImportOptions)
     std::optional<int> lights;          // --lights N: N seeded lights scattered over the surfaces (light_scatter.h)
     std::optional<double> lightRadius;  // --light-radius R (with --lights); unset: automatic
+    std::optional<double> spotShare;    // --spot-share F (with --lights): that share of them are spot lights
     bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error

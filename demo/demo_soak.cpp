@@ -67,7 +67,7 @@ int runSoak(const SceneChoice& sceneChoice, const RendererChoice& rc, const std:
     const int objectsBefore = gl::liveGlObjects();
     auto context = GlContext::create(rc.contextOptions());
     std::cout << "GL: " << context->info().summary() << "\n";
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     std::vector<long> rss;
     {
         std::unique_ptr<Renderer> renderer =

@@ -159,7 +159,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
@@ -279,7 +279,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
 
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
     std::cout << "LIDR: "
@@ -459,7 +459,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
     renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, rc.outputTransform()};
+    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     // ES 2.0 has no glBlitFramebuffer: the frame goes to the window as one textured triangle there.
     std::optional<FramePresenter> presenter;

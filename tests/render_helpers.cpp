@@ -44,7 +44,7 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
                                const OutputTransform& output) {
     testContext();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor, output};
+    const ShadingParameters shading = sceneShading(scene, output);
     RenderResult r;
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     r.stats = renderer.render(scene.camera, lights, shading);

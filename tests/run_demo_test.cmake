@@ -176,6 +176,28 @@ if(NOT lights EQUAL 5 OR NOT name STREQUAL "courtyard" OR NOT warnings EQUAL 0 O
   message(FATAL_ERROR "lidr-demo --scene courtyard.gltf: ${lights} lights, name '${name}', ${warnings} warnings, "
                       "whole-image PSNR ${whole_psnr}, dropped ${dropped}")
 endif()
+# Spot and directional lights (issue 29): media/scenes/lamp-street.json, 16 spot lamps, 3 point lights and a sun,
+# identical to the reference with nothing dropped.
+run_demo(lamps "--scene lamp-street.json" --scene ${SOURCE_DIR}/media/scenes/lamp-street.json --width 240 --height 180
+         --frames 1)
+string(JSON lights GET "${summary}" scene lights)
+string(JSON warnings LENGTH "${summary}" scene warnings)
+string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
+string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+if(NOT lights EQUAL 19 OR NOT warnings EQUAL 0 OR whole_psnr LESS 50 OR NOT dropped EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --scene lamp-street.json: ${lights} lights, ${warnings} warnings, "
+                      "whole-image PSNR ${whole_psnr}, dropped ${dropped}")
+endif()
+# --spot-share: half of 256 scattered lights are spot lights; LIDR still equals the reference, nothing dropped.
+run_demo(spots256 "--lights 256 --spot-share 0.5" --scene ${SOURCE_DIR}/media/scenes/courtyard.gltf --lights 256
+         --spot-share 0.5 --transparency off --width 160 --height 120 --frames 1)
+string(JSON lights GET "${summary}" scene lights)
+string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
+string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+if(NOT lights EQUAL 261 OR whole_psnr LESS 50 OR NOT dropped EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --lights 256 --spot-share 0.5: ${lights} lights, whole-image PSNR ${whole_psnr}, "
+                      "dropped ${dropped}")
+endif()
 # Any model is a many-light LIDR scene in one option (issue 26): --lights 1024 scattered over the courtyard, LIDR's
 # automatic configuration, nothing dropped, identical to the reference (the glass pane's transparent front-face
 # lists are left out: at this density one of its pixels holds more than 16, doc/colour.md).

@@ -108,15 +108,36 @@ Scene sweepScene() {
 TEST_CASE("every mode's pixels are the BRDF model's after the output transform (metallic x roughness sweep)",
           "[brdf]") {
     testContext();
-    const Scene scene = sweepScene();
     std::vector<std::string> modes = {"forward-brute", "lidr", "tiled"};
     if (testGl().gles) modes.pop_back();  // tiled's default depth bounds are refused on ES 2.0
     const std::string mode = GENERATE_COPY(from_range(modes));
-    DYNAMIC_SECTION(mode) {
+    // With directional lights too (not indexed: each mode adds them in its forward pass): a low warm sun, a
+    // grazing one and one from below the tiles (n.l < 0: nothing). With spot lights: a narrow cone from above
+    // whose smooth edge crosses the tiles, and a wide oblique one.
+    const int variant = GENERATE(0, 1, 2);
+    const bool directional = variant == 1, spots = variant == 2;
+    DYNAMIC_SECTION(mode << (directional ? " + directional lights" : spots ? " + spot lights" : "")) {
+        Scene scene = sweepScene();
+        if (spots) {
+            scene.lights.pop_back();  // four lights in all: ES 2.0's fixed LIDR budget (4) holds every pixel
+            PointLight narrow = light({0.5f, 5.0f, 0.5f}, 12.0f, {2.0f, 1.8f, 1.5f});
+            narrow.direction = {0.0f, -1.0f, -0.1f};
+            narrow.innerConeAngle = 0.2f;
+            narrow.outerConeAngle = 0.45f;
+            PointLight wide = light({-4.0f, 2.0f, 3.0f}, 10.0f, {0.4f, 0.8f, 1.0f});
+            wide.direction = {1.0f, -0.6f, -0.8f};
+            wide.outerConeAngle = 1.4f;
+            scene.lights.push_back(narrow);
+            scene.lights.push_back(wide);
+        }
         RenderModeOptions o;
         o.mode = mode;
         std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
-        const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+        ShadingParameters shading = sceneShading(scene);
+        if (directional)
+            shading.directionalLights = {{{-0.4f, -0.6f, 0.5f}, {0.8f, 0.6f, 0.4f}},
+                                         {{1.0f, -0.05f, 0.0f}, {0.5f, 0.5f, 0.6f}},
+                                         {{0.1f, 1.0f, 0.2f}, {5.0f, 5.0f, 5.0f}}};
         r->render(scene.camera, scene.lights, shading);
         const ImageRGBA8 image = r->targets().readColor();
         const ImageFloat depth = r->targets().readDepth();
@@ -138,6 +159,7 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
                 const BrdfSurface s = brdfSurface(m, glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
                 glm::dvec3 linear = shadeAmbient(s, glm::dvec3(scene.ambient));
                 for (const PointLight& l : scene.lights) linear += shadePointLight(s, l);
+                for (const DirectionalLight& l : shading.directionalLights) linear += shadeDirectionalLight(s, l);
                 const glm::dvec3 expected = 255.0 * applyOutputTransform(linear, shading.output);
                 const uint8_t* got = image.at(x, y);
                 int e = 0;

@@ -102,7 +102,8 @@ TEST_CASE("glTF: a mirroring transform keeps triangles counter-clockwise; strips
     for (const glm::vec3& normal : mesh.normals) requireNear(normal, {0, 0, 1});
 }
 
-TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and directional are warnings", "[gltf][cpu]") {
+TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; spot and directional lights down their node's -z",
+          "[gltf][cpu]") {
     TempDir dir;
     GltfFile file = oneTriangle();
     file.doc["extensionsUsed"] = {"KHR_lights_punctual"};
@@ -110,7 +111,8 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
         {{"type", "point"}, {"color", {1.0, 0.5, 0.25}}, {"intensity", 2.0}, {"range", 3.0}},
         {{"type", "point"}, {"intensity", 4.0}},
         {{"type", "spot"}, {"spot", Json::object()}},
-        {{"type", "directional"}}};
+        {{"type", "directional"}, {"color", {1.0, 0.8, 0.5}}, {"intensity", 3.0}},
+        {{"type", "spot"}, {"range", 5.0}, {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 1.5707963}}}}};
     file.node({{"mesh", 0}}, true);
     const auto lightNode = [&](int light, Json node) {
         node["extensions"]["KHR_lights_punctual"]["light"] = light;
@@ -119,9 +121,26 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
     file.node(lightNode(0, {{"translation", {1, 2, 3}}, {"scale", {1, 2, 1}}}), true);
     file.node(lightNode(1, {{"translation", {0, 5, 0}}}), true);
     file.node(lightNode(2, Json::object()), true);
-    file.node(lightNode(3, Json::object()), true);
+    // -90 degrees about x turns -z to -y (straight down); the translation and scale do not matter.
+    file.node(lightNode(3, {{"rotation", {-0.70710678, 0.0, 0.0, 0.70710678}}, {"translation", {4, 4, 4}},
+                            {"scale", {3, 3, 3}}}),
+              true);
+    file.node(lightNode(3, Json::object()), true);  // unrotated: down -z
+    file.node(lightNode(4, {{"rotation", {-0.70710678, 0.0, 0.0, 0.70710678}}, {"translation", {0, 3, 0}}}), true);
     const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "lights.gltf"));
-    REQUIRE(scene.lights.size() == 2);
+    REQUIRE(scene.lights.size() == 4);
+    // The spot with KHR_lights_punctual's defaults (inner 0, outer pi/4), down -z; the other turned down -y.
+    CHECK(scene.lights[2].isSpot());
+    requireNear(scene.lights[2].direction, {0, 0, -1});
+    CHECK(scene.lights[2].innerConeAngle == 0.0f);
+    CHECK(scene.lights[2].outerConeAngle == Approx(0.7853981634f));
+    requireNear(scene.lights[3].position, {0, 3, 0});
+    requireNear(scene.lights[3].direction, {0, -1, 0});
+    CHECK(scene.lights[3].radius == Approx(5.0f));
+    CHECK(scene.lights[3].innerConeAngle == Approx(0.25f));
+    CHECK(scene.lights[3].outerConeAngle == Approx(1.5707963f));
+    REQUIRE_NOTHROW(scene.validate());
+    CHECK_FALSE(scene.lights[0].isSpot());
     requireNear(scene.lights[0].position, {1, 2, 3});
     CHECK(scene.lights[0].radius == Approx(6.0f));  // range 3 x the node's largest scale, 2
     requireNear(scene.lights[0].color, {2.0f, 1.0f, 0.5f});
@@ -130,9 +149,31 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius, spot and dir
     CHECK(lidr::gltfLightRadiusWithoutRange(1.0f) == Approx(16.0f));
     CHECK(lidr::gltfLightRadiusWithoutRange(1e12f) == Approx(1000.0f));
     CHECK(lidr::gltfLightRadiusWithoutRange(0.0f) == Approx(0.01f));
+    REQUIRE(scene.directionalLights.size() == 2);
+    requireNear(scene.directionalLights[0].direction, {0, -1, 0});
+    requireNear(scene.directionalLights[0].color, {3.0f, 2.4f, 1.5f});
+    requireNear(scene.directionalLights[1].direction, {0, 0, -1});
+    CHECK(scene.warnings.empty());
+}
+
+TEST_CASE("glTF: directional lights past the forward shaders' 4, or with no direction, are left out with a warning",
+          "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "directional"}}};
+    file.node({{"mesh", 0}}, true);
+    Json sun;
+    sun["extensions"]["KHR_lights_punctual"]["light"] = 0;
+    Json flat = sun;
+    flat["scale"] = {1, 1, 0};  // -z maps to zero
+    file.node(flat, true);
+    for (int i = 0; i < 5; ++i) file.node(sun, true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "suns.gltf"));
+    CHECK(scene.directionalLights.size() == lidr::maxDirectionalLights);
     REQUIRE(scene.warnings.size() == 2);
-    CHECK_THAT(scene.warnings[0], Contains("lights.gltf") && Contains("spot lights are not supported"));
-    CHECK_THAT(scene.warnings[1], Contains("directional lights are not supported"));
+    CHECK_THAT(scene.warnings[0], Contains("suns.gltf") && Contains("gives no direction"));
+    CHECK_THAT(scene.warnings[1], Contains("more than 4 directional lights"));
 }
 
 TEST_CASE("glTF: the first perspective camera is the view, else the default view frames the bounds", "[gltf][cpu]") {

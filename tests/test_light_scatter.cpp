@@ -67,6 +67,38 @@ TEST_CASE("scattered lights lie on the surfaces, seeded and within limits", "[cp
     CHECK_NOTHROW(withPaths.validate());
 }
 
+TEST_CASE("scattered spot lights: a share of the same lights, aimed back at their surface", "[cpu][scene][scatter][lights]") {
+    lidr::Scene scene;
+    scene.materials.push_back({});
+    lidr::addBox(scene, glm::vec3(-2.0f, 0.0f, -3.0f), glm::vec3(2.0f, 1.0f, 3.0f), 0, 1);
+    lidr::LightScatterOptions o;
+    o.count = 64;
+    o.seed = 7;
+    const std::vector<lidr::PointLight> points = lidr::scatterLights(scene, o);
+    o.spotShare = 0.25f;
+    const std::vector<lidr::PointLight> mixed = lidr::scatterLights(scene, o);
+    REQUIRE(mixed.size() == points.size());
+    int spots = 0;
+    for (size_t i = 0; i < mixed.size(); ++i) {
+        CHECK(mixed[i].position == points[i].position);  // the same lights; some become spots
+        CHECK(mixed[i].color == points[i].color);
+        if (!mixed[i].isSpot()) continue;
+        ++spots;
+        CHECK(mixed[i].outerConeAngle == Approx(glm::radians(lidr::kScatterSpotOuterDegrees)));
+        CHECK(mixed[i].innerConeAngle == Approx(glm::radians(lidr::kScatterSpotInnerDegrees)));
+        // Down its own lift: a quarter radius along the axis lands back on a triangle's plane.
+        CHECK(liftAboveSomeTriangle(scene, mixed[i].position + 0.25f * mixed[i].radius * mixed[i].direction, 0.0f) < 1e-4f);
+    }
+    CHECK(spots == 16);
+    o.spotShare = 1.0f;
+    for (const lidr::PointLight& l : lidr::scatterLights(scene, o)) CHECK(l.isSpot());
+    lidr::Scene lit = scene;
+    lidr::addScatteredLights(lit, o);
+    CHECK_NOTHROW(lit.validate());
+    o.spotShare = 1.5f;
+    CHECK_THROWS_WITH(lidr::scatterLights(scene, o), Contains("spot share must be in [0, 1]"));
+}
+
 TEST_CASE("scattering refuses what it cannot make, with the reason", "[cpu][scene][scatter][bad-input]") {
     lidr::Scene empty;
     lidr::LightScatterOptions o;

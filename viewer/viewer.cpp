@@ -69,7 +69,7 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     rc_.transparency = first.transparency ? "on" : "off";
     demo::checkTargetMemory(scene_, first);
     initialChoice_ = rc_;
-    shading_ = {scene_.ambient, scene_.backgroundColor};
+    shading_ = sceneShading(scene_);
     camera_.reset(scene_.camera);
     moveSpeed_ = std::max(0.5f, 0.15f * glm::length(scene_.boundsMax() - scene_.boundsMin()));
     animTime_ = scene_.time;

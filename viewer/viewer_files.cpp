@@ -86,7 +86,7 @@ bool Viewer::openScene(const std::string& path, const std::string& what, bool ke
         scatterOver(0);
     }
     lightCount_ = int(scene_.lights.size());
-    shading_ = {scene_.ambient, scene_.backgroundColor};
+    shading_ = sceneShading(scene_);
     if (!keepCamera) {
         camera_.reset(scene_.camera);
         animTime_ = scene_.time;

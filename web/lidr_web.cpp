@@ -261,7 +261,7 @@ void frame() {
     try {
         const Camera camera = page->camera.camera();
         const std::vector<PointLight> lights = currentLights();
-        const ShadingParameters shading{page->scene.ambient, page->scene.backgroundColor};
+        const ShadingParameters shading = sceneShading(page->scene);
         // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
         // target returns only when every command before it has run, so the clock from the first call to it is
         // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
@@ -384,7 +384,7 @@ EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     try {
         page->camera.reset(page->scene.camera);
         page->time = page->scene.time;
-        const ShadingParameters shading{page->scene.ambient, page->scene.backgroundColor};
+        const ShadingParameters shading = sceneShading(page->scene);
         page->renderer->render(page->scene.camera, currentLights(), shading);  // as lidr-web-native-frame
         image = page->renderer->targets().readColor();
         page->presenter->present(page->renderer->targets(), 0);

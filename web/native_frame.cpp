@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
         const auto renderer = lidr::createRenderer(o, context->info(), scene, width, height);
         std::vector<lidr::PointLight> frameLights = scene.lightsAt(scene.time);
         if (int(frameLights.size()) > lights) frameLights.resize(size_t(lights));
-        renderer->render(scene.camera, frameLights, {scene.ambient, scene.backgroundColor});
+        renderer->render(scene.camera, frameLights, lidr::sceneShading(scene));
         lidr::writePng(argv[6], renderer->targets().readColor());
         std::printf("lidr-web-native-frame: %s, %d lights, %s, %dx%d: %s (%s)\n", argv[1], lights, argv[3], width,
                     height, argv[6], context->info().summary().c_str());

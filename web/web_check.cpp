@@ -50,7 +50,7 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
         sceneOptions.time = kTime;
         const Scene scene = makeDefaultScene(sceneOptions);
         const std::vector<PointLight> lights = scene.lightsAt(kTime);
-        const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+        const ShadingParameters shading = sceneShading(scene);
         const Camera& camera = scene.camera;
 
         ReferenceRenderer reference(info, scene, width, height, int(lights.size()), false, 0, false);

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
 
         lidr::RenderModeOptions options;  // mode "lidr", the automatic configuration
         auto renderer = lidr::createRenderer(options, context->info(), scene, scene.width, scene.height);
-        const lidr::ShadingParameters shading{scene.ambient, scene.backgroundColor};
+        const lidr::ShadingParameters shading = lidr::sceneShading(scene);
         std::vector<lidr::PointLight> lights;
         lidr::ImageRGBA8 first;
         for (int frame = 0; frame < frames; ++frame) {

@@ -27,10 +27,11 @@ int main(int argc, char** argv) {
         lidr::LidrOptions options;  // defaults: automatic (bit-shift; budget and index width chosen per frame)
         lidr::LidrRenderer renderer(context->info(), scene, options, width, height);
 
-        // 4. One frame: the camera and the lights at time t (light i has index i + 1).
+        // 4. One frame: the camera and the lights at time t (light i has index i + 1); sceneShading gives the
+        //    scene's ambient, background and directional lights (not indexed: every mode adds them as uniforms).
         const float t = 2.0f;
         const lidr::FrameStats& stats =
-            renderer.render(scene.camera, scene.lightsAt(t), {scene.ambient, scene.backgroundColor});
+            renderer.render(scene.camera, scene.lightsAt(t), lidr::sceneShading(scene));
 
         // 5. Read the image back and save it.
         lidr::writePng(out, renderer.targets().readColor());

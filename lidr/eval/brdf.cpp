@@ -43,6 +43,15 @@ glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& L) {
     return (1.0 - F) * albedoOf(s) / kPi + F * (D * visibility);
 }
 
+double spotTerm(const PointLight& light, const glm::dvec3& toLight) {
+    if (!light.isSpot()) return 1.0;
+    const double cosOuter = std::cos(double(light.outerConeAngle)), cosInner = std::cos(double(light.innerConeAngle));
+    const double scale = 1.0 / std::max(1e-3, cosInner - cosOuter);
+    const double cd = glm::dot(-toLight, glm::normalize(glm::dvec3(light.direction)));
+    const double t = std::clamp(cd * scale - cosOuter * scale, 0.0, 1.0);
+    return t * t;
+}
+
 glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light) {
     const glm::dvec3 toLight = glm::dvec3(light.position) - s.position;
     const double d2 = glm::dot(toLight, toLight), r = double(light.radius);
@@ -51,7 +60,14 @@ glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light) {
     const glm::dvec3 L = toLight / std::sqrt(std::max(d2, 1e-24));
     const double nDotL = glm::dot(s.normal, L);
     if (nDotL <= 0.0) return glm::dvec3(0.0);
-    return evaluateBrdf(s, L) * (kPi * nDotL * attenuation) * glm::dvec3(light.color);
+    return evaluateBrdf(s, L) * (kPi * nDotL * attenuation * spotTerm(light, L)) * glm::dvec3(light.color);
+}
+
+glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light) {
+    const glm::dvec3 L = -glm::normalize(glm::dvec3(light.direction));
+    const double nDotL = glm::dot(s.normal, L);
+    if (nDotL <= 0.0) return glm::dvec3(0.0);
+    return evaluateBrdf(s, L) * (kPi * nDotL) * glm::dvec3(light.color);
 }
 
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient) {

@@ -1,6 +1,6 @@
 #pragma once
 // The CPU model of lidr's shading (shaders/common/shading.glsl) in double precision: the glTF 2.0
-// metallic-roughness BRDF, lidr's point-light term and its ambient term. Tests check GPU pixels against it and
+// metallic-roughness BRDF, lidr's point- and directional-light terms and its ambient term. Tests check GPU pixels against it and
 // bound its energy (white furnace).
 #include <glm/glm.hpp>
 
@@ -19,8 +19,13 @@ BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, co
                         const glm::dvec3& eye);
 // f(l, v): diffuse + specular, per colour channel (1/sr), for a unit direction towards the light.
 glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& toLight);
-// lidrShadeLight: f x pi x colour x saturate(1 - d^2 / r^2) x n.l.
+// lidrShadeLight: f x pi x colour x saturate(1 - d^2 / r^2) x n.l, times spotTerm for a spot light.
 glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light);
+// KHR_lights_punctual's cone term for unit `toLight` (from the surface): saturate((cd - cos outer) /
+// max(1e-3, cos inner - cos outer))^2 with cd the cosine to the axis; 1 for a point light.
+double spotTerm(const PointLight& light, const glm::dvec3& toLight);
+// lidrDirectionalLights' term of one light: f x pi x colour x n.l, from -direction (no attenuation).
+glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light);
 // lidrAmbient without the emission: ambient x (albedo + F0 A + B), Karis' environment-BRDF fit.
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient);
 // The integral of f x n.l over the hemisphere (the reflected fraction of light from every direction), by

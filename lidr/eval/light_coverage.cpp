@@ -77,6 +77,9 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
         const PointLight& l = lights[i];
         const float inner = l.radius * (1.0f - band);
         const float inner2 = inner * inner;
+        // A spot light also needs the point inside its cone: its cone term's ramp (lidr::spotCone, 0 at the
+        // outer cone, 1 at the inner) above `band` too, in double, as the CPU model (eval/brdf.h) computes it.
+        const glm::dvec4 cone(spotCone(l));
         int x0, y0, x1, y1;
         screenRect(camera, l, x0, y0, x1, y1);
         for (int y = y0; y <= y1; ++y)
@@ -84,7 +87,15 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
                 const size_t p = size_t(y) * t.width + x;
                 if (!t.surface[p]) continue;
                 const glm::vec3 d = world[p] - l.position;
-                if (glm::dot(d, d) < inner2) pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
+                if (!(glm::dot(d, d) < inner2)) continue;
+                if (l.isSpot()) {
+                    const glm::dvec3 fromLight(d);
+                    const double length = glm::length(fromLight);
+                    // At the apex itself the shader's direction is 0, its ramp the offset (below 0: no light).
+                    const double ramp = (length > 0.0 ? glm::dot(fromLight / length, glm::dvec3(cone)) : 0.0) + cone.w;
+                    if (!(ramp > double(band))) continue;
+                }
+                pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
             }
     }
     std::sort(pairs.begin(), pairs.end());

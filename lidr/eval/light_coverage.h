@@ -12,9 +12,11 @@
 
 namespace lidr {
 
-// Lights whose sphere strictly contains each pixel's surface point, as a compressed row per pixel.
-// A light within `band` (relative to its radius) of the surface is neither required nor counted: there
-// its contribution is below 2 * band of its peak, and depth-buffer precision cannot tell in or out.
+// Lights whose sphere strictly contains each pixel's surface point, as a compressed row per pixel; for a spot
+// light, also inside its cone. A light within `band` (relative to its radius) of the surface is neither
+// required nor counted: there its contribution is below 2 * band of its peak, and depth-buffer precision cannot
+// tell in or out; likewise a spot light whose cone ramp (0 at the outer cone, 1 at the inner) is below `band`
+// (its cone term, the ramp squared, is below band^2 there).
 struct CoverageTruth {
     int width = 0, height = 0;
     std::vector<uint32_t> offsets;  // width * height + 1

@@ -48,6 +48,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
     checkLightSpheres(lights, "forward-multipass");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
     meshDraws_ = 0;
 

@@ -31,6 +31,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));
+    checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());

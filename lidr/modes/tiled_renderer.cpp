@@ -80,6 +80,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
     checkLightSpheres(lights, "tiled");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 

@@ -15,19 +15,20 @@ LightTable::LightTable(const GlInfo& info, int capacity, bool forceFixed16)
     if (capacity < 0 || capacity > 65535) throw Error("light table capacity must be 0..65535");
     for (TextureSet& set : sets_) {
         if (format_ == LightTableFormat::Float) {
-            set.posRadius = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
-            set.color = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, rows_, GL_RGBA, GL_FLOAT);
+            set.posRadius = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT);
+            set.color = gl::Texture::create2D(GL_RGBA32F_ARB, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT);
         } else {
-            set.posRadius = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
-            set.posRadiusLow = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
-            set.color = gl::Texture::create2D(GL_RGBA8, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.posRadius = gl::Texture::create2D(GL_RGBA8, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.posRadiusLow = gl::Texture::create2D(GL_RGBA8, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE);
+            set.color = gl::Texture::create2D(GL_RGBA8, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE);
         }
     }
 }
 
 size_t LightTable::bytes() const {
     const size_t texels = size_t(kWidth) * rows_;
-    return 2 * (format_ == LightTableFormat::Float ? texels * 32 : texels * 12);
+    // Two row blocks (the light, its spot cone) of two RGBA32F or three RGBA8 textures, in each of the two sets.
+    return 2 * 2 * (format_ == LightTableFormat::Float ? texels * 32 : texels * 12);
 }
 
 float LightTable::reachError() const {
@@ -61,23 +62,28 @@ void LightTable::update(const std::vector<PointLight>& lights) {
     const TextureSet& set = sets_[current_];
     const size_t texels = size_t(kWidth) * rows_;
     if (format_ == LightTableFormat::Float) {
-        // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing.
-        std::vector<float> pos(texels * 4, 0.0f), col(texels * 4, 0.0f);
-        for (size_t i = 0; i < texels; ++i) pos[i * 4 + 3] = 1.0f;
+        // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing. Rows
+        // [rows, 2 rows) of the position texture hold the spot cone (spotCone(): (0, 0, 0, 1) for a point light);
+        // every texture has both blocks, so one texture coordinate addresses all (the colour's second is unused).
+        std::vector<float> pos(texels * 8, 0.0f), col(texels * 8, 0.0f);
+        for (size_t i = 0; i < 2 * texels; ++i) pos[i * 4 + 3] = 1.0f;
         for (size_t i = 0; i < lights.size(); ++i) {
             const PointLight& l = lights[i];
             float* p = &pos[(i + 1) * 4];
             p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z, p[3] = l.radius;
+            const glm::vec4 cone = spotCone(l);
+            float* q = &pos[(texels + i + 1) * 4];
+            q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
             float* c = &col[(i + 1) * 4];
-            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = 1.0f;
+            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = l.isSpot() ? 0.0f : 1.0f;  // 0: read the cone
         }
         if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
             throw Error("light table: the region map would overwrite lights");
         for (size_t t = 0; t < regionMap_.size(); ++t) pos[(size_t(regionMapFirstRow_) * kWidth + t) * 4] = regionMap_[t];
         glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, pos.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
         glBindTexture(GL_TEXTURE_2D, set.color.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_FLOAT, col.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, col.data());
     } else {
         glm::vec3 lo(0.0f), hi(1.0f);
         float maxRadius = 1.0f, maxColor = 1.0f;
@@ -95,13 +101,17 @@ void LightTable::update(const std::vector<PointLight>& lights) {
         boundsExtent_ = glm::max(hi - lo, glm::vec3(1e-6f));
         radiusScale_ = std::max(maxRadius, 1e-6f);
         colorScale_ = std::max(maxColor, 1e-6f);
-        std::vector<uint8_t> high(texels * 4, 0), low(texels * 4, 0), col(texels * 4, 0);
+        // Rows [rows, 2 rows): the spot cone, 16-bit fractions: high/low bytes of the axis as (d + 1) / 2 and
+        // cos(outer cone angle) in the position textures, cos(inner) in the colour texture's red and green; the
+        // colour's alpha is 0 for a spot light (255: a point light, whose cone is not read: its term is 1).
+        std::vector<uint8_t> high(texels * 8, 0), low(texels * 8, 0), col(texels * 8, 0);
         auto put16 = [&](size_t at, float unit) {
             const int v = static_cast<int>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
             high[at] = static_cast<uint8_t>(v >> 8);
             low[at] = static_cast<uint8_t>(v & 0xFF);
         };
-        put16(3, 1.0f);  // null light: radius = the scale, black
+        put16(3, 1.0f);  // null light: radius = the scale, black, a point light
+        col[3] = 255;
         for (size_t i = 0; i < lights.size(); ++i) {
             const PointLight& l = lights[i];
             const glm::vec3 unit = (l.position - boundsMin_) / boundsExtent_;
@@ -115,14 +125,22 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
             for (int c = 0; c < 3; ++c)
                 col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
-            col[t + 3] = 255;
+            col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
+            if (!l.isSpot()) continue;
+            const size_t cone = (texels + i + 1) * 4;
+            const glm::vec3 axis = glm::normalize(l.direction);
+            for (int c = 0; c < 3; ++c) put16(cone + size_t(c), (axis[c] + 1.0f) * 0.5f);
+            put16(cone + 3, std::cos(l.outerConeAngle));
+            const int inner = static_cast<int>(std::lround(std::clamp(std::cos(l.innerConeAngle), 0.0f, 1.0f) * 65535.0f));
+            col[cone + 0] = static_cast<uint8_t>(inner >> 8);
+            col[cone + 1] = static_cast<uint8_t>(inner & 0xFF);
         }
         glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
         glBindTexture(GL_TEXTURE_2D, set.posRadiusLow.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
         glBindTexture(GL_TEXTURE_2D, set.color.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     checkGl("LightTable::update");
@@ -134,7 +152,7 @@ void LightTable::bind(const gl::Program& program) const {
     set.color.bind(gl::kUnitLightColor);
     program.set("uLightPosRadius", gl::kUnitLightPosRadius);
     program.set("uLightColor", gl::kUnitLightColor);
-    program.set("uLightTableRows", float(rows_));
+    program.set("uLightTableRows", float(2 * rows_));  // the textures' rows: the lights' and their cones'
     if (format_ == LightTableFormat::Fixed16) {
         set.posRadiusLow.bind(gl::kUnitLightPosRadiusLow);
         program.set("uLightPosRadiusLow", gl::kUnitLightPosRadiusLow);

@@ -4,6 +4,12 @@
 
 namespace lidr {
 
+ShadingParameters sceneShading(const Scene& scene, const OutputTransform& output) {
+    return {scene.ambient, scene.backgroundColor, output, scene.directionalLights};
+}
+
+void checkShadingParameters(const ShadingParameters& shading) { validateDirectionalLights(shading.directionalLights); }
+
 double FrameStats::frameMilliseconds() const {
     double sum = 0.0;
     for (const PassTime& p : passes) sum += p.milliseconds;

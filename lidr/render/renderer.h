@@ -19,7 +19,14 @@ struct ShadingParameters {
     glm::vec3 ambient{0.04f};     // linear
     glm::vec3 background{0.0f};   // linear, cleared to its output-transformed value
     OutputTransform output{};     // exposure, tone map, sRGB encoding (lidr/render/output_transform.h)
+    // Not indexed: every mode adds them in its forward pass (at most maxDirectionalLights; shading.glsl).
+    std::vector<DirectionalLight> directionalLights{};
 };
+
+// The scene's own shading: its ambient, background and directional lights, with `output`.
+ShadingParameters sceneShading(const Scene& scene, const OutputTransform& output = OutputTransform{});
+// What every mode's render() checks before any work: the directional lights (validateDirectionalLights).
+void checkShadingParameters(const ShadingParameters& shading);
 
 // What LIDR's automatic configuration chose for a frame (zeros in other modes and for fixed choices).
 struct AutoDecision {

@@ -3,6 +3,8 @@
 
 #include "lidr/gl/bindings.h"
 
+#include <algorithm>
+
 namespace lidr {
 
 void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& shading, bool afterPrepass,
@@ -47,10 +49,26 @@ void setOutputUniforms(const gl::Program& program, const OutputTransform& output
     program.setIfDeclared("uSrgbOutput", output.srgb ? 1.0f : 0.0f);
 }
 
+void setDirectionalLightUniforms(const gl::Program& program, const std::vector<DirectionalLight>& lights) {
+    if (!program.declares("uDirectionalLightCount")) return;  // a material shader without shading.glsl
+    // validateDirectionalLights (every render() checks it first) keeps the count within the shader's arrays.
+    glm::vec4 toLight[maxDirectionalLights], color[maxDirectionalLights];
+    const int count = int(std::min(lights.size(), maxDirectionalLights));
+    for (int i = 0; i < count; ++i) {
+        toLight[i] = glm::vec4(-glm::normalize(lights[i].direction), 0.0f);
+        color[i] = glm::vec4(lights[i].color, 0.0f);
+    }
+    program.set("uDirectionalLightCount", float(count));
+    if (count == 0) return;
+    program.uniform<glm::vec4>("uDirectionalLightToLight").setArray(toLight, count);
+    program.uniform<glm::vec4>("uDirectionalLightColor").setArray(color, count);
+}
+
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
     program.set("uViewProj", camera.viewProjection);
     program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
     program.setIfDeclared("uAmbient", shading.ambient);
+    setDirectionalLightUniforms(program, shading.directionalLights);
     setOutputUniforms(program, shading.output);
     // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
     // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.

@@ -26,7 +26,10 @@ void beginTransparentShading(bool sampleShading = false);
 
 // Sets output_transform.glsl's uniforms (every shading program's, and the multi-pass encode pass's).
 void setOutputUniforms(const gl::Program& program, const OutputTransform& output);
-// Sets the per-frame uniforms of shading.glsl (eye, ambient, the output transform, the material texture's unit).
+// Sets shading.glsl's directional-light uniforms (lidrDirectionalLights) where the program declares them.
+void setDirectionalLightUniforms(const gl::Program& program, const std::vector<DirectionalLight>& lights);
+// Sets the per-frame uniforms of shading.glsl (eye, ambient, the directional lights, the output transform, the
+// material texture's unit).
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
 // Uses the program, sets shading.glsl's uniforms and binds the light table to it.
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,

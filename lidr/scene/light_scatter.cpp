@@ -58,6 +58,8 @@ std::vector<PointLight> scatterLights(const Scene& scene, const LightScatterOpti
         throw Error("scattered lights: the radius must be finite and >= 0 (0: automatic)");
     if (!std::isfinite(o.intensity) || o.intensity < 0.0f)
         throw Error("scattered lights: the intensity must be finite and >= 0");
+    if (!(o.spotShare >= 0.0f && o.spotShare <= 1.0f))
+        throw Error("scattered lights: the spot share must be in [0, 1], got " + std::to_string(o.spotShare));
     // Cumulative area over every triangle of every mesh.
     std::vector<std::pair<size_t, size_t>> triangles;  // (mesh, triangle)
     std::vector<double> cumulative;
@@ -93,6 +95,13 @@ std::vector<PointLight> scatterLights(const Scene& scene, const LightScatterOpti
         light.position = onSurface + normal * (0.25f * radius);
         light.radius = radius;
         light.color = hueColor(random.uniformDouble()) * o.intensity;
+        // Light i is a spot when the share's running count steps past an integer: evenly spread, and the random
+        // stream (hence every position and colour) the same as without spots.
+        if (std::floor(double(i + 1) * o.spotShare) > std::floor(double(i) * o.spotShare)) {
+            light.direction = -normal;
+            light.outerConeAngle = glm::radians(kScatterSpotOuterDegrees);
+            light.innerConeAngle = glm::radians(kScatterSpotInnerDegrees);
+        }
         lights.push_back(light);
     }
     return lights;
@@ -112,7 +121,7 @@ void addScatteredLights(Scene& scene, const LightScatterOptions& options) {
 }
 
 bool addDefaultLightRig(Scene& scene) {
-    if (!scene.lights.empty() || scene.meshes.empty()) return false;
+    if (!scene.lights.empty() || !scene.directionalLights.empty() || scene.meshes.empty()) return false;
     const float diagonal = glm::length(scene.boundsMax() - scene.boundsMin());
     PointLight key;
     key.position = scene.camera.position;

@@ -15,7 +15,13 @@ struct LightScatterOptions {
     // Light radius in scene units; <= 0: automatic (defaultScatterRadius).
     float radius = 0.0f;
     float intensity = 1.0f;  // colour scale
+    // The share of the lights that are spot lights, [0, 1]: each aims back at the surface it sits over, its
+    // outer cone kScatterSpotOuterDegrees; every (1 / spotShare)-th light, so the points stay where they were.
+    float spotShare = 0.0f;
 };
+
+// The cone of a scattered spot light: a lamp over its surface, lighting a disc of about its radius.
+constexpr float kScatterSpotOuterDegrees = 60.0f, kScatterSpotInnerDegrees = 40.0f;
 
 // The automatic radius: lights of this radius over the scene's surfaces cover each surface point about
 // kScatterMeanOverlap times on average (N pi r^2 = overlap x area, counting one side of every triangle), so
@@ -34,7 +40,7 @@ void addScatteredLights(Scene& scene, const LightScatterOptions& options);
 // model looks lit (doc/colour.md, "Lights for any model"): one white key light at the camera's eye with a
 // radius of three times the geometry's bounds diagonal (so the falloff 1 - d^2/r^2 keeps at least 8/9 of it
 // over the whole model), and the ambient raised to at least 0.1 (uniform light from every direction, lit
-// from behind included). Nothing changes where the scene has lights. Returns whether it added the rig.
+// from behind included). Nothing changes where the scene has lights (point or directional). Returns whether it added the rig.
 bool addDefaultLightRig(Scene& scene);
 
 }  // namespace lidr

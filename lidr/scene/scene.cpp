@@ -13,6 +13,7 @@ namespace lidr {
 namespace {
 
 constexpr size_t maxLights = maxSceneLights;
+constexpr double kHalfPi = 1.57079632679489661923;
 
 std::string str(double value) {
     std::ostringstream out;
@@ -132,7 +133,42 @@ void validateLight(const PointLight& light, size_t index) {
         fail(item, "bounds position " + str(light.position) + " +- radius " + str(light.radius) + " overflow float");
     requireColor(item, "color", light.color);
     requireFinite(item, "priority", light.priority);
+    if (!(light.outerConeAngle >= 0.0f && light.outerConeAngle <= float(kHalfPi)))
+        fail(item, "outer cone angle " + str(light.outerConeAngle) + " must be in [0, pi/2] (0: a point light)");
+    if (light.isSpot()) {
+        if (!(light.innerConeAngle >= 0.0f && light.innerConeAngle < light.outerConeAngle))
+            fail(item, "inner cone angle " + str(light.innerConeAngle) + " must be in [0, outer cone angle " +
+                           str(light.outerConeAngle) + ")");
+        requireFinite(item, "direction", light.direction);
+        if (!isUsableDirection(light.direction))
+            fail(item, "spot direction " + str(light.direction) + " has length " + str(glm::length(light.direction)) +
+                           "; it must be between 1e-18 and 1e18");
+    }
 }
+
+}  // namespace
+
+bool isUsableDirection(const glm::vec3& direction) {
+    const float length = glm::length(direction);  // NaN or infinite for a direction not finite
+    return length >= 1e-18f && length <= 1e18f;
+}
+
+void validateDirectionalLights(const std::vector<DirectionalLight>& lights) {
+    if (lights.size() > maxDirectionalLights)
+        fail("directional lights", std::to_string(lights.size()) + " directional lights; at most " +
+                                       std::to_string(maxDirectionalLights) +
+                                       " are supported (uniforms of every forward shader)");
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const std::string item = "directional light " + std::to_string(i);
+        requireFinite(item, "direction", lights[i].direction);
+        if (!isUsableDirection(lights[i].direction))
+            fail(item, "direction " + str(lights[i].direction) + " has length " + str(glm::length(lights[i].direction)) +
+                           "; it must be between 1e-18 and 1e18 (the way the light travels)");
+        requireColor(item, "color", lights[i].color);
+    }
+}
+
+namespace {
 
 void validatePath(const LightPath& path, size_t index) {
     const std::string item = "light path " + std::to_string(index);
@@ -253,6 +289,14 @@ void Scene::validate(int maxResolution) const {
         fail("lightPaths", std::to_string(lightPaths.size()) + " paths for " + std::to_string(lights.size()) +
                                " lights; need none or one per light");
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
+    validateDirectionalLights(directionalLights);
+}
+
+glm::vec4 spotCone(const PointLight& light) {
+    if (!light.isSpot()) return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+    const float scale = 1.0f / std::max(1e-3f, cosInner - cosOuter);
+    return glm::vec4(glm::normalize(light.direction) * scale, -cosOuter * scale);
 }
 
 MetallicRoughness metallicRoughnessOf(const Material& m) {

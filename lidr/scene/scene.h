@@ -88,11 +88,34 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
+// A point light, or, with outerConeAngle > 0, a spot light (KHR_lights_punctual): light leaves `position` only
+// inside the cone around `direction`, full between the axis and innerConeAngle, falling smoothly to nothing at
+// outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
+// `radius` (the range) bounds both, and a spot light is indexed by that bounding sphere today: the light lists
+// hold it wherever its sphere reaches a surface, and the shading's cone term is exactly 0 outside the cone.
 struct PointLight {
     glm::vec3 position{0.0f};
     float radius = 1.0f;
     glm::vec3 color{1.0f};
     float priority = 0.0f;  // higher is kept first when a pixel has more lights than the budget
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot lights: the cone's axis, the way the light shines
+    float innerConeAngle = 0.0f;             // radians, [0, outerConeAngle)
+    float outerConeAngle = 0.0f;             // radians, (0, pi/2] for a spot light; 0: a point light
+    bool isSpot() const { return outerConeAngle > 0.0f; }
+};
+
+// A light's cone term as the shaders take it (shading.glsl, lidrShadeLight): (unit direction x scale, offset)
+// with scale = 1 / max(1e-3, cos inner - cos outer) and offset = -cos outer x scale, so the term is
+// saturate(dot(-L, xyz) + w)^2 for L towards the light; (0, 0, 0, 1) for a point light (the term is 1).
+glm::vec4 spotCone(const PointLight& light);
+
+// A light infinitely far away (the sun): the same direction and colour at every point, so it touches every
+// pixel and is not indexed. Every mode adds up to maxDirectionalLights of them in its forward pass, as uniforms,
+// through the one shading function (shaders/common/shading.glsl, lidrDirectionalLights), so the modes stay equal
+// to the reference (doc/architecture.md, "Light types").
+struct DirectionalLight {
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way the light travels (need not be unit length; not zero)
+    glm::vec3 color{1.0f};                   // linear; what a white Lambert surface facing the light gives
 };
 
 // How a light moves. Closed-form in time, so a frame is the same for the same (seed, time).
@@ -121,6 +144,7 @@ struct Camera {
 // Limits every scene is checked against before any work (doc/scene-format.md, "Limits").
 constexpr size_t maxSceneLights = 65535;           // the light index is 16 bits; 0 is the null light
 constexpr float maxLightRadius = 1e18f;            // radius^2 and position +- radius stay finite floats
+constexpr size_t maxDirectionalLights = 4;         // uniforms of every forward shader (a fixed loop bound)
 constexpr size_t maxSceneTriangles = 20000000;     // 20 M: about 1.4 GB of vertex data on the CPU side alone
 constexpr int maxPrimitiveSubdivisions = 256;      // box: 6 x 256^2 x 2 = 786,432 triangles
 constexpr int maxPrimitiveSegments = 1024;         // torus: 1024 x 1024 x 2 = 2 M triangles
@@ -133,6 +157,7 @@ struct Scene {
     // (t = 0): paths start from them, so draw lightsAt(time), not `lights`, for the current frame.
     std::vector<PointLight> lights;
     std::vector<LightPath> lightPaths;   // empty (all static), or one per light
+    std::vector<DirectionalLight> directionalLights;  // at most maxDirectionalLights; not indexed, not moved
     Camera camera;
     int width = 1024, height = 768;
     float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
@@ -155,9 +180,18 @@ struct Scene {
     // Throws lidr::Error describing the first problem: non-finite or negative values, bad indices,
     // zero or oversized resolution, bad camera (including a position or target so far out that the view
     // basis overflows float), more than maxSceneLights lights (the widest light index), a light radius above
-    // maxLightRadius, more than maxSceneTriangles triangles.
+    // maxLightRadius, a bad directional light (validateDirectionalLights), more than maxSceneTriangles triangles.
     void validate(int maxResolution = 16384) const;
 };
+
+// A direction a light may have: finite, of length in [1e-18, 1e18], so its square is a normal float and it
+// normalises (spot axes, directional lights).
+bool isUsableDirection(const glm::vec3& direction);
+
+// Throws lidr::Error naming the first bad directional light: more than maxDirectionalLights, a direction not
+// finite or zero (or too long to normalise in float), a colour not finite or negative. Scene::validate and
+// every mode's render() (through ShadingParameters) call it.
+void validateDirectionalLights(const std::vector<DirectionalLight>& lights);
 
 // The index of a material equal to `material` (name and every value), adding it if there is none: loading
 // the same model twice reuses its materials instead of adding copies.

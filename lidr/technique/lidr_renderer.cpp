@@ -252,6 +252,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +
                     " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
 
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.

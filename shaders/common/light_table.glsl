@@ -1,8 +1,13 @@
 // Light table: light i's data sits in texel (i mod 256, floor(i / 256)) of 256-wide textures, looked up at
 // texel centres with NEAREST filtering (never at i/256, which is a texel edge). Index 0 is the null light.
-// Float path (ARB_texture_float): uLightPosRadius = (x, y, z, radius), uLightColor = (r, g, b, unused).
+// Float path (ARB_texture_float): uLightPosRadius = (x, y, z, radius), uLightColor = (r, g, b, point light).
 // Fixed path (no float textures): 16-bit fixed point in two RGBA8 textures (high and low bytes), position
 // relative to the light bounds, radius relative to uLightRadiusScale; colour RGBA8 times uLightColorScale.
+// Every texture has two blocks of rows (uLightTableRows is both): the light, then at v + 0.5 its spot cone,
+// the vec4 lidrShadeLight takes ((0, 0, 0, 1) for a point light; lidr::spotCone): float, it is stored as it
+// is in uLightPosRadius; fixed, as the axis ((d + 1) / 2) and cos(outer) in the 16-bit position textures and
+// cos(inner) in the colour's red and green bytes. The colour's alpha says which: 0 a spot light, 1 a point light
+// (lidr/render/light_table.cpp).
 uniform sampler2D uLightPosRadius;
 uniform sampler2D uLightColor;
 uniform float uLightTableRows;
@@ -26,24 +31,37 @@ vec2 lidrLightTexCoord(vec2 halves) {
     return vec2((halves.x + 0.5) * (1.0 / 256.0), (halves.y + 0.5) / uLightTableRows);
 }
 
-void lidrFetchLightAt(vec2 uv, out vec4 posRadius, out vec3 color) {
+void lidrFetchLightAt(vec2 uv, out vec4 posRadius, out vec3 color, out vec4 spot) {
+    // The colour's alpha is 0 for a spot light, 1 for a point light: a frame of point lights skips the cone fetch.
+    vec4 colorTexel = texture2D(uLightColor, uv);
+    spot = vec4(0.0, 0.0, 0.0, 1.0);
+    vec2 coneUv = uv + vec2(0.0, 0.5);
 #ifdef LIDR_LIGHT_TABLE_FIXED16
     // Bytes come back as k/255; (high * 256 + low) / 65535 rebuilds the 16-bit fraction.
     vec4 high = texture2D(uLightPosRadius, uv);
     vec4 low = texture2D(uLightPosRadiusLow, uv);
     vec4 unit = (high * (255.0 * 256.0) + low * 255.0) * (1.0 / 65535.0);
     posRadius = vec4(uLightBoundsMin + unit.xyz * uLightBoundsExtent, unit.w * uLightRadiusScale);
-    color = texture2D(uLightColor, uv).rgb * uLightColorScale;
+    color = colorTexel.rgb * uLightColorScale;
+    if (colorTexel.a < 0.5) {
+        vec4 cone = (texture2D(uLightPosRadius, coneUv) * (255.0 * 256.0) +
+                     texture2D(uLightPosRadiusLow, coneUv) * 255.0) * (1.0 / 65535.0);
+        vec4 innerBytes = texture2D(uLightColor, coneUv);
+        float cosInner = (innerBytes.r * (255.0 * 256.0) + innerBytes.g * 255.0) * (1.0 / 65535.0);
+        float scale = 1.0 / max(1e-3, cosInner - cone.w);
+        spot = vec4(normalize(cone.xyz * 2.0 - 1.0) * scale, -cone.w * scale);
+    }
 #else
     posRadius = texture2D(uLightPosRadius, uv);
-    color = texture2D(uLightColor, uv).rgb;
+    color = colorTexel.rgb;
+    if (colorTexel.a < 0.5) spot = texture2D(uLightPosRadius, coneUv);
 #endif
 }
 
-void lidrFetchLight(float index, out vec4 posRadius, out vec3 color) {
-    lidrFetchLightAt(lidrLightTexCoord(index), posRadius, color);
+void lidrFetchLight(float index, out vec4 posRadius, out vec3 color, out vec4 spot) {
+    lidrFetchLightAt(lidrLightTexCoord(index), posRadius, color, spot);
 }
 
-void lidrFetchLight(vec2 halves, out vec4 posRadius, out vec3 color) {
-    lidrFetchLightAt(lidrLightTexCoord(halves), posRadius, color);
+void lidrFetchLight(vec2 halves, out vec4 posRadius, out vec3 color, out vec4 spot) {
+    lidrFetchLightAt(lidrLightTexCoord(halves), posRadius, color, spot);
 }

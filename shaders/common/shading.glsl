@@ -79,15 +79,10 @@ vec3 lidrAmbient(LidrSurface s) {
     return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) * s.occlusion + s.emission;
 }
 
-// One point light: BRDF x pi x colour x attenuation x n.l. The pi makes a light's colour what it gives a white
-// Lambert surface facing it at its centre (as lidr's lights did before the BRDF had its 1/pi; doc/colour.md).
-vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
-    vec3 toLight = posRadius.xyz - s.position;
-    float d2 = dot(toLight, toLight);
-    float r2 = posRadius.w * posRadius.w;
-    float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
-    if (attenuation <= 0.0) return vec3(0.0);
-    vec3 L = toLight * inversesqrt(max(d2, 1e-12));
+// Light arriving from direction L (unit, towards the light) with colour x attenuation: BRDF x pi x colour x
+// attenuation x n.l. The pi makes a light's colour what it gives a white Lambert surface facing it at its centre
+// (as lidr's lights did before the BRDF had its 1/pi; doc/colour.md). Every light type ends here.
+vec3 lidrShadeIncoming(LidrSurface s, vec3 L, float attenuation, vec3 lightColor) {
     float nDotL = dot(s.normal, L);
     if (nDotL <= 0.0) return vec3(0.0);
     vec3 H = normalize(L + s.toEye);
@@ -103,4 +98,43 @@ vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
     vec3 F = s.f0 + (1.0 - s.f0) * fresnelWeight;
     vec3 brdf = (1.0 - F) * s.albedo * (1.0 / LIDR_PI) + F * (D * visibility);
     return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
+}
+
+// One point or spot light, attenuated by saturate(1 - d^2 / r^2) and the spot cone: spot = (axis x scale, offset)
+// from the light table (lidr::spotCone), the term saturate(dot(-L, axis) x scale + offset)^2, KHR_lights_punctual's
+// smooth falloff from the inner to the outer cone; a point light's (0, 0, 0, 1) makes it exactly 1.
+vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor, vec4 spot) {
+    vec3 toLight = posRadius.xyz - s.position;
+    float d2 = dot(toLight, toLight);
+    float r2 = posRadius.w * posRadius.w;
+    float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
+    if (attenuation <= 0.0) return vec3(0.0);
+    vec3 L = toLight * inversesqrt(max(d2, 1e-12));
+    float cone = clamp(spot.w - dot(L, spot.xyz), 0.0, 1.0);
+    attenuation *= cone * cone;
+    if (attenuation <= 0.0) return vec3(0.0);
+    return lidrShadeIncoming(s, L, attenuation, lightColor);
+}
+
+// A point light (a material shader's own lights).
+vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor) {
+    return lidrShadeLight(s, posRadius, lightColor, vec4(0.0, 0.0, 0.0, 1.0));
+}
+
+// Directional lights (the sun) touch every pixel, so they are not indexed: every mode adds this sum once per
+// pixel, right after lidrAmbient, in its forward pass (the reference too), so the modes stay equal. lidr sets
+// the uniforms from ShadingParameters::directionalLights (lidr/render/shading_pass.cpp): xyz towards the light,
+// unit; the colour in rgb. At most LIDR_MAX_DIRECTIONAL_LIGHTS (lidr::maxDirectionalLights).
+#define LIDR_MAX_DIRECTIONAL_LIGHTS 4
+uniform vec4 uDirectionalLightToLight[LIDR_MAX_DIRECTIONAL_LIGHTS];
+uniform vec4 uDirectionalLightColor[LIDR_MAX_DIRECTIONAL_LIGHTS];
+uniform float uDirectionalLightCount;
+
+vec3 lidrDirectionalLights(LidrSurface s) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < LIDR_MAX_DIRECTIONAL_LIGHTS; ++i) {
+        if (float(i) >= uDirectionalLightCount) break;
+        sum += lidrShadeIncoming(s, uDirectionalLightToLight[i].xyz, 1.0, uDirectionalLightColor[i].rgb);
+    }
+    return sum;
 }

@@ -8,8 +8,8 @@ uniform float uLightIndex;
 
 void main() {
     LidrSurface s = lidrSurface();
-    vec4 posRadius;
+    vec4 posRadius, spot;
     vec3 lightColor;
-    lidrFetchLight(uLightIndex, posRadius, lightColor);
-    gl_FragColor = vec4(lidrShadeLight(s, posRadius, lightColor), 0.0);
+    lidrFetchLight(uLightIndex, posRadius, lightColor, spot);
+    gl_FragColor = vec4(lidrShadeLight(s, posRadius, lightColor, spot), 0.0);
 }

@@ -8,14 +8,14 @@ uniform float uLightCount;
 
 void main() {
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     for (int i = 1; i <= LIDR_MAX_LIGHTS; ++i) {
         float index = float(i);
         if (index > uLightCount) break;
-        vec4 posRadius;
+        vec4 posRadius, spot;
         vec3 lightColor;
-        lidrFetchLight(index, posRadius, lightColor);
-        color += lidrShadeLight(s, posRadius, lightColor);
+        lidrFetchLight(index, posRadius, lightColor, spot);
+        color += lidrShadeLight(s, posRadius, lightColor, spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

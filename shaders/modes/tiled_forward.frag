@@ -9,15 +9,15 @@
 
 void main() {
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     float offset = lidrTileListOffset();
     for (int i = 0; i < LIDR_MAX_TILE_LIGHTS; ++i) {
         float index = lidrTileListEntry(offset + float(i));
         if (index < 0.5) break;
-        vec4 posRadius;
+        vec4 posRadius, spot;
         vec3 lightColor;
-        lidrFetchLight(index, posRadius, lightColor);
-        color += lidrShadeLight(s, posRadius, lightColor);
+        lidrFetchLight(index, posRadius, lightColor, spot);
+        color += lidrShadeLight(s, posRadius, lightColor, spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

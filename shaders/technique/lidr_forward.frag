@@ -8,12 +8,12 @@
 void main() {
     lidrWriteDepth();
     LidrSurface s = lidrSurface();
-    vec3 color = lidrAmbient(s);
+    vec3 color = lidrAmbient(s) + lidrDirectionalLights(s);
     lidrBeginLights();
     LidrLight light;
     for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
         if (!lidrNextLight(light)) break;
-        color += lidrShadeLight(s, vec4(light.position, light.radius), light.color);
+        color += lidrShadeLight(s, vec4(light.position, light.radius), light.color, light.spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
 }

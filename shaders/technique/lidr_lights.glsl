@@ -1,7 +1,7 @@
 // The light list of this pixel, for any fragment shader drawn by LIDR's forward pass (GLSL 1.20). A material
 // shader (LidrOptions::materialShader, doc/embedding.md) says #include "lidr_lights.glsl" and gets:
 //
-//   LidrLight light;                          // position, radius, color (world space), index (1-based)
+//   LidrLight light;                          // position, radius, color (world space), index (1-based), spot
 //   lidrBeginLights();                        // unpacks this pixel's lists (once per fragment)
 //   for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
 //       if (!lidrNextLight(light)) break;     // false: no more lights on this pixel
@@ -31,6 +31,7 @@ struct LidrLight {
                        // being the null light; with region-local indices, row * 256 + the region's index); above
                        // 2048 not exact where fragments compute in fp16
     vec2 indexBytes;   // the same as its two bytes (low, high): exact in any precision
+    vec4 spot;         // the spot cone (axis x scale, offset) lidrShadeLight takes; (0, 0, 0, 1): a point light
 };
 
 void lidrNoLight(out LidrLight light) {
@@ -39,6 +40,7 @@ void lidrNoLight(out LidrLight light) {
     light.color = vec3(0.0);
     light.index = 0.0;
     light.indexBytes = vec2(0.0);
+    light.spot = vec4(0.0, 0.0, 0.0, 1.0);
 }
 
 #ifdef LIDR_NO_LIGHTS
@@ -94,7 +96,7 @@ void lidrSetLight(out LidrLight light, vec2 index) {
     index.y += lidrRegionRow;
     vec4 posRadius;
     vec3 color;
-    lidrFetchLight(index, posRadius, color);
+    lidrFetchLight(index, posRadius, color, light.spot);
     light.position = posRadius.xyz;
     light.radius = posRadius.w;
     light.color = color;

@@ -682,16 +682,29 @@ private:
                  " lights)");
         const tinygltf::Light& source = model_.lights[size_t(lightIndex)];
         const std::string name = "light " + std::to_string(lightIndex) + (source.name.empty() ? "" : " '" + source.name + "'");
-        if (source.type != "point") {
-            warn(name + ": " + source.type + " lights are not supported (lidr draws point lights); left out");
+        if (source.type != "point" && source.type != "spot" && source.type != "directional") {
+            warn(name + ": " + source.type + " lights are not supported (lidr draws point, spot and directional lights); left out");
+            return;
+        }
+        glm::vec3 color(1.0f);
+        for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
+        color *= float(source.intensity);
+        if (!(isFinite(color) && color.r >= 0 && color.g >= 0 && color.b >= 0))
+            fail(name + ": colour x intensity must be finite and >= 0, got " + str(color));
+        if (source.type == "directional") {
+            readDirectionalLight(name, nodeName, color, world);
             return;
         }
         PointLight light;
-        glm::vec3 color(1.0f);
-        for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
-        light.color = color * float(source.intensity);
-        if (!(isFinite(light.color) && light.color.r >= 0 && light.color.g >= 0 && light.color.b >= 0))
-            fail(name + ": colour x intensity must be finite and >= 0, got " + str(light.color));
+        light.color = color;
+        if (source.type == "spot") {
+            // The validator held the angles to 0 <= inner < outer <= pi/2.
+            if (!nodeDirection(world, name, nodeName, light.direction)) return;
+            light.innerConeAngle = float(source.spot.innerConeAngle);
+            light.outerConeAngle = float(source.spot.outerConeAngle);
+            // inner < outer in double may round to equal floats
+            light.innerConeAngle = std::min(light.innerConeAngle, std::nextafter(light.outerConeAngle, 0.0f));
+        }
         light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         // The node's scale scales the range (its largest axis: the light stays a sphere).
         const glm::mat3 linear(world);
@@ -706,6 +719,33 @@ private:
         scene_.lights.push_back(light);
         if (!scene_.lightPaths.empty()) scene_.lightPaths.emplace_back();
         ++contents_.lights;
+    }
+
+    // Spot and directional lights shine down their node's -z (KHR_lights_punctual): the unit direction, or
+    // false with a warning (the light is left out) where the node's transform flattens -z to nothing.
+    bool nodeDirection(const glm::mat4& world, const std::string& name, const std::string& nodeName, glm::vec3& out) {
+        const glm::vec3 direction(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+        if (!isUsableDirection(direction)) {
+            warn(name + " on node " + nodeName + ": the node's transform gives no direction (-z maps to " +
+                 str(direction) + "); left out");
+            return false;
+        }
+        out = glm::normalize(direction);
+        return true;
+    }
+
+    // The node's position and scale do not matter. Past maxDirectionalLights (the forward shaders' uniforms)
+    // the rest are left out with a warning.
+    void readDirectionalLight(const std::string& name, const std::string& nodeName, const glm::vec3& color,
+                              const glm::mat4& world) {
+        DirectionalLight light{glm::vec3(0.0f), color};
+        if (!nodeDirection(world, name, nodeName, light.direction)) return;
+        if (scene_.directionalLights.size() >= maxDirectionalLights) {
+            warn(name + " on node " + nodeName + ": more than " + std::to_string(maxDirectionalLights) +
+                 " directional lights (the forward shaders' limit); left out");
+            return;
+        }
+        scene_.directionalLights.push_back(light);
     }
 
     void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {

@@ -1,5 +1,7 @@
 #include "lidr/scene/io/scene_file.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -42,7 +44,7 @@ public:
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
                            "ambient", "background", "materials", "models", "primitives", "lights", "generate",
-                           "msaa", "transparency", "mode"});
+                           "directional_lights", "msaa", "transparency", "mode"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
@@ -74,6 +76,7 @@ public:
         if (root.has("lights"))
             for (const Field& light : root["lights"].items()) readLight(light);
         if (root.has("generate")) readGenerators(root["generate"]);
+        if (root.has("directional_lights")) readDirectionalLights(root["directional_lights"]);
         bool anyMoves = false;
         for (const LightPath& path : scene_.lightPaths) anyMoves = anyMoves || path.kind != LightPath::Kind::Static;
         if (!anyMoves) scene_.lightPaths.clear();
@@ -101,6 +104,7 @@ private:
         if (!(root.has("base_lights") && root["base_lights"].boolean())) {
             scene_.lights.clear();
             scene_.lightPaths.clear();
+            scene_.directionalLights.clear();
         }
     }
 
@@ -244,7 +248,8 @@ private:
     }
 
     void readLight(const Field& field) {
-        field.expectObject({"position", "radius", "color", "priority", "path"});
+        field.expectObject({"position", "radius", "color", "priority", "path", "type", "direction", "inner_cone_angle",
+                            "outer_cone_angle"});
         PointLight light;
         LightPath path;
         if (field.has("path")) path = readPath(field["path"]);
@@ -260,8 +265,52 @@ private:
             field["radius"].fail("radius " + str(light.radius) + " is too large (limit " + str(maxLightRadius) + ")");
         if (field.has("color")) light.color = color(field["color"]);
         if (field.has("priority")) light.priority = field["priority"].number();
+        readSpotCone(field, light);
         scene_.lights.push_back(light);
         scene_.lightPaths.push_back(path);
+    }
+
+    // "type": "point" (the default) or "spot" with its cone, in degrees (KHR_lights_punctual's defaults: inner 0,
+    // outer 45); a point light takes none of the spot keys.
+    void readSpotCone(const Field& field, PointLight& light) {
+        const std::string type = field.has("type") ? field["type"].text() : "point";
+        if (type == "point") {
+            for (const char* key : {"direction", "inner_cone_angle", "outer_cone_angle"})
+                if (field.has(key)) field[key].fail("only for spot lights (\"type\": \"spot\")");
+            return;
+        }
+        if (type != "spot") field["type"].fail("unknown light type '" + type + "' (point or spot; directional "
+                                               "lights are \"directional_lights\")");
+        light.direction = field["direction"].vec3();
+        if (!isUsableDirection(light.direction))
+            field["direction"].fail("length " + str(glm::length(light.direction)) + "; it must be between 1e-18 and 1e18");
+        const float outer = field.has("outer_cone_angle") ? field["outer_cone_angle"].number() : 45.0f;
+        const float inner = field.has("inner_cone_angle") ? field["inner_cone_angle"].number() : 0.0f;
+        if (!(outer > 0.0f && outer <= 90.0f))  // the default, 45, is in range
+            field["outer_cone_angle"].fail("must be in (0, 90] degrees, got " + str(outer));
+        if (!(inner >= 0.0f && inner < outer))
+            field["inner_cone_angle"].fail("must be in [0, outer_cone_angle " + str(outer) + ") degrees, got " + str(inner));
+        light.outerConeAngle = glm::radians(outer);
+        light.innerConeAngle = std::min(glm::radians(inner), std::nextafter(light.outerConeAngle, 0.0f));
+    }
+
+    // Not indexed (every mode adds them in its forward pass), so they have their own key, after the models'.
+    void readDirectionalLights(const Field& field) {
+        const std::vector<Field> items = field.items();
+        if (scene_.directionalLights.size() + items.size() > maxDirectionalLights)
+            field.fail(std::to_string(scene_.directionalLights.size() + items.size()) + " directional lights" +
+                       (scene_.directionalLights.empty() ? std::string() : " with the models'") + "; at most " +
+                       std::to_string(maxDirectionalLights) + " are supported (uniforms of every forward shader)");
+        for (const Field& item : items) {
+            item.expectObject({"direction", "color"});
+            DirectionalLight light;
+            light.direction = item["direction"].vec3();
+            if (!isUsableDirection(light.direction))
+                item["direction"].fail("length " + str(glm::length(light.direction)) + "; it must be between 1e-18 and "
+                                       "1e18 (the way the light travels, e.g. [0, -1, 0] straight down)");
+            if (item.has("color")) light.color = color(item["color"]);
+            scene_.directionalLights.push_back(light);
+        }
     }
 
     LightPath readPath(const Field& field) {
