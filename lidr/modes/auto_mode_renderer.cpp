@@ -42,6 +42,8 @@ AutoModeRenderer::AutoModeRenderer(const GlInfo& info, const Scene& scene, const
         renderers_.push_back(createRenderer(o, info, scene, width, height));
     }
     bestMs_.assign(candidates_.size(), 0.0);
+    measured_.assign(candidates_.size(), false);
+    dropped_.assign(candidates_.size(), false);
 }
 
 const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -68,6 +70,9 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
     // them alike; each one's first turn is its warm-up (shader compiles, first uploads), the best of the rest
     // counts.
     const int n = int(candidates_.size());
+    // Candidates already measured at over kDropFactor x the fastest sit out the remaining turns: a slow mode
+    // (multi-pass on a many-light scene can take seconds a frame) costs one measured frame, not trialFrames - 1.
+    while (trial_ < n * options_.trialFrames && dropped_[size_t(trial_ % n)]) ++trial_;
     const int candidate = trial_ % n, turn = trial_ / n;
     last_ = candidate;
     glFinish();
@@ -76,8 +81,20 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
     glFinish();
     const double ms = nowMilliseconds() - start;
     if (turn == 1 || (turn > 1 && ms < bestMs_[size_t(candidate)])) bestMs_[size_t(candidate)] = ms;
-    if (++trial_ == n * options_.trialFrames) {
+    if (turn >= 1) {
+        measured_[size_t(candidate)] = true;
+        double fastest = 0.0;
+        for (int c = 0; c < n; ++c)
+            if (measured_[size_t(c)] && (fastest == 0.0 || bestMs_[size_t(c)] < fastest)) fastest = bestMs_[size_t(c)];
+        for (int c = 0; c < n; ++c)
+            if (measured_[size_t(c)] && bestMs_[size_t(c)] > kDropFactor * fastest) dropped_[size_t(c)] = true;
+    }
+    ++trial_;
+    while (trial_ < n * options_.trialFrames && dropped_[size_t(trial_ % n)]) ++trial_;
+    if (trial_ >= n * options_.trialFrames) {
         trial_ = 0;
+        std::fill(dropped_.begin(), dropped_.end(), false);
+        std::fill(measured_.begin(), measured_.end(), false);
         chosen_ = int(std::min_element(bestMs_.begin(), bestMs_.end()) - bestMs_.begin());
         framesSinceChoice_ = 0;
         lightsAtChoice_ = visible;

@@ -16,7 +16,10 @@
 namespace lidr {
 
 struct AutoModeOptions {
-    int trialFrames = 3;         // per candidate; the first is a warm-up (shader compiles, first uploads)
+    // Per candidate; the first is a warm-up (shader compiles, first uploads), the best of the rest counts. Five:
+    // with the best of two, modes 10 % apart were ranked wrongly on the 2-core VM (doc/benchmarks.md, "Region-local
+    // indices"); a candidate measured at over twice the fastest sits out its remaining turns.
+    int trialFrames = 5;
     int remeasureFrames = 600;   // measure again after this many frames
     double lightChange = 0.25;   // ... or when the visible lights change by this fraction since the choice
 };
@@ -52,6 +55,8 @@ private:
     std::vector<std::string> candidates_;
     std::vector<std::unique_ptr<Renderer>> renderers_;
     std::vector<double> bestMs_;
+    std::vector<bool> measured_, dropped_;  // this measurement: measured after its warm-up; sitting out
+    static constexpr double kDropFactor = 2.0;
     int chosen_ = -1, last_ = 0;
     int trial_ = 0;  // trial frames drawn in this measurement (candidates in turn)
     int framesSinceChoice_ = 0, lightsAtChoice_ = 0;
