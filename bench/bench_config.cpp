@@ -439,7 +439,7 @@ std::string str(const T& v) {
 }  // namespace
 
 Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
-               std::map<std::string, Scene>& scenes) {
+               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights) {
     const std::vector<std::string> modes = availableModes();
     const std::vector<std::string> schemes = packingSchemeNames();
     // Names first: every unknown name is reported before any probing.
@@ -460,7 +460,16 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
         for (int s : g.msaa)
             if (s < 0) throw Error("MSAA samples must be >= 0, got " + std::to_string(s));
         for (const std::string& name : g.scenes)
-            if (!scenes.count(name)) scenes.emplace(name, loadBenchScene(name, seed));
+            if (!scenes.count(name)) {
+                Scene scene = loadBenchScene(name, seed);
+                if (extraLights.count > 0) {
+                    LightScatterOptions scatter = extraLights;
+                    scatter.seed = seed;
+                    addScatteredLights(scene, scatter);  // throws naming the limit for too many lights
+                    scene.validate();
+                }
+                scenes.emplace(name, std::move(scene));
+            }
     }
 
     Plan plan;

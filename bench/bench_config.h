@@ -10,6 +10,7 @@
 
 #include "lidr/platform/context.h"
 #include "lidr/render/renderer.h"
+#include "lidr/scene/light_scatter.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr::bench {
@@ -123,8 +124,9 @@ std::vector<std::string> sweepVolumeTests();
 // the live context, before anything is measured. A combination the library refuses is skipped and listed;
 // a value that no combination of its group can use, or a group with no runnable configuration, is a
 // lidr::Error that says why and lists what is valid. `scenes` is filled with the loaded scenes.
+// `extraLights` (count > 0: lidr-bench --lights N): scattered over every scene after it is loaded.
 Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
-               std::map<std::string, Scene>& scenes);
+               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights = {});
 
 // "1024x768" -> (1024, 768); "scene" -> (0, 0). Throws lidr::Error.
 std::pair<int, int> parseResolution(const std::string& text);

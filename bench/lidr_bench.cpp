@@ -383,6 +383,14 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::Range(2, 100000));
     app.add_option("--out", outDir, "Output folder: results.csv, passes.csv, results.json, summary.md, plots/")->capture_default_str();
     app.add_option("--seed", seed, "Seed of the room's and many-light scenes' lights")->capture_default_str();
+    int extraLights = 0;
+    double extraLightRadius = 0.0;
+    app.add_option("--lights", extraLights,
+                   "Scatter N more seeded point lights over every --scenes scene's surfaces (lidr::scatterLights, "
+                   "as lidr-demo --lights N)")
+        ->check(CLI::Range(1, 65535));
+    app.add_option("--light-radius", extraLightRadius,
+                   "Radius of --lights in scene units (default: chosen from the scene's size and N, doc/colour.md)");
     app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
     auto* quickFlag = app.add_flag("--quick", quick, "Seconds-long smoke run: tiny resolution, few configurations, one frame");
     auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
@@ -479,6 +487,11 @@ int main(int argc, char** argv) {
             groups.push_back(g);
         }
 
+        if (extraLightRadius != 0.0 && extraLights == 0)
+            throw Error("--light-radius sets the radius of --lights: give --lights N too");
+        if (!(std::isfinite(extraLightRadius) && extraLightRadius >= 0.0 && extraLightRadius <= double(maxLightRadius)))
+            throw Error("--light-radius must be a finite number > 0, got " + std::to_string(extraLightRadius));
+
         // ---- outputs first: an unwritable folder fails before any GL work --------------------------------
         if (!dryRun) ReportWriter::checkWritable(outDir);
 
@@ -488,7 +501,10 @@ int main(int argc, char** argv) {
         const GlInfo& info = ctx->info();
 
         std::map<std::string, Scene> sceneCache;
-        const Plan plan = buildPlan(groups, info, seed, sceneCache);
+        LightScatterOptions scatter;
+        scatter.count = extraLights;
+        scatter.radius = float(extraLightRadius);
+        const Plan plan = buildPlan(groups, info, seed, sceneCache, scatter);
         std::cout << "lidr-bench: " << plan.runs.size() << " configurations to measure, " << plan.skipped.size()
                   << " combinations skipped (refused by the library); GL: " << info.renderer << "\n";
         if (dryRun) {

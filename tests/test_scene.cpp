@@ -882,3 +882,36 @@ TEST_CASE("materials: metallic / roughness in scene files, Blinn-Phong mapped on
         "materials": [{"name": "x", "roughness": 1.5}]})")),
                         Catch::Contains("roughness") && Catch::Contains("[0, 1]"));
 }
+
+TEST_CASE("scene files: scatter_lights adds seeded lights over the surfaces read before it", "[cpu][scene][scatter]") {
+    TempDir dir;
+    const auto load = [&](const std::string& json) { return lidr::loadSceneFile(dir.write("scene.json", json)); };
+    const std::string floor = R"({"primitives": [{"shape": "box", "min": [-10, -0.1, -10], "max": [10, 0.1, 10]}],
+                                  "lights": [{"position": [0, 3, 0], "radius": 2}])";
+    const lidr::Scene a = load(floor + R"(, "scatter_lights": {"count": 100, "seed": 7}})");
+    const lidr::Scene b = load(floor + R"(, "scatter_lights": {"count": 100, "seed": 7}})");
+    const lidr::Scene c = load(floor + R"(, "scatter_lights": {"count": 100, "seed": 8, "radius": 0.5, "spot_share": 0.5}})");
+    REQUIRE(a.lights.size() == 101);
+    REQUIRE(c.lights.size() == 101);
+    CHECK(a.lights[0].position == glm::vec3(0, 3, 0));  // the file's own lights first
+    for (size_t i = 1; i < a.lights.size(); ++i) {
+        CHECK(a.lights[i].position == b.lights[i].position);  // seeded: the same file, the same lights
+        CHECK(std::abs(a.lights[i].position.x) <= 10.5f);     // over the box
+        CHECK(std::abs(a.lights[i].position.z) <= 10.5f);
+        CHECK(c.lights[i].radius == 0.5f);
+    }
+    CHECK(a.lights[1].position != c.lights[1].position);
+    int spots = 0;
+    for (const lidr::PointLight& l : c.lights) spots += l.isSpot() ? 1 : 0;
+    CHECK(spots == 50);
+    REQUIRE_THROWS_WITH(load(floor + R"(, "scatter_lights": {"count": 0}})"), Contains("scatter_lights.count"));
+    REQUIRE_THROWS_WITH(load(floor + R"(, "scatter_lights": {"count": 70000}})"), Contains("scatter_lights.count"));
+    REQUIRE_THROWS_WITH(load(floor + R"(, "scatter_lights": {"count": 10, "radius": -1}})"),
+                        Contains("scatter_lights.radius: must be > 0"));
+    REQUIRE_THROWS_WITH(load(floor + R"(, "scatter_lights": {"count": 10, "spot_share": 2}})"),
+                        Contains("scatter_lights.spot_share: must be in [0, 1]"));
+    REQUIRE_THROWS_WITH(load(floor + R"(, "scatter_lights": {"count": 10, "cnt": 1}})"),
+                        Contains("scatter_lights.cnt: unknown key"));
+    REQUIRE_THROWS_WITH(load(R"({"lights": [{"position": [0, 3, 0], "radius": 2}], "scatter_lights": {"count": 10}})"),
+                        Contains("scatter_lights: needs surfaces"));
+}

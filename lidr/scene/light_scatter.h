@@ -1,7 +1,7 @@
 #pragma once
 // Lights for any model: `count` seeded point lights scattered over the scene's surfaces (area-weighted), so
-// every model becomes a many-light scene in one call (lidr-demo/lidr-viewer/lidr-bench `--lights N`, the web
-// page's `lights=N`, a scene file's "scatterLights"). Deterministic for the same scene, count and seed.
+// every model becomes a many-light scene in one call (lidr-demo/lidr-bench `--lights N`, lidr-viewer's slider, the
+// web page's `lights=N`, a scene file's "scatter_lights"). Deterministic for the same scene, count and seed.
 #include <cstdint>
 #include <vector>
 

@@ -1,4 +1,5 @@
 #include "lidr/scene/io/scene_file.h"
+#include "lidr/scene/light_scatter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +45,7 @@ public:
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
                            "ambient", "background", "materials", "models", "primitives", "lights", "generate",
-                           "directional_lights", "msaa", "transparency", "mode"});
+                           "directional_lights", "scatter_lights", "msaa", "transparency", "mode"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
@@ -77,6 +78,7 @@ public:
             for (const Field& light : root["lights"].items()) readLight(light);
         if (root.has("generate")) readGenerators(root["generate"]);
         if (root.has("directional_lights")) readDirectionalLights(root["directional_lights"]);
+        if (root.has("scatter_lights")) readScatter(root["scatter_lights"]);
         bool anyMoves = false;
         for (const LightPath& path : scene_.lightPaths) anyMoves = anyMoves || path.kind != LightPath::Kind::Static;
         if (!anyMoves) scene_.lightPaths.clear();
@@ -338,6 +340,32 @@ private:
             field["kind"].fail("unknown path kind '" + kind + "' (known: static, orbit, bounce)");
         }
         return path;
+    }
+
+    // "scatter_lights": N seeded static lights over the surfaces read so far (lidr::scatterLights, as
+    // lidr-demo --lights N); radius <= 0 or absent: chosen from the scene's size and N.
+    void readScatter(const Field& field) {
+        field.expectObject({"count", "radius", "seed", "spot_share"});
+        LightScatterOptions options;
+        const Field count = field["count"];
+        options.count = int(count.integer(1, maxLights));
+        if (scene_.lights.size() + size_t(options.count) > size_t(maxLights))
+            count.fail(std::to_string(options.count) + " more lights would make " +
+                       std::to_string(scene_.lights.size() + size_t(options.count)) + "; at most " +
+                       std::to_string(maxLights) + " are supported");
+        if (field.has("radius")) {
+            options.radius = positive(field["radius"]);
+            if (options.radius > maxLightRadius)
+                field["radius"].fail("radius " + str(options.radius) + " is too large (limit " + str(maxLightRadius) + ")");
+        }
+        if (field.has("seed")) options.seed = uint32_t(field["seed"].integer(0, std::numeric_limits<uint32_t>::max()));
+        if (field.has("spot_share")) {
+            options.spotShare = nonNegative(field["spot_share"]);
+            if (options.spotShare > 1.0f) field["spot_share"].fail("must be in [0, 1], got " + str(options.spotShare));
+        }
+        if (scene_.triangleCount() == 0) field.fail("needs surfaces to scatter over: the scene has no triangles");
+        addScatteredLights(scene_, options);
+        scene_.lightPaths.resize(scene_.lights.size());  // static, one per light as while reading
     }
 
     // "generate" is one generator object or an array of them.
