@@ -215,9 +215,9 @@ def build():
                                                         set_at(d, "/materials/0/alphaCutoff", 0.3))))
     c.add("warn-texcoord1-missing", mutate(textured, lambda d: set_at(d, "/materials/0/pbrMetallicRoughness/baseColorTexture/texCoord", 1)),
           "warning", "reads TEXCOORD_1, which the primitive does not have")
-    c.add("warn-spot-light", mutate(lit, lambda d: set_at(d, "/extensions/KHR_lights_punctual/lights/0",
-                                                          {"type": "spot", "spot": {"outerConeAngle": 0.5}})),
-          "warning", "spot lights are not supported")
+    # Spot lights are drawn (issue 29): a valid one loads without a warning.
+    ok("valid-spot-light", mutate(lit, lambda d: set_at(d, "/extensions/KHR_lights_punctual/lights/0",
+                                                        {"type": "spot", "spot": {"outerConeAngle": 0.5}})))
     c.add("warn-orthographic", mutate(full, lambda d: set_at(d, "/cameras/0", {
         "type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0, "zfar": 10}})),
           "warning", "orthographic cameras are not supported")
