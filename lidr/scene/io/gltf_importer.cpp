@@ -338,18 +338,15 @@ private:
         const AccessorView normals = hasNormals ? view(attribute("NORMAL"), what + " NORMAL", {TINYGLTF_TYPE_VEC3},
                                                        {TINYGLTF_COMPONENT_TYPE_FLOAT})
                                                 : AccessorView{};
-        const bool hasTexCoords = attribute("TEXCOORD_0") >= 0;
-        const AccessorView texCoords =
-            hasTexCoords ? view(attribute("TEXCOORD_0"), what + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
-                                {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
-                         : AccessorView{};
-        const bool hasTexCoords1 = attribute("TEXCOORD_1") >= 0;
-        const AccessorView texCoords1 =
-            hasTexCoords1 ? view(attribute("TEXCOORD_1"), what + " TEXCOORD_1", {TINYGLTF_TYPE_VEC2},
-                                 {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
-                          : AccessorView{};
+        // A texture coordinate set: float, or normalised unsigned byte / short (the specification's three).
+        const auto texCoordView = [&](const char* name) {
+            return attribute(name) >= 0 ? view(attribute(name), what + " " + name, {TINYGLTF_TYPE_VEC2},
+                                               {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT})
+                                        : AccessorView{};
+        };
+        const bool hasTexCoords = attribute("TEXCOORD_0") >= 0, hasTexCoords1 = attribute("TEXCOORD_1") >= 0;
+        const AccessorView texCoords = texCoordView("TEXCOORD_0"), texCoords1 = texCoordView("TEXCOORD_1");
         // glTF: without NORMAL the flat normals are computed and TANGENT is ignored.
         const bool hasTangents = hasNormals && attribute("TANGENT") >= 0;
         const AccessorView tangents = hasTangents ? view(attribute("TANGENT"), what + " TANGENT", {TINYGLTF_TYPE_VEC4},

@@ -342,17 +342,21 @@ private:
         return path;
     }
 
+    // A count of lights to add (at least `least`), checked against the scene's total limit.
+    int addedLightCount(const Field& count, int least) const {
+        const int n = int(count.integer(least, maxLights));
+        if (scene_.lights.size() + size_t(n) > size_t(maxLights))
+            count.fail(std::to_string(n) + " more lights would make " + std::to_string(scene_.lights.size() + size_t(n)) +
+                       "; at most " + std::to_string(maxLights) + " are supported");
+        return n;
+    }
+
     // "scatter_lights": N seeded static lights over the surfaces read so far (lidr::scatterLights, as
     // lidr-demo --lights N); radius <= 0 or absent: chosen from the scene's size and N.
     void readScatter(const Field& field) {
         field.expectObject({"count", "radius", "seed", "spot_share"});
         LightScatterOptions options;
-        const Field count = field["count"];
-        options.count = int(count.integer(1, maxLights));
-        if (scene_.lights.size() + size_t(options.count) > size_t(maxLights))
-            count.fail(std::to_string(options.count) + " more lights would make " +
-                       std::to_string(scene_.lights.size() + size_t(options.count)) + "; at most " +
-                       std::to_string(maxLights) + " are supported");
+        options.count = addedLightCount(field["count"], 1);
         if (field.has("radius")) {
             options.radius = positive(field["radius"]);
             if (options.radius > maxLightRadius)
@@ -380,12 +384,7 @@ private:
         field.expectObject({"seed", "count", "bounds_min", "bounds_max", "radius_min", "radius_max", "intensity", "speed"});
         LightGeneratorOptions options;
         if (field.has("seed")) options.seed = uint32_t(field["seed"].integer(0, std::numeric_limits<uint32_t>::max()));
-        const Field count = field["count"];
-        options.count = int(count.integer(0, maxLights));
-        if (scene_.lights.size() + size_t(options.count) > size_t(maxLights))
-            count.fail(std::to_string(options.count) + " more lights would make " +
-                       std::to_string(scene_.lights.size() + size_t(options.count)) + "; at most " +
-                       std::to_string(maxLights) + " are supported");
+        options.count = addedLightCount(field["count"], 0);
         options.boundsMin = field["bounds_min"].vec3();
         options.boundsMax = field["bounds_max"].vec3();
         if (!glm::all(glm::lessThanEqual(options.boundsMin, options.boundsMax)))
