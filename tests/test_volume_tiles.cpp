@@ -81,6 +81,62 @@ TEST_CASE("volume tiles: a tile is never rejected where a sphere contains a pixe
     }
 }
 
+TEST_CASE("volume tiles: each tile's depth range and slices are those of its pixels, one by one", "[volume-tiles][cpu]") {
+    // The build walks rows a tile span at a time; here every pixel is visited on its own, the definition
+    // written out: range = [min(d) - margin, max(d) + margin] over the tile's surface pixels (d < 1), slice
+    // mask = the slices [floor((d - margin - min) * 32 / (max - min)), floor((d + margin - min) * ...)] clamped
+    // to 31. Sizes that are not multiples of the tile, background, NaN and a one-pixel-wide last column.
+    const int w = GENERATE(97, 64, 33);
+    const int tileSize = GENERATE(8, 16);
+    DYNAMIC_SECTION(w << " px wide, tiles " << tileSize) {
+        const int h = 45;
+        Camera camera;
+        camera.position = {0.0f, 2.0f, 8.0f};
+        const CameraMatrices cam = cameraMatrices(camera, w, h);
+        std::mt19937 random{uint32_t(w * 31 + tileSize)};
+        std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+        std::vector<float> depth(size_t(w) * h);
+        for (float& d : depth) {
+            const float u = unit(random);
+            d = u < 0.08f ? 1.0f : u < 0.09f ? std::nanf("") : 0.5f + 0.49f * unit(random) * unit(random);
+        }
+        for (int y = 0; y < 16; ++y)  // a tile of background only
+            for (int x = 0; x < 16; ++x) depth[size_t(y) * w + x] = 1.0f;
+        const float margin = 3.0f / 16777215.0f, widened = margin + 4.0f / 16777215.0f;  // + the build's slack
+        VolumeTiles tiles(w, h, tileSize);
+        tiles.build(depth, margin, cam);
+        std::vector<float> lo(size_t(tiles.tileCount()), 2.0f), hi(size_t(tiles.tileCount()), -1.0f);
+        std::vector<uint32_t> slices(size_t(tiles.tileCount()), 0u);
+        auto tileOf = [&](int x, int y) { return size_t((y / tileSize) * tiles.tilesX() + x / tileSize); };
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float d = depth[size_t(y) * w + x];
+                if (!(d < 1.0f)) continue;
+                lo[tileOf(x, y)] = std::min(lo[tileOf(x, y)], d - widened);
+                hi[tileOf(x, y)] = std::max(hi[tileOf(x, y)], d + widened);
+            }
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const float d = depth[size_t(y) * w + x];
+                if (!(d < 1.0f)) continue;
+                const size_t t = tileOf(x, y);
+                const float scale = 32.0f / (hi[t] - lo[t]);
+                const int first = std::clamp(int(std::floor((d - widened - lo[t]) * scale)), 0, 31);
+                const int last = std::clamp(int(std::floor((d + widened - lo[t]) * scale)), 0, 31);
+                for (int s = first; s <= last; ++s) slices[t] |= 1u << s;
+            }
+        int empty = 0;
+        for (int t = 0; t < tiles.tileCount(); ++t) {
+            INFO("tile " << t);
+            CHECK(tiles.tileMinDepth(t) == lo[size_t(t)]);
+            CHECK(tiles.tileMaxDepth(t) == hi[size_t(t)]);
+            CHECK(tiles.tileSlices(t) == slices[size_t(t)]);
+            empty += hi[size_t(t)] < lo[size_t(t)];
+        }
+        CHECK(empty >= 1);  // the background tile
+    }
+}
+
 TEST_CASE("volume tiles: refused sizes name the rule", "[volume-tiles][cpu][bad-input]") {
     CHECK_THROWS_WITH(VolumeTiles(64, 48, 2), Catch::Contains("tile size must be in [4, 256]"));
     CHECK_THROWS_WITH(VolumeTiles(64, 48, 512), Catch::Contains("tile size must be in [4, 256]"));

@@ -62,6 +62,10 @@ public:
     int tilesY() const { return tilesY_; }
     int tileCount() const { return tilesX_ * tilesY_; }
     bool empty() const { return tileSize_ == 0; }
+    // A tile's surface depth range widened by the margin (min > max: no surface) and its occupied slices.
+    float tileMinDepth(int tile) const { return minDepth_[size_t(tile)]; }
+    float tileMaxDepth(int tile) const { return maxDepth_[size_t(tile)]; }
+    uint32_t tileSlices(int tile) const { return slices_[size_t(tile)]; }
 
 private:
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
