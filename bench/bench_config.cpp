@@ -199,7 +199,10 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     RenderModeOptions o;
     o.mode = c.mode;
     if (c.mode == "lidr") o.lidr = lidrOptionsFor(c);
-    o.tiled.depthBounds = c.tiledDepthBounds;
+    // Only the tiled rows choose their depth bounds; `auto` runs its tiled candidate with the library's default
+    // (min/max on), as lidr-demo --mode auto does: with ModeConfig's `false` it timed a slower tiled than the
+    // tiled rows and kept LIDR where they put tiled ahead (city-255).
+    if (c.mode == "tiled") o.tiled.depthBounds = c.tiledDepthBounds;
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);
