@@ -282,7 +282,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         // cover more than kTileCullingMinArea screens (their pixel rectangles, summed).
         if (volumeTiles_ && lightRectArea(cam, lights) >= kTileCullingMinArea * double(targets_.width()) * targets_.height()) {
             TimedPass volumeTilesTime(timer_, "volume-tiles");
-            volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam);  // the single-sample pre-pass depth
+            volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, targets_.depthBits() == 24);  // the single-sample pre-pass depth
             volumePass_.setTiles(volumeTiles_.get(), cam);
         } else {
             volumePass_.setTiles(nullptr, cam);

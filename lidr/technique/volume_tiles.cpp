@@ -109,11 +109,23 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
     }
 }
 
-void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera) {
-    readback_.resize(size_t(width_) * size_t(height_));
+void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera, bool packedDepthStencil) {
+    const size_t pixels = size_t(width_) * size_t(height_);
+    readback_.resize(pixels);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, readback_.data());
-    checkGl("light-volume tiles: depth read-back");
+    if (packedDepthStencil) {
+        // A packed depth-stencil buffer read as it is stored: Mesa copies the rows (its float read converts each
+        // pixel, the larger part of this pass's read-back), and the conversion here vectorises. The same value
+        // as the float read: the 24-bit depth times 1 / (2^24 - 1) in double, rounded to float.
+        packed_.resize(pixels);
+        glReadPixels(0, 0, width_, height_, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed_.data());
+        checkGl("light-volume tiles: depth read-back");
+        constexpr double kScale = 1.0 / 16777215.0;
+        for (size_t i = 0; i < pixels; ++i) readback_[i] = float(double(packed_[i] >> 8) * kScale);
+    } else {
+        glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, readback_.data());
+        checkGl("light-volume tiles: depth read-back");
+    }
     build(readback_, margin, camera);
 }
 

@@ -44,8 +44,10 @@ public:
     // perspective projection). `margin`: each pixel's surface lies within this much window depth of its stored
     // depth (the sphere test's uDepthMargin).
     void build(const std::vector<float>& depth, float margin, const CameraMatrices& camera);
-    // Reads the bound framebuffer's depth (glReadPixels) and builds from it.
-    void buildFromBoundDepth(float margin, const CameraMatrices& camera);
+    // Reads the bound framebuffer's depth (glReadPixels) and builds from it; packedDepthStencil: the depth is a
+    // DEPTH24_STENCIL8 buffer, read as GL_UNSIGNED_INT_24_8 (every desktop context lidr runs on has packed
+    // depth-stencil: its FBOs need it).
+    void buildFromBoundDepth(float margin, const CameraMatrices& camera, bool packedDepthStencil);
 
     // The occupied depth slices of `tile` (bit s: slice s) whose cell the sphere (centre in view space, radius)
     // meets, its window-depth span being [nearDepth, farDepth] (sphereDepthSpan); 0: no surface of the tile can
@@ -79,6 +81,7 @@ private:
     std::vector<float> slopeX_, slopeY_;
     glm::vec2 depthToDistance_{0.0f};
     std::vector<float> readback_;
+    std::vector<uint32_t> packed_;
 };
 
 }  // namespace lidr
