@@ -418,14 +418,20 @@ void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector
     regions.tileSize = volumeTiles_->tileSize();
     regions.regionOfTiles.assign(size_t(tilesX) * size_t(tilesY), 0);
     std::vector<uint32_t> reached(volumes.size());
-    std::vector<int> perRegion;
+    std::vector<int> perRegion(size_t(kMaxIndexRegions), 0);
+    auto count = [&](uint32_t bits, int add) {
+        for (; bits; bits &= bits - 1) perRegion[size_t(__builtin_ctz(bits))] += add;
+    };
+    int split = -1;  // the region halved last: only the lights that reached it can reach other regions now
     for (;;) {
         regions.count = int(rects.size());
         if ((size_t(regions.count) + mapRows) * LightTable::kWidth - 1 > size_t(lightTable_.capacity())) return;
-        perRegion.assign(rects.size(), 0);
+        perRegion.resize(rects.size());
         for (size_t i = 0; i < volumes.size(); ++i) {
+            if (split >= 0 && !(reached[i] & (1u << split))) continue;
+            if (split >= 0) count(reached[i], -1);
             reached[i] = volumePass_.sphereRegions(volumes[i].posRadius, regions);
-            for (uint32_t bits = reached[i]; bits; bits &= bits - 1) ++perRegion[size_t(__builtin_ctz(bits))];
+            count(reached[i], +1);
         }
         const size_t worst = size_t(std::max_element(perRegion.begin(), perRegion.end()) - perRegion.begin());
         if (perRegion[worst] <= 255) break;
@@ -437,6 +443,7 @@ void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector
         else
             r.y1 = half.y0 = (r.y0 + r.y1) / 2;
         rects.push_back(half);
+        split = int(worst);
         for (int y = half.y0; y < half.y1; ++y)
             for (int x = half.x0; x < half.x1; ++x) regions.regionOfTiles[size_t(y) * size_t(tilesX) + size_t(x)] = uint8_t(rects.size() - 1);
     }
