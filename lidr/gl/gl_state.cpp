@@ -162,7 +162,8 @@ void StateCache::clear(const ClearAction& a) {
     if (a.color) open.colorMask = glm::bvec4(true);
     if (a.depth) open.depthWrite = true;
     if (a.stencil) open.stencil.writeMask = 0xFF;
-    open.scissor = false;
+    open.scissor = a.region.z > 0 && a.region.w > 0;
+    if (open.scissor) open.scissorBox = a.region;
     apply(open);
     GLbitfield bits = 0;
     if (a.color) {

@@ -50,12 +50,13 @@ struct RenderState {
 };
 
 // What a pass clears before it draws. Values are GL's clear values; the cache opens the write masks the
-// cleared buffers need and clears the whole target (scissor off).
+// cleared buffers need and clears the whole target (scissor off) or the region.
 struct ClearAction {
     bool color = false, depth = false, stencil = false;
     glm::vec4 colorValue{0.0f};
     double depthValue = 1.0;
     GLint stencilValue = 0;
+    glm::ivec4 region{0};  // x, y, width, height: clears only this box (scissored); empty: the whole target
     bool any() const { return color || depth || stencil; }
 };
 

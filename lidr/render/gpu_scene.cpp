@@ -175,9 +175,24 @@ void GpuScene::setTransform(ObjectId id, const glm::mat4& objectToWorld) {
     const float det = glm::determinant(linear);
     if (!std::isfinite(det) || std::abs(det) < 1e-30f)
         throw Error("object " + std::to_string(id) + ": the transform is not invertible (determinant " + std::to_string(det) + ")");
+    const glm::vec3 beforeMin = b.boundsMin, beforeMax = b.boundsMax;
     b.transform = objectToWorld;
     b.normalMatrix = glm::transpose(glm::inverse(linear));
     placeBatch(b);
+    recordChange(glm::min(beforeMin, b.boundsMin), glm::max(beforeMax, b.boundsMax));
+}
+
+void GpuScene::recordChange(const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
+    if (changes_.size() >= kKeptChanges) changes_.erase(changes_.begin(), changes_.begin() + long(kKeptChanges / 2));
+    changes_.push_back({++version_, boundsMin, boundsMax});
+}
+
+bool GpuScene::changedNear(const glm::vec3& center, float radius, uint64_t since) const {
+    if (since >= version_) return false;
+    if (changes_.empty() || changes_.front().version > since + 1) return true;  // not all kept: assume it did
+    for (auto it = changes_.rbegin(); it != changes_.rend() && it->version > since; ++it)
+        if (sphereTouchesBox(center, radius, it->boundsMin, it->boundsMax)) return true;
+    return false;
 }
 
 ObjectId GpuScene::add(const Mesh& mesh, const Material& material) {
@@ -193,12 +208,15 @@ ObjectId GpuScene::add(const Mesh& mesh, const Material& material) {
     if (order_ == DrawOrder::Reversed) batches_.insert(batches_.begin(), std::move(b));
     else batches_.push_back(std::move(b));
     checkGl("GpuScene::add");
+    const Batch& added = batches_[batchIndex(nextId_)];
+    recordChange(added.boundsMin, added.boundsMax);
     return nextId_++;
 }
 
 void GpuScene::remove(ObjectId id) {
     const auto it = batches_.begin() + long(batchIndex(id));
     triangles_ -= it->triangles;
+    recordChange(it->boundsMin, it->boundsMax);
     batches_.erase(it);  // its material stays (other objects may share it)
 }
 

@@ -78,6 +78,12 @@ public:
     void setTransform(ObjectId id, const glm::mat4& objectToWorld);
     ObjectId add(const Mesh& mesh, const Material& material);
     void remove(ObjectId id);
+    // Changes, for passes that keep what they drew (shadow maps): version() counts setTransform, add and remove
+    // calls; changedNear says whether one after `since` touched the sphere (the object's bounds before or after
+    // it). Conservative: true where the record of that change was not kept (the last kKeptChanges are).
+    uint64_t version() const { return version_; }
+    bool changedNear(const glm::vec3& center, float radius, uint64_t since) const;
+    static constexpr size_t kKeptChanges = 4096;
 
 private:
     struct Batch {
@@ -119,6 +125,13 @@ private:
     DrawOrder order_ = DrawOrder::AsGiven;
     bool cullClosedMeshes_ = true;
     ObjectId nextId_ = 0;
+    struct Change {
+        uint64_t version;
+        glm::vec3 boundsMin, boundsMax;  // what the object covered before and after
+    };
+    void recordChange(const glm::vec3& boundsMin, const glm::vec3& boundsMax);
+    uint64_t version_ = 0;
+    std::vector<Change> changes_;  // the last kKeptChanges, oldest first
 };
 
 }  // namespace lidr

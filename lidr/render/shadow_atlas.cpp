@@ -1,0 +1,145 @@
+#include "lidr/render/shadow_atlas.h"
+#include "lidr/base/gl.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/base/image.h"
+#include "lidr/render/depth_prepass.h"
+
+namespace lidr {
+
+namespace {
+bool powerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
+}  // namespace
+
+CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize) {
+    if (!spot.isSpot()) throw Error("shadow map: only spot lights have one (point lights' six faces are not written yet)");
+    if (!(spot.outerConeAngle <= kMaxShadowConeAngle))
+        throw Error("shadow map: the spot light's outer cone of " + std::to_string(glm::degrees(spot.outerConeAngle)) +
+                    " degrees is wider than one map covers (" + std::to_string(glm::degrees(kMaxShadowConeAngle)) + ")");
+    if (!(spot.radius > 0.0f) || !std::isfinite(spot.radius)) throw Error("shadow map: the light's range must be positive");
+    const float length = glm::length(spot.direction);
+    if (!(length > 0.0f) || !std::isfinite(length)) throw Error("shadow map: the spot light's direction has no length");
+    CameraMatrices m;
+    m.eye = spot.position;
+    m.forward = spot.direction / length;
+    // Any up vector not along the axis: the map's roll does not matter.
+    const glm::vec3 up = std::abs(m.forward.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    m.view = glm::lookAt(m.eye, m.eye + m.forward, up);
+    m.nearPlane = spot.radius * 0.01f;
+    m.farPlane = spot.radius;
+    m.projection = glm::perspective(2.0f * spot.outerConeAngle, 1.0f, m.nearPlane, m.farPlane);
+    m.viewProjection = m.projection * m.view;
+    m.inverseViewProjection = glm::inverse(m.viewProjection);
+    m.width = m.height = tileSize;
+    return m;
+}
+
+ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) : options_(options) {
+    if (!powerOfTwo(options.size) || !powerOfTwo(options.tileSize) || options.tileSize > options.size || options.tileSize < 16)
+        throw Error("shadow atlas: size " + std::to_string(options.size) + " and tile size " + std::to_string(options.tileSize) +
+                    " must be powers of two with 16 <= tile size <= size");
+    if (info.maxTextureSize > 0 && options.size > info.maxTextureSize)
+        throw Error("shadow atlas: size " + std::to_string(options.size) + " is over this context's GL_MAX_TEXTURE_SIZE of " +
+                    std::to_string(info.maxTextureSize));
+    if (!info.depthTexture)
+        throw UnsupportedError("shadow atlas: this context has no depth textures (OES_depth_texture); the RGBA8 packed "
+                               "fallback is not written yet");
+    perRow_ = options.size / options.tileSize;
+    depth_ = gl::Texture::create2D(info.gles ? GL_DEPTH_COMPONENT : GL_DEPTH_COMPONENT24, options.size, options.size,
+                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+    framebuffer_ = gl::Framebuffer::create();
+    framebuffer_.attachTexture(GL_DEPTH_ATTACHMENT, depth_);
+    if (!info.gles) {
+        // No colour: GL 2.1's FBO completeness wants the draw and read buffers to be NONE (framebuffer state).
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+    }
+    framebuffer_.checkComplete("shadow atlas");
+    program_ = gl::Program::create("shadow-depth", buildShaderSource("geometry.vert"), buildShaderSource("depth_only.frag"),
+                                   geometryAttributes());
+    checkGl("shadow atlas");
+}
+
+int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& lights, const std::vector<int>& casters) {
+    if (casters.size() > size_t(capacity()))
+        throw Error("shadow atlas: " + std::to_string(casters.size()) + " shadow-casting lights, the atlas holds " +
+                    std::to_string(capacity()) + " maps (" + std::to_string(options_.size) + " / " +
+                    std::to_string(options_.tileSize) + " squared)");
+    std::vector<Slot> slots(casters.size());
+    for (size_t i = 0; i < casters.size(); ++i) {
+        const int light = casters[i];
+        if (light < 0 || size_t(light) >= lights.size())
+            throw Error("shadow atlas: caster " + std::to_string(light) + " is not one of the " + std::to_string(lights.size()) + " lights");
+        Slot& s = slots[i];
+        s.light = light;
+        s.rect = glm::ivec4(int(i) % perRow_ * options_.tileSize, int(i) / perRow_ * options_.tileSize, options_.tileSize,
+                            options_.tileSize);
+        s.camera = spotShadowCamera(lights[size_t(light)], options_.tileSize);  // throws for lights without a map
+        // NDC -> the tile's texels in [0, 1] of the atlas; depth -> window depth.
+        const float scale = float(options_.tileSize) / float(options_.size);
+        glm::mat4 toAtlas(1.0f);
+        toAtlas[0][0] = toAtlas[1][1] = 0.5f * scale;
+        toAtlas[2][2] = 0.5f;
+        toAtlas[3] = glm::vec4(float(s.rect.x) / float(options_.size) + 0.5f * scale,
+                               float(s.rect.y) / float(options_.size) + 0.5f * scale, 0.5f, 1.0f);
+        s.worldToAtlas = toAtlas * s.camera.viewProjection;
+    }
+    drawn_.resize(slots.size());
+    StateCache& cache = StateCache::current();
+    int drawnNow = 0;
+    for (size_t i = 0; i < slots.size(); ++i) {
+        const PointLight& l = lights[size_t(slots[i].light)];
+        const glm::vec4 posRange(l.position, l.radius), directionCone(l.direction, l.outerConeAngle);
+        Drawn& d = drawn_[i];
+        const bool same = d.valid && d.posRange == posRange && d.directionCone == directionCone &&
+                          !scene.changedNear(l.position, l.radius, d.sceneVersion);
+        if (same) continue;
+        PassDescription pass;
+        pass.framebuffer = framebuffer_.id();
+        pass.viewport = slots[i].rect;
+        pass.clear.depth = true;
+        pass.clear.region = slots[i].rect;
+        cache.beginPass(pass);
+        RenderState rs;
+        rs.depthTest = true;
+        rs.depthFunc = GL_LESS;
+        rs.depthWrite = true;
+        rs.colorMask = glm::bvec4(false);
+        cache.apply(rs);
+        program_.use();
+        program_.set("uViewProj", slots[i].camera.viewProjection);
+        scene.draw(program_, DrawFilter::Opaque, false, &slots[i].camera);
+        d = {posRange, directionCone, scene.version(), true};
+        ++drawnNow;
+    }
+    cache.apply(RenderState{});
+    checkGl("shadow atlas: maps");
+    slots_ = std::move(slots);
+    mapsDrawn_ += drawnNow;
+    return drawnNow;
+}
+
+std::vector<float> ShadowAtlas::readDepth() const {
+    StateCache& cache = StateCache::current();
+    PassDescription pass;
+    pass.framebuffer = framebuffer_.id();
+    pass.viewport = glm::ivec4(0, 0, options_.size, options_.size);
+    cache.beginPass(pass);
+    const ImageFloat image = lidr::readDepth(options_.size, options_.size);
+    // readDepth gives rows top to bottom (an image); the atlas's rows are kept bottom to top like GL's.
+    std::vector<float> rows(image.pixels.size());
+    for (int y = 0; y < options_.size; ++y)
+        for (int x = 0; x < options_.size; ++x)
+            rows[size_t(y) * size_t(options_.size) + size_t(x)] =
+                image.pixels[size_t(options_.size - 1 - y) * size_t(options_.size) + size_t(x)];
+    return rows;
+}
+
+}  // namespace lidr

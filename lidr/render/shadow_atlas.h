@@ -1,0 +1,80 @@
+#pragma once
+// Shadow maps of spot lights, all in one depth texture (issue 30; the paper's "shadows are harder to support").
+// Each shadow-casting spot light gets a square tile of the atlas holding the opaque scene's depth seen from the
+// light: a perspective view down the cone's axis whose field of view is the outer cone (up to
+// kMaxShadowConeAngle), from a near plane at a hundredth of the range to the range. A map is drawn again only
+// when its light changed or a scene change (GpuScene::changedNear) touched the light's range: a static scene
+// draws each map once. Closed meshes cast from the side facing the light (GpuScene::draw's inner-side culling
+// seen from the light). This is the atlas alone: the lookups that use it (the volume pass's test and the forward
+// pass's, doc/architecture.md "Shadows") come next.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lidr/gl/gl_info.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/scene/camera.h"
+#include "lidr/scene/scene.h"
+
+namespace lidr {
+
+// The widest outer cone one perspective map covers: 80 degrees, a 160-degree field of view.
+constexpr float kMaxShadowConeAngle = 1.3962634f;
+
+// The camera a spot light's map is drawn with (tile x tile pixels). Throws lidr::Error for a point light, a cone
+// wider than kMaxShadowConeAngle, a range that is not positive or a direction of length 0.
+CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize);
+
+struct ShadowAtlasOptions {
+    int size = 2048;     // texels per side of the atlas
+    int tileSize = 512;  // texels per side of one light's map: (size / tileSize)^2 maps at most
+};
+
+class ShadowAtlas {
+public:
+    // Throws lidr::Error for sizes that are not powers of two with tileSize <= size, a size over the context's
+    // GL_MAX_TEXTURE_SIZE, or a context without depth textures (ES 2.0 without OES_depth_texture: the RGBA8
+    // packed fallback is not written yet).
+    ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options = {});
+
+    int capacity() const { return perRow_ * perRow_; }
+    int tileSize() const { return options_.tileSize; }
+    int size() const { return options_.size; }
+
+    struct Slot {
+        int light = -1;            // index into the lights given to update()
+        glm::ivec4 rect{0};        // x, y, width, height in atlas texels
+        CameraMatrices camera;     // the map's view (spotShadowCamera)
+        glm::mat4 worldToAtlas{1.0f};  // world -> (atlas u, v, window depth) in [0, 1], w the perspective divisor
+    };
+    // Gives lights[casters[i]] slot i (at most capacity(); spot lights, each within kMaxShadowConeAngle) and
+    // draws the maps whose light changed or whose range a scene change touched since they were drawn. Returns
+    // how many maps it drew. Throws lidr::Error (before drawing) for more casters than slots or a caster that
+    // cannot have a map. The atlas's framebuffer is left bound.
+    int update(const GpuScene& scene, const std::vector<PointLight>& lights, const std::vector<int>& casters);
+    const std::vector<Slot>& slots() const { return slots_; }
+    long mapsDrawnTotal() const { return mapsDrawn_; }
+
+    const gl::Texture& depthTexture() const { return depth_; }
+    // Window depth of every atlas texel, rows bottom to top (tests and the debug view).
+    std::vector<float> readDepth() const;
+
+private:
+    struct Drawn {  // what a slot's map was drawn for
+        glm::vec4 posRange{0.0f}, directionCone{0.0f};
+        uint64_t sceneVersion = 0;
+        bool valid = false;
+    };
+    ShadowAtlasOptions options_;
+    int perRow_ = 0;
+    gl::Texture depth_;
+    gl::Framebuffer framebuffer_;
+    gl::Program program_;
+    std::vector<Slot> slots_;
+    std::vector<Drawn> drawn_;
+    long mapsDrawn_ = 0;
+};
+
+}  // namespace lidr

@@ -1,0 +1,172 @@
+// The shadow atlas (lidr/render/shadow_atlas.h): each spot light's map holds the depth of the nearest opaque
+// surface along its texels' rays, checked against a CPU ray cast; maps are drawn again only when their light
+// moved or a scene change touched its range; refused casters and sizes name the rule.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl_test_context.h"
+#include "lidr/render/gpu_scene.h"
+#include "lidr/render/shadow_atlas.h"
+#include "lidr/scene/primitives.h"
+
+using namespace lidr;
+using namespace lidr::test;
+
+namespace {
+// A 20 m floor at y = 0 and a 1 m box floating over its centre (1 <= y <= 2).
+Scene floorAndBox() {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    addPlane(scene, glm::vec3(0.0f), glm::vec2(20.0f), 0);
+    addBox(scene, glm::vec3(-0.5f, 1.0f, -0.5f), glm::vec3(0.5f, 2.0f, 0.5f), 0);
+    return scene;
+}
+
+PointLight spotDown(const glm::vec3& position, float outerDegrees) {
+    PointLight l;
+    l.position = position;
+    l.radius = 10.0f;
+    l.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    l.outerConeAngle = glm::radians(outerDegrees);
+    l.innerConeAngle = 0.5f * l.outerConeAngle;
+    return l;
+}
+
+// Distance along the ray to the nearest of the floor and the box; 0: no hit.
+enum class Hit { None, Floor, Box };
+Hit castRay(const glm::dvec3& origin, const glm::dvec3& direction, double& t) {
+    Hit hit = Hit::None;
+    t = 1e30;
+    if (direction.y < 0.0) {
+        const double tf = -origin.y / direction.y;
+        const glm::dvec3 p = origin + tf * direction;
+        if (std::abs(p.x) <= 10.0 && std::abs(p.z) <= 10.0) t = tf, hit = Hit::Floor;
+    }
+    const glm::dvec3 lo(-0.5, 1.0, -0.5), hi(0.5, 2.0, 0.5);
+    double t0 = 0.0, t1 = 1e30;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(direction[a]) < 1e-12) {
+            if (origin[a] < lo[a] || origin[a] > hi[a]) return hit;
+            continue;
+        }
+        double ta = (lo[a] - origin[a]) / direction[a], tb = (hi[a] - origin[a]) / direction[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    }
+    if (t0 <= t1 && t0 < t) t = t0, hit = Hit::Box;
+    return hit;
+}
+}  // namespace
+
+TEST_CASE("shadow atlas: each map holds the nearest surface's depth along its texels' rays", "[shadows]") {
+    testContext();
+    const Scene scene = floorAndBox();
+    GpuScene gpu(scene);
+    ShadowAtlasOptions options;
+    options.size = 256;
+    options.tileSize = 128;
+    ShadowAtlas atlas(testGl(), options);
+    // Two lights in two slots: straight above the box, and beside it at a slant.
+    PointLight slanted = spotDown({3.0f, 4.0f, 1.0f}, 50.0f);
+    slanted.direction = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.2f));
+    const std::vector<PointLight> lights = {spotDown({0.0f, 5.0f, 0.0f}, 40.0f), PointLight{}, slanted};
+    REQUIRE(atlas.update(gpu, lights, {0, 2}) == 2);
+    const std::vector<float> depth = atlas.readDepth();
+    for (const ShadowAtlas::Slot& slot : atlas.slots()) {
+        DYNAMIC_SECTION("light " << slot.light) {
+            const CameraMatrices& cam = slot.camera;
+            const int n = atlas.tileSize();
+            const glm::dmat4 inverse(cam.inverseViewProjection);
+            auto rayAt = [&](double x, double y) {  // through tile position (x, y) in texels
+                const glm::dvec4 far = inverse * glm::dvec4(2.0 * x / n - 1.0, 2.0 * y / n - 1.0, 1.0, 1.0);
+                return glm::normalize(glm::dvec3(far) / far.w - glm::dvec3(cam.eye));
+            };
+            long floorTexels = 0, boxTexels = 0, emptyTexels = 0, compared = 0;
+            double worst = 0.0;
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    double t = 0.0;
+                    const Hit hit = castRay(glm::dvec3(cam.eye), rayAt(x + 0.5, y + 0.5), t);
+                    // Only texels whose corners see the same surface: at an edge the rasteriser's coverage rule
+                    // decides, which the ray cast does not model.
+                    bool interior = true;
+                    for (int c = 0; c < 4 && interior; ++c) {
+                        double tc = 0.0;
+                        interior = castRay(glm::dvec3(cam.eye), rayAt(x + (c & 1), y + (c >> 1)), tc) == hit;
+                    }
+                    if (!interior) continue;
+                    const float stored = depth[size_t(slot.rect.y + y) * size_t(atlas.size()) + size_t(slot.rect.x + x)];
+                    // Along the ray t is not the view depth: beyond the far plane (the range) nothing is drawn.
+                    const double viewDepth = t * glm::dot(rayAt(x + 0.5, y + 0.5), glm::dvec3(cam.forward));
+                    if (hit == Hit::None || viewDepth > double(cam.farPlane) * 1.001) {
+                        ++emptyTexels;
+                        CHECK(stored == 1.0f);
+                        continue;
+                    }
+                    if (viewDepth > double(cam.farPlane) * 0.999) continue;  // at the far plane: clipping decides
+                    (hit == Hit::Floor ? floorTexels : boxTexels) += 1;
+                    const glm::dvec3 point = glm::dvec3(cam.eye) + t * rayAt(x + 0.5, y + 0.5);
+                    const glm::dvec4 clip = glm::dmat4(cam.viewProjection) * glm::dvec4(point, 1.0);
+                    const double expected = 0.5 * clip.z / clip.w + 0.5;
+                    // fp32 vertex transform and the 24-bit buffer: a few steps of 2^-24 (measured: up to 2.6e-7).
+                    const double error = std::abs(double(stored) - expected);
+                    worst = std::max(worst, error);
+                    ++compared;
+                }
+            INFO("floor " << floorTexels << ", box " << boxTexels << ", empty " << emptyTexels << ", worst " << worst);
+            CHECK(floorTexels > 1000);
+            CHECK(boxTexels > 100);
+            CHECK(worst < 1e-6);
+            CHECK(compared > n * n / 2);
+        }
+    }
+}
+
+TEST_CASE("shadow atlas: a map is drawn again only when its light moved or a change touched its range", "[shadows]") {
+    testContext();
+    Scene scene = floorAndBox();
+    addBox(scene, glm::vec3(40.0f, 0.0f, 40.0f), glm::vec3(41.0f, 1.0f, 41.0f), 0);  // far from both lights
+    GpuScene gpu(scene);
+    ShadowAtlasOptions options;
+    options.size = 128;
+    options.tileSize = 64;
+    ShadowAtlas atlas(testGl(), options);
+    std::vector<PointLight> lights = {spotDown({0.0f, 5.0f, 0.0f}, 40.0f), spotDown({-15.0f, 4.0f, 0.0f}, 30.0f)};
+    CHECK(atlas.update(gpu, lights, {0, 1}) == 2);
+    CHECK(atlas.update(gpu, lights, {0, 1}) == 0);  // static: nothing again
+    gpu.setTransform(2, glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 0.0f)));  // out of both ranges
+    CHECK(atlas.update(gpu, lights, {0, 1}) == 0);
+    gpu.setTransform(1, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)));  // the box, in light 0's range
+    CHECK(atlas.update(gpu, lights, {0, 1}) == 1);
+    lights[1].position.y += 0.25f;
+    CHECK(atlas.update(gpu, lights, {0, 1}) == 1);
+    CHECK(atlas.update(gpu, lights, {1, 0}) == 2);  // slots swapped: both maps hold another light now
+    // More changes than the scene keeps a record of (all far away): the maps cannot know, so they are drawn.
+    for (size_t i = 0; i <= GpuScene::kKeptChanges; ++i)
+        gpu.setTransform(2, glm::translate(glm::mat4(1.0f), glm::vec3(float(i % 7), 0.0f, 0.0f)));
+    CHECK(atlas.update(gpu, lights, {1, 0}) == 2);
+    CHECK(atlas.mapsDrawnTotal() == 8);
+}
+
+TEST_CASE("shadow atlas: refused sizes and casters name the rule", "[shadows][bad-input]") {
+    testContext();
+    ShadowAtlasOptions options;
+    options.size = 300;
+    CHECK_THROWS_WITH(ShadowAtlas(testGl(), options), Catch::Contains("must be powers of two"));
+    options.size = 128;
+    options.tileSize = 256;
+    CHECK_THROWS_WITH(ShadowAtlas(testGl(), options), Catch::Contains("tile size <= size"));
+    options.tileSize = 64;
+    ShadowAtlas atlas(testGl(), options);
+    const Scene scene = floorAndBox();
+    GpuScene gpu(scene);
+    std::vector<PointLight> lights = {PointLight{}, spotDown({0.0f, 5.0f, 0.0f}, 85.0f), spotDown({0.0f, 5.0f, 0.0f}, 40.0f)};
+    CHECK_THROWS_WITH(atlas.update(gpu, lights, {0}), Catch::Contains("only spot lights"));
+    CHECK_THROWS_WITH(atlas.update(gpu, lights, {1}), Catch::Contains("wider than one map covers"));
+    CHECK_THROWS_WITH(atlas.update(gpu, lights, {2, 2, 2, 2, 2}), Catch::Contains("the atlas holds 4 maps"));
+    CHECK_THROWS_WITH(atlas.update(gpu, lights, {7}), Catch::Contains("is not one of the 3 lights"));
+    CHECK(atlas.mapsDrawnTotal() == 0);
+}
