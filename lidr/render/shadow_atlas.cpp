@@ -19,7 +19,7 @@ bool powerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
 }  // namespace
 
 CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize) {
-    if (!spot.isSpot()) throw Error("shadow map: only spot lights have one (point lights' six faces are not written yet)");
+    if (!spot.isSpot()) throw Error("shadow map: the light is not a spot light (a point light has six maps: pointShadowCamera)");
     if (!(spot.outerConeAngle <= kMaxShadowConeAngle))
         throw Error("shadow map: the spot light's outer cone of " + std::to_string(glm::degrees(spot.outerConeAngle)) +
                     " degrees is wider than one map covers (" + std::to_string(glm::degrees(kMaxShadowConeAngle)) + ")");
@@ -40,6 +40,28 @@ CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize) {
     m.width = m.height = tileSize;
     return m;
 }
+
+CameraMatrices pointShadowCamera(const PointLight& light, int face, int tileSize) {
+    if (light.isSpot()) throw Error("shadow map: a spot light has one map, not a cube of six");
+    if (face < 0 || face > 5) throw Error("shadow map: cube face " + std::to_string(face) + " is not in 0..5");
+    if (!(light.radius > 0.0f) || !std::isfinite(light.radius)) throw Error("shadow map: the light's range must be positive");
+    static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    CameraMatrices m;
+    m.eye = light.position;
+    m.forward = axes[face];
+    m.view = glm::lookAt(m.eye, m.eye + m.forward, ups[face]);
+    // Every point of the range lies in front of one face at a view depth of at most the range.
+    m.nearPlane = light.radius * 0.01f;
+    m.farPlane = light.radius;
+    m.projection = glm::perspective(glm::radians(90.0f), 1.0f, m.nearPlane, m.farPlane);
+    m.viewProjection = m.projection * m.view;
+    m.inverseViewProjection = glm::inverse(m.viewProjection);
+    m.width = m.height = tileSize;
+    return m;
+}
+
+int shadowTiles(const PointLight& light) { return light.isSpot() ? 1 : 6; }
 
 ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) : options_(options) {
     if (!powerOfTwo(options.size) || !powerOfTwo(options.tileSize) || options.tileSize > options.size || options.tileSize < 16)
@@ -68,20 +90,27 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
 }
 
 int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& lights, const std::vector<int>& casters) {
-    if (casters.size() > size_t(capacity()))
-        throw Error("shadow atlas: " + std::to_string(casters.size()) + " shadow-casting lights, the atlas holds " +
-                    std::to_string(capacity()) + " maps (" + std::to_string(options_.size) + " / " +
-                    std::to_string(options_.tileSize) + " squared)");
-    std::vector<Slot> slots(casters.size());
-    for (size_t i = 0; i < casters.size(); ++i) {
-        const int light = casters[i];
+    std::vector<Slot> slots;
+    for (const int light : casters) {
         if (light < 0 || size_t(light) >= lights.size())
             throw Error("shadow atlas: caster " + std::to_string(light) + " is not one of the " + std::to_string(lights.size()) + " lights");
+        for (int face = 0; face < shadowTiles(lights[size_t(light)]); ++face) {
+            Slot s;
+            s.light = light;
+            s.face = face;
+            const PointLight& l = lights[size_t(light)];
+            s.camera = l.isSpot() ? spotShadowCamera(l, options_.tileSize) : pointShadowCamera(l, face, options_.tileSize);
+            slots.push_back(s);  // throws above for lights without a map
+        }
+    }
+    if (slots.size() > size_t(capacity()))
+        throw Error("shadow atlas: the shadow-casting lights need " + std::to_string(slots.size()) + " maps (a spot light 1, a point light 6), the atlas holds " +
+                    std::to_string(capacity()) + " (" + std::to_string(options_.size) + " / " +
+                    std::to_string(options_.tileSize) + " squared)");
+    for (size_t i = 0; i < slots.size(); ++i) {
         Slot& s = slots[i];
-        s.light = light;
         s.rect = glm::ivec4(int(i) % perRow_ * options_.tileSize, int(i) / perRow_ * options_.tileSize, options_.tileSize,
                             options_.tileSize);
-        s.camera = spotShadowCamera(lights[size_t(light)], options_.tileSize);  // throws for lights without a map
         // NDC -> the tile's texels in [0, 1] of the atlas; depth -> window depth.
         const float scale = float(options_.tileSize) / float(options_.size);
         glm::mat4 toAtlas(1.0f);
@@ -96,7 +125,8 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
     int drawnNow = 0;
     for (size_t i = 0; i < slots.size(); ++i) {
         const PointLight& l = lights[size_t(slots[i].light)];
-        const glm::vec4 posRange(l.position, l.radius), directionCone(l.direction, l.outerConeAngle);
+        const glm::vec4 posRange(l.position, l.radius);
+        const glm::vec4 directionCone = l.isSpot() ? glm::vec4(l.direction, l.outerConeAngle) : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f - float(slots[i].face));  // outer > 0 for spots
         Drawn& d = drawn_[i];
         const bool same = d.valid && d.posRange == posRange && d.directionCone == directionCone &&
                           !scene.changedNear(l.position, l.radius, d.sceneVersion);

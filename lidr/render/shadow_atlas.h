@@ -1,8 +1,9 @@
 #pragma once
-// Shadow maps of spot lights, all in one depth texture (issue 30; the paper's "shadows are harder to support").
-// Each shadow-casting spot light gets a square tile of the atlas holding the opaque scene's depth seen from the
-// light: a perspective view down the cone's axis whose field of view is the outer cone (up to
-// kMaxShadowConeAngle), from a near plane at a hundredth of the range to the range. A map is drawn again only
+// Shadow maps of spot and point lights, all in one depth texture (issue 30; the paper's "shadows are harder to
+// support"). Each shadow-casting spot light gets a square tile of the atlas holding the opaque scene's depth seen
+// from the light: a perspective view down the cone's axis whose field of view is the outer cone (up to
+// kMaxShadowConeAngle), from a near plane at a hundredth of the range to the range; a point light gets six tiles,
+// the faces of a cube around it (90-degree views along +x, -x, +y, -y, +z, -z). A map is drawn again only
 // when its light changed or a scene change (GpuScene::changedNear) touched the light's range: a static scene
 // draws each map once. Closed meshes cast from the side facing the light (GpuScene::draw's inner-side culling
 // seen from the light). This is the atlas alone: the lookups that use it (the volume pass's test and the forward
@@ -26,6 +27,11 @@ constexpr float kMaxShadowConeAngle = 1.3962634f;
 // The camera a spot light's map is drawn with (tile x tile pixels). Throws lidr::Error for a point light, a cone
 // wider than kMaxShadowConeAngle, a range that is not positive or a direction of length 0.
 CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize);
+// Face f (0..5: +x, -x, +y, -y, +z, -z) of a point light's cube of maps. Throws lidr::Error for a spot light, a
+// face outside 0..5 or a range that is not positive.
+CameraMatrices pointShadowCamera(const PointLight& light, int face, int tileSize);
+// Tiles a light's maps take: 1 for a spot light, 6 for a point light.
+int shadowTiles(const PointLight& light);
 
 struct ShadowAtlasOptions {
     int size = 2048;     // texels per side of the atlas
@@ -39,20 +45,21 @@ public:
     // packed fallback is not written yet).
     ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options = {});
 
-    int capacity() const { return perRow_ * perRow_; }
+    int capacity() const { return perRow_ * perRow_; }  // tiles
     int tileSize() const { return options_.tileSize; }
     int size() const { return options_.size; }
 
     struct Slot {
         int light = -1;            // index into the lights given to update()
+        int face = 0;              // a point light's cube face (0..5: +x, -x, +y, -y, +z, -z); 0 for a spot
         glm::ivec4 rect{0};        // x, y, width, height in atlas texels
         CameraMatrices camera;     // the map's view (spotShadowCamera)
         glm::mat4 worldToAtlas{1.0f};  // world -> (atlas u, v, window depth) in [0, 1], w the perspective divisor
     };
-    // Gives lights[casters[i]] slot i (at most capacity(); spot lights, each within kMaxShadowConeAngle) and
-    // draws the maps whose light changed or whose range a scene change touched since they were drawn. Returns
-    // how many maps it drew. Throws lidr::Error (before drawing) for more casters than slots or a caster that
-    // cannot have a map. The atlas's framebuffer is left bound.
+    // Gives lights[casters[i]] the next shadowTiles() slots in order (spot lights within kMaxShadowConeAngle, point
+    // lights) and draws the maps whose light changed or whose range a scene change touched since they were
+    // drawn. Returns how many maps (tiles) it drew. Throws lidr::Error (before drawing) for more tiles than the
+    // atlas holds or a caster that cannot have a map. The atlas's framebuffer is left bound.
     int update(const GpuScene& scene, const std::vector<PointLight>& lights, const std::vector<int>& casters);
     const std::vector<Slot>& slots() const { return slots_; }
     long mapsDrawnTotal() const { return mapsDrawn_; }
