@@ -363,6 +363,41 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
     }
 }
 
+TEST_CASE("a frame after the caller deleted its current program: no GL error, no program current after",
+          "[embed]") {
+    // GL keeps a program deleted while current until another replaces it; render() replaces it, so giving it
+    // back would be GL_INVALID_VALUE (found when a shadow atlas was destroyed with its program current).
+    testContext();
+    const Scene scene = litFloorScene();
+    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const std::string mode = GENERATE(as<std::string>(), "lidr", "forward-multipass", "forward-brute");
+    DYNAMIC_SECTION(mode) {
+        REQUIRE(glGetError() == GL_NO_ERROR);
+        RenderModeOptions options;
+        options.mode = mode;
+        std::unique_ptr<Renderer> renderer;
+        {
+            const SavedGlState keep;
+            renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
+        }
+        {
+            const gl::Program own = gl::Program::create(
+                "caller", "#version 120\nattribute vec4 p;\nvoid main() { gl_Position = p; }\n",
+                "#version 120\nvoid main() { gl_FragColor = vec4(1.0); }\n", {{"p", 0}});
+            own.use();
+        }  // deleted while current
+        for (int frame = 0; frame < 2; ++frame) {
+            INFO("frame " << frame);
+            renderer->render(scene.camera, lights, shading);
+            CHECK(glGetError() == GL_NO_ERROR);
+            GLint current = -1;
+            glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+            CHECK(current == 0);
+        }
+    }
+}
+
 TEST_CASE("FramePresenter copies the frame into the caller's framebuffer pixel for pixel", "[embed]") {
     testContext();
     const Scene scene = litFloorScene();

@@ -206,7 +206,9 @@ void SavedGlState::restore() const {
         glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer_);
     }
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
-    glUseProgram(program_);
+    // A program the caller deleted while it was current stayed current (GL keeps it until it is replaced); lidr
+    // replaced it, so it is gone now and glUseProgram would fail (GL_INVALID_VALUE): none is current instead.
+    glUseProgram(program_ != 0 && glIsProgram(GLuint(program_)) ? GLuint(program_) : 0);
     for (int i = 0; i < units_; ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         glBindTexture(GL_TEXTURE_2D, texture2D_[i]);
