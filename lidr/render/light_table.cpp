@@ -33,7 +33,8 @@ FixedColor fixedInverseSquareColor(const glm::vec3& color, bool spot) {
     exponent = std::clamp(exponent, -63, 63);
     FixedColor out;
     for (int c = 0; c < 3; ++c)
-        out.bytes[c] = static_cast<uint8_t>(std::lround(std::clamp(std::ldexp(color[c], -exponent), 0.0f, 1.0f) * 255.0f));
+        out.bytes[c] =
+            static_cast<uint8_t>(std::lround(std::clamp(std::ldexp(color[c], -exponent), 0.0f, 1.0f) * 255.0f));
     out.bytes[3] = static_cast<uint8_t>(1 + (spot ? 127 : 0) + exponent + 63);
     out.decoded = glm::vec3(out.bytes[0], out.bytes[1], out.bytes[2]) / 255.0f * std::ldexp(1.0f, exponent);
     return out;
@@ -143,7 +144,8 @@ void LightTable::update(const std::vector<PointLight>& lights) {
                 for (int c = 0; c < 4; ++c) col[t + size_t(c)] = fixed.bytes[c];
             } else {
                 for (int c = 0; c < 3; ++c)
-                    col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
+                    col[t + c] =
+                        static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
                 col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
             }
             if (!l.isSpot()) continue;
