@@ -1,8 +1,7 @@
 // The one shading function of lidr, in linear light: the glTF 2.0 metallic-roughness BRDF (the specification's
 // appendix B: Lambert diffuse, GGX distribution, height-correlated Smith-GGX visibility, Schlick Fresnel with F0
-// mixed by metallic) under point and spot lights (lidr's falloff or glTF's inverse square: lidrShadeLight). LIDR,
-// tiled, forward and the brute-force reference all call it; each ends with lidrOutput (output_transform.glsl).
-// CPU model: lidr/eval/brdf.h.
+// mixed by metallic) under point and spot lights, lidr's falloff or glTF's (lidrShadeLight). LIDR, tiled, forward
+// and the brute-force reference all call it; each ends with lidrOutput (output_transform.glsl); CPU: eval/brdf.h.
 #include "output_transform.glsl"
 #define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
