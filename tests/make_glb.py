@@ -5,9 +5,11 @@ tessellated sphere to reach about N triangles (the page's large-model check). --
 texture coordinates and glTF textures, embedded as PNG: the floor a base colour checker, a normal texture of
 grooves, metallic-roughness and occlusion (repeated by KHR_texture_transform), the sphere emissive stripes
 with emissiveFactor 1 and a metallic-roughness texture, one box an alpha MASK cut-out, double-sided.
+--punctual adds KHR_lights_punctual lights in the specification's units: a warm 30 cd point light with range 5,
+a blue 8 cd point light without range and an 80 cd spot light shining straight down.
 Python's standard library only.
 
-    python3 tests/make_glb.py OUT.glb [--triangles N] [--textured]
+    python3 tests/make_glb.py OUT.glb [--triangles N] [--textured] [--punctual]
 """
 import argparse
 import json
@@ -99,6 +101,7 @@ def main():
     ap.add_argument("--triangles", type=int, default=0,
                     help="add a tessellated sphere so the model has about this many triangles")
     ap.add_argument("--textured", action="store_true", help="texture coordinates and glTF textures (see above)")
+    ap.add_argument("--punctual", action="store_true", help="KHR_lights_punctual point and spot lights (see above)")
     args = ap.parse_args()
 
     parts = [
@@ -192,6 +195,19 @@ def main():
     if images:
         doc.update({"images": images, "textures": [{"source": i} for i in range(len(images))],
                     "extensionsUsed": ["KHR_texture_transform"]})
+    if args.punctual:
+        doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+            {"name": "warm", "type": "point", "color": [1.0, 0.85, 0.7], "intensity": 30.0, "range": 5.0},
+            {"name": "blue, no range", "type": "point", "color": [0.5, 0.7, 1.0], "intensity": 8.0},
+            {"name": "spot", "type": "spot", "intensity": 80.0,
+             "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.5}}]}}
+        down = [-math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)]  # -90 degrees about x: the spot's -z points down
+        for light, node in enumerate([{"translation": [-1.0, 2.2, 1.2]}, {"translation": [2.2, 1.2, 0.5]},
+                                      {"translation": [1.5, 3.5, -1.2], "rotation": down}]):
+            node["extensions"] = {"KHR_lights_punctual": {"light": light}}
+            nodes.append(node)
+        doc["scenes"][0]["nodes"] = list(range(len(nodes)))
+        doc["extensionsUsed"] = doc.get("extensionsUsed", []) + ["KHR_lights_punctual"]
     text = json.dumps(doc, separators=(",", ":")).encode()
     text += b" " * (-len(text) % 4)
     total = 12 + 8 + len(text) + 8 + len(binary)

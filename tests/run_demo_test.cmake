@@ -209,6 +209,35 @@ string(JSON dropped GET "${summary}" lights dropped_light_pixels)
 if(NOT lights EQUAL 1029 OR whole_psnr LESS 999 OR NOT dropped EQUAL 0)
   message(FATAL_ERROR "lidr-demo --lights 1024: ${lights} lights, whole-image PSNR ${whole_psnr}, dropped ${dropped}")
 endif()
+# Issue 26's "done when": a generated textured, normal-mapped, emissive glTF (tests/make_glb.py --textured: every
+# material texture, a MASK cut-out) without lights is drawn with every texture (0 warnings) under the default rig;
+# with --lights 1024 LIDR's automatic configuration drops nothing and equals the reference; and with its own
+# KHR_lights_punctual lights (candela, inverse square, one without range) the same.
+if(NOT PYTHON)
+  message(FATAL_ERROR "no Python 3 interpreter to write the textured glTF (tests/make_glb.py)")
+endif()
+execute_process(COMMAND ${PYTHON} ${SOURCE_DIR}/tests/make_glb.py ${OUT}/textured.glb --textured RESULT_VARIABLE r)
+execute_process(COMMAND ${PYTHON} ${SOURCE_DIR}/tests/make_glb.py ${OUT}/punctual.glb --textured --punctual
+                RESULT_VARIABLE r2)
+if(NOT r EQUAL 0 OR NOT r2 EQUAL 0)
+  message(FATAL_ERROR "tests/make_glb.py failed (${r}, ${r2})")
+endif()
+foreach(run "textured|1|--scene;${OUT}/textured.glb" "textured-1024|1024|--scene;${OUT}/textured.glb;--lights;1024"
+            "punctual|3|--scene;${OUT}/punctual.glb")
+  string(REPLACE "|" ";" fields "${run}")
+  list(POP_FRONT fields dir want_lights)
+  run_demo(${dir} "${dir}" ${fields} --width 240 --height 180 --frames 1)
+  string(JSON lights GET "${summary}" scene lights)
+  string(JSON warnings LENGTH "${summary}" scene warnings)
+  string(JSON whole_psnr GET "${summary}" error whole_image psnr_db)
+  string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+  string(JSON auto_on GET "${summary}" auto budget_automatic)
+  if(NOT lights EQUAL want_lights OR NOT warnings EQUAL 0 OR whole_psnr LESS 999 OR NOT dropped EQUAL 0
+     OR NOT auto_on STREQUAL "ON")
+    message(FATAL_ERROR "lidr-demo ${fields}: ${lights} lights (${want_lights} expected), ${warnings} warnings, "
+                        "whole-image PSNR ${whole_psnr}, dropped ${dropped}, automatic budget ${auto_on}")
+  endif()
+endforeach()
 # A model without lights gets the default rig (one key light at the eye) and is lit, identical to the reference.
 run_demo(rig "default light rig" --scene ${SOURCE_DIR}/media/models/crate.obj --width 160 --height 120 --frames 1)
 string(JSON lights GET "${summary}" scene lights)

@@ -10,7 +10,9 @@
 #include "gl_test_context.h"
 #include "lidr/eval/brdf.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/light_table.h"
 #include "lidr/render/output_transform.h"
+#include "lidr/scene/io/gltf_importer.h"
 #include "lidr/scene/primitives.h"
 #include "render_helpers.h"
 
@@ -114,10 +116,24 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
     // With directional lights too (not indexed: each mode adds them in its forward pass): a low warm sun, a
     // grazing one and one from below the tiles (n.l < 0: nothing). With spot lights: a narrow cone from above
     // whose smooth edge crosses the tiles, and a wide oblique one.
-    const int variant = GENERATE(0, 1, 2);
-    const bool directional = variant == 1, spots = variant == 2;
-    DYNAMIC_SECTION(mode << (directional ? " + directional lights" : spots ? " + spot lights" : "")) {
+    // Inverse-square lights (glTF's falloff with its range window): one low over the sweep whose range ends
+    // across it, one without range (gltfLightRadiusWithoutRange's cut) and a spot; float and fixed-point table.
+    const int variant = GENERATE(0, 1, 2, 3, 4);
+    const bool directional = variant == 1, spots = variant == 2, inverseSquare = variant >= 3, fixedTable = variant == 4;
+    DYNAMIC_SECTION(mode << (directional ? " + directional lights" : spots ? " + spot lights" : "")
+                         << (inverseSquare ? " inverse-square lights" : "") << (fixedTable ? ", fixed-point table" : "")) {
         Scene scene = sweepScene();
+        if (inverseSquare) {
+            PointLight low = light({-1.2f, 0.8f, 0.6f}, 4.0f, {2.0f, 1.9f, 1.7f});
+            PointLight unbounded = light({2.0f, 3.0f, -1.5f}, 1.0f, {6.0f, 7.0f, 9.0f});
+            unbounded.radius = gltfLightRadiusWithoutRange(9.0f);
+            PointLight cone = light({1.5f, 2.0f, 2.5f}, 5.0f, {40.0f, 20.0f, 5.0f});
+            cone.direction = {-0.3f, -1.0f, -0.2f};
+            cone.innerConeAngle = 0.15f;
+            cone.outerConeAngle = 0.35f;
+            scene.lights = {low, unbounded, cone};
+            for (PointLight& l : scene.lights) l.falloff = LightFalloff::InverseSquare;
+        }
         if (spots) {
             scene.lights.pop_back();  // four lights in all: ES 2.0's fixed LIDR budget (4) holds every pixel
             PointLight narrow = light({0.5f, 5.0f, 0.5f}, 12.0f, {2.0f, 1.8f, 1.5f});
@@ -132,7 +148,12 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
         }
         RenderModeOptions o;
         o.mode = mode;
+        o.forceFixedLightTable = fixedTable;
         std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
+        // The model takes the colours the fixed-point table holds (their bound: the [cpu] fixed colour test).
+        std::vector<PointLight> modelLights = scene.lights;
+        if (fixedTable)
+            for (PointLight& l : modelLights) l.color = fixedInverseSquareColor(l.color, l.isSpot()).decoded;
         ShadingParameters shading = sceneShading(scene);
         if (directional)
             shading.directionalLights = {{{-0.4f, -0.6f, 0.5f}, {0.8f, 0.6f, 0.4f}},
@@ -142,7 +163,7 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
         const ImageRGBA8 image = r->targets().readColor();
         const ImageFloat depth = r->targets().readDepth();
         const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
-        long compared = 0, withinOne = 0, lit = 0;
+        long compared = 0, withinOne = 0, lit = 0, nearRangeEnd = 0;
         int worst = 0;
         for (int y = 0; y < scene.height; ++y)
             for (int x = 0; x < scene.width; ++x) {
@@ -158,13 +179,17 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
                 const Material& m = scene.materials[size_t(mi * 4 + ri)];
                 const BrdfSurface s = brdfSurface(m, glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
                 glm::dvec3 linear = shadeAmbient(s, glm::dvec3(scene.ambient));
-                for (const PointLight& l : scene.lights) linear += shadePointLight(s, l);
+                for (const PointLight& l : modelLights) linear += shadePointLight(s, l);
+                const PointLight& first = modelLights[0];
+                const double toFirst = glm::distance(glm::dvec3(p), glm::dvec3(first.position));
+                const bool nearEnd = toFirst > 0.8 * first.radius && toFirst < first.radius;
                 for (const DirectionalLight& l : shading.directionalLights) linear += shadeDirectionalLight(s, l);
                 const glm::dvec3 expected = 255.0 * applyOutputTransform(linear, shading.output);
                 const uint8_t* got = image.at(x, y);
                 int e = 0;
                 for (int k = 0; k < 3; ++k) e = std::max(e, int(std::lround(std::abs(double(got[k]) - expected[k]))));
                 ++compared;
+                nearRangeEnd += nearEnd;
                 if (e <= 1) ++withinOne;
                 if (expected.r > 40.0) ++lit;
                 worst = std::max(worst, e);
@@ -172,6 +197,10 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
         INFO(mode << ": " << compared << " pixels compared, " << withinOne << " within 1 step, worst " << worst);
         REQUIRE(compared > long(scene.width) * scene.height / 8);
         REQUIRE(lit > compared / 4);  // the lights really light the sweep
+        if (inverseSquare) {
+            INFO(nearRangeEnd << " compared pixels in the last fifth of the low light's range");
+            REQUIRE(nearRangeEnd > compared / 20);  // the window's end crosses the sweep, and is compared too
+        }
         // fp32 against double, and the pixel centre's interpolated position against the depth's: one step almost
         // everywhere, a few where a highlight's slope is steep.
         CHECK(withinOne >= compared * 995 / 1000);

@@ -143,15 +143,20 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; spot and dir
     CHECK_FALSE(scene.lights[0].isSpot());
     requireNear(scene.lights[0].position, {1, 2, 3});
     CHECK(scene.lights[0].radius == Approx(6.0f));  // range 3 x the node's largest scale, 2
-    requireNear(scene.lights[0].color, {2.0f, 1.0f, 0.5f});
+    // Candela x colour / pi (lidr's colour is what a white Lambert surface shows; it reflects 1/pi of the lux).
+    const float pi = 3.14159265f;
+    requireNear(scene.lights[0].color, glm::vec3(2.0f, 1.0f, 0.5f) / pi);
+    for (const lidr::PointLight& l : scene.lights) CHECK(l.falloff == lidr::LightFalloff::InverseSquare);
     requireNear(scene.lights[1].position, {0, 5, 0});
-    CHECK(scene.lights[1].radius == Approx(32.0f));  // no range: sqrt(256 x 4)
-    CHECK(lidr::gltfLightRadiusWithoutRange(1.0f) == Approx(16.0f));
+    // No range: r = sqrt(C / threshold), threshold = half an 8-bit step of the sRGB image at black
+    const float threshold = 0.5f / 255.0f / 12.92f;
+    CHECK(scene.lights[1].radius == Approx(std::sqrt(4.0f / pi / threshold)));  // 91.6 m for 4 cd
+    CHECK(lidr::gltfLightRadiusWithoutRange(1.0f) == Approx(81.17f).epsilon(1e-3));
     CHECK(lidr::gltfLightRadiusWithoutRange(1e12f) == Approx(1000.0f));
     CHECK(lidr::gltfLightRadiusWithoutRange(0.0f) == Approx(0.01f));
     REQUIRE(scene.directionalLights.size() == 2);
     requireNear(scene.directionalLights[0].direction, {0, -1, 0});
-    requireNear(scene.directionalLights[0].color, {3.0f, 2.4f, 1.5f});
+    requireNear(scene.directionalLights[0].color, glm::vec3(3.0f, 2.4f, 1.5f) / pi);  // lux x colour / pi
     requireNear(scene.directionalLights[1].direction, {0, 0, -1});
     CHECK(scene.warnings.empty());
 }
@@ -389,8 +394,11 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     // (the roughness the OBJ's Blinn-Phong "Ns 1" maps to: alpha^2 = 2 / (1 + 2), doc/colour.md)
     file.mesh({{"attributes", {{"POSITION", p}}}, {"indices", i}, {"material", 0}});
     file.node({{"mesh", 0}}, true);
-    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"range", 5.0}},
-                                                              {{"type", "point"}, {"color", {0.2, 0.4, 1}}, {"range", 3.0}}};
+    // pi candela: a scene file's inverse-square light of colour 1 (doc/scene-format.md's conversion)
+    const double candela = 3.14159265358979;
+    file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "point"}, {"color", {1, 0.9, 0.8}}, {"intensity", candela}, {"range", 5.0}},
+        {{"type", "point"}, {"color", {0.2, 0.4, 1}}, {"intensity", candela}, {"range", 3.0}}};
     file.node({{"translation", {0, 2, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}, true);
     file.node({{"translation", {2, 0.5, -1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}, true);
     file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", glm::radians(60.0)}, {"znear", 0.1}, {"zfar", 50}}}}};
@@ -407,8 +415,8 @@ TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file wi
     lidr::Scene fromJson = lidr::loadScene(dir.write("tent.json", R"({
         "camera": {"position": [0, 4, 8], "target": [0, 0, 0], "fov": 60, "near": 0.1, "far": 50},
         "models": [{"file": "tent.obj"}],
-        "lights": [{"position": [0, 2, 1], "radius": 5, "color": [1, 0.9, 0.8]},
-                   {"position": [2, 0.5, -1], "radius": 3, "color": [0.2, 0.4, 1]}]})"));
+        "lights": [{"position": [0, 2, 1], "radius": 5, "color": [1, 0.9, 0.8], "falloff": "inverse_square"},
+                   {"position": [2, 0.5, -1], "radius": 3, "color": [0.2, 0.4, 1], "falloff": "inverse_square"}]})"));
     for (lidr::Scene* scene : {&fromGltf, &fromJson}) {
         scene->width = lidr::test::testWidth();
         scene->height = lidr::test::testHeight();

@@ -3,8 +3,9 @@
 // with them present; they are checked, read from scene files and (test_gltf_import.cpp) from glTF. Spot lights
 // are indexed like point lights (by their bounding sphere today) and carry their cone in the light table, float
 // and fixed point: every mode equals the reference with point, spot and directional lights, stress cones
-// included. The BRDF model test (test_brdf.cpp) checks both types' pixels against the CPU model in every mode.
+// included, and with both falloffs in one scene (lidr's and glTF's inverse square). The BRDF model test (test_brdf.cpp) checks both types' pixels against the CPU model in every mode.
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -16,6 +17,8 @@
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/light_table.h"
+#include "lidr/scene/io/gltf_importer.h"
 #include "lidr/scene/io/scene_file.h"
 #include "render_helpers.h"
 
@@ -193,14 +196,21 @@ TEST_CASE("every mode equals the reference with directional lights present, and 
         int pointLights;
     };
     const Case c = GENERATE(Case{"40 point lights + 2 directional", 40}, Case{"2 directional lights alone", 0},
-                            Case{"30 point + 24 spot + 6 stress spot lights + 2 directional", 30});
+                            Case{"30 point + 24 spot + 6 stress spot lights + 2 directional", 30},
+                            Case{"30 point + 24 spot + 6 stress spot lights + 2 directional, every other one inverse-square", 30});
     std::vector<std::string> modes = {"lidr", "tiled", "forward-multipass", "forward-brute"};
     if (testGl().gles) modes.erase(modes.begin() + 1);  // tiled's default depth bounds are refused on ES 2.0
     const std::string mode = GENERATE_COPY(from_range(modes));
     const bool spots = std::string(c.name).find("spot") != std::string::npos;
     const bool fixedTable = GENERATE(false, true);  // the RGBA8 fixed-point light table
     DYNAMIC_SECTION(c.name << ", " << mode << (fixedTable ? ", fixed-point light table" : "")) {
-        const Scene scene = spots ? spotlitFloor(c.pointLights, 24, fixedTable) : sunlitFloor(c.pointLights);
+        Scene scene = spots ? spotlitFloor(c.pointLights, 24, fixedTable) : sunlitFloor(c.pointLights);
+        if (std::string(c.name).find("inverse-square") != std::string::npos)
+            for (size_t i = 0; i < scene.lights.size(); i += 2) {
+                // glTF's falloff, as bright as lidr's at a third of the range (1/d^2 there is 9 / r^2)
+                scene.lights[i].falloff = LightFalloff::InverseSquare;
+                scene.lights[i].color *= scene.lights[i].radius * scene.lights[i].radius / 9.0f;
+            }
         // Linear output: multi-pass's bound is in linear 8-bit steps (test_forward_baselines.cpp).
         const ShadingParameters shading = sceneShading(scene, OutputTransform::linear());
         const ImageRGBA8 reference = referenceImage(scene, shading, fixedTable);
@@ -351,4 +361,67 @@ TEST_CASE("spot lights: the CPU truth holds a spot where its cone reaches the su
     // The cones of lamps aimed down light a fraction of their spheres' surfaces (the measured figure is in
     // doc/architecture.md, "Light types").
     CHECK(double(spherePairs - conePairs) > 0.3 * double(spotSpherePairs));
+}
+
+TEST_CASE("inverse-square lights: KHR_lights_punctual's falloff and window, scene files' \"falloff\", fixed-point colours",
+          "[lights][cpu][bad-input]") {
+    PointLight l = light({0.0f, 0.0f, 0.0f}, 4.0f, {2.0f, 1.0f, 0.5f});
+    l.falloff = LightFalloff::InverseSquare;
+    // The specification's recommended window: saturate(1 - (d / r)^4) / d^2; 1 cm floor; exactly 0 from r on.
+    for (const double d : {0.5, 1.0, 2.0, 3.0, 3.9, 3.999})
+        CHECK(distanceAttenuation(l, d) == Approx((1.0 - std::pow(d / 4.0, 4.0)) / (d * d)).epsilon(1e-12));
+    CHECK(distanceAttenuation(l, 0.0) == Approx(1e4));
+    CHECK(distanceAttenuation(l, 4.0) == 0.0);
+    CHECK(distanceAttenuation(l, 7.0) == 0.0);
+    l.falloff = LightFalloff::Smooth;
+    CHECK(distanceAttenuation(l, 2.0) == Approx(0.75));
+    CHECK(distanceAttenuation(l, 4.0) == 0.0);
+
+    // gltfLightRadiusWithoutRange's cut: the windowed light differs from the infinite one by less than the
+    // threshold at every distance (checked densely), and the infinite one gives less than it beyond the cut.
+    for (const float brightest : {0.01f, 1.0f, 40.0f}) {
+        PointLight cut = l;
+        cut.falloff = LightFalloff::InverseSquare;
+        cut.radius = gltfLightRadiusWithoutRange(brightest);
+        double worst = 0.0;
+        for (int k = 1; k <= 4000; ++k) {
+            const double d = cut.radius * 1.5 * k / 4000.0;
+            const double infinite = brightest / std::max(d * d, 1e-4);
+            worst = std::max(worst, infinite - brightest * distanceAttenuation(cut, d));
+        }
+        INFO("brightest channel " << brightest << ", radius " << cut.radius << ", worst difference " << worst);
+        CHECK(worst <= gltfLightCutThreshold * 1.0001);
+        CHECK(worst >= gltfLightCutThreshold * 0.99);  // the cut is where it stops being visible, not far beyond
+    }
+
+    // Scene files: "falloff" is smooth (the default) or inverse_square; anything else names the field.
+    const Scene scene = parseSceneJson(R"({"lights": [
+        {"position": [0, 4, 0], "radius": 6, "falloff": "inverse_square"},
+        {"position": [1, 4, 0], "radius": 6, "falloff": "smooth"}, {"position": [2, 4, 0], "radius": 6}]})", ".", "f.json");
+    REQUIRE(scene.lights.size() == 3);
+    CHECK(scene.lights[0].falloff == LightFalloff::InverseSquare);
+    CHECK(scene.lights[1].falloff == LightFalloff::Smooth);
+    CHECK(scene.lights[2].falloff == LightFalloff::Smooth);
+    try {
+        parseSceneJson(R"({"lights": [{"position": [0, 4, 0], "radius": 6, "falloff": "linear"}]})", ".", "bad.json");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK_THAT(e.what(), Contains("bad.json") && Contains("lights[0].falloff") && Contains("linear"));
+    }
+
+    // The fixed-point table's colour for them: each channel within brightest / 255 of the real one, over 80
+    // octaves of intensity (one shared scale would leave a 1 cd light beside a 1e5 cd one nothing but 0).
+    for (const float brightest : {1e-6f, 0.3183f, 1.0f, 3.0f, 1000.0f, 1e5f, 3e7f})
+        for (const glm::vec3 hue : {glm::vec3(1.0f), glm::vec3(1.0f, 0.37f, 0.02f), glm::vec3(0.0f, 0.5f, 1.0f)})
+            for (const bool spotLight : {false, true}) {
+                const glm::vec3 color = hue * brightest;
+                const FixedColor fixed = fixedInverseSquareColor(color, spotLight);
+                INFO("colour " << color.r << " " << color.g << " " << color.b << ", decoded " << fixed.decoded.r << " "
+                               << fixed.decoded.g << " " << fixed.decoded.b);
+                for (int c = 0; c < 3; ++c) CHECK(std::abs(fixed.decoded[c] - color[c]) <= brightest / 255.0f * 1.0001f);
+                // alpha 1..254 (0 and 255 are lidr-falloff spot and point lights), the spot flag in code >= 127
+                CHECK(fixed.bytes[3] >= 1);
+                CHECK(fixed.bytes[3] <= 254);
+                CHECK((fixed.bytes[3] - 1 >= 127) == spotLight);
+            }
 }

@@ -86,6 +86,8 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     window_ = static_cast<GLFWwindow*>(context_->nativeWindow());
     gles_ = context_->info().gles;
     std::cout << "GL: " << context_->info().summary() << std::endl;
+    addTextureUnitWarnings();
+    for (const std::string& w : fileScene_.warnings) std::cout << "lidr-viewer: warning: " << w << std::endl;
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, keyCallback);  // before ImGui's, which chains to it
     glfwSetDropCallback(window_, dropCallback);

@@ -103,6 +103,9 @@ private:
     void reloadScene();
     // scene_ = fileScene_ plus `count` lights scattered over it (lidr::scatterLights); throws lidr::Error.
     void scatterOver(int count);
+    // Adds to fileScene_'s warnings the material textures this context has no unit for (ES 2.0 guarantees 8;
+    // lidr-demo prints the same lines), so the terminal and the file panel show them.
+    void addTextureUnitWarnings();
     void uiFile();
     // Script: runs actions until one waits; throws ScriptFailure on a failed check.
     void stepScript(int fbw, int fbh);

@@ -14,6 +14,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include "lidr/render/material_variants.h"
 #include "lidr/scene/light_scatter.h"
 #include "viewer_internal.h"
 
@@ -56,6 +57,11 @@ void Viewer::scatterOver(int count) {
     scatteredLights_ = count;
 }
 
+void Viewer::addTextureUnitWarnings() {
+    for (const std::string& w : textureUnitWarnings(fileScene_, context_->info().maxTextureUnits))
+        fileScene_.warnings.push_back(w);
+}
+
 bool Viewer::openScene(const std::string& path, const std::string& what, bool keepCamera) {
     demo::SceneChoice choice = sceneChoice_;
     choice.sceneFile = path;
@@ -77,6 +83,7 @@ bool Viewer::openScene(const std::string& path, const std::string& what, bool ke
     const ShadingParameters oldShading = shading_;
 
     fileScene_ = std::move(loaded);
+    addTextureUnitWarnings();
     scenePath_ = path;
     // The slider's scattered lights stay, within what the new scene can hold (none over a scene without triangles).
     const int room = int(maxSceneLights) - int(fileScene_.lights.size());

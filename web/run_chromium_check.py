@@ -231,7 +231,8 @@ def run_model_check(args, url):
     os.makedirs(out, exist_ok=True)
     os.makedirs(models, exist_ok=True)
     make_glb = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "make_glb.py")
-    subprocess.run([sys.executable, make_glb, os.path.join(models, "check.glb")], check=True)
+    # with its own KHR_lights_punctual lights (candela, inverse square, one without range) under the scattered ones
+    subprocess.run([sys.executable, make_glb, os.path.join(models, "check.glb"), "--punctual"], check=True)
     # A .gltf whose one triangle list claims 400 M vertices (its buffer is never written): refused by estimate.
     with open(os.path.join(models, "huge.gltf"), "w") as f:
         json.dump({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],

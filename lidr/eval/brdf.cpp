@@ -43,6 +43,12 @@ glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& L) {
     return (1.0 - F) * albedoOf(s) / kPi + F * (D * visibility);
 }
 
+double distanceAttenuation(const PointLight& light, double distance) {
+    const double d2 = distance * distance, r = double(light.radius), q = d2 / (r * r);
+    if (light.falloff == LightFalloff::Smooth) return std::clamp(1.0 - q, 0.0, 1.0);
+    return std::clamp(1.0 - q * q, 0.0, 1.0) / std::max(d2, 1e-4);
+}
+
 double spotTerm(const PointLight& light, const glm::dvec3& toLight) {
     if (!light.isSpot()) return 1.0;
     const double cosOuter = std::cos(double(light.outerConeAngle)), cosInner = std::cos(double(light.innerConeAngle));
@@ -54,8 +60,8 @@ double spotTerm(const PointLight& light, const glm::dvec3& toLight) {
 
 glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light) {
     const glm::dvec3 toLight = glm::dvec3(light.position) - s.position;
-    const double d2 = glm::dot(toLight, toLight), r = double(light.radius);
-    const double attenuation = std::clamp(1.0 - d2 / (r * r), 0.0, 1.0);
+    const double d2 = glm::dot(toLight, toLight);
+    const double attenuation = distanceAttenuation(light, std::sqrt(d2));
     if (attenuation <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 L = toLight / std::sqrt(std::max(d2, 1e-24));
     const double nDotL = glm::dot(s.normal, L);

@@ -1,7 +1,7 @@
 #pragma once
 // The CPU model of lidr's shading (shaders/common/shading.glsl) in double precision: the glTF 2.0
-// metallic-roughness BRDF, lidr's point- and directional-light terms and its ambient term. Tests check GPU pixels against it and
-// bound its energy (white furnace).
+// metallic-roughness BRDF, lidr's point-light terms (both falloffs, the spot cone), directional-light and ambient
+// terms. Tests check GPU pixels against it and bound its energy (white furnace).
 #include <glm/glm.hpp>
 
 #include "lidr/scene/scene.h"
@@ -19,8 +19,11 @@ BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, co
                         const glm::dvec3& eye);
 // f(l, v): diffuse + specular, per colour channel (1/sr), for a unit direction towards the light.
 glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& toLight);
-// lidrShadeLight: f x pi x colour x saturate(1 - d^2 / r^2) x n.l, times spotTerm for a spot light.
+// lidrShadeLight: f x pi x colour x distanceAttenuation x n.l, times spotTerm for a spot light.
 glm::dvec3 shadePointLight(const BrdfSurface& s, const PointLight& light);
+// The light's falloff at `distance`: saturate(1 - d^2 / r^2) (LightFalloff::Smooth) or
+// saturate(1 - (d / r)^4) / max(d^2, 1e-4) (InverseSquare, KHR_lights_punctual's range window); 0 from r on.
+double distanceAttenuation(const PointLight& light, double distance);
 // KHR_lights_punctual's cone term for unit `toLight` (from the surface): saturate((cd - cos outer) /
 // max(1e-3, cos inner - cos outer))^2 with cd the cosine to the axis; 1 for a point light.
 double spotTerm(const PointLight& light, const glm::dvec3& toLight);

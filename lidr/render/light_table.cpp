@@ -25,6 +25,21 @@ LightTable::LightTable(const GlInfo& info, int capacity, bool forceFixed16)
     }
 }
 
+FixedColor fixedInverseSquareColor(const glm::vec3& color, bool spot) {
+    // The exponent puts the brightest channel in [0.5, 1) of 2^e, so it keeps at least 7 of its 8 bits.
+    const float brightest = std::max({color.r, color.g, color.b});
+    int exponent = -63;
+    if (brightest > 0.0f) std::frexp(brightest, &exponent);
+    exponent = std::clamp(exponent, -63, 63);
+    FixedColor out;
+    for (int c = 0; c < 3; ++c)
+        out.bytes[c] =
+            static_cast<uint8_t>(std::lround(std::clamp(std::ldexp(color[c], -exponent), 0.0f, 1.0f) * 255.0f));
+    out.bytes[3] = static_cast<uint8_t>(1 + (spot ? 127 : 0) + exponent + 63);
+    out.decoded = glm::vec3(out.bytes[0], out.bytes[1], out.bytes[2]) / 255.0f * std::ldexp(1.0f, exponent);
+    return out;
+}
+
 size_t LightTable::bytes() const {
     const size_t texels = size_t(kWidth) * rows_;
     // Two row blocks (the light, its spot cone) of two RGBA32F or three RGBA8 textures, in each of the two sets.
@@ -70,7 +85,8 @@ void LightTable::update(const std::vector<PointLight>& lights) {
         for (size_t i = 0; i < lights.size(); ++i) {
             const PointLight& l = lights[i];
             float* p = &pos[(i + 1) * 4];
-            p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z, p[3] = l.radius;
+            p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z;
+            p[3] = l.falloff == LightFalloff::InverseSquare ? -l.radius : l.radius;  // the sign lidrShadeLight reads
             const glm::vec4 cone = spotCone(l);
             float* q = &pos[(texels + i + 1) * 4];
             q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
@@ -94,7 +110,7 @@ void LightTable::update(const std::vector<PointLight>& lights) {
                 lo = glm::min(lo, l.position);
                 hi = glm::max(hi, l.position);
                 maxRadius = std::max(maxRadius, l.radius);
-                maxColor = std::max({maxColor, l.color.r, l.color.g, l.color.b});
+                if (l.falloff == LightFalloff::Smooth) maxColor = std::max({maxColor, l.color.r, l.color.g, l.color.b});
             }
         }
         boundsMin_ = lo;
@@ -123,9 +139,15 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             const int r = static_cast<int>(std::ceil(l.radius / radiusScale_ * 65535.0f));
             high[t + 3] = static_cast<uint8_t>(std::min(r, 65535) >> 8);
             low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
-            for (int c = 0; c < 3; ++c)
-                col[t + c] = static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
-            col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
+            if (l.falloff == LightFalloff::InverseSquare) {
+                const FixedColor fixed = fixedInverseSquareColor(l.color, l.isSpot());
+                for (int c = 0; c < 4; ++c) col[t + size_t(c)] = fixed.bytes[c];
+            } else {
+                for (int c = 0; c < 3; ++c)
+                    col[t + c] =
+                        static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
+                col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
+            }
             if (!l.isSpot()) continue;
             const size_t cone = (texels + i + 1) * 4;
             const glm::vec3 axis = glm::normalize(l.direction);

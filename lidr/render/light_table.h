@@ -4,6 +4,7 @@
 // documented fixed-point path (16-bit position and radius in two RGBA8 textures, colour in RGBA8).
 // Two sets of textures alternate frame by frame, so an update never waits for the GPU to finish reading
 // the previous frame's table (Trebilco's advice for dynamic light data).
+#include <cstdint>
 #include <vector>
 
 #include "lidr/gl/gl_info.h"
@@ -14,6 +15,16 @@
 namespace lidr {
 
 enum class LightTableFormat { Float, Fixed16 };
+
+// A glTF light's (LightFalloff::InverseSquare) colour in the fixed-point table: three bytes times its own 2^e,
+// e in [-63, 63] chosen so the brightest channel fills [0.5, 1) of it, and the alpha byte (light_table.glsl).
+// Each channel is within 2^e / 510 <= brightest / 255 of the real one (relative to the light itself, whatever
+// the other lights' intensities). `decoded` is what the shader reads back.
+struct FixedColor {
+    uint8_t bytes[4];
+    glm::vec3 decoded;
+};
+FixedColor fixedInverseSquareColor(const glm::vec3& color, bool spot);
 
 class LightTable {
 public:

@@ -93,6 +93,13 @@ struct Mesh {
 // outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
 // `radius` (the range) bounds both, and a spot light is indexed by that bounding sphere today: the light lists
 // hold it wherever its sphere reaches a surface, and the shading's cone term is exactly 0 outside the cone.
+// How a point or spot light fades with distance d; either way it gives exactly nothing from d = radius on, so
+// the radius is its light volume (LIDR's lists, the tiles, the CPU truth in lidr/eval/light_coverage.h).
+enum class LightFalloff {
+    Smooth,         // lidr's own: colour x saturate(1 - d^2 / r^2) (scene files, built-in scenes)
+    InverseSquare,  // KHR_lights_punctual: colour x saturate(1 - (d / r)^4) / max(d^2, 1e-4) (glTF lights)
+};
+
 struct PointLight {
     glm::vec3 position{0.0f};
     float radius = 1.0f;
@@ -101,6 +108,7 @@ struct PointLight {
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot lights: the cone's axis, the way the light shines
     float innerConeAngle = 0.0f;             // radians, [0, outerConeAngle)
     float outerConeAngle = 0.0f;             // radians, (0, pi/2] for a spot light; 0: a point light
+    LightFalloff falloff = LightFalloff::Smooth;  // InverseSquare: colour is (lux at 1 m) / pi (doc/colour.md)
     bool isSpot() const { return outerConeAngle > 0.0f; }
 };
 

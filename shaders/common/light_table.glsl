@@ -7,7 +7,10 @@
 // the vec4 lidrShadeLight takes ((0, 0, 0, 1) for a point light; lidr::spotCone): float, it is stored as it
 // is in uLightPosRadius; fixed, as the axis ((d + 1) / 2) and cos(outer) in the 16-bit position textures and
 // cos(inner) in the colour's red and green bytes. The colour's alpha says which: 0 a spot light, 1 a point light
-// (lidr/render/light_table.cpp).
+// (lidr/render/light_table.cpp). A glTF light (inverse-square falloff) comes out with a negative radius, the sign
+// lidrShadeLight reads: float, it is stored so; fixed, its colour's alpha byte is 1..254, code = byte - 1 holding
+// a spot flag (code >= 127) and the exponent e = code mod 127 - 63 of its own colour scale 2^e (candela span many
+// octaves between lights, which one shared scale would flatten into 8-bit steps of the brightest).
 uniform sampler2D uLightPosRadius;
 uniform sampler2D uLightColor;
 uniform float uLightTableRows;
@@ -43,7 +46,15 @@ void lidrFetchLightAt(vec2 uv, out vec4 posRadius, out vec3 color, out vec4 spot
     vec4 unit = (high * (255.0 * 256.0) + low * 255.0) * (1.0 / 65535.0);
     posRadius = vec4(uLightBoundsMin + unit.xyz * uLightBoundsExtent, unit.w * uLightRadiusScale);
     color = colorTexel.rgb * uLightColorScale;
-    if (colorTexel.a < 0.5) {
+    float alphaByte = floor(colorTexel.a * 255.0 + 0.5);
+    bool spotLight = alphaByte < 0.5;
+    if (alphaByte > 0.5 && alphaByte < 254.5) {
+        float code = alphaByte - 1.0;
+        spotLight = code > 126.5;
+        color = colorTexel.rgb * exp2(code - (spotLight ? 127.0 : 0.0) - 63.0);
+        posRadius.w = -posRadius.w;
+    }
+    if (spotLight) {
         vec4 cone = (texture2D(uLightPosRadius, coneUv) * (255.0 * 256.0) +
                      texture2D(uLightPosRadiusLow, coneUv) * 255.0) * (1.0 / 65535.0);
         vec4 innerBytes = texture2D(uLightColor, coneUv);

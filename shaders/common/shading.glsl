@@ -1,7 +1,7 @@
 // The one shading function of lidr, in linear light: the glTF 2.0 metallic-roughness BRDF (the specification's
 // appendix B: Lambert diffuse, GGX distribution, height-correlated Smith-GGX visibility, Schlick Fresnel with F0
-// mixed by metallic) under point lights with attenuation saturate(1 - d^2 / r^2). LIDR, tiled, forward and the
-// brute-force reference all call it; each ends with lidrOutput (output_transform.glsl). CPU model: lidr/eval/brdf.h.
+// mixed by metallic) under point and spot lights, lidr's falloff or glTF's (lidrShadeLight). LIDR, tiled, forward
+// and the brute-force reference all call it; each ends with lidrOutput (output_transform.glsl); CPU: eval/brdf.h.
 #include "output_transform.glsl"
 #define LIDR_PI 3.14159265358979
 uniform vec3 uEyePosition;
@@ -100,14 +100,23 @@ vec3 lidrShadeIncoming(LidrSurface s, vec3 L, float attenuation, vec3 lightColor
     return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
 }
 
-// One point or spot light, attenuated by saturate(1 - d^2 / r^2) and the spot cone: spot = (axis x scale, offset)
-// from the light table (lidr::spotCone), the term saturate(dot(-L, axis) x scale + offset)^2, KHR_lights_punctual's
-// smooth falloff from the inner to the outer cone; a point light's (0, 0, 0, 1) makes it exactly 1.
+// One point or spot light. posRadius.w > 0: lidr's falloff saturate(1 - d^2 / r^2) (scene files, built-in
+// scenes); posRadius.w < 0: KHR_lights_punctual's inverse square with the specification's range window,
+// saturate(1 - (d / r)^4) / max(d^2, 1e-4) with r = -w (glTF lights; the 1 cm floor keeps a surface at the light
+// finite). Both are exactly 0 from d = r on, so r stays the light volume. The spot cone: spot = (axis x scale,
+// offset) from the light table (lidr::spotCone), the term saturate(dot(-L, axis) x scale + offset)^2,
+// KHR_lights_punctual's smooth falloff from the inner to the outer cone; a point light's (0, 0, 0, 1) makes it 1.
 vec3 lidrShadeLight(LidrSurface s, vec4 posRadius, vec3 lightColor, vec4 spot) {
     vec3 toLight = posRadius.xyz - s.position;
     float d2 = dot(toLight, toLight);
     float r2 = posRadius.w * posRadius.w;
-    float attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
+    float attenuation;
+    if (posRadius.w > 0.0) {
+        attenuation = clamp(1.0 - d2 / r2, 0.0, 1.0);
+    } else {
+        float q = d2 / r2;
+        attenuation = clamp(1.0 - q * q, 0.0, 1.0) / max(d2, 1e-4);
+    }
     if (attenuation <= 0.0) return vec3(0.0);
     vec3 L = toLight * inversesqrt(max(d2, 1e-12));
     float cone = clamp(spot.w - dot(L, spot.xyz), 0.0, 1.0);

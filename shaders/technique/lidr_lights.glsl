@@ -12,7 +12,8 @@
 // desktop GL it is a uniform int (lidr sets it): a bound the compiler cannot see keeps the loop a loop. Unrolled
 // (Mesa unrolls short constant loops), a SIMD rasteriser runs every iteration under a mask however short the
 // pixel's list: budget 4 cost twice budget 8 on llvmpipe (doc/benchmarks.md). GLSL ES 1.00 wants a constant.
-// Attenuation is the material's business: lidr's own is clamp(1 - d^2 / r^2, 0, 1) (lidrShadeLight in
+// Attenuation is the material's business: lidr's own is clamp(1 - d^2 / r^2, 0, 1), glTF's lights (a negative
+// light.radius, the range being -radius) the inverse square with KHR_lights_punctual's window (lidrShadeLight in
 // shading.glsl, which also gives the surface varyings, material uniforms and the BRDF).
 // lidr fills uInvViewportSize, the index textures uIndexTex0.. and the light table (light_table.glsl); the
 // packing scheme's unpack file stands in for "lidr_unpack.glsl" (it defines LIDR_SLOTS, lidrUnpackBegin(uv),

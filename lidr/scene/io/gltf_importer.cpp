@@ -683,9 +683,12 @@ private:
             warn(name + ": " + source.type + " lights are not supported (lidr draws point, spot and directional lights); left out");
             return;
         }
+        // Candela (point, spot) or lux (directional) x colour, over pi: lidr's light colour is what a white
+        // Lambert surface shows (it shades with BRDF x pi x colour), glTF's intensity is illuminance, of which
+        // that surface reflects 1 / pi as luminance; a pixel is luminance x 2^exposure (doc/colour.md).
         glm::vec3 color(1.0f);
         for (size_t c = 0; c < 3 && c < source.color.size(); ++c) color[int(c)] = float(source.color[c]);
-        color *= float(source.intensity);
+        color *= float(source.intensity / glm::pi<double>());
         if (!(isFinite(color) && color.r >= 0 && color.g >= 0 && color.b >= 0))
             fail(name + ": colour x intensity must be finite and >= 0, got " + str(color));
         if (source.type == "directional") {
@@ -694,6 +697,7 @@ private:
         }
         PointLight light;
         light.color = color;
+        light.falloff = LightFalloff::InverseSquare;
         if (source.type == "spot") {
             // The validator held the angles to 0 <= inner < outer <= pi/2.
             if (!nodeDirection(world, name, nodeName, light.direction)) return;
@@ -781,7 +785,10 @@ private:
 }  // namespace
 
 float gltfLightRadiusWithoutRange(float brightestChannel) {
-    return glm::clamp(std::sqrt(256.0f * std::max(brightestChannel, 0.0f)), 0.01f, 1000.0f);
+    // Windowed, the light differs from the unwindowed one by C / d^2 x (d / r)^4 <= C / r^2 (at d = r), and
+    // beyond r the real light gives less than C / r^2 too: r = sqrt(C / threshold) keeps both under it.
+    const float radius = std::sqrt(std::max(brightestChannel, 0.0f) / gltfLightCutThreshold);
+    return glm::clamp(radius, gltfLightMinRadius, gltfLightMaxRadius);
 }
 
 GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial) {

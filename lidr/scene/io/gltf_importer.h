@@ -21,9 +21,15 @@ struct GltfContents {
 // with that scene material.
 GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial = -1);
 
-// The radius lidr gives a glTF point light without a range: where inverse-square falloff of its brightest
-// channel (colour x intensity) falls below 1/256 of full brightness, sqrt(256 x brightest), clamped to
-// [0.01, 1000] m.
+// A glTF light without `range` has infinite range; lidr's lights need a finite volume. It gets the range r
+// where it stops being visible: with the specification's window over r it differs from the infinite light by
+// less than gltfLightCutThreshold everywhere (at most C / r^2 for C its brightest channel, lidr's colour =
+// colour x intensity / pi), the linear value of half an 8-bit step of the sRGB-encoded image at exposure 0 on a
+// white Lambert surface facing the light: 0.5 / 255 / 12.92, the sRGB curve's steepest slope (at black; the
+// pbr-neutral and none tone maps have slope <= 1). r = sqrt(C / threshold) clamped to [0.01, 1000] m (past
+// about 480 cd the cut at 1000 m is visible). doc/colour.md, "glTF lights".
+constexpr float gltfLightCutThreshold = 0.5f / 255.0f / 12.92f;
+constexpr float gltfLightMinRadius = 0.01f, gltfLightMaxRadius = 1000.0f;
 float gltfLightRadiusWithoutRange(float brightestChannel);
 
 }  // namespace lidr

@@ -251,7 +251,7 @@ private:
 
     void readLight(const Field& field) {
         field.expectObject({"position", "radius", "color", "priority", "path", "type", "direction", "inner_cone_angle",
-                            "outer_cone_angle"});
+                            "outer_cone_angle", "falloff"});
         PointLight light;
         LightPath path;
         if (field.has("path")) path = readPath(field["path"]);
@@ -267,6 +267,13 @@ private:
             field["radius"].fail("radius " + str(light.radius) + " is too large (limit " + str(maxLightRadius) + ")");
         if (field.has("color")) light.color = color(field["color"]);
         if (field.has("priority")) light.priority = field["priority"].number();
+        if (field.has("falloff")) {
+            const std::string falloff = field["falloff"].text();
+            if (falloff == "inverse_square") light.falloff = LightFalloff::InverseSquare;
+            else if (falloff != "smooth")
+                field["falloff"].fail("unknown falloff '" + falloff + "' (smooth: 1 - d^2/r^2, the default; "
+                                      "inverse_square: glTF's, with the range window)");
+        }
         readSpotCone(field, light);
         scene_.lights.push_back(light);
         scene_.lightPaths.push_back(path);
