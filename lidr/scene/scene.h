@@ -91,8 +91,9 @@ struct Mesh {
 // A point light, or, with outerConeAngle > 0, a spot light (KHR_lights_punctual): light leaves `position` only
 // inside the cone around `direction`, full between the axis and innerConeAngle, falling smoothly to nothing at
 // outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
-// `radius` (the range) bounds both, and a spot light is indexed by that bounding sphere today: the light lists
-// hold it wherever its sphere reaches a surface, and the shading's cone term is exactly 0 outside the cone.
+// `radius` (the range) bounds both. The sphere volume test indexes a spot light by its cone; the other volume
+// tests and modes by its bounding sphere (doc/architecture.md, "Light types"): the shading's cone term is exactly
+// 0 outside the cone, so lists that hold more only cost slots.
 struct PointLight {
     glm::vec3 position{0.0f};
     float radius = 1.0f;

@@ -40,7 +40,8 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
         // its extra fill costs less than their vertices (doc/benchmarks.md).
         const LightVolumeMesh& mesh = meshes_[batchLevel_];
-        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 2;  // one target
+        // Per light: its sphere, its cone and one index colour per target.
+        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 3;  // one target
         batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
         std::vector<glm::vec4> copies;
         std::vector<uint16_t> copyIndices;
@@ -84,7 +85,7 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
 }
 
 int LightVolumeGeometry::batchFor(int batch, int maxVertexUniformVectors, int targetCount) {
-    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (1 + targetCount)));
+    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (2 + targetCount)));
 }
 
 int LightVolumeGeometry::batchFor(int targetCount) const {
@@ -203,10 +204,12 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
     lightsUniform_ = program.uniform<glm::vec4>("uLights");
+    conesUniform_ = program.uniform<glm::vec4>("uCones");
     colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");
     clampUniform_ = program.uniform<float>("uClampToFar");
     const size_t batch = size_t(batchFor(plan.programTargets));
     lightData_.resize(batch);
+    coneData_.resize(batch);
     colorData_.resize(batch * size_t(plan.programTargets));
 }
 
@@ -218,10 +221,12 @@ void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<Vol
             for (int i = 0; i < step.lightCount; ++i) {
                 const VolumeLight& l = lights[size_t(step.firstLight + i)];
                 lightData_[size_t(i)] = l.posRadius;
+                coneData_[size_t(i)] = l.cone;
                 const IndexColors c = colors(l.index);
                 for (int t = 0; t < targets_; ++t) colorData_[size_t(i * targets_ + t)] = c[size_t(t)];
             }
             lightsUniform_.setArray(lightData_.data(), step.lightCount);
+            conesUniform_.setArray(coneData_.data(), step.lightCount);
             colorsUniform_.setArray(colorData_.data(), step.lightCount * targets_);
         } else {
             const VolumeLight& l = lights[size_t(step.firstLight)];

@@ -31,6 +31,9 @@ struct VolumeLight {
     uint32_t index = 0;
     glm::vec4 posRadius{0.0f};
     int region = -1;  // tile-culled volumes with IndexRegions: the only region whose tiles this entry marks
+    // A spot light's cone as the shading takes it (lidr::spotCone: world axis x scale, offset); a point light's
+    // (0, 0, 0, 1) passes everywhere. The sphere test keeps a spot only where this ramp is >= 0 (the shading's 0).
+    glm::vec4 cone{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 class VolumeGeometry {
@@ -148,9 +151,9 @@ private:
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;
     float depthUnits_ = 16777215.0f;  // 2^depthBits - 1
-    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
+    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_, conesUniform_;
     gl::Uniform<float> clampUniform_;
-    std::vector<glm::vec4> lightData_, colorData_;
+    std::vector<glm::vec4> lightData_, colorData_, coneData_;
     // Tile-culled volumes (setTileDepth): the frame's tile ranges, each light's tiles (by its place in the
     // pass's light list) and each tile's candidate count, the stream buffer of quads and its program.
     const VolumeTiles* tiles_ = nullptr;
