@@ -416,3 +416,52 @@ TEST_CASE("the sphere test indexes a spot light by its cone: lists equal the CPU
         if (budget >= e.maxMarked && c.packing.scheme != PackingSchemeKind::CpuSorted) REQUIRE(e.pixelsOverBudget == 0);
     }
 }
+
+// The stencil tests (backface, exact) and the front-face test draw a spot light's cone mesh (a cone with a
+// spherical cap that encloses the range-capped cone; test_lidr_core.cpp checks it on the CPU): no light of the
+// truth is lost where the budget holds the marks, the image equals the reference there, and the marks are far
+// fewer than the spots' spheres would make; `exact` marks nothing outside the cone mesh's reach (the spheres
+// grown by the cap's 5 %), and the front-face lists are checked against the CPU's conservative count.
+TEST_CASE("the stencil and front-face tests draw a spot light's cone mesh: no light lost, far fewer marks than spheres",
+          "[lights][render][cones]") {
+    testContext();
+    const bool floor = GENERATE(false, true);
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace);
+    DYNAMIC_SECTION((floor ? "spot-lit floor" : "lamp street") << ", " << volumeTestName(test)) {
+        const Scene scene = floor ? spotlitFloor(10, 24, false) : lampStreet();
+        LidrOptions options;
+        options.packing = {PackingSchemeKind::BitShift, 16, 8};
+        options.volumeTest = test;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        const FrameEvaluation& e = r.evaluation;
+        requireExactWithinBudget(e, volumeTestName(test));
+
+        const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+        ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
+        reference.render(scene.camera, lights, sceneShading(scene));
+        const ImageFloat depth = reference.targets().readDepth();
+        const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+        std::vector<PointLight> spheres = lights;
+        for (PointLight& l : spheres) l.outerConeAngle = 0.0f;
+        const CoverageTruth sphereTruth = computeCoverage(depth, cam, spheres, 2e-3f);
+        const CoverageTruth grownSpheres = computeCoverage(depth, cam, spheres, -0.05f);
+        long marks = 0, spherePairs = 0, beyondMesh = 0, belowTruth = 0;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            if (!e.truth.surface[p]) continue;
+            marks += e.marked[p];
+            spherePairs += sphereTruth.count(p);
+            belowTruth += e.marked[p] < e.truth.count(p);
+            if (test == VolumeTest::ExactStencil) beyondMesh += e.marked[p] > grownSpheres.count(p);
+        }
+        INFO(volumeTestName(test) << ": marks " << marks << ", the truth's pairs " << e.truth.lights.size()
+                                  << ", the bounding spheres' " << spherePairs << "; pixels marked by fewer lights "
+                                  << "than touch them " << belowTruth << ", beyond the meshes' reach " << beyondMesh
+                                  << ", over budget " << e.pixelsOverBudget);
+        REQUIRE(belowTruth == 0);
+        REQUIRE(beyondMesh == 0);
+        REQUIRE(e.pixelsOverBudget == 0);
+        // backface also marks surfaces in front of a volume; exact and front-face far fewer than the spheres.
+        if (test == VolumeTest::ExactStencil) REQUIRE(double(marks) < 0.6 * double(spherePairs));
+        if (test == VolumeTest::BackFace) REQUIRE(double(marks) < double(spherePairs) + 0.5 * double(e.truth.lights.size()));
+    }
+}

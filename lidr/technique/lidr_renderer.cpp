@@ -631,7 +631,8 @@ std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight
     std::vector<float> radii;
     radii.reserve(lights.size());
     for (size_t i = 0; i < lights.size(); ++i)
-        radii.push_back(volumePass_.outsideRadiusFor({uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius)}));
+        radii.push_back(volumePass_.outsideRadiusFor(
+            {uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius), -1, spotCone(lights[i])}));
     return radii;
 }
 
