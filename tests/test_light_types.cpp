@@ -18,6 +18,7 @@
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/scene/io/scene_file.h"
+#include "lidr/scene/sphere_bounds.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -464,4 +465,62 @@ TEST_CASE("the stencil and front-face tests draw a spot light's cone mesh: no li
         if (test == VolumeTest::ExactStencil) REQUIRE(double(marks) < 0.6 * double(spherePairs));
         if (test == VolumeTest::BackFace) REQUIRE(double(marks) < double(spherePairs) + 0.5 * double(e.truth.lights.size()));
     }
+}
+
+TEST_CASE("spot lights: the cone's box holds every point of the range-capped cone and is tighter than the sphere's",
+          "[lights][cpu][cones]") {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), u01(0.0f, 1.0f), angle(1e-4f, 1.5707963f);
+    double boxVolume = 0.0, sphereBoxVolume = 0.0;
+    for (int trial = 0; trial < 400; ++trial) {
+        PointLight l;
+        l.position = {u(rng) * 10.0f, u(rng) * 10.0f, u(rng) * 10.0f};
+        l.radius = 0.1f + 5.0f * u01(rng);
+        l.direction = {u(rng), u(rng), u(rng)};
+        if (trial % 7 == 0) l.direction = {0.0f, trial % 2 ? -1.0f : 1.0f, 0.0f};  // along an axis: the cap's extreme
+        if (glm::length(l.direction) < 1e-3f) l.direction = {0.0f, -1.0f, 0.0f};
+        l.outerConeAngle = trial % 5 == 0 ? 1.5707963f : angle(rng);
+        glm::vec3 lo, hi;
+        spotLightBox(l, l.radius, lo, hi);
+        const glm::vec3 axis = glm::normalize(l.direction);
+        for (int k = 0; k < 400; ++k) {
+            // A point of the cone: on its rim or cap (the box's extremes lie there), or inside.
+            const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(1e-6f));
+            const float off = (k % 2 ? 1.0f : u01(rng)) * l.outerConeAngle;
+            const glm::vec3 side = glm::normalize(d - axis * glm::dot(d, axis) + glm::vec3(1e-7f));
+            const glm::vec3 dir = std::cos(off) * axis + std::sin(off) * side;
+            const glm::vec3 p = l.position + dir * (l.radius * (k % 3 ? 1.0f : u01(rng)));
+            INFO("trial " << trial << ", outer " << l.outerConeAngle << ", point " << k);
+            REQUIRE(glm::all(glm::lessThanEqual(lo, p + 1e-5f)));
+            REQUIRE(glm::all(glm::lessThanEqual(p - 1e-5f, hi)));
+        }
+        const glm::vec3 size = hi - lo;
+        boxVolume += double(size.x) * size.y * size.z;
+        sphereBoxVolume += 8.0 * double(l.radius) * l.radius * l.radius;
+    }
+    INFO("boxes " << boxVolume << ", the spheres' boxes " << sphereBoxVolume);
+    CHECK(boxVolume < 0.6 * sphereBoxVolume);
+}
+
+TEST_CASE("multi-pass forward culls meshes by the spot cone's box: fewer mesh draws than the spheres, the same image",
+          "[lights][forward][cones]") {
+    testContext();
+    const Scene scene = lampStreet();
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    std::vector<PointLight> points = lights;
+    for (PointLight& l : points) l.outerConeAngle = 0.0f;
+    RenderModeOptions o;
+    o.mode = "forward-multipass";
+    const ShadingParameters shading = sceneShading(scene, OutputTransform::linear());
+    std::unique_ptr<Renderer> cones = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    const FrameStats withCones = cones->render(scene.camera, lights, shading);
+    std::unique_ptr<Renderer> spheres = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    const FrameStats withSpheres = spheres->render(scene.camera, points, shading);
+    INFO("mesh draws: cones " << withCones.volumeDrawCalls << ", the same lights as spheres " << withSpheres.volumeDrawCalls);
+    REQUIRE(withCones.volumeDrawCalls < withSpheres.volumeDrawCalls);
+    // Culling only skips meshes the cone cannot light: the image equals the reference (as in the every-mode test).
+    const ImageRGBA8 image = cones->targets().readColor(), reference = referenceImage(scene, shading);
+    const ImageError e = compareImages(image, reference);
+    INFO("multi-pass against the reference: max " << e.maxAbsError);
+    REQUIRE(e.maxAbsError <= 3);
 }

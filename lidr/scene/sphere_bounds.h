@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/scene/camera.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr {
 
@@ -51,5 +52,11 @@ void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);
 // View-space distance along the view direction of a window depth in [0, 1] (inverse of the projection's
 // depth mapping).
 float viewDepthFromWindowDepth(const CameraMatrices& camera, float windowDepth);
+
+// The axis-aligned box around a spot light's cone capped at `range` (a spherical sector): the apex, the rim
+// circle, and the cap's extreme along each axis the cone holds. The cone is widened as the volume meshes widen
+// it (1e-3 rad, 2e-5 off its cosine: the fixed-point light table's 16-bit cosines), so the box is conservative.
+// A point light's box is its sphere's.
+void spotLightBox(const PointLight& light, float range, glm::vec3& boxMin, glm::vec3& boxMax);
 
 }  // namespace lidr
