@@ -524,3 +524,27 @@ TEST_CASE("multi-pass forward culls meshes by the spot cone's box: fewer mesh dr
     INFO("multi-pass against the reference: max " << e.maxAbsError);
     REQUIRE(e.maxAbsError <= 3);
 }
+
+TEST_CASE("the automatic budget counts spot lights by their cones", "[lights][auto][cones]") {
+    testContext();
+    if (!testGl().occlusionQuery) return;  // the automatic budget is measured with occlusion queries
+    // The lamp street at 512 x 384: at most 4 lights touch a pixel (the cones); the spots' spheres overlap 6.
+    Scene scene = lampStreet();
+    scene.width = 512;
+    scene.height = 384;
+    std::vector<PointLight> points = scene.lightsAt(scene.time);
+    for (PointLight& l : points) l.outerConeAngle = 0.0f;
+    Scene asPoints = scene;
+    asPoints.lights = points;
+    asPoints.lightPaths.clear();  // the lights at scene.time, static
+    const RenderResult cones = renderAndEvaluate(scene, LidrOptions{});
+    const RenderResult spheres = renderAndEvaluate(asPoints, LidrOptions{});
+    INFO("budget: cones " << cones.stats.autoDecision.budget << " (truth's overlap " << cones.evaluation.maxTruthOverlap
+                          << ", marked " << cones.evaluation.maxMarked << "), the same lights as points "
+                          << spheres.stats.autoDecision.budget << " (marked " << spheres.evaluation.maxMarked << ")");
+    requireExactWithinBudget(cones.evaluation, "cones");
+    REQUIRE(cones.evaluation.maxMarked == cones.evaluation.maxTruthOverlap);
+    REQUIRE(cones.stats.autoDecision.budget == 4);
+    REQUIRE(spheres.stats.autoDecision.budget == 8);
+    REQUIRE(cones.evaluation.pixelsOverBudget == 0);
+}
