@@ -12,6 +12,7 @@
 #include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
+#include "lidr/eval/bench_scenes.h"
 #include "lidr/eval/brdf.h"
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
@@ -547,4 +548,28 @@ TEST_CASE("the automatic budget counts spot lights by their cones", "[lights][au
     REQUIRE(cones.stats.autoDecision.budget == 4);
     REQUIRE(spheres.stats.autoDecision.budget == 8);
     REQUIRE(cones.evaluation.pixelsOverBudget == 0);
+}
+
+TEST_CASE("bench scenes spots-N and spots-N-points: the same lights, spots aimed down or points; bad names refused",
+          "[lights][cpu][bench][bad-input]") {
+    Scene spots, points;
+    REQUIRE(makeSpotSceneByName("spots-64", spots));
+    REQUIRE(makeSpotSceneByName("spots-64-points", points));
+    REQUIRE(spots.lights.size() == 64);
+    REQUIRE(points.lights.size() == 64);
+    int spotCount = 0;
+    for (size_t i = 0; i < spots.lights.size(); ++i) {
+        REQUIRE(spots.lights[i].position == points.lights[i].position);
+        REQUIRE(spots.lights[i].radius == points.lights[i].radius);
+        REQUIRE_FALSE(points.lights[i].isSpot());
+        spotCount += spots.lights[i].isSpot();
+        if (spots.lights[i].isSpot()) REQUIRE(spots.lights[i].direction == glm::vec3(0.0f, -1.0f, 0.0f));
+    }
+    REQUIRE(spotCount == 61);  // the 3 large movers stay point lights
+    Scene other;
+    REQUIRE_FALSE(makeSpotSceneByName("hall-255", other));
+    for (const char* bad : {"spots-", "spots-3", "spots-x", "spots-70000", "spots-64-spheres"}) {
+        INFO(bad);
+        REQUIRE_THROWS_WITH(makeSpotSceneByName(bad, other), Contains("use spots-N or spots-N-points"));
+    }
 }
