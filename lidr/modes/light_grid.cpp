@@ -17,7 +17,7 @@ constexpr float kWindowDepthSlack = 1e-6f;
 constexpr double kRelativeViewDepthSlack = 1e-5;
 
 // A spot light's cone in view space, for the tile test: apex, unit axis, range, and the cone's half angle widened
-// as spotVolumeShape widens it (1e-3 rad, and 2e-5 off its cosine for the fixed-point light table's 16 bits).
+// to spotBoundingConeAngle (sphere_bounds.h: covers the fixed-point light table's 16-bit cosines).
 struct ViewCone {
     glm::vec3 apex, axis;
     float range, cosAngle, sinAngle;
@@ -27,8 +27,7 @@ ViewCone viewCone(const CameraMatrices& camera, const PointLight& l, float range
     c.apex = glm::vec3(camera.view * glm::vec4(l.position, 1.0f));
     c.axis = glm::normalize(glm::vec3(camera.view * glm::vec4(glm::normalize(l.direction), 0.0f)));
     c.range = range;
-    const double angle = std::min(1.5707963267948966,
-                                  std::acos(std::clamp(std::cos(double(l.outerConeAngle)) - 2e-5, 0.0, 1.0)) + 1e-3);
+    const double angle = spotBoundingConeAngle(l.outerConeAngle);
     c.cosAngle = float(std::cos(angle));
     c.sinAngle = float(std::sin(angle));
     return c;

@@ -141,12 +141,15 @@ float viewDepthFromWindowDepth(const CameraMatrices& m, float windowDepth) {
     return float(double(m.projection[3][2]) / (ndc + double(m.projection[2][2])));
 }
 
+double spotBoundingConeAngle(float outerConeAngle) {
+    return std::min(1.5707963267948966, std::acos(std::clamp(std::cos(double(outerConeAngle)) - 2e-5, 0.0, 1.0)) + 1e-3);
+}
+
 void spotLightBox(const PointLight& l, float range, glm::vec3& boxMin, glm::vec3& boxMax) {
     boxMin = l.position - glm::vec3(range);
     boxMax = l.position + glm::vec3(range);
     if (!l.isSpot()) return;
-    const double angle = std::min(1.5707963267948966,
-                                  std::acos(std::clamp(std::cos(double(l.outerConeAngle)) - 2e-5, 0.0, 1.0)) + 1e-3);
+    const double angle = spotBoundingConeAngle(l.outerConeAngle);
     const glm::dvec3 apex(l.position), axis = glm::normalize(glm::dvec3(l.direction));
     const double r = double(range), cosA = std::cos(angle), rim = r * std::sin(angle);
     const glm::dvec3 rimCentre = apex + axis * (r * cosA);

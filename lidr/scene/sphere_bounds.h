@@ -53,9 +53,13 @@ void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);
 // depth mapping).
 float viewDepthFromWindowDepth(const CameraMatrices& camera, float windowDepth);
 
+// The widest cone the shading may light for this outer cone angle (radians): its cosine lowered by 2e-5 (the
+// fixed-point light table stores cosines in 16 bits) and the angle widened by 1e-3 rad, at most a right angle.
+// What every conservative cone bound widens a spot light to (volume meshes, tile and mesh culling).
+double spotBoundingConeAngle(float outerConeAngle);
+
 // The axis-aligned box around a spot light's cone capped at `range` (a spherical sector): the apex, the rim
-// circle, and the cap's extreme along each axis the cone holds. The cone is widened as the volume meshes widen
-// it (1e-3 rad, 2e-5 off its cosine: the fixed-point light table's 16-bit cosines), so the box is conservative.
+// circle, and the cap's extreme along each axis the cone holds, for the cone spotBoundingConeAngle gives.
 // A point light's box is its sphere's.
 void spotLightBox(const PointLight& light, float range, glm::vec3& boxMin, glm::vec3& boxMax);
 

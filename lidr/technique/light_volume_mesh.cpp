@@ -1,5 +1,7 @@
 #include "lidr/technique/light_volume_mesh.h"
 
+#include "lidr/scene/sphere_bounds.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -82,13 +84,11 @@ glm::vec3 spotVolumeVertex(const glm::vec3& v, const SpotVolumeShape& shape) {
     return shape.capScale * glm::vec3(std::sin(polar) * v.x, std::sin(polar) * v.y, std::cos(polar));
 }
 
-SpotVolumeShape spotVolumeShape(float outerConeAngle, float margin, float angleMargin, float cosMargin) {
+SpotVolumeShape spotVolumeShape(float outerConeAngle, float margin) {
     constexpr float kHalfPi = 1.57079632679f;
     constexpr double kPi = 3.14159265358979;
     SpotVolumeShape shape;
-    // The widest cone the shading may light: its cosine lowered by cosMargin, its angle widened by angleMargin.
-    const double widest =
-        std::min(double(kHalfPi), std::acos(std::clamp(std::cos(double(outerConeAngle)) - cosMargin, 0.0, 1.0)) + angleMargin);
+    const double widest = spotBoundingConeAngle(outerConeAngle);  // the widest cone the shading may light
     // A side face's plane touches the cone at the middle of its rim edge, cos(pi / n) of the rim's radius off the
     // axis: tan(rim) x cos(pi / n) = tan(widest). A right angle stays one (the side is then the apex's plane).
     const double rim = widest >= double(kHalfPi) - 1e-7 ? double(kHalfPi)

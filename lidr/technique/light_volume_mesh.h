@@ -28,15 +28,14 @@ constexpr int kSpotVolumeSegments = 16, kSpotVolumeRings = 4;
 LightVolumeMesh makeSpotVolumeMesh();
 
 // How a spot light of this outer cone angle (radians, (0, pi/2]) is drawn with that mesh: the rim's polar angle
-// (the side faces, planes through the apex, touch the cone widened by `angleMargin` radians and by the shading's
-// cosine widened by `cosMargin`, which covers the fixed-point light table's 16-bit cosines) and the cap's radius
-// relative to the range (its nearest face plane at 1 + margin).
+// (the side faces, planes through the apex, touch the cone widened to spotBoundingConeAngle, which covers the
+// fixed-point light table's 16-bit cosines) and the cap's radius relative to the range (its nearest face plane at
+// 1 + margin).
 struct SpotVolumeShape {
     float rimAngle = 0.0f;
     float capScale = 1.0f;
 };
-SpotVolumeShape spotVolumeShape(float outerConeAngle, float margin = 1e-3f, float angleMargin = 1e-3f,
-                                float cosMargin = 2e-5f);
+SpotVolumeShape spotVolumeShape(float outerConeAngle, float margin = 1e-3f);
 // A mesh vertex of makeSpotVolumeMesh for a unit range along +z (the shader's mapping, on the CPU).
 glm::vec3 spotVolumeVertex(const glm::vec3& meshVertex, const SpotVolumeShape& shape);
 
