@@ -53,7 +53,9 @@ std::string sceneNameHelp() {
     return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
            "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), heavy-T (the room with about T "
            "triangles, e.g. heavy-250k, heavy-1m), hall-N / city-N (deep, occluded scenes: a pillared hall and a city "
-           "block grid with N lights of 1-4 m, e.g. hall-255), file:PATH or a path ending in .json, .gltf, .glb or .obj";
+           "block grid with N lights of 1-4 m, e.g. hall-255), spots-N / spots-N-points (many-N-top with the particles "
+           "as spot lights aimed down, or the same lights as points), file:PATH or a path ending in .json, .gltf, .glb "
+           "or .obj";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed) {
@@ -98,6 +100,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
     }
     Scene occluded;
     if (makeOccludedSceneByName(name, occluded, seed)) return occluded;
+    if (makeSpotSceneByName(name, occluded, seed)) return occluded;
     std::string path;
     if (startsWith(name, "file:"))
         path = name.substr(5);
@@ -331,6 +334,13 @@ std::vector<SweepGroup> fullPreset() {
     occluded.transparency = {false};
     occluded.tiledDepthBounds = {true};
     groups.push_back(occluded);
+
+    SweepGroup spots = occluded;  // spot lights (issue 29): the cone against the same lights as spheres
+    spots.name = "spots";
+    spots.scenes = {"spots-1024", "spots-1024-points"};
+    spots.volumeTests = {"sphere", "exact"};
+    spots.volumeTiles = {true};
+    groups.push_back(spots);
     for (const std::string& sweep : sweepNames())
         for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;

@@ -7,6 +7,8 @@
 #include <utility>
 #include <set>
 
+#include <map>
+
 #include <catch2/catch.hpp>
 
 #include "config_cases.h"
@@ -56,6 +58,54 @@ TEST_CASE("the light volume mesh contains the whole unit sphere", "[volume-mesh]
             // Outward winding (front faces face away from the centre) and every face plane beyond radius 1.
             REQUIRE(glm::dot(n, a) >= 1.0f);
         }
+    }
+}
+
+TEST_CASE("the spot volume mesh is closed, convex and contains the whole range-capped cone", "[volume-mesh][cpu][cones]") {
+    const float degrees = GENERATE(0.01f, 1.0f, 10.0f, 30.0f, 45.0f, 60.0f, 80.0f, 89.9f, 90.0f);
+    DYNAMIC_SECTION("outer cone " << degrees << " degrees") {
+        const float outer = glm::radians(degrees);
+        const LightVolumeMesh mesh = makeSpotVolumeMesh();
+        const SpotVolumeShape shape = spotVolumeShape(outer);
+        std::vector<glm::vec3> v;
+        for (const glm::vec3& p : mesh.positions) v.push_back(spotVolumeVertex(p, shape));
+        // Closed: every directed edge once, and its reverse once.
+        std::map<std::pair<int, int>, int> edges;
+        for (size_t i = 0; i < mesh.indices.size(); i += 3)
+            for (int k = 0; k < 3; ++k) ++edges[{mesh.indices[i + k], mesh.indices[i + (k + 1) % 3]}];
+        for (const auto& [edge, count] : edges) {
+            INFO("edge " << edge.first << " -> " << edge.second);
+            REQUIRE(count == 1);
+            REQUIRE(edges.count({edge.second, edge.first}) == 1);
+        }
+        // Each face's plane, outward (away from a point inside, halfway along the axis): every vertex lies on or
+        // behind it (convex), and so does every point of the cone within the range (sampled on its boundary:
+        // the rim circle at the range, the cap, the axis' end, the apex).
+        const glm::vec3 inside(0.0f, 0.0f, 0.5f * std::cos(std::min(outer, 1.5f)));
+        std::vector<glm::vec3> cone = {glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+        for (int i = 0; i < 64; ++i)
+            for (int k = 1; k <= 8; ++k) {
+                const float a = 6.2831853f * float(i) / 64.0f, polar = outer * float(k) / 8.0f;
+                cone.emplace_back(std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar));
+            }
+        long facesAway = 0;
+        for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+            const glm::vec3 a = v[mesh.indices[i]], b = v[mesh.indices[i + 1]], c = v[mesh.indices[i + 2]];
+            const glm::vec3 cross = glm::cross(b - a, c - a);
+            if (glm::length(cross) < 1e-9f) continue;  // a face of zero area (none expected; harmless)
+            const glm::vec3 n = glm::normalize(cross);
+            facesAway += glm::dot(n, a - inside) > 0.0f;
+            for (const glm::vec3& p : v) REQUIRE(glm::dot(n, p - a) <= 1e-5f);
+            for (const glm::vec3& p : cone) {
+                INFO("face " << i / 3 << ", cone point " << p.x << " " << p.y << " " << p.z);
+                REQUIRE(glm::dot(n, p - a) <= 1e-6f);
+            }
+        }
+        CHECK(facesAway == long(mesh.indices.size() / 3));  // counter-clockwise seen from outside
+        // Not much larger than the cone: the cap within 5 % of the range, the rim within 12 degrees of the cone.
+        CHECK(shape.capScale < 1.05f);
+        CHECK(shape.rimAngle >= outer);
+        CHECK(shape.rimAngle <= std::max(outer * 1.03f + 0.002f, std::min(outer + 0.2f, 1.5707964f)));
     }
 }
 

@@ -1,7 +1,7 @@
 // Light types beyond point lights. Directional lights (the sun) are not indexed: every mode adds them in its
 // forward pass through shading.glsl's lidrDirectionalLights, so every mode still equals the brute-force reference
 // with them present; they are checked, read from scene files and (test_gltf_import.cpp) from glTF. Spot lights
-// are indexed like point lights (by their bounding sphere today) and carry their cone in the light table, float
+// are indexed like point lights (the sphere test by their cone, the other volumes by their bounding sphere) and carry their cone in the light table, float
 // and fixed point: every mode equals the reference with point, spot and directional lights, stress cones
 // included, and with both falloffs in one scene (lidr's and glTF's inverse square). The BRDF model test (test_brdf.cpp) checks both types' pixels against the CPU model in every mode.
 #include <algorithm>
@@ -10,8 +10,10 @@
 
 #include <catch2/catch.hpp>
 
+#include "config_cases.h"
 #include "gl_test_context.h"
 #include "lidr/base/error.h"
+#include "lidr/eval/bench_scenes.h"
 #include "lidr/eval/brdf.h"
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
@@ -20,6 +22,7 @@
 #include "lidr/render/light_table.h"
 #include "lidr/scene/io/gltf_importer.h"
 #include "lidr/scene/io/scene_file.h"
+#include "lidr/scene/sphere_bounds.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -77,6 +80,13 @@ Scene spotlitFloor(int pointLights, int spots, bool fixedTable) {
     // angle set to 0).
     if (!fixedTable)
         scene.lights.push_back(spot({0.0f, 500.0f, 0.0f}, {0.1f, -1.0f, 0.0f}, 1e4f, 0.01f, 0.02f, {0.5f, 0.5f, 0.5f}));
+    return scene;
+}
+
+Scene lampStreet() {
+    Scene scene = loadSceneFile(sourcePath("media/scenes/lamp-street.json"));
+    scene.width = testWidth();
+    scene.height = testHeight();
     return scene;
 }
 
@@ -315,9 +325,7 @@ TEST_CASE("spot lights: the cone term and the checks of the cone", "[lights][cpu
 
 TEST_CASE("spot lights: the CPU truth holds a spot where its cone reaches the surface, and only there", "[lights]") {
     testContext();
-    Scene scene = loadSceneFile(sourcePath("media/scenes/lamp-street.json"));
-    scene.width = testWidth();
-    scene.height = testHeight();
+    const Scene scene = lampStreet();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
     reference.render(scene.camera, lights, sceneShading(scene));
@@ -424,4 +432,217 @@ TEST_CASE("inverse-square lights: KHR_lights_punctual's falloff and window, scen
                 CHECK(fixed.bytes[3] <= 254);
                 CHECK((fixed.bytes[3] - 1 >= 127) == spotLight);
             }
+}
+
+// The exact volume test (sphere, batched with the point lights) keeps a spot light's fragment only where the
+// surface point lies inside its cone and range, so its slot is taken only there. For every scheme x width x
+// budget, on the lamp street and on the spot-lit floor (stress cones included), with tile-culled volumes and with
+// the icosahedron meshes: no light missing where the budget holds the pixel's marks (the CPU truth with its band
+// inside), no light listed or counted where its cone and range do not reach the surface (the truth with the band
+// outside), and so, where the budget holds the overlap, the GPU count equals the truth.
+TEST_CASE("the sphere test indexes a spot light by its cone: lists equal the CPU truth, every scheme x width x budget",
+          "[lights][render][schemes][cones]") {
+    testContext();
+    const bool floor = GENERATE(false, true);
+    const bool tiles = GENERATE(true, false);
+    const ConfigCase c = GENERATE(from_range(packingCases(kBudgets, {8, 16})));
+    DYNAMIC_SECTION((floor ? "spot-lit floor" : "lamp street") << ", " << c.name
+                    << (tiles ? ", tile-culled volumes" : ", volume meshes")) {
+        const Scene scene = floor ? spotlitFloor(10, 24, false) : lampStreet();
+        LidrOptions options;
+        options.packing = c.packing;
+        options.volumeTest = VolumeTest::Sphere;
+        options.tileCulledVolumes = tiles;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        const FrameEvaluation& e = r.evaluation;
+        requireExactWithinBudget(e, c.name);
+
+        const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+        ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
+        reference.render(scene.camera, lights, sceneShading(scene));
+        const ImageFloat depth = reference.targets().readDepth();
+        const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+        const CoverageTruth touching = computeCoverage(depth, cam, lights, -2e-3f);  // the band outside
+        std::vector<PointLight> spheres = lights;  // the same lights as points: what bounding spheres would mark
+        for (PointLight& l : spheres) l.outerConeAngle = 0.0f;
+        const CoverageTruth sphereTruth = computeCoverage(depth, cam, spheres, 2e-3f);
+        long listedOutside = 0, countedOutside = 0, countNotTruth = 0, marks = 0, spherePairs = 0;
+        const int budget = c.packing.budget;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            if (!e.truth.surface[p]) continue;
+            const auto first = touching.lights.begin() + touching.offsets[p], last = touching.lights.begin() + touching.offsets[p + 1];
+            for (uint32_t index : e.lists.decoded[p]) listedOutside += !std::binary_search(first, last, index);
+            countedOutside += e.marked[p] > touching.count(p);
+            if (e.marked[p] <= budget) countNotTruth += e.marked[p] < e.truth.count(p) || e.marked[p] > touching.count(p);
+            marks += e.marked[p];
+            spherePairs += sphereTruth.count(p);
+        }
+        INFO(c.name << ": lights listed outside their cone or range " << listedOutside << ", pixels counting more "
+                    << "lights than touch them " << countedOutside << ", within budget with a count other than the "
+                    << "truth's " << countNotTruth << "; marks " << marks << ", the truth's pairs "
+                    << e.truth.lights.size() << ", the bounding spheres' " << spherePairs);
+        REQUIRE(listedOutside == 0);
+        REQUIRE(countedOutside == 0);
+        REQUIRE(countNotTruth == 0);
+        REQUIRE(marks >= long(e.truth.lights.size()));
+        // The spheres around the cones would have marked far more (lamps aimed down: about 60 % more pairs).
+        REQUIRE(double(marks) < 0.8 * double(spherePairs));
+        // CPU sorting drops whole lights where its groups (by screen footprint) conflict, counted (checked above).
+        if (budget >= e.maxMarked && c.packing.scheme != PackingSchemeKind::CpuSorted) REQUIRE(e.pixelsOverBudget == 0);
+    }
+}
+
+// The stencil tests (backface, exact) and the front-face test draw a spot light's cone mesh (a cone with a
+// spherical cap that encloses the range-capped cone; test_lidr_core.cpp checks it on the CPU): no light of the
+// truth is lost where the budget holds the marks, the image equals the reference there, and the marks are far
+// fewer than the spots' spheres would make; `exact` marks nothing outside the cone mesh's reach (the spheres
+// grown by the cap's 5 %), and the front-face lists are checked against the CPU's conservative count.
+TEST_CASE("the stencil and front-face tests draw a spot light's cone mesh: no light lost, far fewer marks than spheres",
+          "[lights][render][cones]") {
+    testContext();
+    const bool floor = GENERATE(false, true);
+    const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::FrontFace);
+    DYNAMIC_SECTION((floor ? "spot-lit floor" : "lamp street") << ", " << volumeTestName(test)) {
+        const Scene scene = floor ? spotlitFloor(10, 24, false) : lampStreet();
+        LidrOptions options;
+        options.packing = {PackingSchemeKind::BitShift, 16, 8};
+        options.volumeTest = test;
+        const RenderResult r = renderAndEvaluate(scene, options);
+        const FrameEvaluation& e = r.evaluation;
+        requireExactWithinBudget(e, volumeTestName(test));
+
+        const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+        ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
+        reference.render(scene.camera, lights, sceneShading(scene));
+        const ImageFloat depth = reference.targets().readDepth();
+        const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+        std::vector<PointLight> spheres = lights;
+        for (PointLight& l : spheres) l.outerConeAngle = 0.0f;
+        const CoverageTruth sphereTruth = computeCoverage(depth, cam, spheres, 2e-3f);
+        const CoverageTruth grownSpheres = computeCoverage(depth, cam, spheres, -0.05f);
+        long marks = 0, spherePairs = 0, beyondMesh = 0, belowTruth = 0;
+        for (size_t p = 0; p < e.marked.size(); ++p) {
+            if (!e.truth.surface[p]) continue;
+            marks += e.marked[p];
+            spherePairs += sphereTruth.count(p);
+            belowTruth += e.marked[p] < e.truth.count(p);
+            if (test == VolumeTest::ExactStencil) beyondMesh += e.marked[p] > grownSpheres.count(p);
+        }
+        INFO(volumeTestName(test) << ": marks " << marks << ", the truth's pairs " << e.truth.lights.size()
+                                  << ", the bounding spheres' " << spherePairs << "; pixels marked by fewer lights "
+                                  << "than touch them " << belowTruth << ", beyond the meshes' reach " << beyondMesh
+                                  << ", over budget " << e.pixelsOverBudget);
+        REQUIRE(belowTruth == 0);
+        REQUIRE(beyondMesh == 0);
+        REQUIRE(e.pixelsOverBudget == 0);
+        // backface also marks surfaces in front of a volume; exact and front-face far fewer than the spheres.
+        if (test == VolumeTest::ExactStencil) REQUIRE(double(marks) < 0.6 * double(spherePairs));
+        if (test == VolumeTest::BackFace) REQUIRE(double(marks) < double(spherePairs) + 0.5 * double(e.truth.lights.size()));
+    }
+}
+
+TEST_CASE("spot lights: the cone's box holds every point of the range-capped cone and is tighter than the sphere's",
+          "[lights][cpu][cones]") {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), u01(0.0f, 1.0f), angle(1e-4f, 1.5707963f);
+    double boxVolume = 0.0, sphereBoxVolume = 0.0;
+    for (int trial = 0; trial < 400; ++trial) {
+        PointLight l;
+        l.position = {u(rng) * 10.0f, u(rng) * 10.0f, u(rng) * 10.0f};
+        l.radius = 0.1f + 5.0f * u01(rng);
+        l.direction = {u(rng), u(rng), u(rng)};
+        if (trial % 7 == 0) l.direction = {0.0f, trial % 2 ? -1.0f : 1.0f, 0.0f};  // along an axis: the cap's extreme
+        if (glm::length(l.direction) < 1e-3f) l.direction = {0.0f, -1.0f, 0.0f};
+        l.outerConeAngle = trial % 5 == 0 ? 1.5707963f : angle(rng);
+        glm::vec3 lo, hi;
+        spotLightBox(l, l.radius, lo, hi);
+        const glm::vec3 axis = glm::normalize(l.direction);
+        for (int k = 0; k < 400; ++k) {
+            // A point of the cone: on its rim or cap (the box's extremes lie there), or inside.
+            const glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(1e-6f));
+            const float off = (k % 2 ? 1.0f : u01(rng)) * l.outerConeAngle;
+            const glm::vec3 side = glm::normalize(d - axis * glm::dot(d, axis) + glm::vec3(1e-7f));
+            const glm::vec3 dir = std::cos(off) * axis + std::sin(off) * side;
+            const glm::vec3 p = l.position + dir * (l.radius * (k % 3 ? 1.0f : u01(rng)));
+            INFO("trial " << trial << ", outer " << l.outerConeAngle << ", point " << k);
+            REQUIRE(glm::all(glm::lessThanEqual(lo, p + 1e-5f)));
+            REQUIRE(glm::all(glm::lessThanEqual(p - 1e-5f, hi)));
+        }
+        const glm::vec3 size = hi - lo;
+        boxVolume += double(size.x) * size.y * size.z;
+        sphereBoxVolume += 8.0 * double(l.radius) * l.radius * l.radius;
+    }
+    INFO("boxes " << boxVolume << ", the spheres' boxes " << sphereBoxVolume);
+    CHECK(boxVolume < 0.6 * sphereBoxVolume);
+}
+
+TEST_CASE("multi-pass forward culls meshes by the spot cone's box: fewer mesh draws than the spheres, the same image",
+          "[lights][forward][cones]") {
+    testContext();
+    const Scene scene = lampStreet();
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    std::vector<PointLight> points = lights;
+    for (PointLight& l : points) l.outerConeAngle = 0.0f;
+    RenderModeOptions o;
+    o.mode = "forward-multipass";
+    const ShadingParameters shading = sceneShading(scene, OutputTransform::linear());
+    std::unique_ptr<Renderer> cones = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    const FrameStats withCones = cones->render(scene.camera, lights, shading);
+    std::unique_ptr<Renderer> spheres = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    const FrameStats withSpheres = spheres->render(scene.camera, points, shading);
+    INFO("mesh draws: cones " << withCones.volumeDrawCalls << ", the same lights as spheres " << withSpheres.volumeDrawCalls);
+    REQUIRE(withCones.volumeDrawCalls < withSpheres.volumeDrawCalls);
+    // Culling only skips meshes the cone cannot light: the image equals the reference (as in the every-mode test).
+    const ImageRGBA8 image = cones->targets().readColor(), reference = referenceImage(scene, shading);
+    const ImageError e = compareImages(image, reference);
+    INFO("multi-pass against the reference: max " << e.maxAbsError);
+    REQUIRE(e.maxAbsError <= 3);
+}
+
+TEST_CASE("the automatic budget counts spot lights by their cones", "[lights][auto][cones]") {
+    testContext();
+    if (!testGl().occlusionQuery) return;  // the automatic budget is measured with occlusion queries
+    // The lamp street at 512 x 384: at most 4 lights touch a pixel (the cones); the spots' spheres overlap 6.
+    Scene scene = lampStreet();
+    scene.width = 512;
+    scene.height = 384;
+    std::vector<PointLight> points = scene.lightsAt(scene.time);
+    for (PointLight& l : points) l.outerConeAngle = 0.0f;
+    Scene asPoints = scene;
+    asPoints.lights = points;
+    asPoints.lightPaths.clear();  // the lights at scene.time, static
+    const RenderResult cones = renderAndEvaluate(scene, LidrOptions{});
+    const RenderResult spheres = renderAndEvaluate(asPoints, LidrOptions{});
+    INFO("budget: cones " << cones.stats.autoDecision.budget << " (truth's overlap " << cones.evaluation.maxTruthOverlap
+                          << ", marked " << cones.evaluation.maxMarked << "), the same lights as points "
+                          << spheres.stats.autoDecision.budget << " (marked " << spheres.evaluation.maxMarked << ")");
+    requireExactWithinBudget(cones.evaluation, "cones");
+    REQUIRE(cones.evaluation.maxMarked == cones.evaluation.maxTruthOverlap);
+    REQUIRE(cones.stats.autoDecision.budget == 4);
+    REQUIRE(spheres.stats.autoDecision.budget == 8);
+    REQUIRE(cones.evaluation.pixelsOverBudget == 0);
+}
+
+TEST_CASE("bench scenes spots-N and spots-N-points: the same lights, spots aimed down or points; bad names refused",
+          "[lights][cpu][bench][bad-input]") {
+    Scene spots, points;
+    REQUIRE(makeSpotSceneByName("spots-64", spots));
+    REQUIRE(makeSpotSceneByName("spots-64-points", points));
+    REQUIRE(spots.lights.size() == 64);
+    REQUIRE(points.lights.size() == 64);
+    int spotCount = 0;
+    for (size_t i = 0; i < spots.lights.size(); ++i) {
+        REQUIRE(spots.lights[i].position == points.lights[i].position);
+        REQUIRE(spots.lights[i].radius == points.lights[i].radius);
+        REQUIRE_FALSE(points.lights[i].isSpot());
+        spotCount += spots.lights[i].isSpot();
+        if (spots.lights[i].isSpot()) REQUIRE(spots.lights[i].direction == glm::vec3(0.0f, -1.0f, 0.0f));
+    }
+    REQUIRE(spotCount == 61);  // the 3 large movers stay point lights
+    Scene other;
+    REQUIRE_FALSE(makeSpotSceneByName("hall-255", other));
+    for (const char* bad : {"spots-", "spots-3", "spots-x", "spots-70000", "spots-64-spheres"}) {
+        INFO(bad);
+        REQUIRE_THROWS_WITH(makeSpotSceneByName(bad, other), Contains("use spots-N or spots-N-points"));
+    }
 }

@@ -387,3 +387,47 @@ TEST_CASE("stress: 16-bit depth at near/far ratios 160 .. 1e4", "[stress][slow][
         }
     }
 }
+
+TEST_CASE("stress: spot cones at the extremes", "[stress][slow][cones]") {
+    // Seeded spot lights over the floor with outer cones log-uniform near 0 (1e-4 .. 0.05 rad) and near 90 degrees
+    // (pi/2 - 0.05 .. pi/2, and exactly pi/2), aimed anywhere (edge-on to the floor included: axes in its plane at
+    // its height), one holding the camera (aimed at the floor through the eye), and ranges 1e-4 and 1e4. The
+    // volume tests that index a spot by its cone (sphere) or draw its cone mesh (exact, frontface); budget 16
+    // holds every pixel: exact, and no light dropped.
+    const int seed = GENERATE(seeds());
+    const VolumeTest test = GENERATE(VolumeTest::Sphere, VolumeTest::ExactStencil, VolumeTest::FrontFace);
+    const std::string variant = std::string(volumeTestName(test)) + ", seed " + std::to_string(seed);
+    DYNAMIC_SECTION(variant) {
+        Rng rng(uint64_t(seed) * 1000 + 29);
+        Scene scene = floorScene();
+        const auto spot = [&](glm::vec3 position, glm::vec3 direction, float range, float outer) {
+            PointLight l = light(position, range, rng.colour() * 0.5f, float(rng.next() % 4));
+            l.direction = direction;
+            l.outerConeAngle = outer;
+            l.innerConeAngle = outer * rng.uniform(0.0f, 0.9f);
+            scene.lights.push_back(l);
+        };
+        const auto anywhere = [&] { return glm::vec3(rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 0.3f), rng.uniform(-1.0f, 1.0f)); };
+        for (int i = 0; i < 6; ++i) {
+            const glm::vec3 at(rng.uniform(-9.0f, 9.0f), rng.uniform(0.3f, 4.0f), rng.uniform(-9.0f, 9.0f));
+            spot(at, anywhere(), rng.uniform(3.0f, 8.0f), rng.logUniform(1e-4f, 0.05f));               // near 0
+            spot(at + glm::vec3(0.5f), anywhere(), rng.uniform(2.0f, 6.0f), 1.5707963f - rng.uniform(0.0f, 0.05f));  // near 90
+        }
+        spot({rng.uniform(-8.0f, 8.0f), 2.0f, rng.uniform(-8.0f, 8.0f)}, {0.0f, -1.0f, 0.0f}, 5.0f, 1.5707963f);
+        for (int i = 0; i < 3; ++i)  // edge-on: the axis in the floor's plane, the apex on it
+            spot({rng.uniform(-8.0f, 8.0f), 0.0f, rng.uniform(-8.0f, 8.0f)}, {rng.uniform(-1.0f, 1.0f), 0.0f, 1.0f},
+                 rng.uniform(3.0f, 7.0f), rng.uniform(0.2f, 1.2f));
+        const glm::vec3 eye = scene.camera.position;
+        spot(eye + glm::vec3(0.0f, 0.8f, 0.8f), scene.camera.target - eye, 40.0f, rng.uniform(0.2f, 0.6f));  // holds the camera
+        spot({rng.uniform(-5.0f, 5.0f), 1e-5f, rng.uniform(-5.0f, 5.0f)}, {0.0f, -1.0f, 0.0f}, 1e-4f, rng.uniform(0.1f, 1.5f));
+        spot({0.0f, 5000.0f, 0.0f}, {rng.uniform(-0.05f, 0.05f), -1.0f, 0.0f}, 1e4f, rng.uniform(0.001f, 0.01f));
+        LidrOptions o;
+        o.volumeTest = test;
+        o.packing = {PackingSchemeKind::BitShift, 16, 8};
+        o.transparency = false;
+        const Row r = run("spot cones", variant, scene, o, testGl());
+        requireExactWithinBudget(r);
+        if (r.maxOverlap <= 16) CHECK(r.drops == 0);
+        CHECK(r.truthPairs > 1000);
+    }
+}

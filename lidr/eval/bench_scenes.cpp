@@ -281,4 +281,25 @@ Scene makeOccludedScene(OccludedSceneKind kind, int lightCount, int width, int h
     return scene;
 }
 
+bool makeSpotSceneByName(const std::string& name, Scene& scene, uint32_t seed) {
+    if (name.compare(0, 6, "spots-") != 0) return false;
+    std::string digits = name.substr(6);
+    const bool points = digits.size() > 7 && digits.compare(digits.size() - 7, 7, "-points") == 0;
+    if (points) digits.resize(digits.size() - 7);
+    const bool numeric = !digits.empty() && digits.size() <= 5 &&
+                         std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const int n = numeric ? std::stoi(digits) : 0;
+    if (n < 4 || n > 65535)
+        throw Error("bad scene name '" + name + "': use spots-N or spots-N-points with N lights, 4..65535 (e.g. spots-1024)");
+    scene = makeManyLightScene(n, ManyLightView::TopDown, 1024, 768, seed);
+    scene.name = name;
+    for (size_t i = 3; i < scene.lights.size(); ++i) {  // the particles; the 3 large movers stay points
+        PointLight& l = scene.lights[i];
+        l.direction = {0.0f, -1.0f, 0.0f};
+        l.outerConeAngle = points ? 0.0f : glm::radians(kBenchSpotOuterDegrees);
+        l.innerConeAngle = points ? 0.0f : glm::radians(kBenchSpotInnerDegrees);
+    }
+    return true;
+}
+
 }  // namespace lidr

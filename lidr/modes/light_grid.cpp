@@ -15,6 +15,33 @@ namespace {
 // 2^-24 steps cover all of it, 1e-6 is about 17.
 constexpr float kWindowDepthSlack = 1e-6f;
 constexpr double kRelativeViewDepthSlack = 1e-5;
+
+// A spot light's cone in view space, for the tile test: apex, unit axis, range, and the cone's half angle widened
+// to spotBoundingConeAngle (sphere_bounds.h: covers the fixed-point light table's 16-bit cosines).
+struct ViewCone {
+    glm::vec3 apex, axis;
+    float range, cosAngle, sinAngle;
+};
+ViewCone viewCone(const CameraMatrices& camera, const PointLight& l, float range) {
+    ViewCone c;
+    c.apex = glm::vec3(camera.view * glm::vec4(l.position, 1.0f));
+    c.axis = glm::normalize(glm::vec3(camera.view * glm::vec4(glm::normalize(l.direction), 0.0f)));
+    c.range = range;
+    const double angle = spotBoundingConeAngle(l.outerConeAngle);
+    c.cosAngle = float(std::cos(angle));
+    c.sinAngle = float(std::sin(angle));
+    return c;
+}
+// Whether the cone may reach into the sphere (centre, radius): false only where the sphere lies wholly outside
+// the cone's side, beyond its range or behind its apex (the cone-sphere test of Wronski, "Cull that cone", 2016).
+bool coneMayReachSphere(const ViewCone& c, const glm::vec3& centre, float radius) {
+    const glm::vec3 v = centre - c.apex;
+    const float along = glm::dot(v, c.axis);
+    const float across = std::sqrt(std::max(0.0f, glm::dot(v, v) - along * along));
+    if (c.cosAngle * across - along * c.sinAngle > radius) return false;  // outside the side
+    if (along > c.range + radius) return false;
+    return along >= -radius;
+}
 }  // namespace
 
 LightGrid::LightGrid(int width, int height, int tileSize) : width_(width), height_(height), tileSize_(tileSize) {
@@ -67,6 +94,63 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
         }
     }
 
+    // Spot lights: a tile's cell (its pixels' rays between two view depths) is bounded by a sphere, and the cone
+    // tested against it. The tile's corner rays in view space, as the points where they cross view depth 1 and 2
+    // (a point at view depth d is then lerp(at1, at2, d - 1): exact for perspective and orthographic alike).
+    bool anySpot = false;
+    for (const PointLight& l : lights) anySpot = anySpot || l.isSpot();
+    std::vector<glm::vec3> cornerAt1, cornerAt2;
+    if (anySpot) {
+        const glm::mat4 inverseProjection = glm::inverse(camera.projection);
+        const auto viewPointAtDepth = [&](float ndcX, float ndcY, float depth) {
+            const glm::vec4 a = inverseProjection * glm::vec4(ndcX, ndcY, -1.0f, 1.0f), b = inverseProjection * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+            const glm::vec3 pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
+            return pa + (pb - pa) * ((depth + pa.z) / (pa.z - pb.z));
+        };
+        cornerAt1.resize(size_t(tiles) * 4);
+        cornerAt2.resize(size_t(tiles) * 4);
+        for (int ty = 0; ty < tilesY_; ++ty)
+            for (int tx = 0; tx < tilesX_; ++tx)
+                for (int k = 0; k < 4; ++k) {
+                    const float px = float(std::min((tx + (k & 1)) * tileSize_, width_));
+                    const float py = float(std::min((ty + (k >> 1)) * tileSize_, height_));
+                    const float ndcX = px / float(width_) * 2.0f - 1.0f, ndcY = py / float(height_) * 2.0f - 1.0f;
+                    const size_t at = size_t(ty * tilesX_ + tx) * 4 + size_t(k);
+                    cornerAt1[at] = viewPointAtDepth(ndcX, ndcY, 1.0f);
+                    cornerAt2[at] = viewPointAtDepth(ndcX, ndcY, 2.0f);
+                }
+    }
+    // The bounding sphere of tile t's cell between view depths near and far (centre: the corners' mean).
+    const auto sliceMayHoldCone = [&](const ViewCone& cone, int t, float nearDepth, float farDepth) {
+        glm::vec3 corners[8];
+        glm::vec3 centre(0.0f);
+        for (int k = 0; k < 4; ++k) {
+            const glm::vec3 a = cornerAt1[size_t(t) * 4 + size_t(k)], step = cornerAt2[size_t(t) * 4 + size_t(k)] - a;
+            corners[k] = a + step * (nearDepth - 1.0f);
+            corners[k + 4] = a + step * (farDepth - 1.0f);
+            centre += corners[k] + corners[k + 4];
+        }
+        centre *= 0.125f;
+        float radius = 0.0f;
+        for (const glm::vec3& corner : corners) radius = std::max(radius, glm::length(corner - centre));
+        // Grown by the margin that covers a quantised light table (a moved apex) and a hair of rounding.
+        return coneMayReachSphere(cone, centre, radius * (1.0f + 1e-5f) + 1e-6f * farDepth + radiusMargin);
+    };
+    // A deep cell's sphere is far wider than the cell: where the whole cell's passes, its 4 slices (equal depth
+    // ratios) are tried, and the cone must reach one of them.
+    const auto cellMayHoldCone = [&](const ViewCone& cone, int t, float nearDepth, float farDepth) {
+        if (!sliceMayHoldCone(cone, t, nearDepth, farDepth)) return false;
+        if (!(farDepth > nearDepth * 1.25f) || !(nearDepth > 0.0f)) return true;
+        const float ratio = std::pow(farDepth / nearDepth, 0.25f);
+        float sliceNear = nearDepth;
+        for (int k = 0; k < 4; ++k) {
+            const float sliceFar = k == 3 ? farDepth : sliceNear * ratio;
+            if (sliceMayHoldCone(cone, t, sliceNear, sliceFar)) return true;
+            sliceNear = sliceFar;
+        }
+        return false;
+    };
+
     std::vector<std::vector<uint32_t>> opaque(tiles), transparent(separate ? tiles : 0);
     stats_ = LightGridStats{};
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -75,14 +159,19 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
         const SphereBounds b = projectSphereBounds(camera, l.position, radius);
         glm::ivec4 rect;
         if (!b.visible || !spherePixelRect(camera, l.position, radius, rect)) continue;
+        const bool spot = l.isSpot();
+        const ViewCone cone = spot ? viewCone(camera, l, radius) : ViewCone{};
         bool used = false;
         for (int ty = rect.y / tileSize_; ty <= rect.w / tileSize_; ++ty)
             for (int tx = rect.x / tileSize_; tx <= rect.z / tileSize_; ++tx) {
                 const int t = ty * tilesX_ + tx;
                 if (depth && b.viewDepthMin > tileFar[t]) continue;  // hidden behind the tile's opaque max
+                // A spot light whose cone misses the tile's cell (from the near plane: the transparent lists').
+                if (spot && !cellMayHoldCone(cone, t, camera.nearPlane, tileFar[t])) continue;
                 if (separate) transparent[t].push_back(uint32_t(i + 1)), used = true;
                 if (depth && b.viewDepthMax < tileNear[t]) continue;  // wholly in front of the opaque min
                 if (b.viewDepthMin > gapStart[t] && b.viewDepthMax < gapEnd[t]) continue;  // in the half-Z gap
+                if (spot && depth && !cellMayHoldCone(cone, t, tileNear[t], tileFar[t])) continue;
                 opaque[t].push_back(uint32_t(i + 1));
                 used = true;
             }

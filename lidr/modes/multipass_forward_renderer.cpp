@@ -113,6 +113,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
         const float radius = l.radius + reach;
+        glm::vec3 coneMin, coneMax;  // a spot light's cone's box (the sphere's for a point light)
+        spotLightBox(l, radius, coneMin, coneMax);
         glm::ivec4 rect;
         if (!spherePixelRect(cam, l.position, radius, rect)) continue;  // touches no pixel
         if (options_.scissor) s.scissorBox = glm::ivec4(rect.x, rect.y, rect.z - rect.x + 1, rect.w - rect.y + 1);
@@ -127,7 +129,9 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         light_.set("uLightIndex", float(i + 1));
         const int drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
             if (!options_.cullMeshes) return true;
-            if (!screenCull) return sphereTouchesBox(l.position, radius, bmin, bmax);
+            if (!screenCull)
+                return sphereTouchesBox(l.position, radius, bmin, bmax) &&
+                       glm::all(glm::lessThanEqual(coneMin, bmax)) && glm::all(glm::lessThanEqual(bmin, coneMax));
             const glm::ivec4& box = meshRects[i];  // empty (z < x) when off screen
             return box.x <= box.z && box.x <= rect.z && rect.x <= box.z && box.y <= rect.w && rect.y <= box.w;
         }, true, &cam);

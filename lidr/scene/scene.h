@@ -88,11 +88,6 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
-// A point light, or, with outerConeAngle > 0, a spot light (KHR_lights_punctual): light leaves `position` only
-// inside the cone around `direction`, full between the axis and innerConeAngle, falling smoothly to nothing at
-// outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
-// `radius` (the range) bounds both, and a spot light is indexed by that bounding sphere today: the light lists
-// hold it wherever its sphere reaches a surface, and the shading's cone term is exactly 0 outside the cone.
 // How a point or spot light fades with distance d; either way it gives exactly nothing from d = radius on, so
 // the radius is its light volume (LIDR's lists, the tiles, the CPU truth in lidr/eval/light_coverage.h).
 enum class LightFalloff {
@@ -100,6 +95,13 @@ enum class LightFalloff {
     InverseSquare,  // KHR_lights_punctual: colour x saturate(1 - (d / r)^4) / max(d^2, 1e-4) (glTF lights)
 };
 
+// A point light, or, with outerConeAngle > 0, a spot light (KHR_lights_punctual): light leaves `position` only
+// inside the cone around `direction`, full between the axis and innerConeAngle, falling smoothly to nothing at
+// outerConeAngle (KHR_lights_punctual's falloff, squared linear in the cosine: spotCone()). Both are indexed;
+// `radius` (the range) bounds both. A spot light is indexed by its cone: the sphere volume test tests the cone,
+// the stencil and front-face tests draw a closed cone mesh, tiled forward assigns it to tiles by its cone; the
+// volume tiles and the sphere-ray front-face lists use its bounding sphere (doc/architecture.md, "Light types"):
+// the shading's cone term is exactly 0 outside the cone, so lists that hold more only cost slots.
 struct PointLight {
     glm::vec3 position{0.0f};
     float radius = 1.0f;

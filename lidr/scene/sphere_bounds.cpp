@@ -141,4 +141,30 @@ float viewDepthFromWindowDepth(const CameraMatrices& m, float windowDepth) {
     return float(double(m.projection[3][2]) / (ndc + double(m.projection[2][2])));
 }
 
+double spotBoundingConeAngle(float outerConeAngle) {
+    return std::min(1.5707963267948966, std::acos(std::clamp(std::cos(double(outerConeAngle)) - 2e-5, 0.0, 1.0)) + 1e-3);
+}
+
+void spotLightBox(const PointLight& l, float range, glm::vec3& boxMin, glm::vec3& boxMax) {
+    boxMin = l.position - glm::vec3(range);
+    boxMax = l.position + glm::vec3(range);
+    if (!l.isSpot()) return;
+    const double angle = spotBoundingConeAngle(l.outerConeAngle);
+    const glm::dvec3 apex(l.position), axis = glm::normalize(glm::dvec3(l.direction));
+    const double r = double(range), cosA = std::cos(angle), rim = r * std::sin(angle);
+    const glm::dvec3 rimCentre = apex + axis * (r * cosA);
+    glm::dvec3 lo = glm::min(apex, rimCentre), hi = glm::max(apex, rimCentre);
+    for (int i = 0; i < 3; ++i) {
+        const double extent = rim * std::sqrt(std::max(0.0, 1.0 - axis[i] * axis[i]));
+        lo[i] = std::min(lo[i], rimCentre[i] - extent);
+        hi[i] = std::max(hi[i], rimCentre[i] + extent);
+        if (axis[i] >= cosA) hi[i] = apex[i] + r;   // +axis i lies within the cone: the cap reaches the range
+        if (-axis[i] >= cosA) lo[i] = apex[i] - r;
+    }
+    // Rounded outwards, and never beyond the sphere's box.
+    const glm::vec3 slack(float(1e-6 * r) + 1e-6f);
+    boxMin = glm::max(boxMin, glm::vec3(lo) - slack);
+    boxMax = glm::min(boxMax, glm::vec3(hi) + slack);
+}
+
 }  // namespace lidr

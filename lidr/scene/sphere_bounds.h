@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/scene/camera.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr {
 
@@ -51,5 +52,15 @@ void checkLightSpheres(const std::vector<PointLight>& lights, const char* who);
 // View-space distance along the view direction of a window depth in [0, 1] (inverse of the projection's
 // depth mapping).
 float viewDepthFromWindowDepth(const CameraMatrices& camera, float windowDepth);
+
+// The widest cone the shading may light for this outer cone angle (radians): its cosine lowered by 2e-5 (the
+// fixed-point light table stores cosines in 16 bits) and the angle widened by 1e-3 rad, at most a right angle.
+// What every conservative cone bound widens a spot light to (volume meshes, tile and mesh culling).
+double spotBoundingConeAngle(float outerConeAngle);
+
+// The axis-aligned box around a spot light's cone capped at `range` (a spherical sector): the apex, the rim
+// circle, and the cap's extreme along each axis the cone holds, for the cone spotBoundingConeAngle gives.
+// A point light's box is its sphere's.
+void spotLightBox(const PointLight& light, float range, glm::vec3& boxMin, glm::vec3& boxMax);
 
 }  // namespace lidr

@@ -314,7 +314,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
             frameLights_.push_back(index);
             index = static_cast<uint32_t>(frameLights_.size());
         }
-        volumes.push_back({index, posRadius});
+        volumes.push_back({index, posRadius, -1, spotCone(l)});
     }
     stats_.drawnLights = static_cast<int>(volumes.size());
     frameRegions_ = IndexRegions{};
@@ -464,7 +464,7 @@ void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector
             const size_t entry = size_t(r) * 256 + k - 1;
             table[entry] = lights[volumes[i].index - 1];
             frameLights_[entry] = sceneIndex[volumes[i].index - 1];
-            entries.push_back({k, volumes[i].posRadius, r});
+            entries.push_back({k, volumes[i].posRadius, r, volumes[i].cone});
         }
     volumes = std::move(entries);
     frameRegions_ = std::move(regions);
@@ -638,7 +638,8 @@ std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight
     std::vector<float> radii;
     radii.reserve(lights.size());
     for (size_t i = 0; i < lights.size(); ++i)
-        radii.push_back(volumePass_.outsideRadiusFor({uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius)}));
+        radii.push_back(volumePass_.outsideRadiusFor(
+            {uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius), -1, spotCone(lights[i])}));
     return radii;
 }
 

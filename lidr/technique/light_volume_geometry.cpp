@@ -25,6 +25,15 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         positions.insert(positions.end(), meshes_[level].positions.begin(), meshes_[level].positions.end());
         for (uint16_t i : meshes_[level].indices) indices.push_back(static_cast<uint16_t>(base + i));
     }
+    {
+        // A spot light's cone mesh (stencil and front-face tests), placed per light by light_volume.vert.
+        const LightVolumeMesh spot = makeSpotVolumeMesh();
+        const auto base = static_cast<uint16_t>(positions.size());
+        firstIndex_[kSpotDetail] = static_cast<GLsizei>(indices.size());
+        indexCount_[kSpotDetail] = static_cast<GLsizei>(spot.indices.size());
+        positions.insert(positions.end(), spot.positions.begin(), spot.positions.end());
+        for (uint16_t i : spot.indices) indices.push_back(static_cast<uint16_t>(base + i));
+    }
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
     programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
@@ -41,7 +50,8 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
         // its extra fill costs less than their vertices (doc/benchmarks.md).
         const LightVolumeMesh& mesh = meshes_[batchLevel_];
-        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 2;  // one target
+        // Per light: its sphere, its cone and one index colour per target.
+        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 3;  // one target
         batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
         std::vector<glm::vec4> copies;
         std::vector<uint16_t> copyIndices;
@@ -85,16 +95,29 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
 }
 
 int LightVolumeGeometry::batchFor(int batch, int maxVertexUniformVectors, int targetCount) {
-    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (1 + targetCount)));
+    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (2 + targetCount)));
 }
 
 int LightVolumeGeometry::batchFor(int targetCount) const {
     return batchFor(batch_, maxVertexUniformVectors_, targetCount);
 }
 
+const SpotVolumeShape* LightVolumeGeometry::spotShapeOf(const VolumeLight& l, glm::vec3* axis) const {
+    // The cone as the shading takes it (lidr::spotCone): axis x scale, -cos(outer) x scale; a point light's is
+    // (0, 0, 0, 1).
+    const float scale = glm::length(glm::vec3(l.cone));
+    if (!(scale > 0.0f)) return nullptr;
+    if (axis) *axis = glm::vec3(l.cone) / scale;
+    const float cosOuter = std::clamp(-l.cone.w / scale, 0.0f, 1.0f);
+    auto it = spotShapes_.find(cosOuter);
+    if (it == spotShapes_.end()) it = spotShapes_.emplace(cosOuter, spotVolumeShape(std::acos(cosOuter))).first;
+    return &it->second;
+}
+
 int LightVolumeGeometry::detailFor(const VolumeLight& l, const CameraMatrices& camera) const {
     const int finest = kDetailLevels - 1;
     if (isShaderVolumeTest(test_)) return batchLevel_;
+    if (spotShapeOf(l)) return kSpotDetail;
     if (coarsest_ == finest) return finest;
     // Projected radius in pixels: focal length (pixels) x tan of the sphere's angular radius, stretched by
     // 1 / cos^2 of its angle off the view axis (how a perspective projection widens off-centre spheres).
@@ -116,12 +139,15 @@ int LightVolumeGeometry::detailFor(const VolumeLight& l, const CameraMatrices& c
 float LightVolumeGeometry::outsideRadiusFor(const VolumeLight& light, const CameraMatrices& camera) const {
     // The shader tests mark exactly what the sphere (times kSphereRadiusScale) reaches, whatever mesh is drawn.
     if (isShaderVolumeTest(test_)) return kSphereRadiusScale;
+    if (const SpotVolumeShape* spot = spotShapeOf(light)) return spot->capScale;  // the cone mesh's cap
     return meshes_[size_t(detailFor(light, camera))].outsideRadius;
 }
 
 bool LightVolumeGeometry::reachesFarPlane(const VolumeLight& l, const CameraMatrices& camera) const {
-    return glm::dot(glm::vec3(l.posRadius) - camera.eye, camera.forward) +
-               l.posRadius.w * meshes_[size_t(detailFor(l, camera))].outsideRadius >=
+    // The mesh drawn: the sphere tests' batch mesh reaches past what they mark, a spot's cone mesh to its cap.
+    const int detail = detailFor(l, camera);
+    const float outside = detail == kSpotDetail ? spotShapeOf(l)->capScale : meshes_[size_t(detail)].outsideRadius;
+    return glm::dot(glm::vec3(l.posRadius) - camera.eye, camera.forward) + l.posRadius.w * outside >=
            camera.farPlane * 0.999f;
 }
 
@@ -180,6 +206,7 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
         program.set("uViewProj", camera_.viewProjection);
         // Per light: looked up once per draw, set through typed handles.
         lightsUniform_ = program.uniform<glm::vec4>("uLightPosRadius");
+        spotUniform_ = program.uniform<glm::vec4>("uSpotVolume");
         colorsUniform_ = program.uniform<glm::vec4>("uIndexColor");
         clampUniform_ = program.uniform<float>("uClampToFar");
         return;
@@ -204,10 +231,12 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
     lightsUniform_ = program.uniform<glm::vec4>("uLights");
+    conesUniform_ = program.uniform<glm::vec4>("uCones");
     colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");
     clampUniform_ = program.uniform<float>("uClampToFar");
     const size_t batch = size_t(batchFor(plan.programTargets));
     lightData_.resize(batch);
+    coneData_.resize(batch);
     colorData_.resize(batch * size_t(plan.programTargets));
 }
 
@@ -219,14 +248,23 @@ void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<Vol
             for (int i = 0; i < step.lightCount; ++i) {
                 const VolumeLight& l = lights[size_t(step.firstLight + i)];
                 lightData_[size_t(i)] = l.posRadius;
+                coneData_[size_t(i)] = l.cone;
                 const IndexColors c = colors(l.index);
                 for (int t = 0; t < targets_; ++t) colorData_[size_t(i * targets_ + t)] = c[size_t(t)];
             }
             lightsUniform_.setArray(lightData_.data(), step.lightCount);
+            conesUniform_.setArray(coneData_.data(), step.lightCount);
             colorsUniform_.setArray(colorData_.data(), step.lightCount * targets_);
         } else {
             const VolumeLight& l = lights[size_t(step.firstLight)];
-            lightsUniform_.set(l.posRadius);
+            glm::vec3 axis(0.0f);
+            if (const SpotVolumeShape* spot = spotShapeOf(l, &axis)) {
+                lightsUniform_.set(glm::vec4(glm::vec3(l.posRadius), l.posRadius.w * spot->capScale));
+                spotUniform_.set(glm::vec4(axis, spot->rimAngle));
+            } else {
+                lightsUniform_.set(l.posRadius);
+                spotUniform_.set(glm::vec4(0.0f));
+            }
             const IndexColors c = colors(l.index);
             colorsUniform_.setArray(c.data(), targets_);
         }

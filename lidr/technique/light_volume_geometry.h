@@ -31,6 +31,9 @@ struct VolumeLight {
     uint32_t index = 0;
     glm::vec4 posRadius{0.0f};
     int region = -1;  // tile-culled volumes with IndexRegions: the only region whose tiles this entry marks
+    // A spot light's cone as the shading takes it (lidr::spotCone: world axis x scale, offset); a point light's
+    // (0, 0, 0, 1) passes everywhere. The sphere test keeps a spot only where this ramp is >= 0 (the shading's 0).
+    glm::vec4 cone{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 class VolumeGeometry {
@@ -70,9 +73,11 @@ public:
     void drawStep(const VolumeStep& step, const std::vector<VolumeLight>& lights,
                   const IndexColorsFor& colors) override;
 
-    // The mesh drawn for a light (0 = 20 faces, 1 = 80, 2 = 320) and its relative vertex distance; the shader
-    // tests' outsideRadiusFor is kSphereRadiusScale, what they mark, whatever mesh they draw.
+    // The mesh drawn for a light (0 = 20 faces, 1 = 80, 2 = 320; kSpotDetail: a spot light's cone mesh in the
+    // stencil and front-face tests) and its relative vertex distance; the shader tests' outsideRadiusFor is
+    // kSphereRadiusScale, what they mark, whatever mesh they draw.
     int detailFor(const VolumeLight& light, const CameraMatrices& camera) const;
+    static constexpr int kSpotDetail = 3;  // the cone mesh, after the sphere's levels
     float outsideRadiusFor(const VolumeLight& light, const CameraMatrices& camera) const;
     float volumeOutsideRadius() const { return meshes_[size_t(coarsest_)].outsideRadius; }
     int batchSize() const { return batch_; }
@@ -120,6 +125,10 @@ private:
         std::vector<TileReach> tiles;
     };
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
+    // A spot light's cone mesh shape (spotVolumeShape, cached by cone), its unit axis in `axis`; nullptr for a
+    // point light.
+    const SpotVolumeShape* spotShapeOf(const VolumeLight& light, glm::vec3* axis = nullptr) const;
+    mutable std::unordered_map<float, SpotVolumeShape> spotShapes_;  // by the cosine of the outer cone angle
     const SphereTiles& tilesOf(const glm::vec4& posRadius);  // the sphere's tiles this frame (cached)
     void cullToTiles(const std::vector<VolumeLight>& lights);     // lightTiles_, tileCandidates_ for a draw
     bool tileInRegion(int tile, int region) const {
@@ -132,7 +141,7 @@ private:
 
     VolumeTest test_ = VolumeTest::BackFace;
     LightVolumeMesh meshes_[kDetailLevels];  // subdivisions 0, 1, 2, in one vertex and one index buffer
-    GLsizei firstIndex_[kDetailLevels] = {}, indexCount_[kDetailLevels] = {};
+    GLsizei firstIndex_[kDetailLevels + 1] = {}, indexCount_[kDetailLevels + 1] = {};  // + the cone mesh
     int coarsest_ = kDetailLevels - 1;  // 0 with volumeDetail, else the finest only
     gl::Buffer vertices_, indices_;
     DrawTargetPrograms programs_;  // the stencil tests' one-light program
@@ -148,9 +157,10 @@ private:
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;
     float depthUnits_ = 16777215.0f;  // 2^depthBits - 1
-    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_;
+    gl::Uniform<glm::vec4> lightsUniform_, colorsUniform_, conesUniform_;
+    gl::Uniform<glm::vec4> spotUniform_;  // the stencil tests' uSpotVolume
     gl::Uniform<float> clampUniform_;
-    std::vector<glm::vec4> lightData_, colorData_;
+    std::vector<glm::vec4> lightData_, colorData_, coneData_;
     // Tile-culled volumes (setTileDepth): the frame's tile ranges, each light's tiles (by its place in the
     // pass's light list) and each tile's candidate count, the stream buffer of quads and its program.
     const VolumeTiles* tiles_ = nullptr;

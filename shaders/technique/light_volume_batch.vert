@@ -9,6 +9,7 @@ uniform mat4 uViewProj;
 uniform mat4 uView;
 uniform mat4 uProjection;
 uniform vec4 uLights[LIDR_BATCH];                           // world centre, radius
+uniform vec4 uCones[LIDR_BATCH];  // a spot's cone term as the shading takes it (world axis x scale, offset); (0, 0, 0, 1) for a point light
 uniform vec4 uIndexColors[LIDR_BATCH * LIDR_DRAW_TARGETS];  // the light's value per target, bytes / 255
 // 1.0 where the context has no depth clamp and a volume of the batch reaches past the far plane: vertices
 // beyond it are pulled onto it (x, y and w untouched, so the footprint is unchanged); the pass then draws
@@ -16,6 +17,7 @@ uniform vec4 uIndexColors[LIDR_BATCH * LIDR_DRAW_TARGETS];  // the light's value
 uniform float uClampToFar;
 
 varying vec4 vLightView;  // centre in view space, radius (the same at every vertex of a copy)
+varying vec4 vConeView;   // the cone term with its axis in view space (the view has no scale: dots are kept)
 varying vec3 vViewPos;    // this point of the volume in view space: its direction is the pixel's eye ray
 varying vec4 vColor0;
 #if LIDR_DRAW_TARGETS > 1
@@ -39,6 +41,8 @@ void main() {
     if (uClampToFar > 0.5 && gl_Position.w > 0.0) gl_Position.z = min(gl_Position.z, gl_Position.w);
 #endif
     vLightView = vec4((uView * vec4(light.xyz, 1.0)).xyz, light.w);
+    vec4 cone = uCones[slot];
+    vConeView = vec4((uView * vec4(cone.xyz, 0.0)).xyz, cone.w);
     int c = slot * LIDR_DRAW_TARGETS;
     vColor0 = uIndexColors[c];
 #if LIDR_DRAW_TARGETS > 1

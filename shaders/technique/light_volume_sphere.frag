@@ -2,7 +2,8 @@
 // The exact volume test in the fragment shader: the pixel's surface point, rebuilt from a copy of the
 // pre-pass depth, is tested against the light's true sphere, and every other fragment of the (coarser,
 // enclosing) volume mesh is discarded before it reaches the stencil. So only lights that really reach the
-// pixel are counted and written, in one draw, whatever the rank window.
+// pixel are counted and written, in one draw, whatever the rank window. A spot light's fragment must also lie
+// inside its cone, where the shading's cone term is above 0 (opaque lists; the front-face lists keep the sphere).
 //   LIDR_SPHERE_RAY undefined: the surface point lies inside the sphere (opaque lists).
 //   LIDR_SPHERE_RAY defined:   the eye ray between the near plane and the surface meets the sphere (front-face
 //                              lists for transparent layers and MSAA edge samples).
@@ -18,6 +19,7 @@ uniform float uRadiusScale;    // a hair over 1: lights are kept up to here (the
 uniform float uDepthMargin;    // the surface lies within this much window depth of the stored depth (a few steps)
 
 varying vec4 vLightView;
+varying vec4 vConeView;
 varying vec3 vViewPos;
 varying vec4 vColor0;
 #if LIDR_DRAW_TARGETS > 1
@@ -54,6 +56,14 @@ void main() {
     vec3 d = ray * t - vLightView.xyz;
     float r = vLightView.w * uRadiusScale;
     if (dot(d, d) > r * r) discard;
+#ifndef LIDR_SPHERE_RAY
+    // The cone: the shading's ramp dot(unit d, axis) x scale + offset is >= 0 at one end of the surface's span
+    // (multiplied by |d|: no division, and the apex, |d| = 0, is kept). A point light's (0, 0, 0, 1) always passes.
+    vec3 dNear = ray * surfaceNear - vLightView.xyz, dFar = ray * surfaceFar - vLightView.xyz;
+    if (dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) < 0.0 &&
+        dot(dFar, vConeView.xyz) + vConeView.w * length(dFar) < 0.0)
+        discard;
+#endif
     gl_FragData[0] = lidrExactBytes(vColor0);
 #if LIDR_DRAW_TARGETS > 1
     gl_FragData[1] = lidrExactBytes(vColor1);
