@@ -92,6 +92,8 @@ public:
     // with more than k such lights. The fragment shader's test is unchanged, so the lists are the same; hidden
     // lights and empty tiles cost no fragment. nullptr: volume meshes.
     void setTiles(const VolumeTiles* tiles, const CameraMatrices& camera);
+    // Whether the next draw's lights include a spot light (the shader tests' cone test; on by default).
+    void setSpotCones(bool on) { spotCones_ = on; }
     bool drawsScreenTiles() const override { return tiles_ != nullptr; }
     // With tiles: whether the sphere (centre, radius) may mark any pixel of this frame (some tile may hold a
     // surface inside it). Its tiles are kept for the frame's draws.
@@ -149,7 +151,8 @@ private:
     int batch_ = 1, batchLevel_ = 0, maxVertexUniformVectors_ = 128;
     GLsizei batchCopyIndices_ = 0;
     gl::Buffer batchVertices_, batchIndices_;
-    DrawTargetPrograms batchPrograms_;  // the shader tests' batch program
+    DrawTargetPrograms batchPrograms_[2];  // the shader tests' batch program, without and with the cone test
+    bool spotCones_ = true;  // setSpotCones: the next draw's lights include spot lights
     // The frame (begin()) and the current plan's program and per-step uniforms (one light, or a batch's arrays).
     CameraMatrices camera_;
     glm::ivec2 targetSize_{1};
@@ -183,7 +186,7 @@ private:
     long tileQuadPixels_ = 0;
     gl::Buffer tileQuads_;
     std::vector<glm::vec4> tileVertices_;
-    DrawTargetPrograms tilePrograms_;
+    DrawTargetPrograms tilePrograms_[2];
 };
 
 }  // namespace lidr

@@ -84,6 +84,10 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
         throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
     const VolumeDrawPlan plan = planFor(d, lights);
     VolumeGeometry& geometry = activeGeometry();
+    // A point light's cone is (0, 0, 0, 1): draws of point lights alone use the shader tests' program without
+    // the cone test.
+    volumes_.setSpotCones(std::any_of(lights.begin(), lights.end(),
+                                      [](const VolumeLight& l) { return l.cone != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f); }));
     StateCache& cache = StateCache::current();  // sets per step only what differs from the last
     if (plan.restartCount) {
         ClearAction clear;

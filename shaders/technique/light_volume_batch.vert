@@ -17,7 +17,9 @@ uniform vec4 uIndexColors[LIDR_BATCH * LIDR_DRAW_TARGETS];  // the light's value
 uniform float uClampToFar;
 
 varying vec4 vLightView;  // centre in view space, radius (the same at every vertex of a copy)
+#ifdef LIDR_SPOT_CONES
 varying vec4 vConeView;   // the cone term with its axis in view space (the view has no scale: dots are kept)
+#endif
 varying vec3 vViewPos;    // this point of the volume in view space: its direction is the pixel's eye ray
 varying vec4 vColor0;
 #if LIDR_DRAW_TARGETS > 1
@@ -41,8 +43,10 @@ void main() {
     if (uClampToFar > 0.5 && gl_Position.w > 0.0) gl_Position.z = min(gl_Position.z, gl_Position.w);
 #endif
     vLightView = vec4((uView * vec4(light.xyz, 1.0)).xyz, light.w);
+#ifdef LIDR_SPOT_CONES
     vec4 cone = uCones[slot];
     vConeView = vec4((uView * vec4(cone.xyz, 0.0)).xyz, cone.w);
+#endif
     int c = slot * LIDR_DRAW_TARGETS;
     vColor0 = uIndexColors[c];
 #if LIDR_DRAW_TARGETS > 1

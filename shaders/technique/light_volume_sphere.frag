@@ -19,7 +19,9 @@ uniform float uRadiusScale;    // a hair over 1: lights are kept up to here (the
 uniform float uDepthMargin;    // the surface lies within this much window depth of the stored depth (a few steps)
 
 varying vec4 vLightView;
-varying vec4 vConeView;
+#ifdef LIDR_SPOT_CONES
+varying vec4 vConeView;  // LIDR_SPOT_CONES: a draw with spot lights (a draw of point lights alone goes without)
+#endif
 varying vec3 vViewPos;
 varying vec4 vColor0;
 #if LIDR_DRAW_TARGETS > 1
@@ -56,7 +58,7 @@ void main() {
     vec3 d = ray * t - vLightView.xyz;
     float r = vLightView.w * uRadiusScale;
     if (dot(d, d) > r * r) discard;
-#ifndef LIDR_SPHERE_RAY
+#if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
     // The cone: the shading's ramp dot(unit d, axis) x scale + offset is >= 0 at one end of the surface's span
     // (multiplied by |d|: no division, and the apex, |d| = 0, is kept). A point light's (0, 0, 0, 1) always passes.
     vec3 dNear = ray * surfaceNear - vLightView.xyz, dFar = ray * surfaceFar - vLightView.xyz;
