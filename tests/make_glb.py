@@ -6,7 +6,7 @@ texture coordinates and glTF textures, embedded as PNG: the floor a base colour 
 grooves, metallic-roughness and occlusion (repeated by KHR_texture_transform), the sphere emissive stripes
 with emissiveFactor 1 and a metallic-roughness texture, one box an alpha MASK cut-out, double-sided.
 --punctual adds KHR_lights_punctual lights in the specification's units: a warm 30 cd point light with range 5,
-a blue 8 cd point light without range and an 80 cd spot light shining straight down.
+a blue 8 cd point light without range, an 80 cd spot light shining straight down and a 0.8 lux directional sun.
 Python's standard library only.
 
     python3 tests/make_glb.py OUT.glb [--triangles N] [--textured] [--punctual]
@@ -200,10 +200,12 @@ def main():
             {"name": "warm", "type": "point", "color": [1.0, 0.85, 0.7], "intensity": 30.0, "range": 5.0},
             {"name": "blue, no range", "type": "point", "color": [0.5, 0.7, 1.0], "intensity": 8.0},
             {"name": "spot", "type": "spot", "intensity": 80.0,
-             "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.5}}]}}
+             "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.5}},
+            {"name": "sun", "type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 0.8}]}}
         down = [-math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)]  # -90 degrees about x: the spot's -z points down
+        slant = [-0.5, 0.5, 0.0, math.sqrt(0.5)]  # the sun's -z tilted down and sideways (a unit quaternion)
         for light, node in enumerate([{"translation": [-1.0, 2.2, 1.2]}, {"translation": [2.2, 1.2, 0.5]},
-                                      {"translation": [1.5, 3.5, -1.2], "rotation": down}]):
+                                      {"translation": [1.5, 3.5, -1.2], "rotation": down}, {"rotation": slant}]):
             node["extensions"] = {"KHR_lights_punctual": {"light": light}}
             nodes.append(node)
         doc["scenes"][0]["nodes"] = list(range(len(nodes)))

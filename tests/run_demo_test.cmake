@@ -212,7 +212,7 @@ endif()
 # Issue 26's "done when": a generated textured, normal-mapped, emissive glTF (tests/make_glb.py --textured: every
 # material texture, a MASK cut-out) without lights is drawn with every texture (0 warnings) under the default rig;
 # with --lights 1024 LIDR's automatic configuration drops nothing and equals the reference; and with its own
-# KHR_lights_punctual lights (candela, inverse square, one without range) the same.
+# KHR_lights_punctual lights (candela, inverse square, one without range, a spot and a directional sun) the same.
 if(NOT PYTHON)
   message(FATAL_ERROR "no Python 3 interpreter to write the textured glTF (tests/make_glb.py)")
 endif()
