@@ -29,21 +29,25 @@ DepthPrepass::DepthPrepass(DepthEmulation depth) {
                                    buildShaderSource("depth_only.frag", defines, includes), geometryAttributes());
 }
 
-void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) const {
+void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera) {
     StateCache& cache = StateCache::current();
-    ClearAction clear;
-    clear.depth = clear.stencil = true;
-    cache.clear(clear);
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
     s.colorMask = glm::bvec4(false);
     cache.apply(s);
-    program_.use();
-    program_.set("uViewProj", camera.viewProjection);
-    scene.draw(program_, DrawFilter::Opaque, false, &camera);
+    program.use();
+    program.set("uViewProj", camera.viewProjection);
+    scene.draw(program, DrawFilter::Opaque, false, &camera);
     cache.apply(RenderState{});
+}
+
+void DepthPrepass::run(const GpuScene& scene, const CameraMatrices& camera) const {
+    ClearAction clear;
+    clear.depth = clear.stencil = true;
+    StateCache::current().clear(clear);
+    drawOpaqueDepth(program_, scene, camera);
     checkGl("depth pre-pass");
 }
 

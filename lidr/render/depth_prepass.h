@@ -24,6 +24,10 @@ private:
     gl::Program program_;
 };
 
+// Draws the opaque meshes' depth (LESS, depth writes, no colour) seen by `camera` with `program` (geometry.vert
+// + depth_only.frag) into the bound target, then restores the default state: the pre-pass and the shadow maps.
+void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera);
+
 // Attribute bindings every geometry program uses.
 const std::vector<std::pair<std::string, GLuint>>& geometryAttributes();
 

@@ -137,19 +137,10 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
         pass.clear.depth = true;
         pass.clear.region = slots[i].rect;
         cache.beginPass(pass);
-        RenderState rs;
-        rs.depthTest = true;
-        rs.depthFunc = GL_LESS;
-        rs.depthWrite = true;
-        rs.colorMask = glm::bvec4(false);
-        cache.apply(rs);
-        program_.use();
-        program_.set("uViewProj", slots[i].camera.viewProjection);
-        scene.draw(program_, DrawFilter::Opaque, false, &slots[i].camera);
+        drawOpaqueDepth(program_, scene, slots[i].camera);
         d = {posRange, directionCone, scene.version(), true};
         ++drawnNow;
     }
-    cache.apply(RenderState{});
     checkGl("shadow atlas: maps");
     slots_ = std::move(slots);
     mapsDrawn_ += drawnNow;
