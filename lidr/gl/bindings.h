@@ -34,6 +34,11 @@ enum TextureUnit : int {
     kUnitMetallicRoughness = 13,
     kUnitOcclusion = 14,
     kUnitNormal = 15,
+    // Shading passes and LIDR's volume pass with shadows: the shadow atlas (lidr/render/shadow_maps.h), above
+    // everything else where the context has more than 16 units; on 16 (WebGL's usual count) shadows need the
+    // float light table and take the fixed table's unit (ShadowMaps::unit).
+    kUnitShadowAtlas = 16,
+    kUnitShadowAtlasOn16 = kUnitLightPosRadiusLow,
     // FramePresenter: the frame.
     kUnitPresentedFrame = 0,
     // The highest unit a shading pass binds (capability checks).

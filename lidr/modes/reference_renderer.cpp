@@ -14,6 +14,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
     : scene_(scene),
       targets_(info, width, height, msaaSamples),
       lightTable_(info, lightCapacity, forceFixedLightTable),
+      shadows_(info),
       timer_(info),
       transparency_(transparency),
       sampleShading_(sampleShading) {
@@ -24,6 +25,7 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
     defines.push_back({"LIDR_MAX_LIGHTS", std::to_string(std::max(lightCapacity, 1))});
     program_ = gl::Program::create("reference-forward", buildShaderSource("geometry.vert"),
                                    buildShaderSource("reference_forward.frag", defines), geometryAttributes());
+    defines_ = defines;
 }
 
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -35,8 +37,14 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    if (shading.shadows.enabled) shadows_.checkUnits(lightTable_.format());
+    TimedPass shadowMapsTime(timer_, "shadow-maps");
+    const std::vector<int>& shadowTiles = shadows_.update(scene_, lights, shading.shadows);
+    shadowMapsTime.end();
+    stats_.shadowCasters = shadows_.casters();
+    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
     TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights);
+    lightTable_.update(lights, shadowTiles);
     lightTableTime.end();
 
     TimedPass depthPrepassTime(timer_, "depth-prepass");
@@ -46,14 +54,19 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
 
     TimedPass bruteForceTime(timer_, "brute-force");
     beginOpaqueShading(targets_, shading, true, sampleShading_);
-    useShadingProgram(program_, cam, shading, lightTable_);
-    program_.set("uLightCount", float(lights.size()));
-    scene_.draw(program_, DrawFilter::Opaque, true, &cam);
+    // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), reading the maps drawn above.
+    const gl::Program& program = shadows_.active() ? shadows_.program("reference-forward", "geometry.vert",
+                                                                      "reference_forward.frag", defines_, shading.shadows)
+                                                   : program_;
+    useShadingProgram(program, cam, shading, lightTable_);
+    shadows_.bind(program, shading.shadows);
+    program.set("uLightCount", float(lights.size()));
+    scene_.draw(program, DrawFilter::Opaque, true, &cam);
     bruteForceTime.end();
     if (transparency_ && scene_.hasTransparent()) {
         TimedPass bruteForceTransparentTime(timer_, "brute-force-transparent");
         beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
-        scene_.drawTransparentSorted(program_, cam.eye);
+        scene_.drawTransparentSorted(program, cam.eye);
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});

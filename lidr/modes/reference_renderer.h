@@ -9,6 +9,7 @@
 #include "lidr/render/light_table.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shadow_maps.h"
 
 namespace lidr {
 
@@ -37,6 +38,8 @@ private:
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     gl::Program program_;
+    ShaderDefines defines_;
+    ShadowMaps shadows_;
     FrameTimer timer_;
     bool transparency_ = false;  // transparent meshes drawn where the scene has them (objects come and go)
     bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does

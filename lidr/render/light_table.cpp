@@ -68,10 +68,14 @@ void LightTable::setRegionMap(std::vector<float> tileRows, int firstRow, int til
                                            : glm::vec4(1.0f / float(tileSize), float(tilesX), float(firstRow), 1.0f);
 }
 
-void LightTable::update(const std::vector<PointLight>& lights) {
+void LightTable::update(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles) {
     if (static_cast<int>(lights.size()) > capacity_)
         throw Error("light table holds " + std::to_string(capacity_) + " lights, scene has " +
                     std::to_string(lights.size()));
+    if (!shadowTiles.empty() && shadowTiles.size() != lights.size())
+        throw Error("light table: " + std::to_string(shadowTiles.size()) + " shadow tiles for " +
+                    std::to_string(lights.size()) + " lights");
+    auto tileCode = [&](size_t i) { return shadowTiles.empty() ? 0 : std::clamp(shadowTiles[i] + 1, 0, 65535); };
     count_ = static_cast<int>(lights.size());
     current_ ^= 1;
     const TextureSet& set = sets_[current_];
@@ -92,6 +96,7 @@ void LightTable::update(const std::vector<PointLight>& lights) {
             q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
             float* c = &col[(i + 1) * 4];
             c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = l.isSpot() ? 0.0f : 1.0f;  // 0: read the cone
+            col[(texels + i + 1) * 4 + 2] = float(tileCode(i));  // the shadow tile + 1 (lidrFetchShadowTile)
         }
         if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
             throw Error("light table: the region map would overwrite lights");
@@ -148,8 +153,10 @@ void LightTable::update(const std::vector<PointLight>& lights) {
                         static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
                 col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
             }
-            if (!l.isSpot()) continue;
             const size_t cone = (texels + i + 1) * 4;
+            col[cone + 2] = static_cast<uint8_t>(tileCode(i) & 0xFF);  // the shadow tile + 1 (lidrFetchShadowTile)
+            col[cone + 3] = static_cast<uint8_t>(tileCode(i) >> 8);
+            if (!l.isSpot()) continue;
             const glm::vec3 axis = glm::normalize(l.direction);
             for (int c = 0; c < 3; ++c) put16(cone + size_t(c), (axis[c] + 1.0f) * 0.5f);
             put16(cone + 3, std::cos(l.outerConeAngle));

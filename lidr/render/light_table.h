@@ -34,7 +34,9 @@ public:
     // Room for `capacity` lights (plus the null light). Fixed16 is chosen when the context has no float
     // textures or when `forceFixed16`.
     LightTable(const GlInfo& info, int capacity, bool forceFixed16 = false);
-    void update(const std::vector<PointLight>& lights);  // throws if more lights than capacity
+    // Throws if more lights than capacity. shadowTiles: empty, or per light the first shadow-atlas tile of its
+    // maps (-1: it casts no shadow; ShadowAtlas::firstTiles), read by LIDR_SHADOWS shaders (lidrFetchShadowTile).
+    void update(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles = {});
     void bind(const gl::Program& program) const;          // textures to their units and the uniforms
     LightTableFormat format() const { return format_; }
     ShaderDefines defines() const;                         // LIDR_LIGHT_TABLE_FIXED16 when fixed

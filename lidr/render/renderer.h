@@ -11,6 +11,7 @@
 #include "lidr/gl/saved_gl_state.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/output_transform.h"
+#include "lidr/render/shadow_settings.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
@@ -21,6 +22,7 @@ struct ShadingParameters {
     OutputTransform output{};     // exposure, tone map, sRGB encoding (lidr/render/output_transform.h)
     // Not indexed: every mode adds them in its forward pass (at most maxDirectionalLights; shading.glsl).
     std::vector<DirectionalLight> directionalLights{};
+    ShadowSettings shadows{};  // the lights with castsShadow cast shadows when enabled (issue 30)
 };
 
 // The scene's own shading: its ambient, background and directional lights, with `output`.
@@ -62,6 +64,8 @@ struct FrameStats {
     int transparentVolumeLights = 0;  // LIDR: lights drawn into the transparent layers' front-face lists
     bool transparentVolumePassSkipped = false;  // LIDR: no transparent surface in view, no pass drawn
     bool volumePassSkipped = false;  // LIDR: no light reaches a visible surface: no volume pass, no index read
+    int shadowCasters = 0;    // lights whose shadow maps the frame used
+    int shadowMapsDrawn = 0;  // shadow-atlas tiles drawn this frame (0 when nothing changed: ShadowAtlas)
     AutoDecision autoDecision;
     // Timing (Renderer::setTiming): `passes` belong to the frame this many frames before this one (deferred
     // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.

@@ -16,6 +16,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
+#include "lidr/render/shadow_settings.h"
 #include "lidr/scene/camera.h"
 #include "lidr/scene/scene.h"
 
@@ -32,11 +33,6 @@ CameraMatrices spotShadowCamera(const PointLight& spot, int tileSize);
 CameraMatrices pointShadowCamera(const PointLight& light, int face, int tileSize);
 // Tiles a light's maps take: 1 for a spot light, 6 for a point light.
 int shadowTiles(const PointLight& light);
-
-struct ShadowAtlasOptions {
-    int size = 2048;     // texels per side of the atlas
-    int tileSize = 512;  // texels per side of one light's map: (size / tileSize)^2 maps at most
-};
 
 class ShadowAtlas {
 public:
@@ -65,6 +61,8 @@ public:
     long mapsDrawnTotal() const { return mapsDrawn_; }
 
     const gl::Texture& depthTexture() const { return depth_; }
+    const gl::Texture& texture() const { return depth_; }  // what lookups sample (shadow_lookup.glsl)
+    bool packed() const { return packed_; }  // an RGBA8 atlas holding 24-bit depth (LIDR_SHADOW_PACKED)
     // Window depth of every atlas texel, rows bottom to top (tests and the debug view).
     std::vector<float> readDepth() const;
 
@@ -82,6 +80,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<Drawn> drawn_;
     long mapsDrawn_ = 0;
+    bool packed_ = false;
 };
 
 }  // namespace lidr

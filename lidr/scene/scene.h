@@ -111,6 +111,7 @@ struct PointLight {
     float innerConeAngle = 0.0f;             // radians, [0, outerConeAngle)
     float outerConeAngle = 0.0f;             // radians, (0, pi/2] for a spot light; 0: a point light
     LightFalloff falloff = LightFalloff::Smooth;  // InverseSquare: colour is (lux at 1 m) / pi (doc/colour.md)
+    bool castsShadow = false;  // drawn into the shadow atlas when the frame's ShadowSettings are enabled
     bool isSpot() const { return outerConeAngle > 0.0f; }
 };
 

@@ -76,3 +76,25 @@ void lidrFetchLight(float index, out vec4 posRadius, out vec3 color, out vec4 sp
 void lidrFetchLight(vec2 halves, out vec4 posRadius, out vec3 color, out vec4 spot) {
     lidrFetchLightAt(lidrLightTexCoord(halves), posRadius, color, spot);
 }
+
+#ifdef LIDR_SHADOWS
+// The first shadow-atlas tile of a light's maps (shadow_lookup.glsl), -1 for a light that casts no shadow: the
+// colour texture's cone block holds tile + 1 (0: none) in blue (float) or in blue and alpha as low and high
+// bytes (fixed point; the red and green bytes there are a spot's cos(inner)).
+float lidrFetchShadowTileAt(vec2 uv) {
+    vec4 texel = texture2D(uLightColor, uv + vec2(0.0, 0.5));
+#ifdef LIDR_LIGHT_TABLE_FIXED16
+    return floor(texel.b * 255.0 + 0.5) + floor(texel.a * 255.0 + 0.5) * 256.0 - 1.0;
+#else
+    return texel.b - 1.0;
+#endif
+}
+
+float lidrFetchShadowTile(float index) {
+    return lidrFetchShadowTileAt(lidrLightTexCoord(index));
+}
+
+float lidrFetchShadowTile(vec2 halves) {
+    return lidrFetchShadowTileAt(lidrLightTexCoord(halves));
+}
+#endif

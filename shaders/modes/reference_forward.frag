@@ -3,6 +3,7 @@
 // GLSL 1.20-class compilers want a constant loop bound, so the loop runs to LIDR_MAX_LIGHTS and breaks.
 #include "light_table.glsl"
 #include "shading.glsl"
+#include "shadow_lookup.glsl"
 
 uniform float uLightCount;
 
@@ -15,6 +16,9 @@ void main() {
         vec4 posRadius, spot;
         vec3 lightColor;
         lidrFetchLight(index, posRadius, lightColor, spot);
+#ifdef LIDR_SHADOWS
+        lightColor *= lidrShadowVisibility(s.position, posRadius, spot, lidrFetchShadowTile(index));
+#endif
         color += lidrShadeLight(s, posRadius, lightColor, spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);
