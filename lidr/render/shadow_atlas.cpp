@@ -67,6 +67,8 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
     if (!powerOfTwo(options.size) || !powerOfTwo(options.tileSize) || options.tileSize > options.size || options.tileSize < 16)
         throw Error("shadow atlas: size " + std::to_string(options.size) + " and tile size " + std::to_string(options.tileSize) +
                     " must be powers of two with 16 <= tile size <= size");
+    if (!(options.slopeBias >= 0.0f && options.slopeBias <= 64.0f))
+        throw Error("shadow atlas: slope bias " + std::to_string(options.slopeBias) + " must be in [0, 64] (texels)");
     if (info.maxTextureSize > 0 && options.size > info.maxTextureSize)
         throw Error("shadow atlas: size " + std::to_string(options.size) + " is over this context's GL_MAX_TEXTURE_SIZE of " +
                     std::to_string(info.maxTextureSize));
@@ -137,7 +139,7 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
         pass.clear.depth = true;
         pass.clear.region = slots[i].rect;
         cache.beginPass(pass);
-        drawOpaqueDepth(program_, scene, slots[i].camera);
+        drawOpaqueDepth(program_, scene, slots[i].camera, options_.slopeBias);
         d = {posRange, directionCone, scene.version(), true};
         ++drawnNow;
     }
