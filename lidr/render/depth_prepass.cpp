@@ -29,7 +29,8 @@ DepthPrepass::DepthPrepass(DepthEmulation depth) {
                                    buildShaderSource("depth_only.frag", defines, includes), geometryAttributes());
 }
 
-void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera, float slopeBias) {
+void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera, float slopeBias,
+                     bool colorWrites) {
     StateCache& cache = StateCache::current();
     RenderState s;
     s.polygonOffset = slopeBias > 0.0f;
@@ -37,7 +38,7 @@ void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const Ca
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
-    s.colorMask = glm::bvec4(false);
+    s.colorMask = glm::bvec4(colorWrites);
     cache.apply(s);
     program.use();
     program.set("uViewProj", camera.viewProjection);

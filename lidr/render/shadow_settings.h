@@ -20,6 +20,10 @@ struct ShadowAtlasOptions {
     // a surface slanted towards its light does not shadow itself wherever a lookup's texels lie within
     // slopeBias texels of the point (the nearest texel is within 0.71, the filtered lookup's four within 1.5).
     float slopeBias = 2.0f;
+    // The atlas as RGBA8 holding each texel's 24-bit depth (written by the map's shader, a depth renderbuffer
+    // for the test) instead of a depth texture: what contexts without depth textures get (ES 2.0 without
+    // OES_depth_texture); this forces it elsewhere (tests, comparisons).
+    bool packedDepth = false;
 };
 
 struct ShadowSettings {
