@@ -235,22 +235,19 @@ ShadowChoice RendererChoice::shadowChoice(const std::string& mode) const {
 }
 
 void ShadowChoice::apply(const Scene& scene, std::vector<PointLight>& lights, ShadingParameters& shading) const {
+    apply(cameraMatrices(scene.camera, scene.width, scene.height), lights, shading);
+}
+
+void ShadowChoice::apply(const CameraMatrices& view, std::vector<PointLight>& lights, ShadingParameters& shading) const {
     shading.shadows = settings;
     if (casters == Casters::Off) return;
-    if (casters == Casters::Brightest)
-        chooseShadowCasters(lights, cameraMatrices(scene.camera, scene.width, scene.height), brightest);
+    if (casters == Casters::Brightest) chooseShadowCasters(lights, view, brightest);
     if (!automaticTile) return;  // the atlas refuses casters it cannot hold, naming the count
-    long tiles = 0;
-    for (const PointLight& l : lights)
-        if (l.castsShadow) tiles += shadowTiles(l);
-    int tile = std::min(512, settings.atlas.size);
-    const auto capacity = [&](int t) { return long(settings.atlas.size / t) * long(settings.atlas.size / t); };
-    while (tile > 16 && capacity(tile) < tiles) tile /= 2;
-    if (capacity(tile) < tiles)
-        throw Error("--shadows: the casters need " + std::to_string(tiles) + " shadow maps (a spot light one, a point "
-                    "light six); a " + std::to_string(settings.atlas.size) + " atlas holds " +
-                    std::to_string(capacity(tile)) + " of 16 texels: use a larger --shadow-atlas or fewer casters");
-    shading.shadows.atlas.tileSize = tile;
+    try {
+        shading.shadows.atlas.tileSize = shadowTileToFit(lights, settings.atlas.size);
+    } catch (const Error& e) {
+        throw Error(std::string("--shadows: ") + e.what() + " (--shadow-atlas)");
+    }
 }
 
 std::string ShadowChoice::describe(const ShadowSettings& used) const {

@@ -38,6 +38,8 @@ struct ShadowChoice {
     // Sets the lights' castsShadow (Scene: left as the scene says; Brightest: the rule, with the scene's camera)
     // and shading.shadows. Throws lidr::Error where the casters' maps cannot fit the atlas.
     void apply(const Scene& scene, std::vector<PointLight>& lights, ShadingParameters& shading) const;
+    // The same with the rule's view given (the viewer's and the page's moving camera).
+    void apply(const CameraMatrices& view, std::vector<PointLight>& lights, ShadingParameters& shading) const;
     // "8 brightest, atlas 4096 (512-texel tiles, chosen to fit), lookup volume, filter nearest"; `used`: apply()'s.
     std::string describe(const ShadowSettings& used) const;
 };

@@ -124,7 +124,9 @@ Viewer::~Viewer() {
 
 void Viewer::renderFrame() {
     try {
-        const FrameStats& st = renderer_->render(camera_.camera(), currentLights(), shading_);
+        ShadingParameters shading;
+        const std::vector<PointLight> lights = currentLights(&shading);
+        const FrameStats& st = renderer_->render(camera_.camera(), lights, shading);
         checkGl("viewer: rendering the frame");
         float total = 0.0f;
         for (const PassTime& p : st.passes) {
@@ -146,6 +148,11 @@ void Viewer::renderFrame() {
     }
     if (auto* tiled = dynamic_cast<const TiledRenderer*>(&drawingRenderer()); tiled && view_ == View::TileHeatMap)
         tileHeat_ = tiled->tileHeatMap(16);
+    if (view_ == View::ShadowAtlas) {
+        const ShadowAtlas* atlas = drawingRenderer().shadowAtlas();
+        shadowAtlasView_ = atlas ? atlas->image(1024) : ImageRGBA8{};
+        checkGl("viewer: reading the shadow atlas");
+    }
 }
 
 const Renderer& Viewer::drawingRenderer() const {
@@ -183,7 +190,7 @@ void Viewer::drawWindow(int fbw, int fbh) {
     glClear(GL_COLOR_BUFFER_BIT);
     const ImageRGBA8* image = shownView();
     if (image) {
-        const long stamp = view_ == View::TileHeatMap ? frameNumber_ : eval_.frame;
+        const long stamp = view_ == View::TileHeatMap || view_ == View::ShadowAtlas ? frameNumber_ : eval_.frame;
         if (!viewTexture_) glGenTextures(1, &viewTexture_);
         glBindTexture(GL_TEXTURE_2D, viewTexture_);
         if (uploadedView_ != view_ || uploadedFrame_ != stamp) {

@@ -30,9 +30,10 @@ namespace lidr::viewer {
 
 class ImGuiEs2Renderer;
 
-enum class View { Frame, Difference, IndexLists, Overlap, Marked, TileHeatMap };
-constexpr int kViewCount = 6;
-const char* viewName(View v);  // "frame", "difference", "index-lists", "overlap", "marked", "tile-heatmap"
+enum class View { Frame, Difference, IndexLists, Overlap, Marked, TileHeatMap, ShadowAtlas };
+constexpr int kViewCount = 7;
+// "frame", "difference", "index-lists", "overlap", "marked", "tile-heatmap", "shadow-atlas"
+const char* viewName(View v);
 
 struct ViewerOptions {
     std::string outDir = "viewer-out";  // screenshots (F12) and saved artefacts (F11) go here
@@ -75,7 +76,10 @@ private:
     bool changeSetting(const std::string& name, const std::string& value);  // UI and script; false: refused
     std::string setting(const std::string& name) const;
     int maxLightsFor(const demo::RendererChoice& rc) const;
-    std::vector<PointLight> currentLights() const;
+    // The lights of this frame (the light count, the animation), with castsShadow as the shadow setting says
+    // (the rule's K brightest seen from the current camera); `shading`: the frame's shading with its shadows.
+    std::vector<PointLight> currentLights(ShadingParameters* shading = nullptr) const;
+    demo::ShadowChoice shadowChoice(const demo::RendererChoice& rc) const;
     void renderFrame();
     // The renderer that drew the last frame: the automatic mode's current candidate, else renderer_.
     const Renderer& drawingRenderer() const;
@@ -155,6 +159,7 @@ private:
     View uploadedView_ = View::Frame;
     long uploadedFrame_ = -2;
     ImageRGBA8 tileHeat_;
+    ImageRGBA8 shadowAtlasView_;  // View::ShadowAtlas, read each frame while shown
 
     std::string status_;  // the last setting change: applied, or refused and why
     bool lastRefused_ = false;

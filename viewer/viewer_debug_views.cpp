@@ -29,6 +29,7 @@ const char* viewName(View v) {
         case View::Overlap: return "overlap";
         case View::Marked: return "marked";
         case View::TileHeatMap: return "tile-heatmap";
+        case View::ShadowAtlas: return "shadow-atlas";
     }
     return "?";
 }
@@ -51,18 +52,25 @@ bool Viewer::viewAvailable(View v, std::string* why) const {
         case View::TileHeatMap:
             if (!dynamic_cast<const TiledRenderer*>(&drawingRenderer())) return no("the tile heat map is the tiled mode's");
             return true;
+        case View::ShadowAtlas: {
+            const ShadowAtlas* atlas = drawingRenderer().shadowAtlas();
+            if (!atlas) return no("no frame has drawn shadow maps yet: turn shadows on (scene or K brightest)");
+            if (gles_ && !atlas->packed()) return no("OpenGL ES 2.0 cannot read a depth texture back");
+            return true;
+        }
     }
     return false;
 }
 
 void Viewer::computeViews() {
-    const auto lights = currentLights();
+    ShadingParameters shading;
+    const auto lights = currentLights(&shading);
     const Camera cam = camera_.camera();
     Evaluation ev;
     ev.frame = frameNumber_;
     const ImageRGBA8 frame = renderer_->targets().readColor();
     auto reference = demo::makeReference(context_->info(), scene_, modeOptions_, width_, height_, int(lights.size()));
-    reference->render(cam, lights, shading_);
+    reference->render(cam, lights, shading);
     ev.reference = reference->targets().readColor();
     reference.reset();
     ev.error = compareImages(frame, ev.reference);
@@ -91,6 +99,7 @@ void Viewer::computeViews() {
 
 const ImageRGBA8* Viewer::shownView() const {
     if (view_ == View::TileHeatMap && tileHeat_.width > 0) return &tileHeat_;
+    if (view_ == View::ShadowAtlas) return shadowAtlasView_.width > 0 ? &shadowAtlasView_ : nullptr;
     if (view_ != View::Frame && view_ != View::TileHeatMap && eval_.valid && eval_.images.count(view_))
         return &eval_.images.at(view_);
     return nullptr;
@@ -147,7 +156,8 @@ void Viewer::saveAll(const std::string& dir) {
     const Camera c = camera_.camera();
     nlohmann::json j;
     for (const char* s : {"mode", "scheme", "budget", "index-bits", "volume-test", "msaa", "per-sample", "transparency",
-                          "tile-size", "depth-bounds", "half-z", "lights", "view", "paused"})
+                          "tile-size", "depth-bounds", "half-z", "shadows", "shadow-filter", "shadow-lookup", "lights",
+                          "view", "paused"})
         j["settings"][s] = setting(s);
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
                    {"target", {c.target.x, c.target.y, c.target.z}}};

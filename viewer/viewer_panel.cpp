@@ -102,6 +102,14 @@ void Viewer::uiSettings() {
         ImGui::SetTooltip("needs GL 3.2 multisample textures and sample shading; this context has GL %s", info.version.c_str());
     bool transparency = rc_.transparency == "on";
     if (ImGui::Checkbox("transparency", &transparency)) changeSetting("transparency", transparency ? "on" : "off");
+    combo("shadows", rc_.shadows, kShadows, "shadows", str, always);
+    bool pcf = rc_.shadowFilter.value_or("nearest") == "pcf";
+    if (ImGui::Checkbox("filtered shadow edges", &pcf)) changeSetting("shadow-filter", pcf ? "pcf" : "nearest");
+    ImGui::BeginDisabled(!lidrMode);
+    combo("shadow lookup", rc_.shadowLookup.value_or("volume"), kShadowLookups, "shadow-lookup", str, always);
+    ImGui::EndDisabled();
+    if (!lidrMode && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("where LIDR applies shadows: the volume pass's test or the forward pass's lookup");
     if (!status_.empty()) {
         if (lastRefused_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", status_.c_str());

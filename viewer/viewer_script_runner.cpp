@@ -121,9 +121,11 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
         if (e.maxAbsError > scriptInt(a, 1) || psnr < scriptNumber(a, 2))
             fail("max error " + std::to_string(e.maxAbsError) + ", PSNR " + std::to_string(psnr) + " dB");
     } else if (v == "expect-view-match") {
-        if (!eval_.valid && view_ != View::TileHeatMap) fail("no debug view computed");
-        const ImageRGBA8* got = view_ == View::TileHeatMap ? &tileHeat_
-                                : eval_.images.count(view_) ? &eval_.images.at(view_) : nullptr;
+        if (!eval_.valid && view_ != View::TileHeatMap && view_ != View::ShadowAtlas) fail("no debug view computed");
+        const ImageRGBA8* got = view_ == View::TileHeatMap   ? &tileHeat_
+                                : view_ == View::ShadowAtlas ? &shadowAtlasView_
+                                : eval_.images.count(view_)  ? &eval_.images.at(view_)
+                                                             : nullptr;
         if (!got || got->width == 0) fail(std::string("view ") + viewName(view_) + " has no image");
         const ImageRGBA8 want = readPng(a.args[0]);
         if (want.width != got->width || want.height != got->height) fail("image sizes differ");

@@ -20,9 +20,18 @@ int Viewer::maxLightsFor(const demo::RendererChoice& rc) const {
     return sceneLights;
 }
 
-std::vector<PointLight> Viewer::currentLights() const {
+demo::ShadowChoice Viewer::shadowChoice(const demo::RendererChoice& rc) const {
+    demo::RendererChoice c = rc;
+    if (c.mode != "lidr") c.shadowLookup.reset();  // where LIDR looks up: kept for when the mode comes back
+    return c.shadowChoice(c.mode);
+}
+
+std::vector<PointLight> Viewer::currentLights(ShadingParameters* shading) const {
     std::vector<PointLight> l = scene_.lightsAt(animTime_);
     if (int(l.size()) > lightCount_) l.resize(size_t(lightCount_));
+    ShadingParameters frame = shading_;
+    shadowChoice(rc_).apply(cameraMatrices(camera_.camera(), width_, height_), l, frame);
+    if (shading) *shading = frame;
     return l;
 }
 
@@ -42,7 +51,17 @@ bool Viewer::apply(const demo::RendererChoice& next, const std::string& what) {
         lightCount_ = lightCount_ >= maxLightsFor(rc_) ? maxLights : std::min(lightCount_, maxLights);
         std::unique_ptr<Renderer> r = createRenderer(mo, context_->info(), renderScene, width_, height_);
         r->setTiming(true);  // the panel's per-pass times: read a frame or more late, never stalling
-        r->render(camera_.camera(), currentLights(), shading_);  // a refusal at draw time reverts too
+        const demo::RendererChoice old = rc_;
+        rc_ = next;  // the frame's shadows are the new choice's
+        ShadingParameters shading;
+        std::vector<PointLight> lights;
+        try {
+            lights = currentLights(&shading);
+            r->render(camera_.camera(), lights, shading);  // a refusal at draw time reverts too
+        } catch (...) {
+            rc_ = old;
+            throw;
+        }
         checkGl("viewer: first frame of the new configuration");
         renderer_ = std::move(r);
         rc_ = next;
@@ -118,11 +137,11 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
                     return false;
                 }
                 view_ = View(i);
-                if (view_ != View::Frame && view_ != View::TileHeatMap) computeRequested_ = true;
+                if (view_ != View::Frame && view_ != View::TileHeatMap && view_ != View::ShadowAtlas) computeRequested_ = true;
                 return true;
             }
         throw Error("setting view: unknown view '" + value +
-                    "' (frame, difference, index-lists, overlap, marked, tile-heatmap)");
+                    "' (frame, difference, index-lists, overlap, marked, tile-heatmap, shadow-atlas)");
     }
     if (name == "paused") {
         paused_ = toBool(value);
@@ -154,10 +173,21 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
     else if (name == "tile-size") next.tileSize = toInt(value);
     else if (name == "depth-bounds") next.noDepthBounds = !toBool(value);
     else if (name == "half-z") next.halfZ = toBool(value);
+    else if (name == "shadows") next.shadows = value;
+    else if (name == "shadow-filter") next.shadowFilter = value;
+    else if (name == "shadow-lookup") next.shadowLookup = value;
     else
         throw Error("unknown setting '" + name +
                     "' (mode, scheme, budget, index-bits, volume-test, msaa, per-sample, transparency, volume-detail, "
-                    "tile-size, depth-bounds, half-z, lights, scatter, view, paused, speed)");
+                    "tile-size, depth-bounds, half-z, shadows, shadow-filter, shadow-lookup, lights, scatter, view, "
+                    "paused, speed)");
+    if (name.rfind("shadow", 0) == 0) {
+        try {
+            shadowChoice(next);  // the value checked as lidr-demo checks --shadows, --shadow-filter, --shadow-lookup
+        } catch (const std::exception& e) {
+            throw Error("setting " + name + ": " + e.what());
+        }
+    }
     return apply(next, name + " " + value);
 }
 
@@ -174,6 +204,9 @@ std::string Viewer::setting(const std::string& name) const {
     if (name == "tile-size") return std::to_string(rc_.tileSize);
     if (name == "depth-bounds") return rc_.noDepthBounds ? "off" : "on";
     if (name == "half-z") return rc_.halfZ ? "on" : "off";
+    if (name == "shadows") return rc_.shadows;
+    if (name == "shadow-filter") return rc_.shadowFilter.value_or("nearest");
+    if (name == "shadow-lookup") return rc_.shadowLookup.value_or("volume");
     if (name == "lights") return std::to_string(lightCount_);
     if (name == "scatter") return std::to_string(scatteredLights_);
     if (name == "file") return scenePath_.empty() ? "built-in" : scenePath_;

@@ -25,6 +25,8 @@
 #include "lidr/modes/render_mode.h"
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
+#include "lidr/render/shadow_atlas.h"
+#include "lidr/render/shadow_casters.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/scene/light_scatter.h"
@@ -46,7 +48,12 @@ struct Settings {
     std::string view = "frame";  // frame, reference, difference, index-lists, overlap
     int lightCount = 255;  // the room: its first N lights; a model: its own, then scattered ones up to N
     bool paused = false;
+    std::string shadows = "off";  // off, scene (the lights' own flags), or K: the K brightest lights in view
+    bool shadowFilter = false;    // filtered shadow edges (ShadowSettings::filtered)
 };
+
+// The page's shadow atlas: 2048 texels a side, the largest tile (up to 512) that holds the casters' maps.
+constexpr int kShadowAtlasSize = 2048;
 
 // A model's light count reaches this many (16-bit indices hold 65535; the slider stops sooner, for a frame
 // time a browser bears).
@@ -91,9 +98,19 @@ Scene sceneWithLights(const Scene& file, bool model, int count) {
     return scene;
 }
 
-std::vector<PointLight> currentLights() {
+// The frame's lights, with castsShadow as the shadow setting says, and its shading (shadows on or off).
+std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& shading) {
     std::vector<PointLight> lights = page->scene.lightsAt(page->time);
     if (int(lights.size()) > page->settings.lightCount) lights.resize(size_t(page->settings.lightCount));
+    shading = sceneShading(page->scene);
+    const Settings& s = page->settings;
+    if (s.shadows == "off") return lights;
+    if (s.shadows != "scene")
+        chooseShadowCasters(lights, cameraMatrices(camera, kWidth, kHeight), std::stoi(s.shadows));
+    shading.shadows.enabled = true;
+    shading.shadows.filtered = s.shadowFilter;
+    shading.shadows.atlas.size = kShadowAtlasSize;
+    shading.shadows.atlas.tileSize = shadowTileToFit(lights, kShadowAtlasSize);
     return lights;
 }
 
@@ -128,8 +145,16 @@ bool applySettings(Settings wanted, bool sceneChanged = false) {
                              wanted.indexBits != page->settings.indexBits || !page->renderer || sceneChanged ||
                              lightsChanged;
         if (wanted.view != "frame" && wanted.view != "reference" && wanted.view != "difference" &&
-            wanted.view != "index-lists" && wanted.view != "overlap")
-            throw Error("view '" + wanted.view + "' (valid: frame, reference, difference, index-lists, overlap)");
+            wanted.view != "index-lists" && wanted.view != "overlap" && wanted.view != "shadow-atlas")
+            throw Error("view '" + wanted.view +
+                        "' (valid: frame, reference, difference, index-lists, overlap, shadow-atlas)");
+        if (wanted.shadows != "off" && wanted.shadows != "scene") {
+            const bool digits = !wanted.shadows.empty() && wanted.shadows.size() <= 5 &&
+                                wanted.shadows.find_first_not_of("0123456789") == std::string::npos;
+            if (!digits) throw Error("shadows: off, scene or a number of lights K, got '" + wanted.shadows + "'");
+        }
+        if (wanted.view == "shadow-atlas" && wanted.shadows == "off")
+            throw Error("the shadow-atlas view shows the shadow maps: turn shadows on");
         if ((wanted.view == "index-lists" || wanted.view == "overlap") && wanted.mode != "lidr")
             throw Error("the " + wanted.view + " view shows LIDR's index lists: choose mode lidr");
         if (rebuild) {
@@ -193,6 +218,26 @@ ReferenceRenderer& reference() {
 // Renders the debug view the settings ask for, after the frame (the CPU views read the frame back).
 void drawView(const Camera& camera, const std::vector<PointLight>& lights, const ShadingParameters& shading) {
     const std::string& view = page->settings.view;
+    if (view == "shadow-atlas") {
+        const ShadowAtlas* atlas = page->renderer->shadowAtlas();
+        if (!atlas) throw Error("no shadow maps drawn yet (no light casts a shadow in this frame)");
+        if (!atlas->packed() && page->context->info().gles)
+            throw Error("WebGL 1 cannot read a depth texture back: the atlas view needs the packed atlas");
+        const ImageRGBA8 maps = atlas->image(kHeight);
+        ImageRGBA8 canvas(kWidth, kHeight);
+        for (int y = 0; y < maps.height; ++y)
+            for (int x = 0; x < maps.width; ++x)
+                std::copy_n(maps.at(x, y), 4, canvas.at(x, y));
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = maps.width; x < kWidth; ++x) canvas.at(x, y)[3] = 255;
+        showCpuImage(canvas);
+        const FrameStats& st = page->renderer->lastFrame();
+        page->viewNote = "the shadow atlas (" + std::to_string(atlas->size()) + " texels, " +
+                         std::to_string(atlas->tileSize()) + " a map): distance from the light, near white; " +
+                         std::to_string(st.shadowCasters) + " casters, " + std::to_string(st.shadowMapsDrawn) +
+                         " maps drawn this frame";
+        return;
+    }
     if (view == "frame") {
         page->presenter->present(page->renderer->targets(), 0);
         showGlCanvas();
@@ -260,8 +305,8 @@ void frame() {
     moveCamera(dt);
     try {
         const Camera camera = page->camera.camera();
-        const std::vector<PointLight> lights = currentLights();
-        const ShadingParameters shading = sceneShading(page->scene);
+        ShadingParameters shading;
+        const std::vector<PointLight> lights = currentLights(camera, shading);
         // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
         // target returns only when every command before it has run, so the clock from the first call to it is
         // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
@@ -312,7 +357,8 @@ std::string jsonEscape(const std::string& s) {
 
 extern "C" {
 
-// Sets one setting by name ("mode", "scheme", "budget", "index-bits", "view", "lights", "paused"), returns 1 when
+// Sets one setting by name ("mode", "scheme", "budget", "index-bits", "view", "lights", "paused", "shadows":
+// off, scene or K, "shadow-filter": nearest or pcf), returns 1 when
 // applied, 0 when refused (lidr_web_status() then carries the reason).
 EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
     Settings s = page->settings;
@@ -325,7 +371,10 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
         else if (n == "view") s.view = v;
         else if (n == "lights") s.lightCount = std::stoi(v);
         else if (n == "paused") s.paused = v == "1" || v == "true";
-        else throw Error("unknown setting '" + n + "' (mode, scheme, budget, index-bits, view, lights, paused)");
+        else if (n == "shadows") s.shadows = v;
+        else if (n == "shadow-filter") s.shadowFilter = v == "pcf";
+        else throw Error("unknown setting '" + n +
+                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter)");
     } catch (const std::logic_error&) {
         page->message = "setting " + n + ": a number, got '" + v + "'";
         return 0;
@@ -384,8 +433,9 @@ EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     try {
         page->camera.reset(page->scene.camera);
         page->time = page->scene.time;
-        const ShadingParameters shading = sceneShading(page->scene);
-        page->renderer->render(page->scene.camera, currentLights(), shading);  // as lidr-web-native-frame
+        ShadingParameters shading;
+        const std::vector<PointLight> lights = currentLights(page->scene.camera, shading);
+        page->renderer->render(page->scene.camera, lights, shading);  // as lidr-web-native-frame
         image = page->renderer->targets().readColor();
         page->presenter->present(page->renderer->targets(), 0);
         showGlCanvas();
@@ -439,15 +489,17 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
     std::snprintf(figures, sizeof figures,
                   "\"frameMs\":%.2f,\"renderMs\":%.2f,\"renderMsLast\":%.2f,\"time\":%.2f,\"budget\":%d,"
                   "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
-                  "\"model\":%s,\"paused\":%s",
+                  "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d",
                   page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
                   s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
-                  page->model ? "true" : "false", s.paused ? "true" : "false");
+                  page->model ? "true" : "false", s.paused ? "true" : "false",
+                  page->renderer ? page->renderer->lastFrame().shadowCasters : 0,
+                  page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0);
     std::string warnings;
     for (const std::string& w : page->fileScene.warnings)
         warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";
     json = "{\"gl\":\"" + jsonEscape(page->context->info().summary()) + "\",\"mode\":\"" + s.mode +
-           "\",\"scheme\":\"" + s.scheme + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
+           "\",\"scheme\":\"" + s.scheme + "\",\"shadows\":\"" + s.shadows + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
            "\",\"message\":\"" + jsonEscape(page->message) + "\",\"scene\":\"" + jsonEscape(page->sceneName) +
            "\",\"warnings\":[" + warnings + "]," + figures + "}";
     return json.c_str();

@@ -14,6 +14,8 @@
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/render/shadow_atlas.h"
+#include "lidr/render/shadow_casters.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/technique/lidr_renderer.h"
 
@@ -128,6 +130,58 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
                               "of 10 (%dx%d)\n", (emscripten_get_now() - start) / 10.0, width, height);
                 out << line;
             }
+        }
+        // Shadows (issue 30): the 8 brightest lights in view cast (48 cube-face maps in a 1024 atlas); LIDR, its
+        // volume pass discarding shadowed points, against the reference reading the same maps, within the budget
+        // as above; and the shadows must show (the frame darker than without them somewhere).
+        {
+            std::vector<PointLight> casting = lights;
+            const CameraMatrices view = cameraMatrices(camera, width, height);
+            chooseShadowCasters(casting, view, 8);
+            ShadingParameters shadowed = shading;
+            shadowed.shadows.enabled = true;
+            shadowed.shadows.atlas.size = 1024;
+            shadowed.shadows.atlas.tileSize = shadowTileToFit(casting, 1024);
+            reference.render(camera, casting, shadowed);
+            const ImageRGBA8 shadowedReference = reference.targets().readColor();
+            const int maps = reference.lastFrame().shadowMapsDrawn;
+            LidrOptions options;
+            options.packing = {PackingSchemeKind::BitShift, 4, 8};
+            options.transparency = false;
+            std::unique_ptr<LidrRenderer> renderer;
+            try {
+                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
+            } catch (const UnsupportedError&) {
+                options.volumeTest = VolumeTest::BackFace;
+                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
+            }
+            renderer->render(camera, casting, shadowed);
+            const ImageRGBA8 image = renderer->targets().readColor();
+            const std::vector<uint8_t> marked = stencilReadback.read(renderer->targets());
+            std::vector<uint8_t> mask(size_t(width) * height, 0);
+            long within = 0, darker = 0;
+            for (size_t p = 0; p < mask.size(); ++p) {
+                mask[p] = marked[p] <= 4;
+                within += mask[p];
+                int drop = 0;
+                for (int c = 0; c < 3; ++c)
+                    drop = std::max(drop, int(referenceImage.pixels[p * 4 + size_t(c)]) -
+                                              int(shadowedReference.pixels[p * 4 + size_t(c)]));
+                darker += drop > 8;
+            }
+            const ImageError e = compareImages(image, shadowedReference, 1, &mask);
+            const bool passed = maps == 48 && renderer->lastFrame().shadowCasters == 8 && darker > 200 &&
+                                e.maxAbsError <= 1 && within > 0;
+            allPassed = allPassed && passed;
+            char line[400];
+            std::snprintf(line, sizeof line,
+                          "%s shadows: 8 casting lights, %d maps (%s atlas), %ld pixels darker than unshadowed; LIDR "
+                          "bitshift budget 4 against the shadowed reference: %ld pixels within budget, max error %d, "
+                          "PSNR %.1f dB\n",
+                          passed ? "ok  " : "FAIL", maps, reference.shadowAtlas() && reference.shadowAtlas()->packed()
+                                                             ? "packed RGBA8" : "depth texture",
+                          darker, within, e.maxAbsError, e.psnr);
+            out << line;
         }
         // Each budget's renderer was destroyed before the next was built, as the page's controls do: nothing of
         // theirs (a deleted buffer still named by an attribute, a deleted program) may leave a GL error behind.

@@ -46,6 +46,7 @@ public:
     const Renderer& renderer(size_t candidate) const { return *renderers_[candidate]; }
     // The candidate that drew the last frame (its index lists, tiles and decisions are that frame's).
     const Renderer& lastRenderer() const { return *renderers_[size_t(last_)]; }
+    const ShadowAtlas* shadowAtlas() const override { return lastRenderer().shadowAtlas(); }
 
     std::vector<GpuScene*> gpuScenes() override;
     void checkObjectMaterial(const Material& material) const override;

@@ -43,6 +43,7 @@ public:
     std::string modeName() const override { return "forward-multipass"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
+    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
     const RenderTargets& targets() const override { return targets_; }
     void setTiming(bool on, bool waitForResults = false) override {
         timer_.setEnabled(on);

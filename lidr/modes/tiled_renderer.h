@@ -61,6 +61,7 @@ public:
     // Light i has index i + 1; at most 65535 lights (the light table grows to hold them).
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
+    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
     const RenderTargets& targets() const override { return targets_; }
     void setTiming(bool on, bool waitForResults = false) override {
         timer_.setEnabled(on);

@@ -16,6 +16,8 @@
 
 namespace lidr {
 
+class ShadowAtlas;
+
 struct ShadingParameters {
     glm::vec3 ambient{0.04f};     // linear
     glm::vec3 background{0.0f};   // linear, cleared to its output-transformed value
@@ -99,6 +101,8 @@ public:
     virtual const RenderTargets& targets() const = 0;
     // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
     virtual size_t lightDataBytes() const { return 0; }
+    // The shadow maps the last frame used (null: no frame with shadows yet): debug views read it.
+    virtual const ShadowAtlas* shadowAtlas() const { return nullptr; }
     const FrameStats& lastFrame() const { return stats_; }
     // Per-pass timing, off by default (a mode's options may turn it on too). On: GPU timer queries read a
     // frame or more later without stalling (FrameStats::timingLag), or, with waitForResults, this frame's

@@ -1,6 +1,7 @@
 #include "lidr/render/shadow_atlas.h"
 #include "lidr/base/gl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -162,6 +163,28 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
     slots_ = std::move(slots);
     mapsDrawn_ += drawnNow;
     return drawnNow;
+}
+
+ImageRGBA8 ShadowAtlas::image(int maxSide) const {
+    const std::vector<float> depth = readDepth();
+    const int n = options_.size;
+    const int step = (n + std::max(maxSide, 1) - 1) / std::max(maxSide, 1);
+    const int side = n / step;
+    ImageRGBA8 out(side, side);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            float nearest = 1.0f;
+            for (int j = 0; j < step; ++j)
+                for (int i = 0; i < step; ++i)
+                    nearest = std::min(nearest, depth[size_t(y * step + j) * size_t(n) + size_t(x * step + i)]);
+            // Window depth z -> distance / range = 0.01 / (1 - 0.99 z) (near plane at a hundredth of the range).
+            const float fraction = nearest >= 1.0f ? 1.0f : std::min(1.0f, 0.01f / std::max(1.0f - 0.99f * nearest, 1e-6f));
+            const auto v = static_cast<uint8_t>(std::lround((1.0f - fraction) * 255.0f));
+            uint8_t* p = out.at(x, side - 1 - y);  // the atlas's rows are bottom to top
+            p[0] = p[1] = p[2] = v;
+            p[3] = 255;
+        }
+    return out;
 }
 
 std::vector<float> ShadowAtlas::readDepth() const {

@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lidr/base/image.h"
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
@@ -66,6 +67,10 @@ public:
     // Window depth of every atlas texel, rows bottom to top (tests and the debug view). Throws
     // lidr::UnsupportedError on OpenGL ES 2.0 for a depth-texture atlas (ES reads no depth back).
     std::vector<float> readDepth() const;
+    // The atlas as a picture (the viewer's and the page's debug view): each texel's distance from its light as a
+    // fraction of the range, near white to far dark, empty texels black; at most maxSide pixels a side (the
+    // nearest of each block of texels kept), rows top to bottom. Throws as readDepth does.
+    ImageRGBA8 image(int maxSide = 1024) const;
 
 private:
     struct Drawn {  // what a slot's map was drawn for

@@ -32,4 +32,18 @@ int chooseShadowCasters(std::vector<PointLight>& lights, const CameraMatrices& c
     return int(chosen);
 }
 
+int shadowTileToFit(const std::vector<PointLight>& lights, int atlasSize, int largestTile) {
+    long tiles = 0;
+    for (const PointLight& l : lights)
+        if (l.castsShadow) tiles += shadowTiles(l);
+    int tile = std::max(16, std::min(largestTile, atlasSize));
+    const auto capacity = [&](int t) { return long(atlasSize / t) * long(atlasSize / t); };
+    while (tile > 16 && capacity(tile) < tiles) tile /= 2;
+    if (capacity(tile) < tiles)
+        throw Error("shadows: the casters need " + std::to_string(tiles) + " shadow maps (a spot light one, a point "
+                    "light six); a " + std::to_string(atlasSize) + " atlas holds " + std::to_string(capacity(tile)) +
+                    " of 16 texels: a larger atlas or fewer casters");
+    return tile;
+}
+
 }  // namespace lidr

@@ -20,4 +20,9 @@ float shadowCasterBrightness(const PointLight& light);
 // light. Returns how many were chosen (min(k, eligible lights)). Throws lidr::Error for k < 0.
 int chooseShadowCasters(std::vector<PointLight>& lights, const CameraMatrices& camera, int k);
 
+// The largest tile (a power of two, at most largestTile and atlasSize, at least 16) with which an atlas of
+// atlasSize texels a side holds the maps of the lights with castsShadow (a spot light one, a point light six).
+// Throws lidr::Error naming the counts where even 16-texel tiles do not fit.
+int shadowTileToFit(const std::vector<PointLight>& lights, int atlasSize, int largestTile = 512);
+
 }  // namespace lidr
