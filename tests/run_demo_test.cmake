@@ -131,7 +131,16 @@ set(bad_values
   "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
   "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'"
   "--scene|${OUT}/version-1.gltf@version-1.gltf: /asset/version: glTF 1.0 is not 2.x"
-  "--scene|${OUT}/deep-extras.gltf@deep-extras.gltf: /: JSON nested deeper than 128 arrays and objects")
+  "--scene|${OUT}/deep-extras.gltf@deep-extras.gltf: /: JSON nested deeper than 128 arrays and objects"
+  "--shadows|some@--shadows must be off, scene or a number of lights K in 0..65535, got 'some'"
+  "--shadow-filter|pcf@--shadow-lookup, --shadow-filter and --shadow-atlas set up shadows: add --shadows"
+  "--shadows|8|--shadow-filter|soft@--shadow-filter must be nearest or pcf, got 'soft'"
+  "--shadows|8|--shadow-lookup|both@--shadow-lookup must be volume or forward, got 'both'"
+  "--shadows|8|--mode|tiled|--shadow-lookup|forward@--shadow-lookup says where LIDR applies shadows.*the tiled mode looks them up"
+  "--shadows|8|--shadow-atlas|3000@--shadow-atlas: SIZE must be a power of two from 16 to 8192 texels, got 3000"
+  "--shadows|8|--shadow-atlas|4096:8192@--shadow-atlas: TILE must be a power of two from 16 to SIZE .4096., got 8192"
+  "--shadows|8|--shadow-atlas|4096:x@--shadow-atlas must be SIZE or SIZE:TILE"
+  "--shadows|200|--shadow-atlas|64@--shadows: the casters need [0-9]+ shadow maps.*a 64 atlas holds 16")
 file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 # glTF files the validator refuses (tests/gltf_corpus has the whole set): a wrong version, and extras nested
 # 100,000 deep, which once overflowed the stack of the JSON parser.
@@ -269,3 +278,21 @@ string(JSON warnings LENGTH "${summary}" scene warnings)
 if(NOT r EQUAL 0 OR warnings LESS 1 OR NOT out MATCHES "warning +[^\n]*quad.obj: Material file \\[ missing.mtl \\] not found")
   message(FATAL_ERROR "lidr-demo with a missing .mtl: exit ${r}, ${warnings} warnings in summary.json, stdout lacks the warning")
 endif()
+
+# Shadows (doc/shadows.md, "Casters, tools and cost"): the 8 brightest lights of the room cast in tiled and
+# multi-pass forward; the summary counts them and their maps (6 a point light, 1 a spot), drawn on the first frame
+# only; tiled equals the reference rendered with the same lights and settings.
+foreach(mode tiled forward-multipass)
+  run_demo(shadows-${mode} "--mode ${mode} --shadows 8" --mode ${mode} --shadows 8 --shadow-filter pcf --width 160
+           --height 120 --frames 2)
+  string(JSON casters GET "${summary}" shadows casters)
+  string(JSON first GET "${summary}" shadows maps_first_frame)
+  string(JSON last GET "${summary}" shadows maps_last_frame)
+  string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+  if(NOT casters EQUAL 8 OR first LESS 8 OR first GREATER 48 OR NOT last EQUAL 0)
+    message(FATAL_ERROR "lidr-demo --mode ${mode} --shadows 8: ${casters} casters, ${first} maps on the first frame, ${last} on the last")
+  endif()
+  if(mode STREQUAL "tiled" AND max_error GREATER 1)
+    message(FATAL_ERROR "lidr-demo --mode tiled --shadows 8: max error ${max_error} against the reference")
+  endif()
+endforeach()
