@@ -296,3 +296,14 @@ foreach(mode tiled forward-multipass)
     message(FATAL_ERROR "lidr-demo --mode tiled --shadows 8: max error ${max_error} against the reference")
   endif()
 endforeach()
+# The scene's own flags: media/scenes/pillar-hall-shadows.json marks 22 point and 3 spot lights "shadow": true
+# (6 x 22 + 3 = 135 maps); tiled equals the reference.
+run_demo(shadows-scene "--shadows scene" --scene ${SOURCE_DIR}/media/scenes/pillar-hall-shadows.json --mode tiled
+         --shadows scene --width 160 --height 120 --frames 2)
+string(JSON casters GET "${summary}" shadows casters)
+string(JSON first GET "${summary}" shadows maps_first_frame)
+string(JSON last GET "${summary}" shadows maps_last_frame)
+string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+if(NOT casters EQUAL 25 OR NOT first EQUAL 135 OR NOT last EQUAL 0 OR max_error GREATER 1)
+  message(FATAL_ERROR "lidr-demo --shadows scene on pillar-hall-shadows.json: ${casters} casters, ${first} maps on the first frame, ${last} on the last, max error ${max_error}")
+endif()
