@@ -140,10 +140,12 @@ set(bad_values
   "--shadows|8|--shadow-atlas|3000@--shadow-atlas: SIZE must be a power of two from 16 to 8192 texels, got 3000"
   "--shadows|8|--shadow-atlas|4096:8192@--shadow-atlas: TILE must be a power of two from 16 to SIZE .4096., got 8192"
   "--shadows|8|--shadow-atlas|4096:x@--shadow-atlas must be SIZE or SIZE:TILE"
-  "--shadows|200|--shadow-atlas|64@--shadows: the casters need [0-9]+ shadow maps.*a 64 atlas holds 16")
+  "--shadows|200|--shadow-atlas|64@--shadows: the casters need [0-9]+ shadow maps.*a 64 atlas holds 16"
+  "--scene|${OUT}/wide-spot.json|--shadows|scene@--shadows scene: light 0 is a spot light of 85 degrees marked to cast")
 file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 # glTF files the validator refuses (tests/gltf_corpus has the whole set): a wrong version, and extras nested
 # 100,000 deep, which once overflowed the stack of the JSON parser.
+file(WRITE ${OUT}/wide-spot.json "{\"lights\": [{\"position\": [0, 3, 0], \"radius\": 5, \"type\": \"spot\", \"direction\": [0, -1, 0], \"outer_cone_angle\": 85, \"shadow\": true}]}")
 file(WRITE ${OUT}/version-1.gltf "{\"asset\": {\"version\": \"1.0\"}}")
 string(REPEAT "[" 100000 open)
 string(REPEAT "]" 100000 close)
