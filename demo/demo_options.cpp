@@ -242,6 +242,13 @@ void ShadowChoice::apply(const CameraMatrices& view, std::vector<PointLight>& li
     shading.shadows = settings;
     if (casters == Casters::Off) return;
     if (casters == Casters::Brightest) chooseShadowCasters(lights, view, brightest);
+    for (size_t i = 0; i < lights.size(); ++i)  // the scene's own flags: a cone one map cannot cover
+        if (lights[i].castsShadow && lights[i].isSpot() && !(lights[i].outerConeAngle <= kMaxShadowConeAngle))
+            throw Error("--shadows scene: light " + std::to_string(i) + " is a spot light of " +
+                        std::to_string(int(std::lround(glm::degrees(lights[i].outerConeAngle)))) +
+                        " degrees marked to cast; one shadow map covers cones up to " +
+                        std::to_string(int(std::lround(glm::degrees(kMaxShadowConeAngle)))) +
+                        " degrees (the K brightest leave such lights out)");
     if (!automaticTile) return;  // the atlas refuses casters it cannot hold, naming the count
     try {
         shading.shadows.atlas.tileSize = shadowTileToFit(lights, settings.atlas.size);

@@ -166,13 +166,13 @@ void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::Shad
 
 int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
                     bool withReference, const demo::RendererChoice& rc, const demo::ShadowChoice& shadowChoice) {
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    shadowChoice.apply(scene, lights, shading);  // before the context; the reference renders with the same lights
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
     std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
-    std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
-    shadowChoice.apply(scene, lights, shading);  // the reference below renders with the same lights and settings
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
@@ -288,14 +288,14 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc, shadowChoice);
     }
     const LidrOptions options = rc.lidrOptions(scene);
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    shadowChoice.apply(scene, lights, shading);  // before the context; the reference renders with the same lights
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
     std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
 
-    std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
-    shadowChoice.apply(scene, lights, shading);  // the reference below renders with the same lights and settings
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
     std::cout << "LIDR: "

@@ -39,4 +39,14 @@ render crate-default-rig --scene media/models/crate.obj
 render textured-default-rig --scene "$tmp/textured.glb"
 render textured-lights-1024 --scene "$tmp/textured.glb" --lights 1024
 render textured-gltf-lights --scene "$tmp/textured-lights.glb"
+# Shadows (doc/shadows.md): the pillar hall with its own casters ("shadow": true) and with shadows off, in tiled
+# forward, each checked equal to the reference rendered with the same shadows.
+for shadows in scene off; do
+    "$demo" "${model[@]}" --scene media/scenes/pillar-hall-shadows.json --mode tiled --shadows "$shadows" \
+        --out "$tmp/pillars-$shadows" >"$tmp/pillars-$shadows.log"
+    grep -Eq "^error +max [01]," "$tmp/pillars-$shadows.log" ||
+        { echo "pillar-hall --shadows $shadows: not the reference's image: $(grep '^error ' "$tmp/pillars-$shadows.log")" >&2; exit 1; }
+done
+cp "$tmp/pillars-scene/tiled.png" "$out/pillar-hall-shadows.png"
+cp "$tmp/pillars-off/tiled.png" "$out/pillar-hall-no-shadows.png"
 echo "wrote $(ls "$out" | wc -l) images to $out"

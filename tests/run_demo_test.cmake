@@ -131,10 +131,21 @@ set(bad_values
   "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
   "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'"
   "--scene|${OUT}/version-1.gltf@version-1.gltf: /asset/version: glTF 1.0 is not 2.x"
-  "--scene|${OUT}/deep-extras.gltf@deep-extras.gltf: /: JSON nested deeper than 128 arrays and objects")
+  "--scene|${OUT}/deep-extras.gltf@deep-extras.gltf: /: JSON nested deeper than 128 arrays and objects"
+  "--shadows|some@--shadows must be off, scene or a number of lights K in 0..65535, got 'some'"
+  "--shadow-filter|pcf@--shadow-lookup, --shadow-filter and --shadow-atlas set up shadows: add --shadows"
+  "--shadows|8|--shadow-filter|soft@--shadow-filter must be nearest or pcf, got 'soft'"
+  "--shadows|8|--shadow-lookup|both@--shadow-lookup must be volume or forward, got 'both'"
+  "--shadows|8|--mode|tiled|--shadow-lookup|forward@--shadow-lookup says where LIDR applies shadows.*the tiled mode looks them up"
+  "--shadows|8|--shadow-atlas|3000@--shadow-atlas: SIZE must be a power of two from 16 to 8192 texels, got 3000"
+  "--shadows|8|--shadow-atlas|4096:8192@--shadow-atlas: TILE must be a power of two from 16 to SIZE .4096., got 8192"
+  "--shadows|8|--shadow-atlas|4096:x@--shadow-atlas must be SIZE or SIZE:TILE"
+  "--shadows|200|--shadow-atlas|64@--shadows: the casters need [0-9]+ shadow maps.*a 64 atlas holds 16"
+  "--scene|${OUT}/wide-spot.json|--shadows|scene@--shadows scene: light 0 is a spot light of 85 degrees marked to cast")
 file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 # glTF files the validator refuses (tests/gltf_corpus has the whole set): a wrong version, and extras nested
 # 100,000 deep, which once overflowed the stack of the JSON parser.
+file(WRITE ${OUT}/wide-spot.json "{\"lights\": [{\"position\": [0, 3, 0], \"radius\": 5, \"type\": \"spot\", \"direction\": [0, -1, 0], \"outer_cone_angle\": 85, \"shadow\": true}]}")
 file(WRITE ${OUT}/version-1.gltf "{\"asset\": {\"version\": \"1.0\"}}")
 string(REPEAT "[" 100000 open)
 string(REPEAT "]" 100000 close)
@@ -268,4 +279,33 @@ file(READ ${OUT}/warn/out/summary.json summary)
 string(JSON warnings LENGTH "${summary}" scene warnings)
 if(NOT r EQUAL 0 OR warnings LESS 1 OR NOT out MATCHES "warning +[^\n]*quad.obj: Material file \\[ missing.mtl \\] not found")
   message(FATAL_ERROR "lidr-demo with a missing .mtl: exit ${r}, ${warnings} warnings in summary.json, stdout lacks the warning")
+endif()
+
+# Shadows (doc/shadows.md, "Casters, tools and cost"): the 8 brightest lights of the room cast in tiled and
+# multi-pass forward; the summary counts them and their maps (6 a point light, 1 a spot), drawn on the first frame
+# only; tiled equals the reference rendered with the same lights and settings.
+foreach(mode tiled forward-multipass)
+  run_demo(shadows-${mode} "--mode ${mode} --shadows 8" --mode ${mode} --shadows 8 --shadow-filter pcf --width 160
+           --height 120 --frames 2)
+  string(JSON casters GET "${summary}" shadows casters)
+  string(JSON first GET "${summary}" shadows maps_first_frame)
+  string(JSON last GET "${summary}" shadows maps_last_frame)
+  string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+  if(NOT casters EQUAL 8 OR first LESS 8 OR first GREATER 48 OR NOT last EQUAL 0)
+    message(FATAL_ERROR "lidr-demo --mode ${mode} --shadows 8: ${casters} casters, ${first} maps on the first frame, ${last} on the last")
+  endif()
+  if(mode STREQUAL "tiled" AND max_error GREATER 1)
+    message(FATAL_ERROR "lidr-demo --mode tiled --shadows 8: max error ${max_error} against the reference")
+  endif()
+endforeach()
+# The scene's own flags: media/scenes/pillar-hall-shadows.json marks 22 point and 3 spot lights "shadow": true
+# (6 x 22 + 3 = 135 maps); tiled equals the reference.
+run_demo(shadows-scene "--shadows scene" --scene ${SOURCE_DIR}/media/scenes/pillar-hall-shadows.json --mode tiled
+         --shadows scene --width 160 --height 120 --frames 2)
+string(JSON casters GET "${summary}" shadows casters)
+string(JSON first GET "${summary}" shadows maps_first_frame)
+string(JSON last GET "${summary}" shadows maps_last_frame)
+string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+if(NOT casters EQUAL 25 OR NOT first EQUAL 135 OR NOT last EQUAL 0 OR max_error GREATER 1)
+  message(FATAL_ERROR "lidr-demo --shadows scene on pillar-hall-shadows.json: ${casters} casters, ${first} maps on the first frame, ${last} on the last, max error ${max_error}")
 endif()

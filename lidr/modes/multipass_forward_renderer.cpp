@@ -56,12 +56,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
 
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    if (shading.shadows.enabled) shadows_.checkUnits(lightTable_.format());
-    TimedPass shadowMapsTime(timer_, "shadow-maps");
-    const std::vector<int>& shadowTiles = shadows_.update(scene_, lights, shading.shadows);
-    shadowMapsTime.end();
-    stats_.shadowCasters = shadows_.casters();
-    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+    const std::vector<int>& shadowTiles =
+        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
 
     TimedPass lightTableTime(timer_, "light-table");
     lightTable_.update(lights, shadowTiles);

@@ -37,12 +37,8 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    if (shading.shadows.enabled) shadows_.checkUnits(lightTable_.format());
-    TimedPass shadowMapsTime(timer_, "shadow-maps");
-    const std::vector<int>& shadowTiles = shadows_.update(scene_, lights, shading.shadows);
-    shadowMapsTime.end();
-    stats_.shadowCasters = shadows_.casters();
-    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+    const std::vector<int>& shadowTiles =
+        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
     TimedPass lightTableTime(timer_, "light-table");
     lightTable_.update(lights, shadowTiles);
     lightTableTime.end();

@@ -82,4 +82,16 @@ void useShadingProgram(const gl::Program& program, const CameraMatrices& camera,
     table.bind(program);
 }
 
+const std::vector<int>& drawShadowMaps(ShadowMaps& shadows, FrameTimer& timer, FrameStats& stats, const GpuScene& scene,
+                                       const std::vector<PointLight>& lights, const ShadingParameters& shading,
+                                       LightTableFormat table) {
+    if (shading.shadows.enabled) shadows.checkUnits(table);
+    TimedPass shadowMapsTime(timer, "shadow-maps");
+    const std::vector<int>& tiles = shadows.update(scene, lights, shading.shadows);
+    shadowMapsTime.end();
+    stats.shadowCasters = shadows.casters();
+    stats.shadowMapsDrawn = shadows.mapsDrawn();
+    return tiles;
+}
+
 }  // namespace lidr

@@ -2,11 +2,15 @@
 // The shading pass every mode shares once it knows its lights (LIDR's forward pass, tiled forward, the
 // reference, multi-pass's ambient pass): where surfaces are shaded, with which depth test, and the per-frame
 // uniforms of shading.glsl. Each mode then binds its own light lists and draws.
+#include <vector>
+
+#include "lidr/gl/frame_timer.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/light_table.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shadow_maps.h"
 #include "lidr/scene/camera.h"
 
 namespace lidr {
@@ -34,5 +38,13 @@ void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera
 // Uses the program, sets shading.glsl's uniforms and binds the light table to it.
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
                        const LightTable& table);
+
+// The frame's shadow maps as every mode draws them, before its light table (issue 30): where shadows are on, the
+// atlas's texture unit checked next to a `table`-format light table (ShadowMaps::checkUnits); the maps drawn in a
+// timed "shadow-maps" pass; stats.shadowCasters and shadowMapsDrawn set. Returns the lights' first atlas tiles for
+// LightTable::update (ShadowMaps::update).
+const std::vector<int>& drawShadowMaps(ShadowMaps& shadows, FrameTimer& timer, FrameStats& stats, const GpuScene& scene,
+                                       const std::vector<PointLight>& lights, const ShadingParameters& shading,
+                                       LightTableFormat table);
 
 }  // namespace lidr
