@@ -31,6 +31,7 @@
 #include "lidr/modes/render_mode.h"
 #include "lidr/render/material_variants.h"
 #include "lidr/render/present.h"
+#include "lidr/render/shadow_atlas.h"
 #include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -152,6 +153,14 @@ std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::
 }
 
 // Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+// The shadow atlas as a picture (the viewer's and the page's debug view, ShadowAtlas::image), where the frame drew
+// one and the context can read it (ES 2.0 reads no depth texture back).
+void writeShadowAtlas(const Renderer& renderer, const GlInfo& info, const std::string& outDir) {
+    const ShadowAtlas* atlas = renderer.shadowAtlas();
+    if (!atlas || (info.gles && !atlas->packed())) return;
+    writePng(path(outDir, "shadow_atlas.png"), atlas->image(1024));
+}
+
 // The frame's shadows for summary.json and the text summary: casters, maps drawn by the first frame and by the
 // last (0 when nothing moved: the maps are drawn once for a static scene).
 void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::ShadowChoice& choice,
@@ -184,6 +193,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     const ImageRGBA8 image = renderer->targets().readColor();
     const std::string imageFile = mo.mode + ".png";
     writePng(path(outDir, imageFile), image);
+    writeShadowAtlas(*renderer, info, outDir);
 
     nlohmann::json summary;
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
@@ -209,6 +219,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         s << "auto mode  " << autoMode->reason() << "\n";
     }
     std::string outputs = imageFile;
+    if (renderer->shadowAtlas() && !(info.gles && !renderer->shadowAtlas()->packed())) outputs += ", shadow_atlas.png";
     const auto* tiled = dynamic_cast<const TiledRenderer*>(renderer.get());
     if (tiled) {
         const LightGridStats& g = tiled->frameInfo().grid;
@@ -311,6 +322,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     const FrameStats stats = renderer.lastFrame();
     const ImageRGBA8 image = renderer.targets().readColor();
     writePng(path(outDir, "lidr.png"), image);
+    writeShadowAtlas(renderer, info, outDir);
 
     nlohmann::json summary;
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},

@@ -48,6 +48,10 @@ for mode in lidr tiled forward-multipass; do
   LIDR_CONTEXT=egl "$demo" --headless "${size[@]}" --frames 1 --mode "$mode" --out "$out/demo-$mode" >"$out/demo-$mode.log" 2>&1 ||
     fail "lidr-demo --mode $mode failed: $(cat "$out/demo-$mode.log")"
 done
+for mode in lidr tiled; do  # the same frame with the 8 brightest lights casting shadows
+  LIDR_CONTEXT=egl "$demo" --headless "${size[@]}" --frames 1 --mode "$mode" --shadows 8 --out "$out/demo-$mode-shadows" \
+    >"$out/demo-$mode-shadows.log" 2>&1 || fail "lidr-demo --mode $mode --shadows 8 failed: $(cat "$out/demo-$mode-shadows.log")"
+done
 
 sed "s|@OUT@|$out|g" "$here/viewer_test.script" > "$out/test.script"
 echo "viewer.script: ${x[*]} lidr-viewer --script $out/test.script (GL 2.1 override)"

@@ -184,8 +184,11 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
     if (name.rfind("shadow", 0) == 0) {
         try {
             shadowChoice(next);  // the value checked as lidr-demo checks --shadows, --shadow-filter, --shadow-lookup
-        } catch (const std::exception& e) {
-            throw Error("setting " + name + ": " + e.what());
+        } catch (const std::exception& e) {  // refused, as a choice the library refuses is: the old one stays
+            status_ = name + " " + value + " refused: " + e.what();
+            lastRefused_ = true;
+            std::cerr << "lidr-viewer: " << status_ << std::endl;
+            return false;
         }
     }
     return apply(next, name + " " + value);

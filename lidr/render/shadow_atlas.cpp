@@ -96,6 +96,15 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
         }
     }
     framebuffer_.checkComplete("shadow atlas");
+    {  // tiles no light has used yet read as empty (depth 1), in the debug view too
+        PassDescription pass;
+        pass.framebuffer = framebuffer_.id();
+        pass.viewport = glm::ivec4(0, 0, options.size, options.size);
+        pass.clear.depth = true;
+        pass.clear.color = packed_;
+        pass.clear.colorValue = glm::vec4(1.0f);
+        StateCache::current().beginPass(pass);
+    }
     program_ = gl::Program::create(packed_ ? "shadow-depth-packed" : "shadow-depth", buildShaderSource("geometry.vert"),
                                    buildShaderSource(packed_ ? "shadow_depth_packed.frag" : "depth_only.frag"), geometryAttributes());
     checkGl("shadow atlas");
