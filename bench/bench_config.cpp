@@ -20,6 +20,7 @@
 // bench builds the two modes it can name itself.
 #if __has_include("lidr/modes/render_mode.h")
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/shadow_casters.h"
 #define LIDR_BENCH_HAS_MODE_FACTORY 1
 #else
 #define LIDR_BENCH_HAS_MODE_FACTORY 0
@@ -55,10 +56,29 @@ std::string sceneNameHelp() {
            "triangles, e.g. heavy-250k, heavy-1m), hall-N / city-N (deep, occluded scenes: a pillared hall and a city "
            "block grid with N lights of 1-4 m, e.g. hall-255), spots-N / spots-N-points (many-N-top with the particles "
            "as spot lights aimed down, or the same lights as points), file:PATH or a path ending in .json, .gltf, .glb "
-           "or .obj";
+           "or .obj; any of them with -shadows-K (its K brightest lights that can touch the view cast shadows, e.g. "
+           "hall-255-shadows-32; doc/shadows.md)";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed) {
+    // "SCENE-shadows-K": SCENE with its K brightest lights that can touch its view casting shadows
+    // (chooseShadowCasters, lidr/render/shadow_casters.h); renderFrame turns shadows on for it (benchShading).
+    const size_t marker = name.rfind("-shadows-");
+    if (marker != std::string::npos && !startsWith(name, "file:")) {
+        const std::string countText = name.substr(marker + 9);
+        const int k = countText == "0" ? 0 : positiveInt(countText);
+        if (k < 0)
+            throw Error("bad scene name '" + name + "': SCENE-shadows-K needs a whole number K >= 0 of shadow casters "
+                        "(valid: " + sceneNameHelp() + ")");
+        Scene scene = loadBenchScene(name.substr(0, marker), seed);
+        const int chosen = chooseShadowCasters(scene.lights, cameraMatrices(scene.camera, scene.width, scene.height), k);
+        if (chosen < k)
+            throw Error("scene '" + name + "': only " + std::to_string(chosen) + " of its " +
+                        std::to_string(scene.lights.size()) + " lights can cast shadows into its view, " +
+                        std::to_string(k) + " asked for");
+        scene.name = name;
+        return scene;
+    }
     if (name == "room") {
         DefaultSceneOptions o;
         o.seed = seed;
@@ -346,7 +366,7 @@ std::vector<SweepGroup> fullPreset() {
     return groups;
 }
 
-std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall"}; }
+std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows"}; }
 
 std::vector<std::string> sweepVolumeTests() {
     std::vector<std::string> tests{"backface"};
@@ -407,6 +427,24 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
             g.name = "hall";
             g.scenes = {"hall-" + std::to_string(n)};
             g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
+            g.indexBits = {n > 255 ? 16 : 8};
+            g.reference = false;
+            groups.push_back(g);
+        }
+        return groups;
+    }
+    if (name == "shadows") {
+        // Shadow-casting lights among 255 and 1,024 in the hall (issue 30; doc/shadows.md): the cost of the maps
+        // (first frame) and of the lookups (every frame), per mode. Timing only, as the hall sweep.
+        const std::vector<int> counts = quick ? std::vector<int>{255} : std::vector<int>{255, 1024};
+        const std::vector<int> casters = quick ? std::vector<int>{0, 8} : std::vector<int>{0, 8, 32, 128};
+        for (int n : counts) {
+            SweepGroup g = base;
+            g.name = "shadows";
+            for (int k : casters) g.scenes.push_back("hall-" + std::to_string(n) + "-shadows-" + std::to_string(k));
+            g.resolutions = {quick ? std::make_pair(64, 48) : std::make_pair(512, 384)};
+            g.schemes = {"auto"};
+            g.volumeTests = {"sphere"};
             g.indexBits = {n > 255 ? 16 : 8};
             g.reference = false;
             groups.push_back(g);

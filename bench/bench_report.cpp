@@ -88,7 +88,8 @@ const std::vector<std::string>& resultColumns() {
         "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "scene_triangles", "rounds",
         "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
         "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls", "true_light_pixels",
-        "volume_fragments", "volume_fragments_per_light_pixel"};
+        "volume_fragments", "volume_fragments_per_light_pixel", "shadow_casters", "shadow_maps_first_frame",
+        "shadow_maps_first_frame_ms", "shadow_maps_later_frames"};
     return c;
 }
 
@@ -144,7 +145,8 @@ std::vector<std::string> csvCells(const Row& r) {
             std::to_string(r.glCalls.stateCalls), std::to_string(r.glCalls.stateCallsSkipped),
             std::to_string(r.glCalls.drawCalls), r.trueLightPixels >= 0 ? std::to_string(r.trueLightPixels) : "",
             r.volumeFragments >= 0 ? std::to_string(r.volumeFragments) : "",
-            r.volumeEfficiency() >= 0 ? num(r.volumeEfficiency(), 3) : ""};
+            r.volumeEfficiency() >= 0 ? num(r.volumeEfficiency(), 3) : "", std::to_string(r.shadowCasters),
+            std::to_string(r.shadowMapsFirst), num(r.shadowMapsFirstMs), std::to_string(r.shadowMapsLater)};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -186,6 +188,8 @@ nlohmann::json rowJson(const Row& r) {
     if (c.mode == "lidr") j["timing"]["light_volume_share"] = r.lightVolumeShare();
     j["light_data_bytes"] = r.lightDataBytes;
     j["drawn_lights"] = r.drawnLights;
+    j["shadows"] = {{"casters", r.shadowCasters}, {"maps_first_frame", r.shadowMapsFirst},
+                    {"maps_first_frame_ms", r.shadowMapsFirstMs}, {"maps_later_frames", r.shadowMapsLater}};
     j["gl_calls"] = {{"state_calls", r.glCalls.stateCalls}, {"state_calls_skipped", r.glCalls.stateCallsSkipped},
                      {"draw_calls", r.glCalls.drawCalls}};
     if (!r.hasError)
@@ -387,6 +391,34 @@ void overlapTarget(std::ostream& o, const std::vector<Row>& rows) {
 
 }  // namespace
 
+// Scenes with shadow casters (SCENE-shadows-K, doc/shadows.md): the maps' cost on the first frame, what later
+// frames draw (0: a static scene's maps are drawn once) and the frame against the same configuration on the same
+// scene with 0 casters (SCENE-shadows-0) in this run.
+void shadowSection(std::ostream& o, const std::vector<Row>& rows) {
+    const auto shadowScene = [](const Row& r) { return r.run.scene.find("-shadows-") != std::string::npos; };
+    if (std::none_of(rows.begin(), rows.end(), shadowScene)) return;
+    o << "\n## Shadows\n\nPer configuration on the -shadows-K scenes: casters; maps drawn by the first frame and its "
+         "shadow-maps pass (ms); the most maps any later frame drew; the later frames' shadow-maps pass and frame "
+         "(median ms); the frame over the same configuration's on SCENE-shadows-0 at the same size.\n\n"
+         "| scene | config | casters | first-frame maps | first-frame maps ms | later maps | later maps ms | frame ms | x no shadows |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        if (!shadowScene(r)) continue;
+        double laterMapsMs = 0.0;
+        for (const PassStat& p : r.passes)
+            if (p.pass == "shadow-maps") laterMapsMs = p.ms.median;
+        const std::string unshadowed = r.run.scene.substr(0, r.run.scene.rfind("-shadows-")) + "-shadows-0";
+        std::string ratio = "-";
+        for (const Row& b : rows)
+            if (b.run.scene == unshadowed && b.run.width == r.run.width && b.run.height == r.run.height &&
+                b.run.config.key() == r.run.config.key() && b.frameMs.median > 0)
+                ratio = num(r.frameMs.median / b.frameMs.median, 2);
+        o << "| " << r.run.scene << " " << r.run.width << "x" << r.run.height << " | " << r.run.config.key() << " | "
+          << r.shadowCasters << " | " << r.shadowMapsFirst << " | " << ms(r.shadowMapsFirstMs) << " | "
+          << r.shadowMapsLater << " | " << ms(laterMapsMs) << " | " << ms(r.frameMs.median) << " | " << ratio << " |\n";
+    }
+}
+
 void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::string>& plots,
                                 const std::string& plotMessage) const {
     std::ostringstream o;
@@ -469,6 +501,7 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
             o << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
         }
     }
+    shadowSection(o, rows_);
     o << "\n## Plots\n\n";
     if (plots.empty()) o << plotMessage << "\n";
     for (const std::string& p : plots) {

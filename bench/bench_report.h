@@ -58,6 +58,10 @@ struct Row {
         return trueLightPixels > 0 && volumeFragments >= 0 ? double(volumeFragments) / double(trueLightPixels) : -1.0;
     }
     long sceneTriangles = 0;
+    // Shadows (the -shadows-K scenes): casters, maps drawn by the first frame and that pass's time, the most maps
+    // any later frame drew (0: a static scene's maps are drawn once).
+    int shadowCasters = 0, shadowMapsFirst = 0, shadowMapsLater = 0;
+    double shadowMapsFirstMs = 0.0;
     // Interleaved rounds (doc/benchmarks.md): every configuration of one scene and size renders one measured
     // frame per round, in turn. `rounds`: the rounds its scene set ran; roundMs[r]: this configuration's frame
     // time in round r (empty when it was measured once, outside the rounds: a first frame over the cap).

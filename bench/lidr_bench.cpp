@@ -200,12 +200,37 @@ struct Slot {
     std::vector<double> roundMs;  // frame time per round (empty for `once`)
     std::vector<double> ratios;   // over the baseline's frame time in the same round
     bool once = false;  // its first frame took longer than maxSeconds / frames: that frame is its one measurement
+    // Shadow maps drawn by its first frame (with that pass's time) and at most by any frame after it: a static
+    // scene draws its maps once, so the later frames draw 0 (doc/shadows.md).
+    int shadowMapsFirst = -1, shadowMapsLater = 0;
+    double shadowMapsFirstMs = 0.0;
+    void noteShadowMaps() {
+        const FrameStats& f = renderer->lastFrame();
+        if (shadowMapsFirst >= 0) {
+            shadowMapsLater = std::max(shadowMapsLater, f.shadowMapsDrawn);
+            return;
+        }
+        shadowMapsFirst = f.shadowMapsDrawn;
+        for (const PassTime& p : f.passes)  // the bench's renderers wait for their timings: this frame's own
+            if (p.pass == "shadow-maps") shadowMapsFirstMs = p.milliseconds;
+    }
 };
+
+// The scene's shading, shadows on where a light casts (the -shadows-K scenes, scene files' "shadow"): one 4096^2
+// atlas of 128-texel tiles, 1,024 maps, room for 128 point lights' 768 (doc/shadows.md, "Casters, tools and cost").
+ShadingParameters benchShading(const Scene& scene) {
+    ShadingParameters shading = sceneShading(scene);
+    shading.shadows.enabled =
+        std::any_of(scene.lights.begin(), scene.lights.end(), [](const PointLight& l) { return l.castsShadow; });
+    shading.shadows.atlas.size = 4096;
+    shading.shadows.atlas.tileSize = 128;
+    return shading;
+}
 
 // Renders one frame and waits for it; returns the wall time in ms.
 double renderFrame(Renderer& renderer, const Scene& scene, const std::vector<PointLight>& lights) {
     const double t0 = nowMilliseconds();
-    renderer.render(scene.camera, lights, sceneShading(scene));
+    renderer.render(scene.camera, lights, benchShading(scene));
     glFinish();
     return nowMilliseconds() - t0;
 }
@@ -220,7 +245,9 @@ void warmUp(Slot& slot, const Scene& scene, const std::vector<PointLight>& light
     for (int i = 0; !g_stop && i < kMaxWarmupFrames &&
                     (i < s.warmup || (s.warmupMs > 0.0 && (i == 0 || nowMilliseconds() - warmupStart < s.warmupMs)));
          ++i) {
-        const double wall = i == 0 && firstWallMs >= 0.0 ? firstWallMs : renderFrame(*slot.renderer, scene, lights);
+        const bool rendered = !(i == 0 && firstWallMs >= 0.0);  // else noted with the reference frame
+        const double wall = rendered ? renderFrame(*slot.renderer, scene, lights) : firstWallMs;
+        if (rendered) slot.noteShadowMaps();
         if (i == 0 && wall > onceMs) {
             slot.once = true;
             slot.m.frames.push_back(slot.renderer->lastFrame());
@@ -234,6 +261,7 @@ void warmUp(Slot& slot, const Scene& scene, const std::vector<PointLight>& light
     if (auto* autoMode = dynamic_cast<AutoModeRenderer*>(slot.renderer.get()))
         for (int i = 0; !g_stop && autoMode->measuring() && i < kMaxWarmupFrames; ++i) {
             renderFrame(*slot.renderer, scene, lights);
+            slot.noteShadowMaps();
             ++slot.m.warmupFrames;
         }
 }
@@ -668,6 +696,7 @@ int main(int argc, char** argv) {
                 if (own < slots.size()) {
                     ref = slots[own].renderer.get();
                     firstWall[own] = renderFrame(*ref, scene, lights);
+                    slots[own].noteShadowMaps();
                 } else {
                     separate = createBenchRenderer(refConfig, info, scene, first.width, first.height);
                     ref = separate.get();
@@ -703,6 +732,7 @@ int main(int argc, char** argv) {
                 for (size_t k = 0; k < active.size(); ++k) {
                     Slot& slot = slots[active[(k + size_t(r)) % active.size()]];  // the start rotates each round
                     const double wall = renderFrame(*slot.renderer, scene, lights);
+                    slot.noteShadowMaps();
                     slot.m.frames.push_back(slot.renderer->lastFrame());
                     slot.m.wallMs.push_back(wall);
                     slot.roundMs.push_back(slot.m.frames.back().frameMilliseconds());
@@ -735,6 +765,10 @@ int main(int argc, char** argv) {
                 row.sceneLights = int(lights.size());
                 row.sceneTriangles = sceneTriangleCount(scene);
                 fillTiming(row, slot.m);
+                row.shadowCasters = slot.m.frames.back().shadowCasters;
+                row.shadowMapsFirst = std::max(0, slot.shadowMapsFirst);
+                row.shadowMapsFirstMs = slot.shadowMapsFirstMs;
+                row.shadowMapsLater = slot.shadowMapsLater;
                 row.rounds = slot.once ? 1 : rounds;
                 row.roundMs = slot.roundMs;
                 row.setKey = setKey;

@@ -15,6 +15,8 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/eval/bench_scenes.h"
+#include "lidr/render/shadow_atlas.h"
+#include "lidr/render/shadow_casters.h"
 
 namespace lidr::demo {
 
@@ -155,6 +157,112 @@ void RendererChoice::addOptions(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--exposure", exposure, "Exposure in stops: linear light x 2^stops before the tone map")
         ->capture_default_str();
+    app.add_option("--shadows", shadows,
+                   "Shadow-casting lights: off (default), scene (the lights' own \"shadow\" flags: scene files, glTF "
+                   "extras.lidr.shadow) or K (the K brightest lights that can touch the view: colour luminance x range^2; "
+                   "doc/shadows.md)");
+    app.add_option("--shadow-lookup", shadowLookup,
+                   "Where LIDR applies shadows: volume (default: the volume pass discards shadowed points, the paper's "
+                   "first way) or forward (the forward pass looks up by index); the other modes look up as they shade");
+    app.add_option("--shadow-filter", shadowFilter,
+                   "Shadow-map lookups: nearest (default: one texel decides) or pcf (the four nearest texels, bilinear)");
+    app.add_option("--shadow-atlas", shadowAtlas,
+                   "Shadow atlas SIZE[:TILE] in texels, powers of two, TILE 16..SIZE, SIZE at most 8192 (default 4096 "
+                   "with the largest TILE up to 512 that holds every caster's maps: a spot light takes one tile, a point "
+                   "light six)");
+}
+
+namespace {
+bool powerOfTwo(long v) { return v > 0 && (v & (v - 1)) == 0; }
+
+long atlasNumber(const std::string& text, const std::string& whole) {
+    if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        throw Error("--shadow-atlas must be SIZE or SIZE:TILE (whole numbers of texels, e.g. 4096:256), got '" + whole + "'");
+    return std::stol(text);
+}
+}  // namespace
+
+ShadowChoice RendererChoice::shadowChoice(const std::string& mode) const {
+    ShadowChoice c;
+    if (shadows == "off") {
+        for (const auto* given : {&shadowLookup, &shadowFilter, &shadowAtlas})
+            if (*given)
+                throw Error("--shadow-lookup, --shadow-filter and --shadow-atlas set up shadows: add --shadows scene or "
+                            "--shadows K");
+        return c;
+    }
+    if (shadows == "scene") {
+        c.casters = ShadowChoice::Casters::Scene;
+    } else {
+        const bool digits = !shadows.empty() && shadows.size() <= 5 &&
+                            std::all_of(shadows.begin(), shadows.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+        if (!digits || std::stoi(shadows) > 65535)
+            throw Error("--shadows must be off, scene or a number of lights K in 0..65535, got '" + shadows + "'");
+        c.casters = ShadowChoice::Casters::Brightest;
+        c.brightest = std::stoi(shadows);
+    }
+    c.settings.enabled = true;
+    c.lidrMode = mode == "lidr";
+    const std::string lookup = shadowLookup.value_or("volume");
+    if (lookup != "volume" && lookup != "forward")
+        throw Error("--shadow-lookup must be volume or forward, got '" + lookup + "'");
+    if (shadowLookup && mode != "lidr")
+        throw Error("--shadow-lookup says where LIDR applies shadows; the " + mode +
+                    " mode looks them up as it shades (use --mode lidr, or leave it out)");
+    c.settings.lidrLookup = lookup == "volume" ? ShadowLookup::VolumePass : ShadowLookup::ForwardPass;
+    const std::string filter = shadowFilter.value_or("nearest");
+    if (filter != "nearest" && filter != "pcf")
+        throw Error("--shadow-filter must be nearest or pcf, got '" + filter + "'");
+    c.settings.filtered = filter == "pcf";
+    c.settings.atlas.size = 4096;
+    if (shadowAtlas) {
+        const size_t colon = shadowAtlas->find(':');
+        const long size = atlasNumber(shadowAtlas->substr(0, colon), *shadowAtlas);
+        if (!powerOfTwo(size) || size < 16 || size > 8192)
+            throw Error("--shadow-atlas: SIZE must be a power of two from 16 to 8192 texels, got " + std::to_string(size));
+        c.settings.atlas.size = int(size);
+        if (colon != std::string::npos) {
+            const long tile = atlasNumber(shadowAtlas->substr(colon + 1), *shadowAtlas);
+            if (!powerOfTwo(tile) || tile < 16 || tile > size)
+                throw Error("--shadow-atlas: TILE must be a power of two from 16 to SIZE (" + std::to_string(size) +
+                            "), got " + std::to_string(tile));
+            c.settings.atlas.tileSize = int(tile);
+            c.automaticTile = false;
+        }
+    }
+    if (c.automaticTile) c.settings.atlas.tileSize = std::min(512, c.settings.atlas.size);
+    return c;
+}
+
+void ShadowChoice::apply(const Scene& scene, std::vector<PointLight>& lights, ShadingParameters& shading) const {
+    shading.shadows = settings;
+    if (casters == Casters::Off) return;
+    if (casters == Casters::Brightest)
+        chooseShadowCasters(lights, cameraMatrices(scene.camera, scene.width, scene.height), brightest);
+    if (!automaticTile) return;  // the atlas refuses casters it cannot hold, naming the count
+    long tiles = 0;
+    for (const PointLight& l : lights)
+        if (l.castsShadow) tiles += shadowTiles(l);
+    int tile = std::min(512, settings.atlas.size);
+    const auto capacity = [&](int t) { return long(settings.atlas.size / t) * long(settings.atlas.size / t); };
+    while (tile > 16 && capacity(tile) < tiles) tile /= 2;
+    if (capacity(tile) < tiles)
+        throw Error("--shadows: the casters need " + std::to_string(tiles) + " shadow maps (a spot light one, a point "
+                    "light six); a " + std::to_string(settings.atlas.size) + " atlas holds " +
+                    std::to_string(capacity(tile)) + " of 16 texels: use a larger --shadow-atlas or fewer casters");
+    shading.shadows.atlas.tileSize = tile;
+}
+
+std::string ShadowChoice::describe(const ShadowSettings& used) const {
+    if (casters == Casters::Off) return "off";
+    std::ostringstream s;
+    s << (casters == Casters::Scene ? std::string("the scene's flags") : std::to_string(brightest) + " brightest")
+      << ", atlas " << used.atlas.size << " (" << used.atlas.tileSize << "-texel tiles"
+      << (automaticTile ? ", chosen to fit" : "") << ")";
+    if (lidrMode) s << ", lookup " << (settings.lidrLookup == ShadowLookup::VolumePass ? "volume" : "forward");
+    s << ", filter "
+      << (settings.filtered ? "pcf" : "nearest");
+    return s.str();
 }
 
 OutputTransform RendererChoice::outputTransform() const {

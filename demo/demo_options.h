@@ -8,6 +8,7 @@
 #include "lidr/platform/context.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/render/renderer.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr::demo {
@@ -24,6 +25,21 @@ struct SceneChoice {
     bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
+};
+
+// --shadows and its settings, checked (RendererChoice::shadowChoice), applied to each frame's lights and shading.
+struct ShadowChoice {
+    enum class Casters { Off, Scene, Brightest };
+    Casters casters = Casters::Off;
+    int brightest = 0;             // Casters::Brightest: K (chooseShadowCasters)
+    ShadowSettings settings{};     // enabled unless Off
+    bool automaticTile = true;     // --shadow-atlas without :TILE: the largest tile (<= 512) the casters' maps fit
+    bool lidrMode = false;         // the lookup setting applies (describe() names it)
+    // Sets the lights' castsShadow (Scene: left as the scene says; Brightest: the rule, with the scene's camera)
+    // and shading.shadows. Throws lidr::Error where the casters' maps cannot fit the atlas.
+    void apply(const Scene& scene, std::vector<PointLight>& lights, ShadingParameters& shading) const;
+    // "8 brightest, atlas 4096 (512-texel tiles, chosen to fit), lookup volume, filter nearest"; `used`: apply()'s.
+    std::string describe(const ShadowSettings& used) const;
 };
 
 struct RendererChoice {
@@ -49,7 +65,11 @@ struct RendererChoice {
     std::string timer = "auto";
     std::string toneMap = "pbr-neutral";
     double exposure = 0.0;  // stops
+    std::string shadows = "off";            // off, scene, or K (doc/shadows.md, "Casters, tools and cost")
+    std::optional<std::string> shadowLookup, shadowFilter, shadowAtlas;  // unset: volume, nearest, 4096 (tile automatic)
     void addOptions(CLI::App& app);
+    // --shadows and the --shadow-* options, checked against each other and the mode; throws lidr::Error.
+    ShadowChoice shadowChoice(const std::string& mode) const;
     // --tone-map and --exposure; throws lidr::Error on a bad name or an exposure outside [-20, 20] stops.
     OutputTransform outputTransform() const;
     LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name

@@ -152,18 +152,31 @@ std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::
 }
 
 // Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+// The frame's shadows for summary.json and the text summary: casters, maps drawn by the first frame and by the
+// last (0 when nothing moved: the maps are drawn once for a static scene).
+void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::ShadowChoice& choice,
+                      const ShadingParameters& shading, int firstFrameMaps, const FrameStats& last) {
+    if (choice.casters == demo::ShadowChoice::Casters::Off) return;
+    summary["shadows"] = {{"setting", choice.describe(shading.shadows)}, {"casters", last.shadowCasters},
+                          {"maps_first_frame", firstFrameMaps}, {"maps_last_frame", last.shadowMapsDrawn},
+                          {"atlas_size", shading.shadows.atlas.size}, {"tile_size", shading.shadows.atlas.tileSize}};
+    s << "shadows    " << last.shadowCasters << " casters (" << choice.describe(shading.shadows) << "), "
+      << firstFrameMaps << " maps drawn on the first frame, " << last.shadowMapsDrawn << " on the last\n";
+}
+
 int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
-                    bool withReference, const demo::RendererChoice& rc) {
+                    bool withReference, const demo::RendererChoice& rc, const demo::ShadowChoice& shadowChoice) {
     auto context = startHeadless(outDir, rc);
     const GlInfo& info = context->info();
     std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
-    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    shadowChoice.apply(scene, lights, shading);  // the reference below renders with the same lights and settings
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
-    renderer->render(scene.camera, lights, shading);  // warm-up
+    const int firstFrameMaps = renderer->render(scene.camera, lights, shading).shadowMapsDrawn;  // warm-up
     auto* autoMode = dynamic_cast<AutoModeRenderer*>(renderer.get());
     while (autoMode && autoMode->measuring()) renderer->render(scene.camera, lights, shading);  // its trial frames
     for (int i = 0; i < frames; ++i) times.add(renderer->render(scene.camera, lights, shading).passes);
@@ -189,6 +202,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
+    addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
     if (autoMode) {
         summary["auto_mode"] = {{"chosen", autoMode->lastMode()}, {"reason", autoMode->reason()},
                                 {"candidates", autoMode->candidates()}};
@@ -265,12 +279,13 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                 const std::string& dumpDir, int frames, bool withReference) {
     const Scene scene = sceneChoice.load();
     const RenderModeOptions modeOptions = rc.renderModeOptions(scene);
+    const demo::ShadowChoice shadowChoice = rc.shadowChoice(modeOptions.mode);
     demo::checkTargetMemory(scene, modeOptions);  // before the context: an oversized request fails at once
     if (modeOptions.mode != "lidr" && !dumpDir.empty())
         throw Error("--dump writes LIDR index targets; it needs --mode lidr");
     if (!dumpDir.empty()) prepareWritableFolder(dumpDir, "--dump");  // before rendering, not after it
     if (modeOptions.mode != "lidr") {
-        return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc);
+        return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc, shadowChoice);
     }
     const LidrOptions options = rc.lidrOptions(scene);
     auto context = startHeadless(outDir, rc);
@@ -278,8 +293,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
     for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
 
-    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    shadowChoice.apply(scene, lights, shading);  // the reference below renders with the same lights and settings
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
     std::cout << "LIDR: "
@@ -289,7 +305,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
               << "\n";
 
     MedianTimes lidrTimes;
-    renderer.render(scene.camera, lights, shading);  // warm-up: shader compiles, first uploads
+    const int firstFrameMaps = renderer.render(scene.camera, lights, shading).shadowMapsDrawn;  // warm-up: shader
+                                                                                                // compiles, uploads
     for (int i = 0; i < frames; ++i) lidrTimes.add(renderer.render(scene.camera, lights, shading).passes);
     const FrameStats stats = renderer.lastFrame();
     const ImageRGBA8 image = renderer.targets().readColor();
@@ -392,6 +409,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
+    addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
     if (decision.autoBudget || decision.autoIndexBits || *decision.budgetFallback) {
         s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
           << (decision.autoIndexBits ? " (narrowest)" : " (fixed)")
@@ -450,6 +468,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     if (co.backend == ContextBackend::Auto) co.backend = ContextBackend::Glfw;
     Scene scene = sceneChoice.load();
     demo::checkTargetMemory(scene, rc.renderModeOptions(scene));
+    const demo::ShadowChoice shadowChoice = rc.shadowChoice(rc.renderModeOptions(scene).mode);  // before the window
     co.visibleWindow = true;
     co.windowWidth = scene.width;
     co.windowHeight = scene.height;
@@ -459,7 +478,7 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     std::unique_ptr<Renderer> renderer = createRenderer(rc.renderModeOptions(scene), context->info(), scene,
                                                         scene.width, scene.height);
     renderer->setTiming(true);  // interactive: GPU times a frame or more late, never stalling
-    const ShadingParameters shading = sceneShading(scene, rc.outputTransform());
+    const ShadingParameters sceneShadingParameters = sceneShading(scene, rc.outputTransform());
     auto* window = static_cast<GLFWwindow*>(context->nativeWindow());
     // ES 2.0 has no glBlitFramebuffer: the frame goes to the window as one textured triangle there.
     std::optional<FramePresenter> presenter;
@@ -469,7 +488,10 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     int framesSinceReport = 0;
     while (!context->shouldClose()) {
         const double now = glfwGetTime();
-        const FrameStats& st = renderer->render(scene.camera, scene.lightsAt(scene.time + float(now - start)), shading);
+        std::vector<PointLight> lights = scene.lightsAt(scene.time + float(now - start));
+        ShadingParameters shading = sceneShadingParameters;
+        shadowChoice.apply(scene, lights, shading);  // K brightest: chosen again as the lights move
+        const FrameStats& st = renderer->render(scene.camera, lights, shading);
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
         if (presenter) {
@@ -485,8 +507,9 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
         if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
         ++framesSinceReport;
         if (now - lastReport > 1.0) {
-            std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn\n", framesSinceReport / (now - lastReport),
-                        st.frameMilliseconds(), st.timingMethod, st.drawnLights);
+            std::printf("%.1f fps, frame %.2f ms (%s), %d lights drawn, %d shadow casters, %d maps drawn\n",
+                        framesSinceReport / (now - lastReport), st.frameMilliseconds(), st.timingMethod, st.drawnLights,
+                        st.shadowCasters, st.shadowMapsDrawn);
             std::fflush(stdout);
             lastReport = now;
             framesSinceReport = 0;
@@ -535,6 +558,7 @@ int main(int argc, char** argv) {
             if (!std::isfinite(*timeStep) || *timeStep < 0.0)
                 throw Error("--time-step must be a finite number of seconds >= 0, got " + std::to_string(*timeStep));
             if (!dumpDir.empty()) throw Error("--dump does not apply to a soak run (--time-step)");
+            if (rc.shadows != "off") throw Error("--shadows applies to --headless and --window runs, not a soak run (--time-step)");
             return demo::runSoak(sceneChoice, rc, outDir, frames, *timeStep);
         }
         if (frames > 1000) throw Error("--frames must be in [1, 1000] without --time-step, got " + std::to_string(frames));

@@ -26,6 +26,7 @@
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/render/present.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shadow_casters.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/modes/auto_mode_renderer.h"

@@ -109,6 +109,10 @@ void StateCache::apply(const RenderState& s) {
         sampleShadingTouched_ = true;
     }
 
+    update(v, k.polygonOffset == s.polygonOffset, c, [&] { enable(GL_POLYGON_OFFSET_FILL, s.polygonOffset); });
+    update(v, k.polygonOffsetFactorUnits == s.polygonOffsetFactorUnits, c,
+           [&] { glPolygonOffset(s.polygonOffsetFactorUnits.x, s.polygonOffsetFactorUnits.y); });
+
     update(v, k.scissor == s.scissor, c, [&] { enable(GL_SCISSOR_TEST, s.scissor); });
     // The box matters only while the test is on; it is kept (and compared) from the last time it was set.
     RenderState next = s;

@@ -47,6 +47,10 @@ struct RenderState {
 
     bool scissor = false;
     glm::ivec4 scissorBox{0};
+
+    // Depth offset of filled polygons (glPolygonOffset(factor, units)): the shadow maps' slope-scaled bias.
+    bool polygonOffset = false;
+    glm::vec2 polygonOffsetFactorUnits{0.0f};
 };
 
 // What a pass clears before it draws. Values are GL's clear values; the cache opens the write masks the

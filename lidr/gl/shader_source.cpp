@@ -119,6 +119,10 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
         // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (lidr writes it only in the pixel-list test hook);
         // a context without the extension fails the compile naming it.
         if (writesFragDepth) header += "#extension GL_EXT_frag_depth : require\n";
+        // dFdx / dFdy are OES_standard_derivatives' in ES 2.0: enabled where offered (a shader that needs them
+        // tests GL_OES_standard_derivatives; the shadow maps' packed depth: shadow_depth_packed.frag).
+        if (source.find("dFdx") != std::string::npos)
+            header += "#ifdef GL_OES_standard_derivatives\n#extension GL_OES_standard_derivatives : enable\n#endif\n";
         header +=
             "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
             "precision highp float;\n"

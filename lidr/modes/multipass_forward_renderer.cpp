@@ -32,6 +32,7 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
       scene_(scene, DrawOrder::Reversed),  // the stamps keep the first fragment: see render()
       targets_(info, width, height, options.msaaSamples),
       lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
+      shadows_(info),
       timer_(info, options.timingMethod),
       info_(info) {
     const ShaderDefines defines = lightTable_.defines();
@@ -39,6 +40,7 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
                                    buildShaderSource("forward_ambient.frag", defines), geometryAttributes());
     light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
                                  buildShaderSource("forward_light.frag", defines), geometryAttributes());
+    lightDefines_ = defines;
     timer_.setEnabled(options.timing);
 }
 
@@ -52,10 +54,17 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     const FrameScope frame(stats_, timer_, lights.size());
     meshDraws_ = 0;
 
-    TimedPass lightTableTime(timer_, "light-table");
     if (static_cast<int>(lights.size()) > lightTable_.capacity())
         lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    lightTable_.update(lights);
+    if (shading.shadows.enabled) shadows_.checkUnits(lightTable_.format());
+    TimedPass shadowMapsTime(timer_, "shadow-maps");
+    const std::vector<int>& shadowTiles = shadows_.update(scene_, lights, shading.shadows);
+    shadowMapsTime.end();
+    stats_.shadowCasters = shadows_.casters();
+    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+
+    TimedPass lightTableTime(timer_, "light-table");
+    lightTable_.update(lights, shadowTiles);
     lightTableTime.end();
 
     TimedPass depthPrepassTime(timer_, "depth-prepass");
@@ -89,9 +98,15 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     s.scissor = options_.scissor;
     s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
     cache.apply(s);  // per light only the scissor box and the stamp change below (the cache sets only those)
-    light_.use();
-    setShadingUniforms(light_, cam, linearShading);
-    lightTable_.bind(light_);
+    // Shadows: each light's term with its lookup compiled in (shadow_lookup.glsl), as the reference does.
+    const gl::Program& lightProgram = shadows_.active() ? shadows_.program("forward-light", "geometry.vert",
+                                                                           "forward_light.frag", lightDefines_,
+                                                                           shading.shadows)
+                                                        : light_;
+    lightProgram.use();
+    setShadingUniforms(lightProgram, cam, linearShading);
+    lightTable_.bind(lightProgram);
+    shadows_.bind(lightProgram, shading.shadows);
     const float reach = lightTable_.reachError();
     // Culling a mesh whose bounds the sphere misses is exact only where every shaded point lies on its
     // triangle. Under MSAA a fragment that covers samples but not the pixel centre is shaded at the centre,
@@ -126,8 +141,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         }
         s.stencil.ref = stamp;
         cache.apply(s);
-        light_.set("uLightIndex", float(i + 1));
-        const int drawn = scene_.drawSelected(light_, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
+        lightProgram.set("uLightIndex", float(i + 1));
+        const int drawn = scene_.drawSelected(lightProgram, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
             if (!options_.cullMeshes) return true;
             if (!screenCull)
                 return sphereTouchesBox(l.position, radius, bmin, bmax) &&

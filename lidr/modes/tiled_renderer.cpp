@@ -44,6 +44,7 @@ TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const Tiled
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()),
       lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),
+      shadows_(info),
       timer_(info, options.timingMethod),
       info_(info) {
     if (options_.depthBounds && options_.msaaSamples == 0)
@@ -70,6 +71,7 @@ void TiledRenderer::buildProgram(int loopBound) {
     defines.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
     program_ = gl::Program::create("tiled-forward-" + std::to_string(loopBound), buildShaderSource("geometry.vert"),
                                    buildShaderSource("tiled_forward.frag", defines), geometryAttributes());
+    programDefines_ = defines;
     frameInfo_.loopBound = loopBound;
     ++frameInfo_.shaderRebuilds;
 }
@@ -84,11 +86,18 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     const FrameScope frame(stats_, timer_, lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
-    TimedPass lightTableTime(timer_, "light-table");
     if (static_cast<int>(lights.size()) > lightTable_.capacity()) {  // grow rather than refuse
         lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
     }
-    lightTable_.update(lights);
+    if (shading.shadows.enabled) shadows_.checkUnits(lightTable_.format());
+    TimedPass shadowMapsTime(timer_, "shadow-maps");
+    const std::vector<int>& shadowTiles = shadows_.update(scene_, lights, shading.shadows);
+    shadowMapsTime.end();
+    stats_.shadowCasters = shadows_.casters();
+    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+
+    TimedPass lightTableTime(timer_, "light-table");
+    lightTable_.update(lights, shadowTiles);
     lightTableTime.end();
 
     TimedPass depthPrepassTime(timer_, "depth-prepass");
@@ -124,16 +133,22 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
 
     TimedPass tiledForwardTime(timer_, "tiled-forward");
     beginOpaqueShading(targets_, shading, options_.preZ);
-    useShadingProgram(program_, cam, shading, lightTable_);
-    gridTextures_.bind(program_, false);
-    scene_.draw(program_, DrawFilter::Opaque, true, &cam);
+    // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
+    const gl::Program& program =
+        shadows_.active() ? shadows_.program("tiled-forward-" + std::to_string(frameInfo_.loopBound), "geometry.vert",
+                                             "tiled_forward.frag", programDefines_, shading.shadows)
+                          : program_;
+    useShadingProgram(program, cam, shading, lightTable_);
+    shadows_.bind(program, shading.shadows);
+    gridTextures_.bind(program, false);
+    scene_.draw(program, DrawFilter::Opaque, true, &cam);
     tiledForwardTime.end();
 
     if (transparent) {
         TimedPass tiledTransparentTime(timer_, "tiled-transparent");
         beginTransparentShading();  // back to front over the opaque depth, no depth writes
-        gridTextures_.bind(program_, true);
-        scene_.drawTransparentSorted(program_, cam.eye);
+        gridTextures_.bind(program, true);
+        scene_.drawTransparentSorted(program, cam.eye);
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});  // no scissor or masks on the resolve blit

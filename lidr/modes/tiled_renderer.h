@@ -19,6 +19,7 @@
 #include "lidr/render/light_table.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shadow_maps.h"
 #include "lidr/modes/tile_depth_bounds.h"
 
 namespace lidr {
@@ -72,6 +73,7 @@ public:
     const TiledFrameInfo& frameInfo() const { return frameInfo_; }
     const std::vector<TileDepthRange>& tileDepth() const { return tileDepth_; }  // empty without depth bounds
     const LightTable& lightTable() const { return lightTable_; }
+    const ShadowMaps& shadowMaps() const { return shadows_; }
     DepthReductionFormat depthFormat() const;  // of the reduction (meaningful with depthBounds)
     size_t depthReductionBytes() const { return depthBounds_ ? depthBounds_->bytes() : 0; }
     size_t gridBytes() const { return gridTextures_.gridBytes(); }
@@ -95,6 +97,8 @@ private:
     DepthPrepass depthPrepass_;
     std::unique_ptr<TileDepthBounds> depthBounds_;
     gl::Program program_;
+    ShaderDefines programDefines_;  // program_'s, for its shadowed twin (ShadowMaps::program)
+    ShadowMaps shadows_;
     FrameTimer timer_;
     const GlInfo info_;
     std::vector<TileDepthRange> tileDepth_;

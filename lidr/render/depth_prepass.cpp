@@ -29,13 +29,16 @@ DepthPrepass::DepthPrepass(DepthEmulation depth) {
                                    buildShaderSource("depth_only.frag", defines, includes), geometryAttributes());
 }
 
-void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera) {
+void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera, float slopeBias,
+                     bool colorWrites) {
     StateCache& cache = StateCache::current();
     RenderState s;
+    s.polygonOffset = slopeBias > 0.0f;
+    s.polygonOffsetFactorUnits = glm::vec2(slopeBias, 0.0f);
     s.depthTest = true;
     s.depthFunc = GL_LESS;
     s.depthWrite = true;
-    s.colorMask = glm::bvec4(false);
+    s.colorMask = glm::bvec4(colorWrites);
     cache.apply(s);
     program.use();
     program.set("uViewProj", camera.viewProjection);

@@ -26,7 +26,11 @@ private:
 
 // Draws the opaque meshes' depth (LESS, depth writes, no colour) seen by `camera` with `program` (geometry.vert
 // + depth_only.frag) into the bound target, then restores the default state: the pre-pass and the shadow maps.
-void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera);
+// slopeBias > 0: every depth written is pushed back by slopeBias x the polygon's depth slope per texel
+// (glPolygonOffset; the shadow maps' bias for surfaces slanted towards their light).
+// colorWrites: the program writes colour too (depth packed into RGBA8: depth_rgba8.frag).
+void drawOpaqueDepth(const gl::Program& program, const GpuScene& scene, const CameraMatrices& camera,
+                     float slopeBias = 0.0f, bool colorWrites = false);
 
 // Attribute bindings every geometry program uses.
 const std::vector<std::pair<std::string, GLuint>>& geometryAttributes();

@@ -67,25 +67,36 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
     if (!powerOfTwo(options.size) || !powerOfTwo(options.tileSize) || options.tileSize > options.size || options.tileSize < 16)
         throw Error("shadow atlas: size " + std::to_string(options.size) + " and tile size " + std::to_string(options.tileSize) +
                     " must be powers of two with 16 <= tile size <= size");
+    if (!(options.slopeBias >= 0.0f && options.slopeBias <= 64.0f))
+        throw Error("shadow atlas: slope bias " + std::to_string(options.slopeBias) + " must be in [0, 64] (texels)");
     if (info.maxTextureSize > 0 && options.size > info.maxTextureSize)
         throw Error("shadow atlas: size " + std::to_string(options.size) + " is over this context's GL_MAX_TEXTURE_SIZE of " +
                     std::to_string(info.maxTextureSize));
-    if (!info.depthTexture)
-        throw UnsupportedError("shadow atlas: this context has no depth textures (OES_depth_texture); the RGBA8 packed "
-                               "fallback is not written yet");
     perRow_ = options.size / options.tileSize;
-    depth_ = gl::Texture::create2D(info.gles ? GL_DEPTH_COMPONENT : GL_DEPTH_COMPONENT24, options.size, options.size,
-                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+    packed_ = options.packedDepth || !info.depthTexture;
+    gles_ = info.gles;
     framebuffer_ = gl::Framebuffer::create();
-    framebuffer_.attachTexture(GL_DEPTH_ATTACHMENT, depth_);
-    if (!info.gles) {
-        // No colour: GL 2.1's FBO completeness wants the draw and read buffers to be NONE (framebuffer state).
-        glDrawBuffer(GL_NONE);
-        glReadBuffer(GL_NONE);
+    if (packed_) {
+        // Each texel's 24-bit window depth in RGB (shadow_depth_packed.frag), a depth renderbuffer for the test: 16 bits
+        // on ES 2.0 (all it guarantees) can let a farther surface win where two lie within 2^-16 of each other.
+        depth_ = gl::Texture::create2D(GL_RGBA8, options.size, options.size, GL_RGBA, GL_UNSIGNED_BYTE);
+        depthBuffer_ = gl::Renderbuffer::create(info.gles ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24, options.size,
+                                                options.size);
+        framebuffer_.attachTexture(GL_COLOR_ATTACHMENT0, depth_);
+        framebuffer_.attachRenderbuffer(GL_DEPTH_ATTACHMENT, depthBuffer_);
+    } else {
+        depth_ = gl::Texture::create2D(info.gles ? GL_DEPTH_COMPONENT : GL_DEPTH_COMPONENT24, options.size, options.size,
+                                       GL_DEPTH_COMPONENT, GL_UNSIGNED_INT);
+        framebuffer_.attachTexture(GL_DEPTH_ATTACHMENT, depth_);
+        if (!info.gles) {
+            // No colour: GL 2.1's FBO completeness wants the draw and read buffers to be NONE (framebuffer state).
+            glDrawBuffer(GL_NONE);
+            glReadBuffer(GL_NONE);
+        }
     }
     framebuffer_.checkComplete("shadow atlas");
-    program_ = gl::Program::create("shadow-depth", buildShaderSource("geometry.vert"), buildShaderSource("depth_only.frag"),
-                                   geometryAttributes());
+    program_ = gl::Program::create(packed_ ? "shadow-depth-packed" : "shadow-depth", buildShaderSource("geometry.vert"),
+                                   buildShaderSource(packed_ ? "shadow_depth_packed.frag" : "depth_only.frag"), geometryAttributes());
     checkGl("shadow atlas");
 }
 
@@ -135,9 +146,15 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
         pass.framebuffer = framebuffer_.id();
         pass.viewport = slots[i].rect;
         pass.clear.depth = true;
+        pass.clear.color = packed_;  // packed: 1.0 is (255, 255, 255)
+        pass.clear.colorValue = glm::vec4(1.0f);
         pass.clear.region = slots[i].rect;
         cache.beginPass(pass);
-        drawOpaqueDepth(program_, scene, slots[i].camera);
+        if (packed_) {  // the shader adds the slope bias (shadow_depth_packed.frag); no polygon offset
+            program_.use();
+            program_.set("uSlopeBias", options_.slopeBias);
+        }
+        drawOpaqueDepth(program_, scene, slots[i].camera, packed_ ? 0.0f : options_.slopeBias, packed_);
         d = {posRange, directionCone, scene.version(), true};
         ++drawnNow;
     }
@@ -153,6 +170,18 @@ std::vector<float> ShadowAtlas::readDepth() const {
     pass.framebuffer = framebuffer_.id();
     pass.viewport = glm::ivec4(0, 0, options_.size, options_.size);
     cache.beginPass(pass);
+    if (packed_) {
+        std::vector<uint8_t> bytes(size_t(options_.size) * size_t(options_.size) * 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, options_.size, options_.size, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        checkGl("shadow atlas: read-back");
+        std::vector<float> rows(bytes.size() / 4);  // glReadPixels' rows are bottom to top already
+        for (size_t i = 0; i < rows.size(); ++i)
+            rows[i] = float(double((uint32_t(bytes[i * 4]) << 16) | (uint32_t(bytes[i * 4 + 1]) << 8) | bytes[i * 4 + 2]) /
+                            16777215.0);
+        return rows;
+    }
+    if (gles_) throw UnsupportedError("shadow atlas: OpenGL ES 2.0 cannot read a depth texture back (a packed atlas can)");
     const ImageFloat image = lidr::readDepth(options_.size, options_.size);
     // readDepth gives rows top to bottom (an image); the atlas's rows are kept bottom to top like GL's.
     std::vector<float> rows(image.pixels.size());

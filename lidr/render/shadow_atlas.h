@@ -37,8 +37,8 @@ int shadowTiles(const PointLight& light);
 class ShadowAtlas {
 public:
     // Throws lidr::Error for sizes that are not powers of two with tileSize <= size, a size over the context's
-    // GL_MAX_TEXTURE_SIZE, or a context without depth textures (ES 2.0 without OES_depth_texture: the RGBA8
-    // packed fallback is not written yet).
+    // GL_MAX_TEXTURE_SIZE, or a slope bias outside [0, 64]. Without depth textures (ES 2.0 without
+    // OES_depth_texture) or with options.packedDepth the atlas is RGBA8 holding 24-bit depths (packed()).
     ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options = {});
 
     int capacity() const { return perRow_ * perRow_; }  // tiles
@@ -63,7 +63,8 @@ public:
     const gl::Texture& depthTexture() const { return depth_; }
     const gl::Texture& texture() const { return depth_; }  // what lookups sample (shadow_lookup.glsl)
     bool packed() const { return packed_; }  // an RGBA8 atlas holding 24-bit depth (LIDR_SHADOW_PACKED)
-    // Window depth of every atlas texel, rows bottom to top (tests and the debug view).
+    // Window depth of every atlas texel, rows bottom to top (tests and the debug view). Throws
+    // lidr::UnsupportedError on OpenGL ES 2.0 for a depth-texture atlas (ES reads no depth back).
     std::vector<float> readDepth() const;
 
 private:
@@ -74,13 +75,14 @@ private:
     };
     ShadowAtlasOptions options_;
     int perRow_ = 0;
-    gl::Texture depth_;
+    gl::Texture depth_;  // the depth texture, or the packed RGBA8 one
+    gl::Renderbuffer depthBuffer_;  // packed: the depth test's buffer
     gl::Framebuffer framebuffer_;
     gl::Program program_;
     std::vector<Slot> slots_;
     std::vector<Drawn> drawn_;
     long mapsDrawn_ = 0;
-    bool packed_ = false;
+    bool packed_ = false, gles_ = false;
 };
 
 }  // namespace lidr

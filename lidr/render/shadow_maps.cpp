@@ -18,7 +18,8 @@ const std::vector<int>& ShadowMaps::update(const GpuScene& scene, const std::vec
     for (size_t i = 0; i < lights.size(); ++i)
         if (lights[i].castsShadow) casters.push_back(int(i));
     if (casters.empty()) return firstTiles_;
-    if (!atlas_ || atlasOptions_.size != settings.atlas.size || atlasOptions_.tileSize != settings.atlas.tileSize) {
+    if (!atlas_ || atlasOptions_.size != settings.atlas.size || atlasOptions_.tileSize != settings.atlas.tileSize ||
+        atlasOptions_.slopeBias != settings.atlas.slopeBias) {
         atlas_ = std::make_unique<ShadowAtlas>(info_, settings.atlas);
         atlasOptions_ = settings.atlas;
     }

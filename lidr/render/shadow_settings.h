@@ -16,6 +16,14 @@ enum class ShadowLookup {
 struct ShadowAtlasOptions {
     int size = 2048;     // texels per side of the atlas
     int tileSize = 512;  // texels per side of one light's map: (size / tileSize)^2 maps at most
+    // The maps' depths are pushed back by slopeBias x each occluder's depth slope per texel (glPolygonOffset):
+    // a surface slanted towards its light does not shadow itself wherever a lookup's texels lie within
+    // slopeBias texels of the point (the nearest texel is within 0.71, the filtered lookup's four within 1.5).
+    float slopeBias = 2.0f;
+    // The atlas as RGBA8 holding each texel's 24-bit depth (written by the map's shader, a depth renderbuffer
+    // for the test) instead of a depth texture: what contexts without depth textures get (ES 2.0 without
+    // OES_depth_texture); this forces it elsewhere (tests, comparisons).
+    bool packedDepth = false;
 };
 
 struct ShadowSettings {
@@ -24,7 +32,7 @@ struct ShadowSettings {
     // A point is shadowed when an occluder lies nearer to the light than it by more than biasTexels shadow-map
     // texels (a texel's footprint at the point's distance: what a surface slanted towards the light gains in
     // depth across a texel) plus biasRange x the light's range (shadow_lookup.glsl; doc/architecture.md).
-    float biasTexels = 2.0f;
+    float biasTexels = 1.0f;
     float biasRange = 0.001f;
     bool filtered = false;  // the four nearest texels weighted bilinearly (filtered edges) instead of the nearest
     ShadowLookup lidrLookup = ShadowLookup::VolumePass;

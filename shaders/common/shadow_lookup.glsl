@@ -11,8 +11,9 @@
 // pointShadowCamera draw them so). Near plane at a hundredth of the range, far plane at the range.
 //
 // A point is shadowed when the map holds something nearer to the light than the point by more than the bias:
-// uShadowBias.x shadow-map texels (a texel's footprint at the point's distance: the depth a surface slanted
-// towards the light gains across a texel) plus uShadowBias.y x the range. Points outside the map's view (behind
+// uShadowBias.x texels' footprints at the point's distance plus uShadowBias.y x the range (what the 24-bit depth
+// and the rasteriser's rounding need); a surface slanted towards its light is kept from shadowing itself by the
+// maps' own slope-scaled offset (ShadowAtlasOptions::slopeBias, glPolygonOffset). Points outside the map's view (behind
 // the near plane, outside a spot's cone) are lit: the light's own range and cone terms decide there.
 // LIDR_SHADOW_PCF: the four nearest texels compared and weighted bilinearly (filtered edges); without it the
 // nearest texel decides (0 or 1). LIDR_SHADOW_PACKED: the atlas is RGBA8 holding the depth in 24 bits (ES 2.0

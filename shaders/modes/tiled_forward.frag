@@ -5,6 +5,7 @@
 // the loop breaks at the list's 0 terminator.
 #include "light_table.glsl"
 #include "shading.glsl"
+#include "shadow_lookup.glsl"
 #include "tiled_grid.glsl"
 
 void main() {
@@ -17,6 +18,9 @@ void main() {
         vec4 posRadius, spot;
         vec3 lightColor;
         lidrFetchLight(index, posRadius, lightColor, spot);
+#ifdef LIDR_SHADOWS
+        lightColor *= lidrShadowVisibility(s.position, posRadius, spot, lidrFetchShadowTile(index));
+#endif
         color += lidrShadeLight(s, posRadius, lightColor, spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);

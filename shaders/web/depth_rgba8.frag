@@ -3,7 +3,7 @@
 // scene is drawn again with geometry.vert (invariant position: the same depth as the pre-pass) and each
 // fragment writes its window depth as a 24-bit number in R, G, B (high byte first). Needs fp32 fragment floats.
 void main() {
-    float v = floor(gl_FragCoord.z * 16777215.0 + 0.5);
+    float v = min(floor(gl_FragCoord.z * 16777215.0 + 0.5), 16777215.0);  // 16777215.5 rounds to 2^24 in fp32
     float r = floor(v / 65536.0);
     float rest = v - r * 65536.0;
     float g = floor(rest / 256.0);

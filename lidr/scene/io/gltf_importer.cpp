@@ -222,7 +222,8 @@ private:
         }
         if (node.camera >= 0) readCamera(node, name, world);
         const auto light = node.extensions.find("KHR_lights_punctual");
-        if (light != node.extensions.end() && light->second.Has("light")) readLight(light->second.Get("light"), name, world);
+        if (light != node.extensions.end() && light->second.Has("light"))
+            readLight(light->second.Get("light"), name, world, node.extras);
         for (int child : node.children) visit(child, world, depth + 1);
     }
 
@@ -671,7 +672,17 @@ private:
 
     // ---- lights and cameras ----------------------------------------------------------------------------------
 
-    void readLight(const tinygltf::Value& value, const std::string& nodeName, const glm::mat4& world) {
+    // extras.lidr.shadow of a light or its node (the validator checked it is true or false); false where absent.
+    static bool lidrShadowFlag(const tinygltf::Value& extras, bool& flag) {
+        if (!extras.IsObject() || !extras.Has("lidr")) return false;
+        const tinygltf::Value& lidr = extras.Get("lidr");
+        if (!lidr.Has("shadow")) return false;
+        flag = lidr.Get("shadow").Get<bool>();
+        return true;
+    }
+
+    void readLight(const tinygltf::Value& value, const std::string& nodeName, const glm::mat4& world,
+                   const tinygltf::Value& nodeExtras) {
         if (!value.IsNumber() && !value.IsInt()) fail(nodeName + ": KHR_lights_punctual light is not an index");
         const int lightIndex = value.GetNumberAsInt();
         if (lightIndex < 0 || size_t(lightIndex) >= model_.lights.size())
@@ -698,6 +709,8 @@ private:
         PointLight light;
         light.color = color;
         light.falloff = LightFalloff::InverseSquare;
+        // The node's flag wins over its light's: one light placed by several nodes can cast from some of them.
+        if (!lidrShadowFlag(nodeExtras, light.castsShadow)) lidrShadowFlag(source.extras, light.castsShadow);
         if (source.type == "spot") {
             // The validator held the angles to 0 <= inner < outer <= pi/2.
             if (!nodeDirection(world, name, nodeName, light.direction)) return;

@@ -844,7 +844,24 @@ private:
                 if (!(inner >= 0 && inner < outer && outer <= 3.14159265358979 / 2))
                     fail(where + "/spot", "cone angles must satisfy 0 <= inner < outer <= pi/2");
             }
+            checkLidrExtras(light, where);
         });
+    }
+
+    // lidr's own settings on a light or on the node that places it (doc/scene-format.md, "glTF"): extras.lidr,
+    // an object whose only key is "shadow" (true or false). Other extras belong to other applications: any type.
+    // Returns extras.lidr, or null where there is none.
+    const Json* checkLidrExtras(const Json& owner, const std::string& at) const {
+        const auto extras = owner.find("extras");
+        if (extras == owner.end() || !extras->is_object()) return nullptr;
+        const Json* lidr = member(*extras, at + "/extras", "lidr", Kind::Object);
+        if (!lidr) return nullptr;
+        for (const auto& item : lidr->items())
+            if (item.key() != "shadow")
+                fail(at + "/extras/lidr/" + pointerSegment(item.key()),
+                     "unknown lidr setting (lidr reads \"shadow\": true or false, whether the light casts shadows)");
+        member(*lidr, at + "/extras/lidr", "shadow", Kind::Boolean);
+        return lidr;
     }
 
     // ---- meshes, skins, nodes, scenes, animations ------------------------------------------------------------
@@ -950,10 +967,16 @@ private:
                     parent[size_t(child)] = int64_t(i);
                 }
             }
+            bool placesLight = false;
             if (const Json* extensions = member(node, at, "extensions", Kind::Object))
-                if (const Json* punctual = member(*extensions, at + "/extensions", "KHR_lights_punctual", Kind::Object))
+                if (const Json* punctual = member(*extensions, at + "/extensions", "KHR_lights_punctual", Kind::Object)) {
                     indexAt(*member(*punctual, at + "/extensions/KHR_lights_punctual", "light", Kind::Integer, true),
                             at + "/extensions/KHR_lights_punctual/light", lightCount_, "lights");
+                    placesLight = true;
+                }
+            if (checkLidrExtras(node, at) && !placesLight)
+                fail(at + "/extras/lidr", "only for a node with a KHR_lights_punctual light (it says whether that "
+                                          "light casts shadows)");
         });
         // One parent each, so a cycle is a walk up the parents that comes back to a node on the same walk.
         std::vector<char> state(nodes, 0);  // 0 unseen, 1 on the current walk, 2 done

@@ -251,7 +251,7 @@ private:
 
     void readLight(const Field& field) {
         field.expectObject({"position", "radius", "color", "priority", "path", "type", "direction", "inner_cone_angle",
-                            "outer_cone_angle", "falloff"});
+                            "outer_cone_angle", "falloff", "shadow"});
         PointLight light;
         LightPath path;
         if (field.has("path")) path = readPath(field["path"]);
@@ -275,6 +275,8 @@ private:
                                       "inverse_square: glTF's, with the range window)");
         }
         readSpotCone(field, light);
+        // Whether it casts shadows where a frame turns them on (ShadingParameters::shadows; doc/shadows.md).
+        if (field.has("shadow")) light.castsShadow = field["shadow"].boolean();
         scene_.lights.push_back(light);
         scene_.lightPaths.push_back(path);
     }
