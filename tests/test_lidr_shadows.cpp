@@ -16,7 +16,9 @@
 #include "render_helpers.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/eval/image_compare.h"
+#include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/render_mode.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
 
@@ -334,4 +336,31 @@ TEST_CASE("LIDR shadows: list sizes on the room, both lookups (measurement)", "[
             std::cout << "\n";
         }
     }
+}
+
+// The automatic mode hands the frame's shading (shadows included) to whichever candidate draws it: every trial
+// frame, LIDR's among them, is the reference's.
+TEST_CASE("LIDR shadows through the automatic mode: every trial frame equals the reference", "[shadows][lidr][modes][auto]") {
+    testContext();
+    const Scene scene = pillarFloor();
+    RenderModeOptions o;
+    o.mode = "auto";
+    const std::unique_ptr<Renderer> renderer = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    const auto& automatic = dynamic_cast<const AutoModeRenderer&>(*renderer);
+    const ShadingParameters shading = shadowShading(scene, ShadowLookup::VolumePass);
+    const ImageRGBA8 reference = referenceImage(scene, shading, LidrOptions{});
+    const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+    bool lidrDrew = false;
+    for (int frame = 0; frame < 3 * AutoModeOptions{}.trialFrames; ++frame) {
+        const FrameStats& stats = renderer->render(scene.camera, lights, shading);
+        const ImageError e = compareImages(renderer->targets().readColor(), reference);
+        INFO("frame " << frame << " drawn by " << automatic.lastMode() << ": max " << e.maxAbsError << ", casters "
+                      << stats.shadowCasters);
+        REQUIRE(stats.shadowCasters == 5);
+        // Multi-pass rounds each light's term as it blends: floor(n / 2) + 1 steps with n lights at a pixel
+        // (test_forward_baselines.cpp), n at most the scene's 6 here.
+        REQUIRE(e.maxAbsError <= (automatic.lastMode() == "forward-multipass" ? int(lights.size()) / 2 + 1 : 1));
+        lidrDrew = lidrDrew || automatic.lastMode() == "lidr";
+    }
+    REQUIRE(lidrDrew);
 }
