@@ -213,6 +213,19 @@ TEST_CASE("LIDR shadows: the volume pass's test leaves fewer light-pixel pairs i
         for (uint32_t l : a) keptOnlyByVolume += !std::binary_search(b.begin(), b.end(), l);
     }
     REQUIRE(keptOnlyByVolume == 0);
+
+    // At a budget below the overlap the shorter lists drop fewer lights: bit-shift budget 4 keeps the first four
+    // marks of a pixel, and shadowed lights no longer take those slots.
+    o.packing = {PackingSchemeKind::BitShift, 4, 8};
+    const ShadowedFrame volume4 = renderLidr(scene, o, shadowShading(scene, ShadowLookup::VolumePass), reference);
+    const ShadowedFrame forward4 = renderLidr(scene, o, shadowShading(scene, ShadowLookup::ForwardPass), reference);
+    INFO("budget 4: pixels over budget " << forward4.evaluation.pixelsOverBudget << " (forward-pass lookup) -> "
+                                         << volume4.evaluation.pixelsOverBudget << " (volume-pass test); pixels off the "
+                                         << "reference by more than a step " << forward4.evaluation.error.pixelsOverThreshold
+                                         << " -> " << volume4.evaluation.error.pixelsOverThreshold);
+    REQUIRE(forward4.evaluation.pixelsOverBudget > 0);
+    REQUIRE(volume4.evaluation.pixelsOverBudget < forward4.evaluation.pixelsOverBudget / 2);
+    REQUIRE(volume4.evaluation.error.pixelsOverThreshold < forward4.evaluation.error.pixelsOverThreshold);
 }
 
 // Where a volume fragment cannot know the surface (the front-face lists of transparent layers and of MSAA edge
