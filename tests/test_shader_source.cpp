@@ -34,7 +34,7 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
         std::vector<std::string> files;
     };
     const std::vector<Case> cases = {
-        {"tiled_forward.frag", {{"LIDR_X", "1"}}, {}, {"tiled_forward.frag", "light_table.glsl", "shading.glsl", "output_transform.glsl", "material.glsl", "tiled_grid.glsl"}},
+        {"tiled_forward.frag", {{"LIDR_X", "1"}}, {}, {"tiled_forward.frag", "light_table.glsl", "shading.glsl", "output_transform.glsl", "material.glsl", "shadow_lookup.glsl", "tiled_grid.glsl"}},
         {"lidr_forward.frag", {}, {{"lidr_unpack.glsl", "unpack_max_stencil.glsl"}},
          {"lidr_forward.frag", "lidr_depth.glsl", "shading.glsl", "output_transform.glsl", "material.glsl", "lidr_lights.glsl", "light_table.glsl",
           "unpack_max_stencil.glsl", "lidr_channel_stream.glsl", "lidr_bytes.glsl", "lidr_index_samplers.glsl",
