@@ -85,11 +85,11 @@ void main() {
 #else
         vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
-        vec3 nearWorld = (uInvView * vec4(ray * surfaceNear, 1.0)).xyz;
-        vec3 farWorld = (uInvView * vec4(ray * surfaceFar, 1.0)).xyz;
-        if (lidrShadowVisibility(nearWorld, posRadius, spot, shadowTile) <= 0.0 &&
-            lidrShadowVisibility(farWorld, posRadius, spot, shadowTile) <= 0.0)
-            discard;
+        // The far end only where the near one is shadowed: most fragments of a casting light are lit.
+        if (lidrShadowVisibility((uInvView * vec4(ray * surfaceNear, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0) {
+            if (lidrShadowVisibility((uInvView * vec4(ray * surfaceFar, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0)
+                discard;
+        }
     }
 #endif
     gl_FragData[0] = lidrExactBytes(vColor0);
