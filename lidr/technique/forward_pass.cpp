@@ -23,28 +23,22 @@ std::string perSampleVersion(std::string source) {
 ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
                          const std::string& materialShader, DepthEmulation depth)
     : perSample_(perSample), maxLights_(scheme.config().budget) {
-    ShaderDefines defines = table.defines();
-    for (const auto& d : scheme.unpackDefines()) defines.push_back(d);
+    defines_ = table.defines();
+    for (const auto& d : scheme.unpackDefines()) defines_.push_back(d);
     if (perSample) {
-        defines.push_back({"LIDR_INDEX_SAMPLER", "sampler2DMS"});
-        defines.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
+        defines_.push_back({"LIDR_INDEX_SAMPLER", "sampler2DMS"});
+        defines_.push_back({"LIDR_FETCH_INDEX(s, uv)", "texelFetch(s, ivec2(gl_FragCoord.xy), gl_SampleID)"});
     }
-    std::string vertex = buildShaderSource("geometry.vert");
-    ShaderIncludes unpack = {{"lidr_unpack.glsl", scheme.unpackShaderFile()}};
     if (depth.bits != 0 && !materialShader.empty())
         throw Error("emulated depth precision needs lidr's own forward shader: a material shader does not write the "
                     "rounded depth the pre-pass wrote");
-    depth.apply(defines, unpack);
-    std::string fragment = materialShader.empty()
-                               ? buildShaderSource("lidr_forward.frag", defines, unpack)
-                               : buildShaderSourceFromText("material shader", materialShader, defines, unpack);
-    if (perSample) {
-        vertex = perSampleVersion(vertex);
-        fragment = perSampleVersion(fragment);
-    }
+    unpackFile_ = scheme.unpackShaderFile();
+    materialShader_ = materialShader;
+    depth_ = depth;
     const std::string name = std::string(materialShader.empty() ? "lidr-forward-" : "lidr-material-") +
                              packingSchemeName(scheme.config().scheme) + (perSample ? "-per-sample" : "");
-    program_ = gl::Program::create(name, vertex, fragment, geometryAttributes());
+    name_ = name;
+    program_ = build({});
     // The lightless variant's sources, compiled only if a frame needs it (the includes are resolved before the
     // preprocessor drops the list code, so it takes the same ones).
     ShaderDefines none = {{"LIDR_NO_LIGHTS", "1"}};
@@ -60,9 +54,26 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
     }
 }
 
+gl::Program ForwardPass::build(const ShaderDefines& extra) const {
+    ShaderDefines defines = defines_;
+    defines.insert(defines.end(), extra.begin(), extra.end());
+    ShaderIncludes unpack = {{"lidr_unpack.glsl", unpackFile_}};
+    depth_.apply(defines, unpack);
+    std::string vertex = buildShaderSource("geometry.vert");
+    std::string fragment = materialShader_.empty()
+                               ? buildShaderSource("lidr_forward.frag", defines, unpack)
+                               : buildShaderSourceFromText("material shader", materialShader_, defines, unpack);
+    if (perSample_) {
+        vertex = perSampleVersion(vertex);
+        fragment = perSampleVersion(fragment);
+    }
+    return gl::Program::create(name_ + (extra.empty() ? "" : "-shadowed"), vertex, fragment, geometryAttributes());
+}
+
 const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices,
                                            const LightTable& table, const CameraMatrices& camera,
-                                           const ShadingParameters& shading, bool lights) const {
+                                           const ShadingParameters& shading, bool lights,
+                                           const ShadowMaps* shadows) const {
     if (!lights) {
         if (!lightless_)
             lightless_ = gl::Program::create(lightlessName_, lightlessVertex_, lightlessFragment_, geometryAttributes());
@@ -70,15 +81,26 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
         setShadingUniforms(lightless_, camera, shading);
         return lightless_;
     }
-    useShadingProgram(program_, camera, shading, table);
-    program_.setIfDeclared("uLidrMaxLights", maxLights_);
-    program_.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
-    program_.setIfDeclared("uLidrRegionMap", table.regionMapUniform());
+    const gl::Program* chosen = &program_;
+    if (shadows && shadows->active()) {
+        const ShaderDefines extra = shadows->defines(shading.shadows);
+        std::string key;
+        for (const auto& d : extra) key += d.first + "=" + d.second + " ";
+        auto found = shadowed_.find(key);
+        if (found == shadowed_.end()) found = shadowed_.emplace(key, build(extra)).first;
+        chosen = &found->second;
+    }
+    const gl::Program& program = *chosen;
+    useShadingProgram(program, camera, shading, table);
+    if (shadows && shadows->active()) shadows->bind(program, shading.shadows);
+    program.setIfDeclared("uLidrMaxLights", maxLights_);
+    program.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
+    program.setIfDeclared("uLidrRegionMap", table.regionMapUniform());
     for (int i = 0; i < indices.count(); ++i) {
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
-        program_.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
+        program.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
-    return program_;
+    return program;
 }
 
 void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
@@ -92,21 +114,21 @@ void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                      bool afterPrepass, bool lights) const {
+                      bool afterPrepass, bool lights, const ShadowMaps* shadows) const {
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
-    scene.draw(bindInputs(targets, indices, table, camera, shading, lights), DrawFilter::Opaque, true, &camera);
+    scene.draw(bindInputs(targets, indices, table, camera, shading, lights, shadows), DrawFilter::Opaque, true, &camera);
     unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
 
 void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                                  const LightTable& table, const CameraMatrices& camera,
-                                 const ShadingParameters& shading, bool lights) const {
+                                 const ShadingParameters& shading, bool lights, const ShadowMaps* shadows) const {
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
-    scene.drawTransparentSorted(bindInputs(targets, indices, table, camera, shading, lights), camera.eye);
+    scene.drawTransparentSorted(bindInputs(targets, indices, table, camera, shading, lights, shadows), camera.eye);
     unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }

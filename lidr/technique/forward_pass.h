@@ -1,6 +1,9 @@
 #pragma once
 // Pass 3 of LIDR: the ordinary forward pass. Each fragment unpacks its light indices from the index
 // targets (the scheme's unpack shader) and shades with those lights from the light table.
+#include <map>
+#include <string>
+
 #include "lidr/scene/camera.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/render/depth_prepass.h"
@@ -11,6 +14,7 @@
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
 #include "lidr/render/shading_pass.h"
+#include "lidr/render/shadow_maps.h"
 
 namespace lidr {
 
@@ -30,21 +34,31 @@ public:
     // the last fragment drawn at the nearest depth stays).
     // lights false: the frame has no light to read (none reaches a visible surface); the program built for
     // that (LIDR_NO_LIGHTS, on first use) reads no index texture and no light table.
+    // shadows (active: the frame has casters): the shadowed twin of the program (LIDR_SHADOWS and the maps'
+    // defines, built on first use) looks each listed light's shadow up by its index (the paper's second way;
+    // lidrLightShadow in lidr_lights.glsl), the table holding the lights' tiles (LightTable::update).
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
              const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-             bool afterPrepass = true, bool lights = true) const;
+             bool afterPrepass = true, bool lights = true, const ShadowMaps* shadows = nullptr) const;
     // Transparent geometry over the opaque image, back to front, alpha blended, depth-tested against the
     // opaque depth without writing it; `indices` must come from a front-face volume pass.
     void runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                         const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                        bool lights = true) const;
+                        bool lights = true, const ShadowMaps* shadows = nullptr) const;
 
 private:
     // The program for this frame (lights or not) with its inputs bound.
     const gl::Program& bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
-                                  const CameraMatrices& camera, const ShadingParameters& shading, bool lights) const;
+                                  const CameraMatrices& camera, const ShadingParameters& shading, bool lights,
+                                  const ShadowMaps* shadows) const;
+    // The lit program with `extra` defines (the shadowed twins).
+    gl::Program build(const ShaderDefines& extra) const;
     void unbindInputs(const IndexTargets& indices, bool lights) const;
     gl::Program program_;
+    mutable std::map<std::string, gl::Program> shadowed_;  // by the shadow defines, built on first use
+    ShaderDefines defines_;
+    std::string unpackFile_, materialShader_, name_;
+    DepthEmulation depth_;
     mutable gl::Program lightless_;  // built on the first frame without lights
     std::string lightlessVertex_, lightlessFragment_, lightlessName_;
     bool perSample_ = false;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -135,6 +136,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       firstPacking_(checkedPacking(info, scene, options_)),
       scene_(scene),
       targets_(info, width, height, options_.msaaSamples, options_.depthBits),
+      shadows_(info),
       depthPrepass_(DepthEmulation{options_.emulatedDepthBits}),
       volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}),
       timer_(info, options_.timingMethod) {
@@ -255,6 +257,22 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
 
+    // Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
+    // Timed only when asked for: frames without shadows keep their passes as they were.
+    std::optional<TimedPass> shadowMapsTime;
+    if (shading.shadows.enabled) {
+        shadows_.checkUnits(lightTable_.format());
+        shadowMapsTime.emplace(timer_, "shadow-maps");
+    }
+    const std::vector<int>& sceneShadowTiles = shadows_.update(scene_, lights, shading.shadows);
+    shadowMapsTime.reset();
+    stats_.shadowCasters = shadows_.casters();
+    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+    // The paper's first way: the main sphere test discards the surface points a light's maps shadow.
+    const bool volumeShadows = !sceneShadowTiles.empty() && shading.shadows.lidrLookup == ShadowLookup::VolumePass &&
+                               options_.volumeTest == VolumeTest::Sphere;
+    volumePass_.setShadows(volumeShadows ? &shadows_ : nullptr, shading.shadows);
+
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
         targets_.bindColor();
@@ -309,12 +327,13 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         if (options_.cullLights && volumePass_.drawsScreenTiles() && !volumePass_.sphereReachesTiles(posRadius) &&
             !(drawTransparent_ && reachesTransparentMesh({index, posRadius})))
             continue;
+        const int shadowTile = volumeShadows ? sceneShadowTiles[index - 1] : -1;
         if (autoBits) {
             tableLights.push_back(l);
             frameLights_.push_back(index);
             index = static_cast<uint32_t>(frameLights_.size());
         }
-        volumes.push_back({index, posRadius, -1, spotCone(l)});
+        volumes.push_back({index, posRadius, -1, spotCone(l), shadowTile});
     }
     stats_.drawnLights = static_cast<int>(volumes.size());
     frameRegions_ = IndexRegions{};
@@ -329,7 +348,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     } else {
         lightTable_.setRegionMap({}, 0, 1, 1);
     }
-    lightTable_.update(autoBits ? tableLights : lights);
+    // The table's lights are a selection (automatic width, regions): their tiles follow them (tilesFor).
+    lightTable_.update(autoBits ? tableLights : lights, autoBits ? shadows_.tilesFor(frameLights_) : sceneShadowTiles);
     AutoDecision& decision = stats_.autoDecision;
     decision.autoBudget = autoBudget;
     decision.autoIndexBits = autoBits;
@@ -464,7 +484,7 @@ void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector
             const size_t entry = size_t(r) * 256 + k - 1;
             table[entry] = lights[volumes[i].index - 1];
             frameLights_[entry] = sceneIndex[volumes[i].index - 1];
-            entries.push_back({k, volumes[i].posRadius, r, volumes[i].cone});
+            entries.push_back({k, volumes[i].posRadius, r, volumes[i].cone, volumes[i].shadowTile});
         }
     volumes = std::move(entries);
     frameRegions_ = std::move(regions);
@@ -479,13 +499,15 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     }
 
     TimedPass forwardTime(timer_, "forward");
-    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass, lights);
+    const ShadowMaps* shadows = lights && shadows_.active() ? &shadows_ : nullptr;
+    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass, lights,
+                           shadows);
     forwardTime.end();
 
     if (drawTransparent_) {
         TimedPass forwardTransparentTime(timer_, "forward-transparent");
         currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading,
-                                                     lights);
+                                                     lights, shadows);
     }
 }
 

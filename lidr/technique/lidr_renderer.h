@@ -20,6 +20,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/shadow_maps.h"
 #include "lidr/technique/volume_tiles.h"
 
 namespace lidr {
@@ -126,6 +127,7 @@ public:
     // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
     std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
     const LightTable& lightTable() const { return lightTable_; }
+    const ShadowMaps& shadowMaps() const { return shadows_; }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
@@ -159,7 +161,8 @@ private:
     // The volume passes; with an automatic budget the transparent pass's need is measured and the main pass's
     // probe issued (read by measuredNeed()).
     void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent);
-    // The forward passes (opaque, transparent layers) from the current index lists.
+    // The forward passes (opaque, transparent layers) from the current index lists (with the frame's shadows:
+    // each listed light looked up by index where it casts).
     void shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights = true);
     // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
     int measuredNeed();
@@ -194,6 +197,10 @@ private:
     gl::Framebuffer depthTextureFbo_;       // OpenGL ES: the pre-pass drawn again into depthTexture_
     std::unique_ptr<VolumeTiles> volumeTiles_;  // LidrOptions::tileCulledVolumes: the frame's depth per tile
     LightTable lightTable_;
+    // Shadows (ShadingParameters::shadows): the maps, drawn first each frame. ShadowLookup::VolumePass: the main
+    // sphere test discards what they shadow (its lights carry their tiles); every forward pass looks the listed
+    // lights up by index.
+    ShadowMaps shadows_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;
     LightVolumePass transparentVolumePass_;

@@ -68,21 +68,24 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         maxVertexUniformVectors_ = info.maxVertexUniformVectors;
         // By value: the geometry moves with its pass.
         const int uniforms = maxVertexUniformVectors_;
-        auto programs = [&info, test, depth, batch = batch_, uniforms](bool screenTiles, bool cones) {
-            return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles, cones](int targetCount) {
+        auto programs = [info, test, depth, batch = batch_, uniforms](bool screenTiles, bool cones,
+                                                                      const ShaderDefines& shadow) {
+            return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles, cones, shadow](int targetCount) {
                 if (targetCount != 1 && targetCount != 2 && targetCount != 4)
                     throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
                                 std::to_string(targetCount));
                 ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
-                                      {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount))}};
+                                      {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
+                                                                             !shadow.empty()))}};
                 if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
                 if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
                 if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
+                defs.insert(defs.end(), shadow.begin(), shadow.end());
                 const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
                 ShaderIncludes includes;
                 depth.apply(defs, includes);
                 return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
-                                               (cones ? "cones-" : "") +
+                                               (cones ? "cones-" : "") + (shadow.empty() ? "" : "shadows-") +
                                                std::to_string(targetCount),
                                            vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
                                            {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
@@ -90,20 +93,33 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
         };
         // Each with and without the cone test: a draw of point lights alone skips its varying and arithmetic
         // (+8 % volume-pass instructions on hall-1024, callgrind). Compiled on first use.
-        for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1);
+        for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1, {});
         if (test == VolumeTest::Sphere) {
-            for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1);
+            for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1, {});
+            makePrograms_ = programs;
             tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
         }
     }
 }
 
-int LightVolumeGeometry::batchFor(int batch, int maxVertexUniformVectors, int targetCount) {
-    return std::max(1, std::min(batch, (maxVertexUniformVectors - kReservedVertexUniforms) / (2 + targetCount)));
+int LightVolumeGeometry::batchFor(int batch, int maxVertexUniformVectors, int targetCount, bool shadowed) {
+    const int vectors = maxVertexUniformVectors - kReservedVertexUniforms;
+    // Shadowed: n lights take n (2 + targets) vectors and ceil(n / 4) of tiles.
+    const int lights = shadowed ? (4 * vectors - 3) / (4 * (2 + targetCount) + 1) : vectors / (2 + targetCount);
+    return std::max(1, std::min(batch, lights));
 }
 
 int LightVolumeGeometry::batchFor(int targetCount) const {
     return batchFor(batch_, maxVertexUniformVectors_, targetCount);
+}
+
+int LightVolumeGeometry::batchFor(int targetCount, bool shadowed) const {
+    return batchFor(batch_, maxVertexUniformVectors_, targetCount, shadowed);
+}
+
+bool LightVolumeGeometry::shadowedDraw(const std::vector<VolumeLight>& lights) const {
+    return shadowMaps_ && shadowMaps_->active() && makePrograms_ &&
+           std::any_of(lights.begin(), lights.end(), [](const VolumeLight& l) { return l.shadowTile >= 0; });
 }
 
 const SpotVolumeShape* LightVolumeGeometry::spotShapeOf(const VolumeLight& l, glm::vec3* axis) const {
@@ -215,8 +231,25 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
         clampUniform_ = program.uniform<float>("uClampToFar");
         return;
     }
-    const gl::Program& program = (drawsScreenTiles() ? tilePrograms_ : batchPrograms_)[spotCones_ ? 1 : 0].get(plan.programTargets);
+    const gl::Program* chosen = nullptr;
+    if (shadowDraw_) {
+        const ShaderDefines shadow = shadowMaps_->defines(shadowSettings_);
+        std::string key = std::string(drawsScreenTiles() ? "tiles" : "volumes") + (spotCones_ ? "-cones" : "");
+        for (const auto& d : shadow) key += " " + d.first + "=" + d.second;
+        auto found = shadowPrograms_.find(key);
+        if (found == shadowPrograms_.end())
+            found = shadowPrograms_.emplace(key, makePrograms_(drawsScreenTiles(), spotCones_, shadow)).first;
+        chosen = &found->second.get(plan.programTargets);
+    } else {
+        chosen = &(drawsScreenTiles() ? tilePrograms_ : batchPrograms_)[spotCones_ ? 1 : 0].get(plan.programTargets);
+    }
+    const gl::Program& program = *chosen;
     program.use();
+    if (shadowDraw_) {
+        program.set("uInvView", glm::inverse(camera_.view));
+        shadowMaps_->bind(program, shadowSettings_);
+        shadowTilesUniform_ = program.uniform<glm::vec4>("uShadowTiles");
+    }
     program.set("uViewProj", camera_.viewProjection);
     program.set("uView", camera_.view);
     program.set("uProjection", camera_.projection);
@@ -238,7 +271,8 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     conesUniform_ = program.uniform<glm::vec4>("uCones");
     colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");
     clampUniform_ = program.uniform<float>("uClampToFar");
-    const size_t batch = size_t(batchFor(plan.programTargets));
+    const size_t batch = size_t(batchFor(plan.programTargets, shadowDraw_));
+    shadowTileData_.resize((batch + 3) / 4);
     lightData_.resize(batch);
     coneData_.resize(batch);
     colorData_.resize(batch * size_t(plan.programTargets));
@@ -259,6 +293,11 @@ void LightVolumeGeometry::drawStep(const VolumeStep& step, const std::vector<Vol
             lightsUniform_.setArray(lightData_.data(), step.lightCount);
             conesUniform_.setArray(coneData_.data(), step.lightCount);
             colorsUniform_.setArray(colorData_.data(), step.lightCount * targets_);
+            if (shadowDraw_) {
+                for (int i = 0; i < step.lightCount; ++i)
+                    shadowTileData_[size_t(i / 4)][i % 4] = float(lights[size_t(step.firstLight + i)].shadowTile);
+                shadowTilesUniform_.setArray(shadowTileData_.data(), (step.lightCount + 3) / 4);
+            }
         } else {
             const VolumeLight& l = lights[size_t(step.firstLight)];
             glm::vec3 axis(0.0f);

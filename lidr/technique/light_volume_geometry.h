@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/depth_prepass.h"
+#include "lidr/render/shadow_maps.h"
 #include "lidr/technique/volume_tiles.h"
 #include "lidr/scene/camera.h"
 #include "lidr/technique/draw_target_programs.h"
@@ -34,6 +37,9 @@ struct VolumeLight {
     // A spot light's cone as the shading takes it (lidr::spotCone: world axis x scale, offset); a point light's
     // (0, 0, 0, 1) passes everywhere. The sphere test keeps a spot only where this ramp is >= 0 (the shading's 0).
     glm::vec4 cone{0.0f, 0.0f, 0.0f, 1.0f};
+    // The first shadow-atlas tile of the light's maps where the sphere test discards what they shadow (the
+    // paper's first way, ShadowLookup::VolumePass; LightVolumeGeometry::setShadows); -1: no shadow test.
+    int shadowTile = -1;
 };
 
 class VolumeGeometry {
@@ -94,6 +100,18 @@ public:
     void setTiles(const VolumeTiles* tiles, const CameraMatrices& camera);
     // Whether the next draw's lights include a spot light (the shader tests' cone test; on by default).
     void setSpotCones(bool on) { spotCones_ = on; }
+    // The sphere test's shadow test (opaque lists): a draw with a light whose VolumeLight::shadowTile >= 0 takes
+    // the LIDR_SHADOWS program, which discards surface points `maps` shadows (bound with `settings`). Both must
+    // outlive the pass's draws; nullptr: no shadow test.
+    void setShadows(const ShadowMaps* maps, const ShadowSettings& settings) {
+        shadowMaps_ = maps;
+        shadowSettings_ = settings;
+    }
+    // Whether a draw of `lights` takes the shadowed program (setShadows, the sphere test, a light with a tile).
+    bool shadowedDraw(const std::vector<VolumeLight>& lights) const;
+    void setShadowDraw(bool on) { shadowDraw_ = on; }  // the next draw's (shadowedDraw)
+    // Lights per draw: the shadowed program gives a quarter of a uniform vector per light to its tile.
+    int batchFor(int targetCount, bool shadowed) const;
     bool drawsScreenTiles() const override { return tiles_ != nullptr; }
     // With tiles: whether the sphere (centre, radius) may mark any pixel of this frame (some tile may hold a
     // surface inside it). Its tiles are kept for the frame's draws.
@@ -137,7 +155,7 @@ private:
         return region < 0 || !regions_.on() || regions_.regionOfTile(tile) == region;
     }
     void drawTileQuads(const VolumeStep& step);
-    static int batchFor(int batch, int maxVertexUniformVectors, int targetCount);
+    static int batchFor(int batch, int maxVertexUniformVectors, int targetCount, bool shadowed = false);
     static constexpr int kMaxBatch = 256, kReservedVertexUniforms = 12;
     static constexpr int kDetailLevels = 3;
 
@@ -153,6 +171,14 @@ private:
     gl::Buffer batchVertices_, batchIndices_;
     DrawTargetPrograms batchPrograms_[2];  // the shader tests' batch program, without and with the cone test
     bool spotCones_ = true;  // setSpotCones: the next draw's lights include spot lights
+    // setShadows: the shadowed programs, by screen tiles, cones and shadow defines (built on first use).
+    const ShadowMaps* shadowMaps_ = nullptr;
+    ShadowSettings shadowSettings_;
+    bool shadowDraw_ = false;
+    std::function<DrawTargetPrograms(bool screenTiles, bool cones, const ShaderDefines& shadow)> makePrograms_;
+    std::map<std::string, DrawTargetPrograms> shadowPrograms_;
+    gl::Uniform<glm::vec4> shadowTilesUniform_;
+    std::vector<glm::vec4> shadowTileData_;
     // The frame (begin()) and the current plan's program and per-step uniforms (one light, or a batch's arrays).
     CameraMatrices camera_;
     glm::ivec2 targetSize_{1};

@@ -72,7 +72,8 @@ VolumeDrawPlan LightVolumePass::planFor(const VolumeDraw& d, const std::vector<V
     context.depthClamp = depthClamp_;
     context.gles = gles_;
     context.drawBuffers = maxDrawTargets_ > 1;
-    context.batchSize = geometry.batchFor(d.targetCount);
+    context.batchSize = geometry_ ? geometry.batchFor(d.targetCount)
+                                  : volumes_.batchFor(d.targetCount, volumes_.shadowedDraw(lights));
     context.screenTiles = geometry.drawsScreenTiles();
     context.scissor = scissor_;
     return planVolumeDraw(d, context, facts);
@@ -83,6 +84,7 @@ void LightVolumePass::draw(const VolumeDraw& d, const std::vector<VolumeLight>& 
     if (d.firstTarget < 0 || d.firstTarget + d.targetCount > targets_->count())
         throw Error("volume draw '" + d.name + "' addresses index targets outside the frame's set");
     const VolumeDrawPlan plan = planFor(d, lights);
+    volumes_.setShadowDraw(!geometry_ && volumes_.shadowedDraw(lights));
     VolumeGeometry& geometry = activeGeometry();
     // A point light's cone is (0, 0, 0, 1): draws of point lights alone use the shader tests' program without
     // the cone test.

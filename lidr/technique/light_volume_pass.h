@@ -76,6 +76,9 @@ public:
     // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
     // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
+    // The sphere test's shadow test (LightVolumeGeometry::setShadows): lights with a VolumeLight::shadowTile are
+    // kept only where their maps leave the surface lit. nullptr: none (the front-face tests never have one).
+    void setShadows(const ShadowMaps* maps, const ShadowSettings& settings) { volumes_.setShadows(maps, settings); }
     // The sphere test's tile culling (LightVolumeGeometry::setTiles); its margin for VolumeTiles::build.
     void setTiles(const VolumeTiles* tiles, const CameraMatrices& camera) { volumes_.setTiles(tiles, camera); }
     bool drawsScreenTiles() const { return volumes_.drawsScreenTiles(); }

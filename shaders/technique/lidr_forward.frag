@@ -13,6 +13,9 @@ void main() {
     LidrLight light;
     for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
         if (!lidrNextLight(light)) break;
+#ifdef LIDR_SHADOWS
+        light.color *= lidrLightShadow(light, s.position);  // as the reference shades: colour x visibility
+#endif
         color += lidrShadeLight(s, vec4(light.position, light.radius), light.color, light.spot);
     }
     gl_FragColor = lidrOutput(color, uMaterialOpacity);

@@ -7,6 +7,7 @@
 //       if (!lidrNextLight(light)) break;     // false: no more lights on this pixel
 //       ... light.position, light.radius, light.color ...
 //   }
+//   lidrLightShadow(light, worldPosition)   // 1 lit, 0 shadowed by the light's shadow map (1 without shadows)
 //
 // LIDR_MAX_LIGHTS is the budget (slots a pixel holds); the bounded loop is what GL 2.1 hardware compiles. On
 // desktop GL it is a uniform int (lidr sets it): a bound the compiler cannot see keeps the loop a loop. Unrolled
@@ -134,3 +135,18 @@ bool lidrNextLight(out LidrLight light) {
 #endif
 }
 #endif  // LIDR_NO_LIGHTS
+
+#if defined(LIDR_SHADOWS) && !defined(LIDR_NO_LIGHTS)
+// LIDR_SHADOWS (a frame with shadow-casting lights, issue 30): 1.0 where the light's shadow map leaves world point
+// p lit, 0.0 where it shadows it (between them at filtered edges): the map looked up by the light's index (the
+// paper's second way), its first atlas tile read from the light table. A material shader multiplies its light's
+// colour by it; without LIDR_SHADOWS it is 1.0.
+#include "shadow_lookup.glsl"
+float lidrLightShadow(LidrLight light, vec3 p) {
+    return lidrShadowVisibility(p, vec4(light.position, light.radius), light.spot, lidrFetchShadowTile(light.indexBytes));
+}
+#else
+float lidrLightShadow(LidrLight light, vec3 p) {
+    return 1.0;
+}
+#endif

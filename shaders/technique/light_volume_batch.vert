@@ -15,6 +15,12 @@ uniform vec4 uIndexColors[LIDR_BATCH * LIDR_DRAW_TARGETS];  // the light's value
 // beyond it are pulled onto it (x, y and w untouched, so the footprint is unchanged); the pass then draws
 // the batch without its depth pre-test.
 uniform float uClampToFar;
+#ifdef LIDR_SHADOWS
+// LIDR_SHADOWS (a draw with shadow-casting lights): light s's first shadow-atlas tile in lane s mod 4 of
+// entry s / 4 (-1: it casts none), a quarter of a uniform vector per light.
+uniform vec4 uShadowTiles[(LIDR_BATCH + 3) / 4];
+varying float vShadowTile;
+#endif
 
 varying vec4 vLightView;  // centre in view space, radius (the same at every vertex of a copy)
 #ifdef LIDR_SPOT_CONES
@@ -46,6 +52,11 @@ void main() {
 #ifdef LIDR_SPOT_CONES
     vec4 cone = uCones[slot];
     vConeView = vec4((uView * vec4(cone.xyz, 0.0)).xyz, cone.w);
+#endif
+#ifdef LIDR_SHADOWS
+    vec4 tiles = uShadowTiles[slot / 4];
+    int lane = slot - (slot / 4) * 4;
+    vShadowTile = lane == 0 ? tiles.x : (lane == 1 ? tiles.y : (lane == 2 ? tiles.z : tiles.w));
 #endif
     int c = slot * LIDR_DRAW_TARGETS;
     vColor0 = uIndexColors[c];

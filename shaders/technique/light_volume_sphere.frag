@@ -10,7 +10,15 @@
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
 // front of the eye is ray * z. A few operations a fragment, because on a CPU rasteriser this shader runs for
 // every fragment of every volume (discard and stencil writes force the late depth test there).
+//   LIDR_SHADOWS (opaque lists, a draw with shadow-casting lights; the paper's first way to shadow): a fragment
+//                whose surface span the light's shadow map shadows at both ends is discarded too, so the light
+//                takes no slot there (the forward pass looks the lights that are left up at the point it shades).
 #include "lidr_depth.glsl"
+#if defined(LIDR_SHADOWS) && !defined(LIDR_SPHERE_RAY)
+#include "shadow_lookup.glsl"
+uniform mat4 uInvView;  // view -> world: the lookup works in world space, as every mode's shading does
+varying float vShadowTile;
+#endif
 uniform sampler2D uDepth;      // the pre-pass depth, not attached to the framebuffer drawn into
 uniform vec2 uInvTargetSize;
 uniform vec2 uDepthToDistance; // window depth d -> distance in front of the eye: x / (d + y) (perspective)
@@ -65,6 +73,24 @@ void main() {
     if (dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) < 0.0 &&
         dot(dFar, vConeView.xyz) + vConeView.w * length(dFar) < 0.0)
         discard;
+#endif
+#if defined(LIDR_SHADOWS) && !defined(LIDR_SPHERE_RAY)
+    // Both ends of the span: where the map's verdict changes inside it, the light stays and the forward pass
+    // decides at its own point (so the image is the reference's, which looks up there).
+    float shadowTile = floor(vShadowTile + 0.5);
+    if (shadowTile >= 0.0) {
+        vec4 posRadius = vec4((uInvView * vec4(vLightView.xyz, 1.0)).xyz, vLightView.w);
+#ifdef LIDR_SPOT_CONES
+        vec4 spot = vec4((uInvView * vec4(vConeView.xyz, 0.0)).xyz, vConeView.w);
+#else
+        vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+        // The far end only where the near one is shadowed: most fragments of a casting light are lit.
+        if (lidrShadowVisibility((uInvView * vec4(ray * surfaceNear, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0) {
+            if (lidrShadowVisibility((uInvView * vec4(ray * surfaceFar, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0)
+                discard;
+        }
+    }
 #endif
     gl_FragData[0] = lidrExactBytes(vColor0);
 #if LIDR_DRAW_TARGETS > 1
