@@ -128,6 +128,7 @@ public:
     std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
     const LightTable& lightTable() const { return lightTable_; }
     const ShadowMaps& shadowMaps() const { return shadows_; }
+    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
