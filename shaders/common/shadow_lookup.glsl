@@ -73,20 +73,26 @@ bool lidrShadowMapCoord(vec3 p, vec4 posRadius, vec4 spot, float firstTile,
     return true;
 }
 
-// 1.0 where light (posRadius, spot: as the light table gives them) with its maps from atlas tile firstTile
-// reaches world point p, 0.0 where the map holds an occluder; between them at filtered edges (LIDR_SHADOW_PCF).
-// firstTile < 0: the light casts no shadow (1.0).
-float lidrShadowVisibility(vec3 p, vec4 posRadius, vec4 spot, float firstTile) {
+// lidrShadowVisibility (below), and whether a lookup at a point within rounding of p (the same surface point
+// derived another way: LIDR's volume test rebuilds it from depth, the forward pass interpolates it) could read
+// other texels: `settled` is false where p lies within 1/64 texel of where the texels it reads change (a texel's
+// edge; filtered, a texel centre), or within 1/64 texel of a map's border (a cube face's edge).
+float lidrShadowVisibilitySettled(vec3 p, vec4 posRadius, vec4 spot, float firstTile, out bool settled) {
+    settled = true;
     if (firstTile < 0.0) return 1.0;
     float tile, viewDepth, tanHalfFov;
     vec2 ndc;
+    settled = false;
     if (!lidrShadowMapCoord(p, posRadius, spot, firstTile, tile, ndc, viewDepth, tanHalfFov)) return 1.0;
     float range = abs(posRadius.w);
     float nearPlane = range * 0.01;
     if (viewDepth <= nearPlane) return 1.0;
     float texels = uShadowAtlasLayout.z;
     // The point's texel position in its tile, kept half a texel inside so no sample reads the next tile.
-    vec2 texel = clamp((ndc * 0.5 + 0.5) * texels, vec2(0.5), vec2(texels - 0.5));
+    vec2 unclamped = (ndc * 0.5 + 0.5) * texels;
+    vec2 texel = clamp(unclamped, vec2(0.5), vec2(texels - 0.5));
+    vec2 inside = min(unclamped, texels - unclamped);  // texels from the map's border
+    settled = min(inside.x, inside.y) > 0.015625;
     float row = floor(tile / uShadowAtlasLayout.x + 1e-3);
     vec2 tileOrigin = vec2(tile - row * uShadowAtlasLayout.x, row) * texels;
     // Linear depth along the map's axis: window depth z = (d - n) f / ((f - n) d)  <=>  d = n f / (f - z (f - n)).
@@ -96,6 +102,7 @@ float lidrShadowVisibility(vec3 p, vec4 posRadius, vec4 spot, float firstTile) {
 #ifdef LIDR_SHADOW_PCF
     vec2 base = floor(texel - 0.5);
     vec2 f = texel - 0.5 - base;
+    settled = settled && min(f.x, f.y) > 0.015625 && max(f.x, f.y) < 0.984375;
     vec4 lit;
     for (int i = 0; i < 4; ++i) {
         vec2 offset = vec2(float(i - (i / 2) * 2), float(i / 2));
@@ -106,9 +113,18 @@ float lidrShadowVisibility(vec3 p, vec4 posRadius, vec4 spot, float firstTile) {
     }
     return mix(mix(lit.x, lit.y, f.x), mix(lit.z, lit.w, f.x), f.y);
 #else
+    vec2 f = fract(texel);
+    settled = settled && min(f.x, f.y) > 0.015625 && max(f.x, f.y) < 0.984375;
     float z = lidrShadowMapDepth((tileOrigin + floor(texel) + 0.5) * uShadowAtlasLayout.w);
     float occluder = nearPlane * range / max(range - z * farMinusNear, 1e-30);
     return occluder < limit ? 0.0 : 1.0;
 #endif
+}
+// 1.0 where light (posRadius, spot: as the light table gives them) with its maps from atlas tile firstTile
+// reaches world point p, 0.0 where the map holds an occluder; between them at filtered edges (LIDR_SHADOW_PCF).
+// firstTile < 0: the light casts no shadow (1.0).
+float lidrShadowVisibility(vec3 p, vec4 posRadius, vec4 spot, float firstTile) {
+    bool settled;
+    return lidrShadowVisibilitySettled(p, posRadius, spot, firstTile, settled);
 }
 #endif

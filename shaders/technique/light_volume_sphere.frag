@@ -85,9 +85,12 @@ void main() {
 #else
         vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
-        // The far end only where the near one is shadowed: most fragments of a casting light are lit.
-        if (lidrShadowVisibility((uInvView * vec4(ray * surfaceNear, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0) {
-            if (lidrShadowVisibility((uInvView * vec4(ray * surfaceFar, 1.0)).xyz, posRadius, spot, shadowTile) <= 0.0)
+        // The far end only where the near one is shadowed: most fragments of a casting light are lit. Only where
+        // the texels are settled: the forward pass's own point (interpolated, not rebuilt from depth) may lie a
+        // rounding away, across a texel's edge (seen on WebGL's SwiftShader: whole lights missing at shadow edges).
+        bool settled;
+        if (lidrShadowVisibilitySettled((uInvView * vec4(ray * surfaceNear, 1.0)).xyz, posRadius, spot, shadowTile, settled) <= 0.0 && settled) {
+            if (lidrShadowVisibilitySettled((uInvView * vec4(ray * surfaceFar, 1.0)).xyz, posRadius, spot, shadowTile, settled) <= 0.0 && settled)
                 discard;
         }
     }
