@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <numeric>
-#include <optional>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/shading_pass.h"
 #include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
@@ -258,16 +258,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     const FrameScope frame(stats_, timer_, lights.size());
 
     // Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
-    // Timed only when asked for: frames without shadows keep their passes as they were.
-    std::optional<TimedPass> shadowMapsTime;
-    if (shading.shadows.enabled) {
-        shadows_.checkUnits(lightTable_.format());
-        shadowMapsTime.emplace(timer_, "shadow-maps");
-    }
-    const std::vector<int>& sceneShadowTiles = shadows_.update(scene_, lights, shading.shadows);
-    shadowMapsTime.reset();
-    stats_.shadowCasters = shadows_.casters();
-    stats_.shadowMapsDrawn = shadows_.mapsDrawn();
+    const std::vector<int>& sceneShadowTiles =
+        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
     // The paper's first way: the main sphere test discards the surface points a light's maps shadow.
     const bool volumeShadows = !sceneShadowTiles.empty() && shading.shadows.lidrLookup == ShadowLookup::VolumePass &&
                                options_.volumeTest == VolumeTest::Sphere;
