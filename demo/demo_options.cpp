@@ -162,8 +162,9 @@ void RendererChoice::addOptions(CLI::App& app) {
                    "extras.lidr.shadow) or K (the K brightest lights that can touch the view: colour luminance x range^2; "
                    "doc/shadows.md)");
     app.add_option("--shadow-lookup", shadowLookup,
-                   "Where LIDR applies shadows: volume (default: the volume pass discards shadowed points, the paper's "
-                   "first way) or forward (the forward pass looks up by index); the other modes look up as they shade");
+                   "Where LIDR applies shadows: forward (default: the forward pass looks each listed light up by index, "
+                   "the paper's second way; faster on llvmpipe) or volume (the volume pass also discards shadowed "
+                   "points, the paper's first way: shorter lists, for fixed budgets); the other modes look up as they shade");
     app.add_option("--shadow-filter", shadowFilter,
                    "Shadow-map lookups: nearest (default: one texel decides) or pcf (the four nearest texels, bilinear)");
     app.add_option("--shadow-atlas", shadowAtlas,
@@ -203,7 +204,7 @@ ShadowChoice RendererChoice::shadowChoice(const std::string& mode) const {
     }
     c.settings.enabled = true;
     c.lidrMode = mode == "lidr";
-    const std::string lookup = shadowLookup.value_or("volume");
+    const std::string lookup = shadowLookup.value_or("forward");
     if (lookup != "volume" && lookup != "forward")
         throw Error("--shadow-lookup must be volume or forward, got '" + lookup + "'");
     if (shadowLookup && mode != "lidr")
@@ -253,7 +254,7 @@ void ShadowChoice::apply(const CameraMatrices& view, std::vector<PointLight>& li
     try {
         shading.shadows.atlas.tileSize = shadowTileToFit(lights, settings.atlas.size);
     } catch (const Error& e) {
-        throw Error(std::string("--shadows: ") + e.what() + " (--shadow-atlas)");
+        throw Error(std::string("--") + e.what() + " (--shadow-atlas)");  // the library's "shadows: the casters ..."
     }
 }
 

@@ -26,7 +26,7 @@ inline constexpr const char* kVolumeTests[] = {"auto", "sphere", "sphere-ray", "
 inline constexpr int kMsaa[] = {0, 2, 4, 8, 16};
 inline constexpr int kTileSizes[] = {8, 16, 32, 64};
 inline constexpr const char* kShadows[] = {"off", "scene", "1", "8", "32", "128"};  // off, the scene's own, K brightest
-inline constexpr const char* kShadowLookups[] = {"volume", "forward"};
+inline constexpr const char* kShadowLookups[] = {"forward", "volume"};
 
 // GLFW's key callback (viewer_input.cpp): forwards presses to Viewer::onKeyPress unless ImGui takes text.
 void keyCallback(GLFWwindow* w, int key, int scancode, int action, int mods);

@@ -106,7 +106,7 @@ void Viewer::uiSettings() {
     bool pcf = rc_.shadowFilter.value_or("nearest") == "pcf";
     if (ImGui::Checkbox("filtered shadow edges", &pcf)) changeSetting("shadow-filter", pcf ? "pcf" : "nearest");
     ImGui::BeginDisabled(!lidrMode);
-    combo("shadow lookup", rc_.shadowLookup.value_or("volume"), kShadowLookups, "shadow-lookup", str, always);
+    combo("shadow lookup", rc_.shadowLookup.value_or("forward"), kShadowLookups, "shadow-lookup", str, always);
     ImGui::EndDisabled();
     if (!lidrMode && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("where LIDR applies shadows: the volume pass's test or the forward pass's lookup");

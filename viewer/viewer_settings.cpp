@@ -209,7 +209,7 @@ std::string Viewer::setting(const std::string& name) const {
     if (name == "half-z") return rc_.halfZ ? "on" : "off";
     if (name == "shadows") return rc_.shadows;
     if (name == "shadow-filter") return rc_.shadowFilter.value_or("nearest");
-    if (name == "shadow-lookup") return rc_.shadowLookup.value_or("volume");
+    if (name == "shadow-lookup") return rc_.shadowLookup.value_or("forward");
     if (name == "lights") return std::to_string(lightCount_);
     if (name == "scatter") return std::to_string(scatteredLights_);
     if (name == "file") return scenePath_.empty() ? "built-in" : scenePath_;
