@@ -125,7 +125,7 @@ TEST_CASE("LIDR shadows: the shadows are there (the reference with them differs 
 
 // Every scheme at budgets 1, 4 and 16 (8-bit) and the automatic configuration, both lookups: where the budget
 // holds a pixel's marks the image is the reference's within a step, and with the automatic budget everywhere.
-TEST_CASE("LIDR shadows equal the reference: every scheme x budget 1/4/16 and auto, both lookups", "[shadows][lidr]") {
+TEST_CASE("LIDR shadows equal the reference: every scheme x budget 1/4/16 and auto, both lookups", "[shadows][lidr][slow]") {
     testContext();
     std::vector<ConfigCase> cases = packingCases({1, 4, 16}, {8});
     cases.push_back({"auto", PackingConfig{}});
@@ -162,7 +162,7 @@ TEST_CASE("LIDR shadows equal the reference: every scheme x budget 1/4/16 and au
 // The fixed-point light table (contexts without float textures) holds positions to 16 bits: the forward pass
 // and the reference look up from those, the volume pass's test from the exact light; the image is still the
 // reference's.
-TEST_CASE("LIDR shadows with the fixed-point light table equal the reference, both lookups", "[shadows][lidr]") {
+TEST_CASE("LIDR shadows with the fixed-point light table equal the reference, both lookups", "[shadows][lidr][slow]") {
     testContext();
     const ShadowLookup lookup = GENERATE(ShadowLookup::VolumePass, ShadowLookup::ForwardPass);
     DYNAMIC_SECTION("lookup in the " << lookupName(lookup)) {
@@ -184,7 +184,7 @@ TEST_CASE("LIDR shadows with the fixed-point light table equal the reference, bo
 // The paper's first way takes shadowed pixels out of the lists: the same frame indexed both ways, bit-shift
 // budget 16 (every pixel's overlap fits): the forward-pass lookup keeps every light that reaches a surface
 // (the CPU truth's pairs), the volume pass fewer, by the pairs it found shadowed; both images the reference's.
-TEST_CASE("LIDR shadows: the volume pass's test leaves fewer light-pixel pairs in the lists", "[shadows][lidr]") {
+TEST_CASE("LIDR shadows: the volume pass's test leaves fewer light-pixel pairs in the lists", "[shadows][lidr][slow]") {
     testContext();
     const Scene scene = pillarFloor();
     LidrOptions o;
@@ -236,7 +236,7 @@ TEST_CASE("LIDR shadows: the volume pass's test leaves fewer light-pixel pairs i
 // the reference's. Single-sample MSAA's edge samples take the front-face lists, which differ from the reference
 // by their own bound (doc/msaa-transparency.md) with or without shadows: there the pixels it gets right without
 // shadows must stay right with them.
-TEST_CASE("LIDR shadows with MSAA and transparent layers equal the reference", "[shadows][lidr][msaa]") {
+TEST_CASE("LIDR shadows with MSAA and transparent layers equal the reference", "[shadows][lidr][msaa][slow]") {
     testContext();
     const GlInfo& info = testGl();
     enum Path { SingleSample, Msaa, PerSample };
@@ -353,7 +353,7 @@ TEST_CASE("LIDR shadows: list sizes on the room, both lookups (measurement)", "[
 
 // The automatic mode hands the frame's shading (shadows included) to whichever candidate draws it: every trial
 // frame, LIDR's among them, is the reference's.
-TEST_CASE("LIDR shadows through the automatic mode: every trial frame equals the reference", "[shadows][lidr][modes][auto]") {
+TEST_CASE("LIDR shadows through the automatic mode: every trial frame equals the reference", "[shadows][lidr][modes][auto][slow]") {
     testContext();
     const Scene scene = pillarFloor();
     RenderModeOptions o;

@@ -87,7 +87,7 @@ Frame renderTwice(Renderer& renderer, const Scene& scene, const ShadingParameter
 
 }  // namespace
 
-TEST_CASE("tiled and multi-pass forward equal the reference with shadows on: spot and point casters", "[shadows][modes]") {
+TEST_CASE("tiled and multi-pass forward equal the reference with shadows on: spot and point casters", "[shadows][modes][slow]") {
     testContext();
     const std::string mode = GENERATE(as<std::string>{}, "tiled", "tiled without depth bounds", "forward-multipass");
     const bool fixedTable = GENERATE(false, true);

@@ -274,7 +274,7 @@ TEST_CASE("shadow lookup: the map position the shader derives from the light is 
     CHECK_FALSE(shadowMapCoord(lights[1], 0, lights[1].position + glm::vec3(3.0f, -0.1f, 0.0f)).seen);
 }
 
-TEST_CASE("shadows in the reference: every floor pixel away from a shadow's edge is as a CPU ray cast says", "[shadows]") {
+TEST_CASE("shadows in the reference: every floor pixel away from a shadow's edge is as a CPU ray cast says", "[shadows][slow]") {
     // The brute-force reference with shadows against an independent truth: for each light alone, a floor pixel
     // whose segment to the light the box blocks (by the ray cast in double precision) must look as if the light
     // were absent, an unblocked one as if it cast no shadow. Pixels within a band around the true edge (the maps'
