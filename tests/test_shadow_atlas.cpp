@@ -141,24 +141,25 @@ TEST_CASE("shadow atlas: each map holds the nearest surface's depth along its te
 }
 
 TEST_CASE("shadow atlas: the packed RGBA8 atlas holds the depth texture's values, slope bias included", "[shadows]") {
-    // Without depth textures the map's shader writes gl_FragCoord.z in 24 bits: the polygon offset (slope bias)
-    // must be in it as it is in the depth buffer, or the packed maps would shadow slanted surfaces themselves.
+    // Without depth textures the map's shader computes the depth from the world position and adds the slope bias
+    // from screen derivatives; the depth-texture maps get it from glPolygonOffset. Unbiased, both are the same
+    // depth rounded twice; biased, the two slope estimates may differ by a fraction of the bias itself (GL lets
+    // an implementation approximate polygon offset's slope).
     testContext();
+    if (testGl().gles) return;  // ES 2.0 reads no depth texture back
     const Scene scene = floorAndBox();
     GpuScene gpu(scene);
     PointLight slanted = spotDown({3.0f, 4.0f, 1.0f}, 50.0f);
     slanted.direction = glm::normalize(glm::vec3(-0.6f, -1.0f, -0.2f));
+    const std::vector<PointLight> lights = {slanted, spotDown({0.0f, 5.0f, 0.0f}, 40.0f)};
+    const float slopeBias = GENERATE(0.0f, 2.0f);
     ShadowAtlasOptions options;
     options.size = 256;
     options.tileSize = 128;
-    options.slopeBias = 2.0f;
-    if (testGl().gles) return;  // ES 2.0 reads no depth texture back
+    options.slopeBias = slopeBias;
     ShadowAtlas depth(testGl(), options);
     options.packedDepth = true;
     ShadowAtlas packed(testGl(), options);
-    PointLight point;
-    point.position = {2.0f, 3.0f, 1.5f};
-    const std::vector<PointLight> lights = {slanted, spotDown({0.0f, 5.0f, 0.0f}, 40.0f)};
     REQUIRE(depth.update(gpu, lights, {0, 1}) == 2);
     REQUIRE(packed.update(gpu, lights, {0, 1}) == 2);
     const std::vector<float> a = depth.readDepth(), b = packed.readDepth();
@@ -170,11 +171,16 @@ TEST_CASE("shadow atlas: the packed RGBA8 atlas holds the depth texture's values
         covered += a[i] < 1.0f;
         over += std::abs(double(a[i]) - double(b[i])) > 1e-6;
     }
-    INFO("texels with a surface: " << covered << ", worst difference " << worst << ", over 1e-6: " << over);
+    INFO("slope bias " << slopeBias << ": texels with a surface: " << covered << ", worst difference " << worst
+                       << ", over 1e-6: " << over);
     CHECK(covered > 10000);
-    // The same depth, rounded twice, and the same slope bias: measured, 2 of 62,678 texels differ by more than
-    // 1e-6 (2.6e-4 at most), where the screen derivatives of a texel straddling an edge see the next triangle.
-    CHECK(over * 1000 <= covered);
+    if (slopeBias == 0.0f) {
+        // The same depth rounded twice: within 1e-6 but for texels whose centre lies on a triangle's edge, where
+        // the two rasterisations may pick different triangles (at most 1 in 1,000).
+        CHECK(over * 1000 <= covered);
+    }
+    // Measured, slope bias 2: llvmpipe 2 of 62,678 texels over 1e-6 (2.6e-4 at most); softpipe 1,472 of 30,047
+    // (4.2e-4 at most): a fraction of the bias, which is 2 depth slopes.
     CHECK(worst < 1e-3);
 }
 
