@@ -140,6 +140,7 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
             chooseShadowCasters(casting, view, 8);
             ShadingParameters shadowed = shading;
             shadowed.shadows.enabled = true;
+            shadowed.shadows.lidrLookup = ShadowLookup::VolumePass;  // the way with the most to get wrong here
             shadowed.shadows.atlas.size = 1024;
             shadowed.shadows.atlas.tileSize = shadowTileToFit(casting, 1024);
             reference.render(camera, casting, shadowed);
