@@ -40,6 +40,20 @@ bool withinBounds(const CaseFigures& f) {
            f.withinBudget.psnr >= 50.0 && f.checkedLitPixels > 0 && f.marksBelowTruth == 0;
 }
 
+// LIDR with the sphere test, or where WebGL refuses it (the exact test needs a depth copy WebGL may not give) the
+// backface stencil test, which marks a superset; `volumeTest` says which.
+std::unique_ptr<LidrRenderer> makeLidr(const GlInfo& info, const Scene& scene, LidrOptions options, int width,
+                                       int height, std::string& volumeTest) {
+    volumeTest = "sphere";
+    try {
+        return std::make_unique<LidrRenderer>(info, scene, options, width, height);
+    } catch (const UnsupportedError& e) {
+        options.volumeTest = VolumeTest::BackFace;
+        volumeTest = std::string("backface (sphere refused: ") + e.what() + ")";
+        return std::make_unique<LidrRenderer>(info, scene, options, width, height);
+    }
+}
+
 }  // namespace
 
 CheckResult runPageCheck(const GlInfo& info, int width, int height) {
@@ -72,16 +86,8 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
             LidrOptions options;
             options.packing = {PackingSchemeKind::BitShift, budget, 8};
             options.transparency = false;
-            std::unique_ptr<LidrRenderer> renderer;
-            std::string volumeTest = "sphere";
-            try {
-                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
-            } catch (const UnsupportedError& e) {
-                // The exact sphere test needs a depth copy WebGL may not give; the stencil test marks a superset.
-                options.volumeTest = VolumeTest::BackFace;
-                volumeTest = std::string("backface (sphere refused: ") + e.what() + ")";
-                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
-            }
+            std::string volumeTest;
+            const std::unique_ptr<LidrRenderer> renderer = makeLidr(info, scene, options, width, height, volumeTest);
             renderer->render(camera, lights, shading);
             const ImageRGBA8 image = renderer->targets().readColor();
             const ListCheck lists = checkIndexLists(truth, renderer->scheme(), renderer->readIndexTargets(),
@@ -149,13 +155,8 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
             LidrOptions options;
             options.packing = {PackingSchemeKind::BitShift, 4, 8};
             options.transparency = false;
-            std::unique_ptr<LidrRenderer> renderer;
-            try {
-                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
-            } catch (const UnsupportedError&) {
-                options.volumeTest = VolumeTest::BackFace;
-                renderer = std::make_unique<LidrRenderer>(info, scene, options, width, height);
-            }
+            std::string volumeTest;
+            const std::unique_ptr<LidrRenderer> renderer = makeLidr(info, scene, options, width, height, volumeTest);
             renderer->render(camera, casting, shadowed);
             const ImageRGBA8 image = renderer->targets().readColor();
             const std::vector<uint8_t> marked = stencilReadback.read(renderer->targets());
