@@ -116,11 +116,11 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
         // where the extension is missing (multi-target schemes are refused before any shader is built there).
         if (writesSecondDrawBuffer(source))
             header += "#ifdef GL_EXT_draw_buffers\n#extension GL_EXT_draw_buffers : require\n#endif\n";
-        // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (lidr writes it only in the pixel-list test hook);
+        // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (the pixel-list test hook, the emulated 16-bit depth and desktop GL's shadow maps write it);
         // a context without the extension fails the compile naming it.
         if (writesFragDepth) header += "#extension GL_EXT_frag_depth : require\n";
         // dFdx / dFdy are OES_standard_derivatives' in ES 2.0: enabled where offered (a shader that needs them
-        // tests GL_OES_standard_derivatives; the shadow maps' packed depth: shadow_depth_packed.frag).
+        // tests GL_OES_standard_derivatives; the shadow maps' depth: shadow_depth.frag).
         if (source.find("dFdx") != std::string::npos)
             header += "#ifdef GL_OES_standard_derivatives\n#extension GL_OES_standard_derivatives : enable\n#endif\n";
         header +=

@@ -78,7 +78,7 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
     gles_ = info.gles;
     framebuffer_ = gl::Framebuffer::create();
     if (packed_) {
-        // Each texel's 24-bit window depth in RGB (shadow_depth_packed.frag), a depth renderbuffer for the test: 16 bits
+        // Each texel's 24-bit window depth in RGB (shadow_depth.frag), a depth renderbuffer for the test: 16 bits
         // on ES 2.0 (all it guarantees) can let a farther surface win where two lie within 2^-16 of each other.
         depth_ = gl::Texture::create2D(GL_RGBA8, options.size, options.size, GL_RGBA, GL_UNSIGNED_BYTE);
         depthBuffer_ = gl::Renderbuffer::create(info.gles ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24, options.size,
@@ -105,8 +105,19 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
         pass.clear.colorValue = glm::vec4(1.0f);
         StateCache::current().beginPass(pass);
     }
-    program_ = gl::Program::create(packed_ ? "shadow-depth-packed" : "shadow-depth", buildShaderSource("geometry.vert"),
-                                   buildShaderSource(packed_ ? "shadow_depth_packed.frag" : "depth_only.frag"), geometryAttributes());
+    // The slope bias is computed in the map's shader (shadow_depth.frag) wherever it can write the depth: polygon
+    // offset's slope is the implementation's estimate, and softpipe's left acne where llvmpipe's did not. ES 2.0's
+    // depth-texture maps keep polygon offset (gl_FragDepth needs EXT_frag_depth there).
+    slopeInShader_ = packed_ || !info.gles;
+    if (slopeInShader_) {
+        ShaderDefines defines;
+        if (packed_) defines.push_back({"LIDR_SHADOW_PACKED", "1"});
+        program_ = gl::Program::create(packed_ ? "shadow-depth-packed" : "shadow-depth", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("shadow_depth.frag", defines), geometryAttributes());
+    } else {
+        program_ = gl::Program::create("shadow-depth-offset", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("depth_only.frag"), geometryAttributes());
+    }
     checkGl("shadow atlas");
 }
 
@@ -160,11 +171,11 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
         pass.clear.colorValue = glm::vec4(1.0f);
         pass.clear.region = slots[i].rect;
         cache.beginPass(pass);
-        if (packed_) {  // the shader adds the slope bias (shadow_depth_packed.frag); no polygon offset
+        if (slopeInShader_) {  // the shader adds the slope bias (shadow_depth.frag); no polygon offset
             program_.use();
             program_.set("uSlopeBias", options_.slopeBias);
         }
-        drawOpaqueDepth(program_, scene, slots[i].camera, packed_ ? 0.0f : options_.slopeBias, packed_);
+        drawOpaqueDepth(program_, scene, slots[i].camera, slopeInShader_ ? 0.0f : options_.slopeBias, packed_);
         d = {posRange, directionCone, scene.version(), true};
         ++drawnNow;
     }

@@ -87,7 +87,7 @@ private:
     std::vector<Slot> slots_;
     std::vector<Drawn> drawn_;
     long mapsDrawn_ = 0;
-    bool packed_ = false, gles_ = false;
+    bool packed_ = false, gles_ = false, slopeInShader_ = false;
 };
 
 }  // namespace lidr
