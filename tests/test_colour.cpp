@@ -11,7 +11,10 @@
 #include "lidr/base/error.h"
 #include "lidr/eval/image_compare.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/render/depth_prepass.h"
 #include "lidr/render/output_transform.h"
+#include "lidr/render/shading_variants.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -209,4 +212,44 @@ TEST_CASE("multi-pass forward encodes its finished linear sum: the encoded image
         // and the encoding really changed the image (lit pixels brighter than their linear values)
         REQUIRE(compareImages(encoded, linear).differingPixels > long(scene.width) * scene.height / 4);
     }
+}
+
+TEST_CASE("shading variants: the frame's suns, tone map and encoding are compiled in; depth passes get none", "[colour]") {
+    // A uniform branch or a uniform-bounded loop costs its body on a SIMD rasteriser even when not taken
+    // (doc/benchmarks.md), so every shading program is drawn as the variant of its frame's features.
+    testContext();
+    auto program = [](const char* fragment, const char* vertex) {
+        return gl::Program::create(fragment, buildShaderSource(vertex), buildShaderSource(fragment), geometryAttributes());
+    };
+    // Multi-pass forward's first pass: the suns, no output transform (its encode pass runs over the sum).
+    const gl::Program suns = program("forward_ambient.frag", "geometry.vert");
+    const gl::Program encode = program("output_encode.frag", "present.vert");  // the output transform alone
+    const gl::Program depth = program("depth_only.frag", "geometry.vert");  // includes it for MASK variants only
+    const OutputTransform srgbAces{ToneMap::AcesFitted, 0.0f, true};
+    CHECK(shadingVariantKey(depth, 2, srgbAces) == 0);
+    CHECK(shadingVariantDefines(0).empty());
+    std::vector<uint32_t> keys;
+    for (size_t count = 0; count <= 4; ++count)
+        for (const OutputTransform& output : {OutputTransform::linear(), OutputTransform{}, srgbAces}) {
+            for (const gl::Program* p : {&suns, &encode}) {
+                const uint32_t key = shadingVariantKey(*p, count, output);
+                CHECK(key != 0);
+                CHECK((key & 0xffffu) == 0);  // above the material bits (material_variants.h)
+                const ShaderDefines defines = shadingVariantDefines(key);
+                auto value = [&](const char* name) {
+                    for (const auto& [k, v] : defines)
+                        if (k == name) return v;
+                    return std::string("(none)");
+                };
+                const bool lit = p == &suns;
+                CHECK(value("LIDR_DIRECTIONAL_LIGHTS") == (lit ? std::to_string(count) : "(none)"));
+                CHECK(value("LIDR_TONE_MAP") == (lit ? "(none)" : std::to_string(int(output.toneMap))));
+                CHECK(value("LIDR_SRGB_OUTPUT") == (lit ? "(none)" : output.srgb ? "1" : "0"));
+                CHECK(p->variant(key, defines).id() != 0);  // compiles
+                keys.push_back(key);
+            }
+        }
+    std::sort(keys.begin(), keys.end());
+    // Every combination its own program: 5 counts for the suns, 3 transforms for the encode pass.
+    CHECK(std::unique(keys.begin(), keys.end()) - keys.begin() == 5 + 3);
 }

@@ -83,7 +83,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
     setShadingUniforms(ambient_, cam, linearShading);
-    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam);
+    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading));
     ambientTime.end();
 
     TimedPass lightPassesTime(timer_, "light-passes");

@@ -57,12 +57,12 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     useShadingProgram(program, cam, shading, lightTable_);
     shadows_.bind(program, shading.shadows);
     program.set("uLightCount", float(lights.size()));
-    scene_.draw(program, DrawFilter::Opaque, true, &cam);
+    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading));
     bruteForceTime.end();
     if (transparency_ && scene_.hasTransparent()) {
         TimedPass bruteForceTransparentTime(timer_, "brute-force-transparent");
         beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
-        scene_.drawTransparentSorted(program, cam.eye);
+        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading));
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});

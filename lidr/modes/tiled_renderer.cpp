@@ -137,14 +137,14 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     useShadingProgram(program, cam, shading, lightTable_);
     shadows_.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
-    scene_.draw(program, DrawFilter::Opaque, true, &cam);
+    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading));
     tiledForwardTime.end();
 
     if (transparent) {
         TimedPass tiledTransparentTime(timer_, "tiled-transparent");
         beginTransparentShading();  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program, true);
-        scene_.drawTransparentSorted(program, cam.eye);
+        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading));
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});  // no scissor or masks on the resolve blit

@@ -11,6 +11,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
+#include "lidr/render/shading_variants.h"
 #include "lidr/scene/tangents.h"
 
 namespace lidr {
@@ -226,7 +227,12 @@ bool GpuScene::hasTransparent() const {
 }
 
 const gl::Program& GpuScene::useVariant(DrawState& state, uint32_t features) const {
-    const gl::Program& program = state.base.variant(features, materialDefines(features));
+    ShaderDefines defines = materialDefines(features);
+    if (state.shadingKey) {
+        const ShaderDefines shading = shadingVariantDefines(state.shadingKey);
+        defines.insert(defines.end(), shading.begin(), shading.end());
+    }
+    const gl::Program& program = state.base.variant(features | state.shadingKey, defines);
     if (&program == state.current) return program;
     program.use();
     state.current = &program;
@@ -316,9 +322,9 @@ void GpuScene::unbindGeometry() const {
 }
 
 void GpuScene::draw(const gl::Program& program, DrawFilter filter, bool setMaterials,
-                    const CameraMatrices* camera) const {
+                    const CameraMatrices* camera, uint32_t shadingKey) const {
     drawSelected(program, filter, [](size_t, const glm::vec3&, const glm::vec3&) { return true; }, setMaterials,
-                 camera);
+                 camera, shadingKey);
 }
 
 namespace {
@@ -347,14 +353,14 @@ GLenum GpuScene::culledSide(const Batch& b, const glm::vec3& eye, float reach) c
     return (b.outer == OuterWinding::CounterClockwise) != mirrored ? GL_BACK : GL_FRONT;
 }
 
-void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const {
+void GpuScene::drawTransparentSorted(const gl::Program& program, const glm::vec3& eye, uint32_t shadingKey) const {
     std::vector<const Batch*> order;
     for (const Batch& b : batches_)
         if (materials_[b.material].opacity < 1.0f) order.push_back(&b);
     std::stable_sort(order.begin(), order.end(), [&](const Batch* a, const Batch* b) {
         return glm::length(a->centroid - eye) > glm::length(b->centroid - eye);
     });
-    DrawState state{program, &program, {}};
+    DrawState state{program, &program, {}, shadingKey};
     for (const Batch* b : order) drawBatch(state, *b, true);
     if (state.current != &program) program.use();
     unbindGeometry();
@@ -367,7 +373,7 @@ bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& bo
 
 int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
                            const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
-                           bool setMaterials, const CameraMatrices* camera) const {
+                           bool setMaterials, const CameraMatrices* camera, uint32_t shadingKey) const {
     StateCache& cache = StateCache::current();
     // Culling goes through the cache on top of the pass's state, which is applied again after; a pass that culls
     // itself, or state the cache does not know, is left alone.
@@ -376,7 +382,7 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
     const RenderState pass = mayCull ? cache.known() : RenderState{};
     const float reach = cullInner ? nearPlaneReach(*camera) : 0.0f;
     int drawn = 0;
-    DrawState state{program, &program, {}};
+    DrawState state{program, &program, {}, shadingKey};
     for (size_t i = 0; i < batches_.size(); ++i) {
         const Batch& b = batches_[i];
         const bool transparent = materials_[b.material].opacity < 1.0f;

@@ -40,15 +40,17 @@ public:
     // use again after. With `camera`, opaque
     // closed meshes that the eye and the near plane are outside of are drawn with their inner side culled
     // (cullsInnerSide); the pass's own state is restored after.
+    // `shadingKey` (shading_variants.h, a shading pass's frame features: suns, tone map, encoding) is ORed into
+    // every material's key, so each combination is a variant of its own.
     void draw(const gl::Program& program, DrawFilter filter, bool setMaterials,
-              const CameraMatrices* camera = nullptr) const;
+              const CameraMatrices* camera = nullptr, uint32_t shadingKey = 0) const;
     // Transparent meshes sorted back to front for `eye` (by mesh centroid distance).
-    void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye) const;
+    void drawTransparentSorted(const gl::Program& program, const glm::vec3& eye, uint32_t shadingKey = 0) const;
     // Draws the meshes passing `filter` for which select(batch, boundsMin, boundsMax) is true (batch: 0 ..
     // batchCount() - 1, in draw order); returns how many.
     int drawSelected(const gl::Program& program, DrawFilter filter,
                      const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
-                     bool setMaterials, const CameraMatrices* camera = nullptr) const;
+                     bool setMaterials, const CameraMatrices* camera = nullptr, uint32_t shadingKey = 0) const;
     // The GL face (GL_BACK or GL_FRONT) that draw() culls for this batch seen from `camera`, 0 for none: the inner
     // side of an opaque closed mesh (closedMeshOuterWinding, after the object's transform) whose bounds neither the
     // eye nor any point of the near plane reaches. From outside, that side always lies behind the outer one.
@@ -108,6 +110,7 @@ private:
         const gl::Program& base;
         const gl::Program* current;
         std::vector<const gl::Program*> prepared;  // variants given base's uniforms in this draw call
+        uint32_t shadingKey = 0;                   // shading_variants.h
     };
     const gl::Program& useVariant(DrawState& state, uint32_t features) const;
     void setMaterialUniforms(const gl::Program& program, const Material& m, size_t material) const;

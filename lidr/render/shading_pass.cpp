@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include "lidr/gl/bindings.h"
+#include "lidr/render/shading_variants.h"
 
 #include <algorithm>
 
@@ -62,6 +63,10 @@ void setDirectionalLightUniforms(const gl::Program& program, const std::vector<D
     if (count == 0) return;
     program.uniform<glm::vec4>("uDirectionalLightToLight").setArray(toLight, count);
     program.uniform<glm::vec4>("uDirectionalLightColor").setArray(color, count);
+}
+
+uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading) {
+    return shadingVariantKey(program, shading.directionalLights.size(), shading.output);
 }
 
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {

@@ -35,6 +35,8 @@ void setDirectionalLightUniforms(const gl::Program& program, const std::vector<D
 // Sets the per-frame uniforms of shading.glsl (eye, ambient, the directional lights, the output transform, the
 // material texture's unit).
 void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
+// The frame's shading variant key of `program` (shading_variants.h), for GpuScene::draw.
+uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading);
 // Uses the program, sets shading.glsl's uniforms and binds the light table to it.
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
                        const LightTable& table);

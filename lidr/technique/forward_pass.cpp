@@ -118,7 +118,8 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
-    scene.draw(bindInputs(targets, indices, table, camera, shading, lights, shadows), DrawFilter::Opaque, true, &camera);
+    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
+    scene.draw(program, DrawFilter::Opaque, true, &camera, shadingVariantKey(program, shading));
     unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
@@ -128,7 +129,8 @@ void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTarget
                                  const ShadingParameters& shading, bool lights, const ShadowMaps* shadows) const {
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
-    scene.drawTransparentSorted(bindInputs(targets, indices, table, camera, shading, lights, shadows), camera.eye);
+    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
+    scene.drawTransparentSorted(program, camera.eye, shadingVariantKey(program, shading));
     unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }

@@ -46,9 +46,21 @@ vec3 lidrSrgbToLinear(vec3 c) {
 
 vec4 lidrOutput(vec3 linearColor, float alpha) {
     vec3 c = max(linearColor * exp2(uExposureStops), vec3(0.0));
+#ifdef LIDR_TONE_MAP  // the frame's shading variant (lidr/render/shading_variants.h): operator and encoding compiled in
+#if LIDR_TONE_MAP == 2
+    c = lidrToneMapAcesFitted(c);
+#elif LIDR_TONE_MAP == 1
+    c = lidrToneMapPbrNeutral(c);
+#endif
+    c = clamp(c, 0.0, 1.0);
+#if LIDR_SRGB_OUTPUT
+    c = lidrLinearToSrgb(c);
+#endif
+#else  // uniform branches: a SIMD rasteriser runs both operators under masks
     if (uToneMap > 1.5) c = lidrToneMapAcesFitted(c);
     else if (uToneMap > 0.5) c = lidrToneMapPbrNeutral(c);
     c = clamp(c, 0.0, 1.0);
     if (uSrgbOutput > 0.5) c = lidrLinearToSrgb(c);
+#endif
     return vec4(c, alpha);
 }

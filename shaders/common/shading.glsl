@@ -139,11 +139,19 @@ uniform vec4 uDirectionalLightToLight[LIDR_MAX_DIRECTIONAL_LIGHTS];
 uniform vec4 uDirectionalLightColor[LIDR_MAX_DIRECTIONAL_LIGHTS];
 uniform float uDirectionalLightCount;
 
+// LIDR_DIRECTIONAL_LIGHTS (the frame's shading variant, lidr/render/shading_variants.h): the count compiled in, so
+// a frame without a sun runs no code for it. A uniform count cannot do that on a SIMD rasteriser: the loop's body
+// runs under a mask at least once (llvmpipe: a sixth of LIDR's forward pass on the hall, doc/benchmarks.md).
 vec3 lidrDirectionalLights(LidrSurface s) {
     vec3 sum = vec3(0.0);
+#ifdef LIDR_DIRECTIONAL_LIGHTS
+    for (int i = 0; i < LIDR_DIRECTIONAL_LIGHTS; ++i)
+        sum += lidrShadeIncoming(s, uDirectionalLightToLight[i].xyz, 1.0, uDirectionalLightColor[i].rgb);
+#else
     for (int i = 0; i < LIDR_MAX_DIRECTIONAL_LIGHTS; ++i) {
         if (float(i) >= uDirectionalLightCount) break;
         sum += lidrShadeIncoming(s, uDirectionalLightToLight[i].xyz, 1.0, uDirectionalLightColor[i].rgb);
     }
+#endif
     return sum;
 }

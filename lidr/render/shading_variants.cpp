@@ -1,0 +1,45 @@
+#include "lidr/render/shading_variants.h"
+
+#include <algorithm>
+#include <string>
+
+namespace lidr {
+
+namespace {
+// Bits 16 and up (material_variants.h uses 0-12).
+constexpr uint32_t kDirectional = 1u << 16;         // LIDR_DIRECTIONAL_LIGHTS defined ...
+constexpr int kDirectionalCountShift = 17;          // ... as bits 17-19 (0-4 suns)
+constexpr uint32_t kOutput = 1u << 20;              // LIDR_TONE_MAP defined ...
+constexpr int kToneMapShift = 21;                   // ... as bits 21-22
+constexpr uint32_t kSrgb = 1u << 23;                // LIDR_SRGB_OUTPUT 1
+constexpr uint32_t kMaxSuns = 7;                    // what bits 17-19 hold (the shader's arrays hold 4)
+}  // namespace
+
+namespace {
+// Declared and used: depth_only.frag includes output_transform.glsl for its MASK variant alone.
+bool uses(const gl::Program& program, const char* uniform) {
+    return program.declares(uniform) && program.location(uniform) >= 0;
+}
+}  // namespace
+
+uint32_t shadingVariantKey(const gl::Program& program, size_t directionalLights, const OutputTransform& output) {
+    uint32_t key = 0;
+    if (uses(program, "uDirectionalLightCount"))
+        key |= kDirectional | (uint32_t(std::min<size_t>(directionalLights, kMaxSuns)) << kDirectionalCountShift);
+    if (uses(program, "uToneMap"))
+        key |= kOutput | (uint32_t(output.toneMap) << kToneMapShift) | (output.srgb ? kSrgb : 0u);
+    return key;
+}
+
+ShaderDefines shadingVariantDefines(uint32_t key) {
+    ShaderDefines defines;
+    if (key & kDirectional)
+        defines.push_back({"LIDR_DIRECTIONAL_LIGHTS", std::to_string((key >> kDirectionalCountShift) & kMaxSuns)});
+    if (key & kOutput) {
+        defines.push_back({"LIDR_TONE_MAP", std::to_string((key >> kToneMapShift) & 3u)});
+        defines.push_back({"LIDR_SRGB_OUTPUT", (key & kSrgb) ? "1" : "0"});
+    }
+    return defines;
+}
+
+}  // namespace lidr

@@ -1,0 +1,25 @@
+#pragma once
+// The frame's shading features as shader variants (the Filament / bgfx way, next to material_variants.h): how many
+// directional lights the frame has, which tone map and whether the output is sRGB-encoded are compiled into the
+// shading programs as defines (LIDR_DIRECTIONAL_LIGHTS, LIDR_TONE_MAP, LIDR_SRGB_OUTPUT) instead of read from
+// uniforms, because a SIMD rasteriser runs a uniform branch's both sides, and a uniform-bounded loop's body once,
+// under a mask: on llvmpipe the four-sun loop of a frame without a sun was a sixth of LIDR's forward pass on the
+// hall (doc/benchmarks.md). The key's bits lie above the material bits; GpuScene::draw ORs the two and compiles
+// each combination on first use (gl::Program::variant). A program drawn without a key (0) reads the uniforms, as
+// every program that is not drawn through GpuScene does.
+#include <cstddef>
+#include <cstdint>
+
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/render/output_transform.h"
+
+namespace lidr {
+
+// The key of `program` for a frame with `directionalLights` suns and `output`: 0 where the program uses neither
+// shading.glsl's directional lights nor output_transform.glsl's lidrOutput (depth passes, a material shader of its own).
+uint32_t shadingVariantKey(const gl::Program& program, size_t directionalLights, const OutputTransform& output);
+// The defines of a key (empty for 0).
+ShaderDefines shadingVariantDefines(uint32_t key);
+
+}  // namespace lidr
