@@ -325,28 +325,36 @@ void Program::copyUniformsFrom(const Program& source) const {
         }
         copiesFrom_ = source.id_;
     }
-    for (const UniformCopy& c : copies_) {
-        if (floatUniform(c.type)) {
-            GLfloat v[16] = {};
-            glGetUniformfv(source.id_, c.from, v);
-            switch (c.type) {
-            case GL_FLOAT: glUniform1fv(c.to, 1, v); break;
-            case GL_FLOAT_VEC2: glUniform2fv(c.to, 1, v); break;
-            case GL_FLOAT_VEC3: glUniform3fv(c.to, 1, v); break;
-            case GL_FLOAT_VEC4: glUniform4fv(c.to, 1, v); break;
-            case GL_FLOAT_MAT2: glUniformMatrix2fv(c.to, 1, GL_FALSE, v); break;
-            case GL_FLOAT_MAT3: glUniformMatrix3fv(c.to, 1, GL_FALSE, v); break;
-            default: glUniformMatrix4fv(c.to, 1, GL_FALSE, v); break;
-            }
-        } else {  // int, bool and sampler types
-            GLint v[4] = {};
-            glGetUniformiv(source.id_, c.from, v);
-            switch (c.type) {
-            case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(c.to, 1, v); break;
-            case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(c.to, 1, v); break;
-            case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(c.to, 1, v); break;
-            default: glUniform1iv(c.to, 1, v); break;
-            }
+    // Every value is read with `source` in use and written with this program in use (as the caller left it):
+    // WebGL through Emscripten resolves a uniform location through the program in use, glGetUniform of another
+    // program's included.
+    struct Value {
+        GLfloat f[16];
+        GLint i[4];
+    };
+    std::vector<Value> values(copies_.size());
+    glUseProgram(source.id_);
+    for (size_t k = 0; k < copies_.size(); ++k) {
+        if (floatUniform(copies_[k].type)) glGetUniformfv(source.id_, copies_[k].from, values[k].f);
+        else glGetUniformiv(source.id_, copies_[k].from, values[k].i);
+    }
+    glUseProgram(id_);
+    for (size_t k = 0; k < copies_.size(); ++k) {
+        const UniformCopy& c = copies_[k];
+        const GLfloat* v = values[k].f;
+        const GLint* n = values[k].i;
+        switch (c.type) {
+        case GL_FLOAT: glUniform1fv(c.to, 1, v); break;
+        case GL_FLOAT_VEC2: glUniform2fv(c.to, 1, v); break;
+        case GL_FLOAT_VEC3: glUniform3fv(c.to, 1, v); break;
+        case GL_FLOAT_VEC4: glUniform4fv(c.to, 1, v); break;
+        case GL_FLOAT_MAT2: glUniformMatrix2fv(c.to, 1, GL_FALSE, v); break;
+        case GL_FLOAT_MAT3: glUniformMatrix3fv(c.to, 1, GL_FALSE, v); break;
+        case GL_FLOAT_MAT4: glUniformMatrix4fv(c.to, 1, GL_FALSE, v); break;
+        case GL_INT_VEC2: case GL_BOOL_VEC2: glUniform2iv(c.to, 1, n); break;
+        case GL_INT_VEC3: case GL_BOOL_VEC3: glUniform3iv(c.to, 1, n); break;
+        case GL_INT_VEC4: case GL_BOOL_VEC4: glUniform4iv(c.to, 1, n); break;
+        default: glUniform1iv(c.to, 1, n); break;  // int, bool and sampler types
         }
     }
 }
