@@ -283,10 +283,12 @@ std::string withDefines(const std::string& source, const std::vector<std::pair<s
 }
 }  // namespace
 
-const Program& Program::variant(uint32_t key, const std::vector<std::pair<std::string, std::string>>& defines) const {
+const Program& Program::variant(uint32_t key,
+                                const std::function<std::vector<std::pair<std::string, std::string>>()>& makeDefines) const {
     if (key == 0 || !sources_) return *this;
     auto it = sources_->variants.find(key);
     if (it == sources_->variants.end()) {
+        const std::vector<std::pair<std::string, std::string>> defines = makeDefines();
         Program v = create(name_ + "-variant-" + std::to_string(key), withDefines(sources_->vertex, defines),
                            withDefines(sources_->fragment, defines), sources_->attributes);
         v.sources_.reset();

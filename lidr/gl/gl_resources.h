@@ -2,6 +2,7 @@
 // Thin RAII owners of GL objects. Each one deletes its object in the destructor, so a renderer that is
 // destroyed leaves nothing behind; liveGlObjects() counts what is alive (tests check it returns to zero).
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -153,7 +154,11 @@ public:
     // Shader variants, the Filament / bgfx way: this program's own sources compiled again with `defines` added
     // after each `#version` line, on first use, and kept under `key` (a bit set the caller defines; equal keys
     // must mean equal defines). Key 0 is this program itself. The variant lives as long as this program.
-    const Program& variant(uint32_t key, const std::vector<std::pair<std::string, std::string>>& defines) const;
+    // `defines` is called only on the first use of a key: draws look their variant up per mesh, every frame.
+    const Program& variant(uint32_t key, const std::function<std::vector<std::pair<std::string, std::string>>()>& defines) const;
+    const Program& variant(uint32_t key, const std::vector<std::pair<std::string, std::string>>& defines) const {
+        return variant(key, [&] { return defines; });
+    }
     // Sets every active uniform this program shares with `source` (same name and type) to source's value: a
     // variant takes the per-frame state its base program was given (samplers' units included).
     void copyUniformsFrom(const Program& source) const;

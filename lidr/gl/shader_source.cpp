@@ -116,8 +116,8 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
         // where the extension is missing (multi-target schemes are refused before any shader is built there).
         if (writesSecondDrawBuffer(source))
             header += "#ifdef GL_EXT_draw_buffers\n#extension GL_EXT_draw_buffers : require\n#endif\n";
-        // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (the pixel-list test hook, the emulated 16-bit depth and desktop GL's shadow maps write it);
-        // a context without the extension fails the compile naming it.
+        // gl_FragDepth is EXT_frag_depth's gl_FragDepthEXT (the pixel-list test hook and the emulated 16-bit depth
+        // write it; ES 2.0's shadow maps do not); a context without the extension fails the compile naming it.
         if (writesFragDepth) header += "#extension GL_EXT_frag_depth : require\n";
         // dFdx / dFdy are OES_standard_derivatives' in ES 2.0: enabled where offered (a shader that needs them
         // tests GL_OES_standard_derivatives; the shadow maps' depth: shadow_depth.frag).

@@ -227,12 +227,12 @@ bool GpuScene::hasTransparent() const {
 }
 
 const gl::Program& GpuScene::useVariant(DrawState& state, uint32_t features) const {
-    ShaderDefines defines = materialDefines(features);
-    if (state.shadingKey) {
+    const gl::Program& program = state.base.variant(features | state.shadingKey, [&] {
+        ShaderDefines defines = materialDefines(features);
         const ShaderDefines shading = shadingVariantDefines(state.shadingKey);
         defines.insert(defines.end(), shading.begin(), shading.end());
-    }
-    const gl::Program& program = state.base.variant(features | state.shadingKey, defines);
+        return defines;
+    });
     if (&program == state.current) return program;
     program.use();
     state.current = &program;

@@ -105,11 +105,7 @@ ShadowAtlas::ShadowAtlas(const GlInfo& info, const ShadowAtlasOptions& options) 
         pass.clear.colorValue = glm::vec4(1.0f);
         StateCache::current().beginPass(pass);
     }
-    // The slope bias is computed in the map's shader (shadow_depth.frag) wherever it can write the depth: polygon
-    // offset's slope is the implementation's estimate, and softpipe's left acne where llvmpipe's did not. ES 2.0's
-    // depth-texture maps keep polygon offset (gl_FragDepth needs EXT_frag_depth there).
-    slopeInShader_ = packed_ || !info.gles;
-    if (slopeInShader_) {
+    if (slopeInShader()) {
         ShaderDefines defines;
         if (packed_) defines.push_back({"LIDR_SHADOW_PACKED", "1"});
         program_ = gl::Program::create(packed_ ? "shadow-depth-packed" : "shadow-depth", buildShaderSource("geometry.vert"),
@@ -171,11 +167,11 @@ int ShadowAtlas::update(const GpuScene& scene, const std::vector<PointLight>& li
         pass.clear.colorValue = glm::vec4(1.0f);
         pass.clear.region = slots[i].rect;
         cache.beginPass(pass);
-        if (slopeInShader_) {  // the shader adds the slope bias (shadow_depth.frag); no polygon offset
+        if (slopeInShader()) {  // the shader adds the slope bias (shadow_depth.frag); no polygon offset
             program_.use();
             program_.set("uSlopeBias", options_.slopeBias);
         }
-        drawOpaqueDepth(program_, scene, slots[i].camera, slopeInShader_ ? 0.0f : options_.slopeBias, packed_);
+        drawOpaqueDepth(program_, scene, slots[i].camera, slopeInShader() ? 0.0f : options_.slopeBias, packed_);
         d = {posRange, directionCone, scene.version(), true};
         ++drawnNow;
     }

@@ -87,7 +87,11 @@ private:
     std::vector<Slot> slots_;
     std::vector<Drawn> drawn_;
     long mapsDrawn_ = 0;
-    bool packed_ = false, gles_ = false, slopeInShader_ = false;
+    // The slope bias is computed in the map's shader (shadow_depth.frag) wherever it can write the depth: polygon
+    // offset's slope is the implementation's estimate, and softpipe's left acne where llvmpipe's did not. ES 2.0's
+    // depth-texture maps keep polygon offset (gl_FragDepth needs EXT_frag_depth there).
+    bool slopeInShader() const { return packed_ || !gles_; }
+    bool packed_ = false, gles_ = false;
 };
 
 }  // namespace lidr

@@ -18,7 +18,8 @@ struct ShadowAtlasOptions {
     int tileSize = 512;  // texels per side of one light's map: (size / tileSize)^2 maps at most
     // The maps' depths are pushed back by slopeBias x each occluder's depth slope per texel (computed in the
     // map's shader from screen derivatives; ES 2.0's depth-texture maps: glPolygonOffset): a surface slanted
-    // towards its light does not shadow itself wherever a lookup's texels lie within slopeBias texels of the point (the nearest texel is within 0.71, the filtered lookup's four within 1.5).
+    // towards its light does not shadow itself wherever a lookup's texels lie within slopeBias texels of the
+    // point (the nearest texel is within 0.71, the filtered lookup's four within 1.5).
     float slopeBias = 2.0f;
     // The atlas as RGBA8 holding each texel's 24-bit depth (written by the map's shader, a depth renderbuffer
     // for the test) instead of a depth texture: what contexts without depth textures get (ES 2.0 without
