@@ -352,7 +352,9 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"measured_transparent_budget", decision.measuredTransparentBudget},
                        {"transparent_volume_pass_skipped", stats.transparentVolumePassSkipped},
                        {"volume_pass_skipped", stats.volumePassSkipped},
-                       {"volume_area_per_pixel", decision.volumeAreaPerPixel}, {"area_bound", decision.areaBound}};
+                       {"volume_area_per_pixel", decision.volumeAreaPerPixel}, {"area_bound", decision.areaBound},
+                       {"tile_saving_screens", decision.tileSavingScreens},
+                       {"tiles_skipped_for_saving", decision.tilesSkippedForSaving}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"lidr_median_ms", lidrTimes.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
     summary["pass_counts"] = passCountsJson(stats.passes);
@@ -440,7 +442,11 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
             s << ", no light reaches a visible surface: no volume pass, no index read";
         else if (decision.volumeAreaPerPixel >= 0.0)
             s << ", volume quads " << formatFixed(decision.volumeAreaPerPixel, 2) << " px per pixel"
-              << (decision.areaBound ? " (area-bound: tiled forward may be faster here; --mode auto times both)" : "");
+              << (decision.areaBound ? " (area-bound: tiled forward may be faster here; --mode auto times both)" : "")
+              << ", tiles saved " << formatFixed(decision.tileSavingScreens, 2) << " screens of volume pixels";
+        else if (decision.tilesSkippedForSaving)
+            s << ", volume meshes (tiles saved " << formatFixed(decision.tileSavingScreens, 2) << " screens when last measured, under "
+              << formatFixed(LidrRenderer::kTileCullingMinSaving, 2) << ": not worth their depth read-back)";
         if (renderer.drawsTransparency())
             s << ", transparent volume pass "
               << (stats.transparentVolumePassSkipped ? std::string("skipped (none in view)")

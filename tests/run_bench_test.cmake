@@ -105,6 +105,17 @@ if(NOT summary MATCHES "## Shadows")
   message(FATAL_ERROR "shadows sweep: summary.md has no Shadows section")
 endif()
 
+# Issue 25's table (summary.md, "Targets (issue 25)"): LIDR's default against tiled, multi-pass and --mode auto on a
+# small hall, one row with every ratio and the volume pass's fragments per true pair; its lists drop nothing.
+run_bench(0 "rows in" --scenes hall-64 --modes lidr,tiled,forward-multipass,auto --schemes auto --volume-tests sphere
+          --tiled-depth-bounds on --transparency off --resolution 128x96 --frames 2 --warmup-ms 0 --no-progress --no-plots
+          --out ${OUT}/occluded)
+check_output(${OUT}/occluded --min-rows 4)
+file(READ ${OUT}/occluded/summary.md summary)
+if(NOT summary MATCHES "## Targets \\(issue 25\\)[^\n]*\n[^|]*\n\\| scene [^\n]*\n[^\n]*\n\\| hall-64 128x96 \\| [0-9.]+ \\| [0-9.]+[^|]* \\| [0-9.]+[^|]* \\| [0-9.]+ \\| 0 \\| [0-9.]+[^|]* \\| 0 drops met; auto <= 1.05 (met|\\*\\*missed\\*\\*) \\|")
+  message(FATAL_ERROR "occluded run: summary.md lacks issue 25's row for hall-64 128x96:\n${summary}")
+endif()
+
 # Bad input: clear error before any measuring, naming what is valid.
 run_bench(1 "unknown packing scheme 'nope'.*valid: .*bitshift" --schemes nope --out ${OUT}/bad)
 run_bench(1 "unknown render mode 'warp'.*valid: .*lidr.*forward-brute" --modes warp --out ${OUT}/bad)

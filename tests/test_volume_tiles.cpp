@@ -9,6 +9,7 @@
 
 #include "gl_test_context.h"
 #include "lidr/eval/bench_scenes.h"
+#include "lidr/eval/controlled_scenes.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/scene/camera.h"
 #include "lidr/scene/default_scene.h"
@@ -215,6 +216,55 @@ TEST_CASE("tile-culled volumes rasterise at most 3x the true light-pixel pairs o
     INFO("volume quad pixels " << quads << ", true light-pixel pairs " << pairs);
     CHECK(quads <= 3.0 * double(pairs));
     CHECK(quads >= double(pairs));  // every true pair is a fragment
+}
+
+TEST_CASE("tile culling gives way to volume meshes where a tile frame measured too small a saving", "[volume-tiles][lidr]") {
+    if (testGl().gles) return;  // OpenGL ES keeps the volume meshes (no depth read-back)
+    // A floor seen from above, clusters of 8 coincident lights: over a screen of sphere rectangles, nothing
+    // occluded, so the tiles save only the rectangles' corners (the bench's overlap-8: the read-back cost more).
+    // The hall: they save many screens. Either way every frame's image is the first frame's.
+    struct Case {
+        const char* name;
+        bool tilesSaveLittle;
+    };
+    const Case c = GENERATE(Case{"overlap-8", true}, Case{"hall-255", false});
+    DYNAMIC_SECTION(c.name) {
+        Scene scene;
+        if (c.tilesSaveLittle) {
+            ControlledOverlapOptions o;
+            o.overlap = 8;
+            o.width = 256;
+            o.height = 192;
+            scene = makeControlledOverlapScene(o);
+        } else {
+            REQUIRE(makeOccludedSceneByName(c.name, scene));
+            scene.width = 256;
+            scene.height = 192;
+        }
+        scene.transparency = false;
+        LidrOptions options;
+        options.transparency = false;
+        LidrRenderer renderer(testGl(), scene, options, scene.width, scene.height);
+        const std::vector<PointLight> lights = scene.lightsAt(scene.time);
+        const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+        const FrameStats first = renderer.render(scene.camera, lights, shading);
+        const ImageRGBA8 firstImage = renderer.targets().readColor();
+        INFO("tile saving " << first.autoDecision.tileSavingScreens << " screens");
+        REQUIRE(first.autoDecision.volumeAreaPerPixel >= 0.0);  // the first frame measures with tiles
+        CHECK_FALSE(first.autoDecision.tilesSkippedForSaving);
+        CHECK((first.autoDecision.tileSavingScreens < LidrRenderer::kTileCullingMinSaving) == c.tilesSaveLittle);
+        for (int frame = 2; frame <= LidrRenderer::kTileCullingRecheckFrames + 2; ++frame) {
+            const FrameStats stats = renderer.render(scene.camera, lights, shading);
+            INFO("frame " << frame);
+            // Little saving: volume meshes until kTileCullingRecheckFrames frames have passed, then tiles again.
+            const bool tiles = !c.tilesSaveLittle || frame == LidrRenderer::kTileCullingRecheckFrames + 2;
+            CHECK((stats.autoDecision.volumeAreaPerPixel >= 0.0) == tiles);
+            CHECK(stats.autoDecision.tilesSkippedForSaving == !tiles);
+            CHECK(stats.autoDecision.repacks == 0);
+            if (frame == 2 || frame == LidrRenderer::kTileCullingRecheckFrames + 2)
+                CHECK(renderer.targets().readColor().pixels == firstImage.pixels);
+        }
+    }
 }
 
 TEST_CASE("a frame without a reachable light draws no light volume and reads no index texture", "[volume-tiles][lidr]") {

@@ -54,6 +54,12 @@ struct AutoDecision {
     double volumeAreaPerPixel = -1.0;
     bool areaBound = false;
     static constexpr double kAreaBoundPerPixel = 16.0;
+    // Tile culling's measured worth, from the last frame that culled by tiles (this one or up to
+    // LidrRenderer::kTileCullingRecheckFrames before): the volume-mesh pixels it saved (the drawn lights' sphere
+    // rectangles in every draw, minus the quads), in screens; -1 before any. tilesSkippedForSaving: this frame drew
+    // volume meshes because that saving, scaled to this frame's lights, was under kTileCullingMinSaving.
+    double tileSavingScreens = -1.0;
+    bool tilesSkippedForSaving = false;
 };
 
 struct FrameStats {

@@ -265,6 +265,9 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
                                options_.volumeTest == VolumeTest::Sphere;
     volumePass_.setShadows(volumeShadows ? &shadows_ : nullptr, shading.shadows);
 
+    const double screenPixels = double(targets_.width()) * targets_.height();
+    double frameRectArea = 0.0;          // lightRectArea, where tiles were considered
+    bool tilesSkippedForSaving = false;  // volume meshes: the last tile frame measured too small a saving
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
         targets_.bindColor();
@@ -289,8 +292,17 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         }
         depthPrepassTime.end();
         // Tiles pay for a depth read-back and a CPU pass over it: worth it only where the lights' volumes would
-        // cover more than kTileCullingMinArea screens (their pixel rectangles, summed).
-        if (volumeTiles_ && lightRectArea(cam, lights) >= kTileCullingMinArea * double(targets_.width()) * targets_.height()) {
+        // cover more than kTileCullingMinArea screens (their pixel rectangles, summed), and, once a tile frame has
+        // measured it, where they save at least kTileCullingMinSaving screens of volume pixels (scaled by the
+        // lights' area since) or narrow the index width. Every kTileCullingRecheckFrames frames they measure again.
+        frameRectArea = volumeTiles_ ? lightRectArea(cam, lights) : 0.0;
+        bool tiles = volumeTiles_ && frameRectArea >= kTileCullingMinArea * screenPixels;
+        if (tiles && tileRecord_.measured && !tileRecord_.narrower && tileRecord_.framesSince < kTileCullingRecheckFrames &&
+            tileRecord_.savingScreens * frameRectArea / std::max(tileRecord_.rectArea, 1.0) < kTileCullingMinSaving) {
+            tiles = false;
+            tilesSkippedForSaving = true;
+        }
+        if (tiles) {
             TimedPass volumeTilesTime(timer_, "volume-tiles");
             volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, targets_.depthBits() == 24);  // the single-sample pre-pass depth
             volumePass_.setTiles(volumeTiles_.get(), cam);
@@ -311,11 +323,20 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     std::vector<VolumeLight> volumes;
     std::vector<PointLight> tableLights;
     frameLights_.clear();
+    // With tiles: the lights volume meshes would draw, and their sphere rectangles (what tiles are measured against).
+    int meshLights = 0;
+    double meshRectArea = 0.0;
     for (uint32_t index : drawOrder(lights)) {
         const PointLight& l = lights[index - 1];
         const glm::vec4 posRadius(l.position, l.radius);
         if (options_.cullLights && (!sphereMayBeVisible(cam, l.position, l.radius) || !touchesScene(posRadius)))
             continue;
+        if (volumePass_.drawsScreenTiles()) {
+            ++meshLights;
+            glm::ivec4 r;
+            if (spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r))
+                meshRectArea += double(r.z - r.x + 1) * double(r.w - r.y + 1);
+        }
         if (options_.cullLights && volumePass_.drawsScreenTiles() && !volumePass_.sphereReachesTiles(posRadius) &&
             !(drawTransparent_ && reachesTransparentMesh({index, posRadius})))
             continue;
@@ -368,6 +389,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     // nothing and shades without reading an index texture or the light table.
     lightlessFrame_ = volumes.empty();
     volumeQuadPixels_ = 0;
+    volumeStepLights_ = 0;
     stats_.volumePassSkipped = lightlessFrame_;
     if (lightlessFrame_) {
         stats_.transparentVolumeLights = 0;
@@ -396,9 +418,22 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     decision.volumeAreaPerPixel = -1.0;
     decision.areaBound = false;
     if (volumePass_.drawsScreenTiles()) {
-        decision.volumeAreaPerPixel = double(volumeQuadPixels_) / (double(targets_.width()) * targets_.height());
+        decision.volumeAreaPerPixel = double(volumeQuadPixels_) / screenPixels;
         decision.areaBound = decision.volumeAreaPerPixel > AutoDecision::kAreaBoundPerPixel;
+        // What the tiles saved: the volume meshes would have covered the drawn lights' rectangles in every draw
+        // (rank window, re-pack) the quads were drawn in; lights the tiles culled would have been drawn too.
+        const double drawsPerLight = volumes.empty() ? 0.0 : double(volumeStepLights_) / double(volumes.size());
+        tileRecord_.measured = true;
+        tileRecord_.savingScreens = (meshRectArea * drawsPerLight - double(volumeQuadPixels_)) / screenPixels;
+        tileRecord_.rectArea = frameRectArea;
+        tileRecord_.narrower = frameRegions_.on() ||
+                               (autoBits && AutoConfiguration::indexBitsFor(meshLights) > AutoConfiguration::indexBitsFor(stats_.drawnLights));
+        tileRecord_.framesSince = 0;
+    } else if (tileRecord_.measured) {
+        ++tileRecord_.framesSince;
     }
+    decision.tileSavingScreens = tileRecord_.measured ? tileRecord_.savingScreens : -1.0;
+    decision.tilesSkippedForSaving = tilesSkippedForSaving;
     decision.budget = current_->scheme->config().budget;
     for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
         if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
@@ -572,6 +607,7 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumeQuadPixels_ += volumePass_.tileQuadPixels();
+    volumeStepLights_ += volumePass_.tileStepLights();
     volumePass_.end();
     lightVolumesTime.end();
     if (measure) {

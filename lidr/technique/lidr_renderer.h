@@ -90,6 +90,11 @@ public:
     static constexpr int kBudgetWithoutOcclusionQueries = 4;
     // LidrOptions::tileCulledVolumes: the lights' summed pixel rectangles, in screens, from which a frame culls by tiles.
     static constexpr double kTileCullingMinArea = 1.0;
+    // Once a tile frame has measured it: tiles only where they save this many screens of volume pixels (the read-back
+    // costs about half a screen of volume fragments on llvmpipe, doc/benchmarks.md), re-measured every
+    // kTileCullingRecheckFrames frames; where they narrow the index width (or number by region) they stay.
+    static constexpr double kTileCullingMinSaving = 0.75;
+    static constexpr int kTileCullingRecheckFrames = 16;
 
     // Checks everything before any drawing: FBO support, resolution, scheme x budget x width, the volume test's
     // needs; throws UnsupportedError / lidr::Error with the reason.
@@ -187,6 +192,16 @@ private:
     // still hold an earlier frame's; the read-backs answer with the empty lists).
     bool lightlessFrame_ = false;
     long volumeQuadPixels_ = 0;  // this frame's tile quads, every draw of the main volume pass
+    long volumeStepLights_ = 0;  // lights asked for by those draws, once per draw
+    // The last frame that culled by tiles: volume-mesh pixels it saved (screens), the lights' rectangle area then,
+    // whether the tiles narrowed the index width or numbered by region, and frames drawn since.
+    struct TileCullingRecord {
+        bool measured = false;
+        double savingScreens = 0.0;
+        double rectArea = 0.0;
+        bool narrower = false;
+        int framesSince = 0;
+    } tileRecord_;
     // Summed pixel rectangles of the lights' spheres (a bound on what their volume meshes would cover).
     double lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const;
     GpuScene scene_;

@@ -190,6 +190,7 @@ void LightVolumeGeometry::begin(const CameraMatrices& camera, glm::ivec2 targetS
     targetSize_ = targetSize;
     depth_ = depth;
     tileQuadPixels_ = 0;
+    tileStepLights_ = 0;
     if (drawsScreenTiles()) {
         glBindBuffer(GL_ARRAY_BUFFER, tileQuads_.id());  // attributes set per step (the data is re-specified)
         glEnableVertexAttribArray(gl::kPosition);
@@ -423,6 +424,7 @@ void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {
         return glm::vec3(v) / v.w;
     };
     tileVertices_.clear();
+    tileStepLights_ += step.lightCount;
     const int tilesX = tiles_->tilesX(), size = tiles_->tileSize();
     for (int slot = 0; slot < step.lightCount; ++slot) {
         const SphereTiles& sphere = *lightTiles_[size_t(step.firstLight + slot)];

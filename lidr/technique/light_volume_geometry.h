@@ -124,6 +124,8 @@ public:
     float depthMargin() const { return kSphereDepthSteps / depthUnits_; }
     // Rasterised area of the last frame's tile quads, in pixels (0 without tiles): what the culling kept.
     long tileQuadPixels() const { return tileQuadPixels_; }
+    // Lights the tile quads' draws were asked for since begin(), one per light and draw (each rank window draws them all).
+    long tileStepLights() const { return tileStepLights_; }
 
     // The shader tests keep a light up to this many times its radius: a hair over 1, so rounding in the
     // rebuilt surface point never loses a pixel the forward pass lights (the CPU truth's band lies inside).
@@ -210,6 +212,7 @@ private:
     std::vector<uint8_t> sliceCounts_;  // per tile and slice, saturating at 255 (a bound above 16 is as good)
     int skipTilesUpTo_ = 0;  // the current draw's tiles with at most this many candidates are skipped
     long tileQuadPixels_ = 0;
+    long tileStepLights_ = 0;
     gl::Buffer tileQuads_;
     std::vector<glm::vec4> tileVertices_;
     DrawTargetPrograms tilePrograms_[2];

@@ -91,6 +91,8 @@ public:
     float tileDepthMargin() const { return volumes_.depthMargin(); }
     // Pixels the tile quads of the last pass covered (0 without tile culling).
     long tileQuadPixels() const { return volumes_.tileQuadPixels(); }
+    // Lights asked for by the last pass's tile-quad draws, once per draw (0 without tile culling).
+    long tileStepLights() const { return volumes_.tileStepLights(); }
     const CameraMatrices& camera() const { return camera_; }
     // True where the light is drawn without its depth test (no depth clamp and its volume reaches the far
     // plane): it then marks its whole screen footprint.
