@@ -546,7 +546,7 @@ int LidrRenderer::measuredNeed() {
         PassDescription pass{indexTargets_->framebuffer().id(),
                              glm::ivec4(0, 0, indexTargets_->width(), indexTargets_->height()), {}, {}};
         StateCache::current().beginPass(pass);
-        probe_.issue(OverlapProbe::aboveBudget(current_->scheme->config().budget));
+        probe_.issue(OverlapProbe::aboveBudget(current_->scheme->config().budget), probeAreas());
         OverlapProbe::merge(above, probe_.pixelsAbove());
     }
     pixelsAbove_ = above;
@@ -612,8 +612,18 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     lightVolumesTime.end();
     if (measure) {
         TimedPass probeTime(timer_, "overlap-probe");  // apart: full-screen draws, not volume fragments
-        probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_));
+        probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_), probeAreas());
     }
+}
+
+OverlapProbe::Areas LidrRenderer::probeAreas() const {
+    // A pixel's count is at most its tile's candidate bound, so a threshold is drawn only over the tiles whose
+    // bound exceeds it (nowhere: answered 0 without a draw); volume meshes give no bound (the whole screen).
+    OverlapProbe::Areas areas;
+    for (size_t i = 0; i < areas.size(); ++i)
+        areas[i] = volumePass_.drawsScreenTiles() ? volumePass_.tileCandidateArea(OverlapProbe::kThreshold[i])
+                                                  : glm::ivec4(0, 0, -1, -1);
+    return areas;
 }
 
 double LidrRenderer::lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const {

@@ -172,6 +172,8 @@ private:
     void shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights = true);
     // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
     int measuredNeed();
+    // Where the main pass's probe draws each threshold (OverlapProbe::Areas), from the tiles' candidate bounds.
+    OverlapProbe::Areas probeAreas() const;
 
     LidrOptions options_;  // as asked, with the context's fallbacks (withContextFallbacks)
     bool requestedAutoBudget_ = false;

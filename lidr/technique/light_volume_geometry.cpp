@@ -402,8 +402,11 @@ void LightVolumeGeometry::cullToTiles(const std::vector<VolumeLight>& lights) {
         tiledLights_.push_back(l.posRadius);
         tiledRegions_.push_back(l.region);
         lightTiles_.push_back(&tilesOf(l.posRadius));
+        // Per run of slices one pixel's depth span may cover (VolumeTiles::candidateWindows): a light reaching any
+        // slice of it may mark that pixel.
         for (const TileReach& r : lightTiles_.back()->tiles)
-            for (uint32_t bits = tileInRegion(r.tile, l.region) ? r.slices : 0u; bits; bits &= bits - 1) {
+            for (uint32_t bits = tileInRegion(r.tile, l.region) ? VolumeTiles::candidateWindows(r.slices, tiles_->sliceSpan(r.tile)) : 0u;
+                 bits; bits &= bits - 1) {
                 uint8_t& n = sliceCounts_[size_t(r.tile) * 32 + size_t(__builtin_ctz(bits))];
                 if (n < 255) ++n;
             }
@@ -411,6 +414,20 @@ void LightVolumeGeometry::cullToTiles(const std::vector<VolumeLight>& lights) {
     tileCandidates_.assign(tiles, 0);
     for (size_t t = 0; t < tiles; ++t)
         tileCandidates_[t] = *std::max_element(sliceCounts_.begin() + t * 32, sliceCounts_.begin() + (t + 1) * 32);
+}
+
+glm::ivec4 LightVolumeGeometry::candidateArea(int count) const {
+    if (!tiles_ || tiledLights_.empty() || tileCandidates_.size() != size_t(tiles_->tileCount())) return {0, 0, -1, -1};
+    const int tilesX = tiles_->tilesX(), size = tiles_->tileSize();
+    int x0 = tilesX, y0 = tiles_->tilesY(), x1 = -1, y1 = -1;
+    for (size_t t = 0; t < tileCandidates_.size(); ++t) {
+        if (tileCandidates_[t] <= count) continue;
+        const int tx = int(t) % tilesX, ty = int(t) / tilesX;
+        x0 = std::min(x0, tx), x1 = std::max(x1, tx), y0 = std::min(y0, ty), y1 = std::max(y1, ty);
+    }
+    if (x1 < 0) return {0, 0, 0, 0};
+    const int px0 = x0 * size, py0 = y0 * size;
+    return {px0, py0, std::min((x1 + 1) * size, targetSize_.x) - px0, std::min((y1 + 1) * size, targetSize_.y) - py0};
 }
 
 void LightVolumeGeometry::drawTileQuads(const VolumeStep& step) {

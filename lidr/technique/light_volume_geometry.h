@@ -124,6 +124,10 @@ public:
     float depthMargin() const { return kSphereDepthSteps / depthUnits_; }
     // Rasterised area of the last frame's tile quads, in pixels (0 without tiles): what the culling kept.
     long tileQuadPixels() const { return tileQuadPixels_; }
+    // After this frame's tile-culled draws: the pixel box (x, y, width, height) of the tiles where more than
+    // `count` lights may mark a pixel (the candidate bound); every pixel whose count exceeds `count` lies in it.
+    // Width 0: no such tile; width -1: unknown (no tile-culled draw this frame).
+    glm::ivec4 candidateArea(int count) const;
     // Lights the tile quads' draws were asked for since begin(), one per light and draw (each rank window draws them all).
     long tileStepLights() const { return tileStepLights_; }
 
@@ -207,9 +211,10 @@ private:
     std::vector<int> tiledRegions_;                // and their regions
     std::vector<const SphereTiles*> lightTiles_;
     IndexRegions regions_;
-    // Per tile: at most this many lights mark one of its pixels (the most spheres meeting one of its slices).
+    // Per tile: at most this many lights mark one of its pixels (the most spheres reaching one run of slices a
+    // pixel's depth span may cover, VolumeTiles::candidateWindows).
     std::vector<int> tileCandidates_;
-    std::vector<uint8_t> sliceCounts_;  // per tile and slice, saturating at 255 (a bound above 16 is as good)
+    std::vector<uint8_t> sliceCounts_;  // per tile and run start, saturating at 255 (a bound above 16 is as good)
     int skipTilesUpTo_ = 0;  // the current draw's tiles with at most this many candidates are skipped
     long tileQuadPixels_ = 0;
     long tileStepLights_ = 0;

@@ -91,6 +91,9 @@ public:
     float tileDepthMargin() const { return volumes_.depthMargin(); }
     // Pixels the tile quads of the last pass covered (0 without tile culling).
     long tileQuadPixels() const { return volumes_.tileQuadPixels(); }
+    // The tile-culled pass's bound: where pixels marked by more than `count` lights can be
+    // (LightVolumeGeometry::candidateArea; width -1: unknown, 0: nowhere).
+    glm::ivec4 tileCandidateArea(int count) const { return volumes_.candidateArea(count); }
     // Lights asked for by the last pass's tile-quad draws, once per draw (0 without tile culling).
     long tileStepLights() const { return volumes_.tileStepLights(); }
     const CameraMatrices& camera() const { return camera_; }

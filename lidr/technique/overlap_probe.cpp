@@ -64,6 +64,7 @@ unsigned OverlapProbe::aboveBudget(int budget) {
 void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera,
                                    unsigned which, const glm::ivec4* scissor) {
     RenderState s = stateFor(scissor);
+    knownZero_ = 0;
     s.depthTest = true;
     s.depthFunc = GL_LEQUAL;  // visible in front of the opaque depth; several layers may count a pixel twice,
                               // which changes no zero
@@ -84,13 +85,27 @@ void OverlapProbe::issueOverMeshes(const GpuScene& scene, DrawFilter filter, con
 }
 
 void OverlapProbe::issue(unsigned which, const glm::ivec4* scissor) {
-    RenderState s = stateFor(scissor);
+    Areas areas;
+    areas.fill(scissor ? *scissor : glm::ivec4(0, 0, -1, -1));
+    issue(which, areas);
+}
+
+void OverlapProbe::issue(unsigned which, const Areas& areas) {
+    RenderState s = stateFor(nullptr);
     program_.use();
     glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    knownZero_ = 0;
     for (int i = 0; i < kThresholds; ++i) {
         if (!(which & (1u << i))) continue;
+        const glm::ivec4& area = areas[size_t(i)];
+        if (area.z == 0 || area.w == 0) {
+            knownZero_ |= 1u << i;
+            continue;
+        }
+        s.scissor = area.z > 0;
+        s.scissorBox = s.scissor ? area : glm::ivec4(0);
         s.stencil.ref = kThreshold[size_t(i)];
         StateCache::current().apply(s);
         glBeginQuery(GL_SAMPLES_PASSED, queries_[size_t(i)].id());
@@ -110,6 +125,10 @@ std::array<long, OverlapProbe::kThresholds> OverlapProbe::pixelsAbove() const {
     for (int i = 0; i < kThresholds; ++i) {
         above[size_t(i)] = -1;
         if (!(issued_ & (1u << i))) continue;
+        if (knownZero_ & (1u << i)) {
+            above[size_t(i)] = 0;
+            continue;
+        }
         GLuint n = 0;
         glGetQueryObjectuiv(queries_[size_t(i)].id(), GL_QUERY_RESULT, &n);
         above[size_t(i)] = static_cast<long>(n);

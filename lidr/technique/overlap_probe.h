@@ -33,6 +33,11 @@ public:
     // Issues the queries of the thresholds in `which` (bit i: kThreshold[i]) over the bound framebuffer (its
     // stencil holds the counts), within `scissor` when given (x, y, width, height). Leaves the stencil unchanged.
     void issue(unsigned which = kAll, const glm::ivec4* scissor = nullptr);
+    // Per threshold, where pixels over it can be (x, y, width, height): width < 0 anywhere, 0 nowhere (that
+    // threshold's answer is 0 without a draw), else its draw is scissored to the box. LidrRenderer takes them from
+    // the tile-culled volume pass's per-tile bound on the lights that may mark a pixel.
+    using Areas = std::array<glm::ivec4, kThresholds>;
+    void issue(unsigned which, const Areas& areas);
     // The same over the pixels where `filter`'s meshes are visible (depth-tested against the bound depth, not
     // written): the transparent layers read their lists only there, so only there does their overlap count.
     void issueOverMeshes(const GpuScene& scene, DrawFilter filter, const CameraMatrices& camera, unsigned which = kAll,
@@ -55,6 +60,7 @@ private:
     gl::Buffer triangle_;
     std::array<gl::Object, kThresholds> queries_;
     unsigned issued_ = 0;
+    unsigned knownZero_ = 0;  // thresholds issued without a draw: no pixel can exceed them
     long drawCalls_ = 0;
 };
 

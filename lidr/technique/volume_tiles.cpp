@@ -47,6 +47,7 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
     minDepth_.assign(tiles, 2.0f);
     maxDepth_.assign(tiles, -1.0f);
     slices_.assign(tiles, 0u);
+    sliceSpan_.assign(tiles, 0);
     margin += kDepthSlack;
     // Both passes walk each row a tile's span at a time (no division per pixel) with branch-free inner loops
     // the compiler can vectorise: this is the CPU side of every tile-culled frame (doc/benchmarks.md).
@@ -84,14 +85,17 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
             const int x0 = tx * tileSize_, x1 = std::min(x0 + tileSize_, width_);
             const float base = minDepth_[t], s = scale[t];
             uint32_t bits = slices_[t];
+            int span = sliceSpan_[t];
             for (int x = x0; x < x1; ++x) {
                 const float d = row[x];
                 if (!(d < 1.0f)) continue;
                 const int first = std::min(int((d - margin - base) * s), kSlices - 1);
                 const int last = std::min(int((d + margin - base) * s), kSlices - 1);
                 bits |= sliceMask(first, last);
+                span = std::max(span, last - first);
             }
             slices_[t] = bits;
+            sliceSpan_[t] = span;
         }
     }
     // Pass 3: each occupied slice's distances, widened by a tenth of a slice (rounding in the floors above) and

@@ -51,9 +51,19 @@ public:
 
     // The occupied depth slices of `tile` (bit s: slice s) whose cell the sphere (centre in view space, radius)
     // meets, its window-depth span being [nearDepth, farDepth] (sphereDepthSpan); 0: no surface of the tile can
-    // lie inside it. A pixel's surface lies in one cell, so the lights that mark a pixel of the tile are at most
-    // as many as the spheres meeting its fullest slice.
+    // lie inside it.
     uint32_t slicesReached(int tile, const glm::vec3& viewCentre, float radius, float nearDepth, float farDepth) const;
+    // The most consecutive slices one pixel's widened depth overlaps in `tile`, minus one (0: every pixel's lies in
+    // one slice). The sphere test keeps a light that meets any point of that span, so the lights marking a pixel
+    // are those reaching any slice of a run of sliceSpan + 1: candidateWindows turns a light's slicesReached into
+    // the runs it reaches (bit s: slices s .. s + span), and the most lights reaching one run bounds every pixel's
+    // count in the tile (the rank windows skip tiles by it, lidr/technique/light_volume_geometry.h).
+    int sliceSpan(int tile) const { return sliceSpan_[size_t(tile)]; }
+    static uint32_t candidateWindows(uint32_t reached, int span) {
+        uint32_t windows = reached;
+        for (int i = 1; i <= span && i < 32; ++i) windows |= reached >> i;
+        return windows;
+    }
     // The window-depth span of a light's sphere on this camera (clamped to [0, 1]), widened for rounding; false
     // when it lies wholly in front of the near plane.
     static bool sphereDepthSpan(const CameraMatrices& camera, const glm::vec3& centre, float radius, float& nearDepth,
@@ -73,6 +83,7 @@ private:
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
     std::vector<float> minDepth_, maxDepth_;  // per tile; min > max: no surface
     std::vector<uint32_t> slices_;
+    std::vector<int> sliceSpan_;  // per tile: sliceSpan()
     // Per tile and occupied slice, the slice's distance span [near, far] in front of the eye (widened as
     // slicesReached needs it): 2 x 32 floats a tile, filled once per build instead of per light and tile.
     std::vector<glm::vec2> sliceDistances_;
