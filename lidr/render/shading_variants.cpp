@@ -13,6 +13,8 @@ constexpr uint32_t kOutput = 1u << 20;              // LIDR_TONE_MAP defined ...
 constexpr int kToneMapShift = 21;                   // ... as bits 21-22
 constexpr uint32_t kSrgb = 1u << 23;                // LIDR_SRGB_OUTPUT 1
 constexpr uint32_t kMaxSuns = 7;                    // what bits 17-19 hold (the shader's arrays hold 4)
+constexpr uint32_t kRegionMap = 1u << 24;           // LIDR_REGION_MAP defined ...
+constexpr uint32_t kRegionMapOn = 1u << 25;         // ... as 1 (else 0)
 }  // namespace
 
 namespace {
@@ -31,8 +33,13 @@ uint32_t shadingVariantKey(const gl::Program& program, size_t directionalLights,
     return key;
 }
 
+uint32_t regionMapVariantKey(const gl::Program& program, bool regions) {
+    return uses(program, "uLidrRegionMap") ? kRegionMap | (regions ? kRegionMapOn : 0u) : 0u;
+}
+
 ShaderDefines shadingVariantDefines(uint32_t key) {
     ShaderDefines defines;
+    if (key & kRegionMap) defines.push_back({"LIDR_REGION_MAP", (key & kRegionMapOn) ? "1" : "0"});
     if (key & kDirectional)
         defines.push_back({"LIDR_DIRECTIONAL_LIGHTS", std::to_string((key >> kDirectionalCountShift) & kMaxSuns)});
     if (key & kOutput) {

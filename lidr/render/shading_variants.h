@@ -19,6 +19,10 @@ namespace lidr {
 // The key of `program` for a frame with `directionalLights` suns and `output`: 0 where the program uses neither
 // shading.glsl's directional lights nor output_transform.glsl's lidrOutput (depth passes, a material shader of its own).
 uint32_t shadingVariantKey(const gl::Program& program, size_t directionalLights, const OutputTransform& output);
+// LIDR's forward programs (lidr_lights.glsl): whether the frame numbers its lights by screen region
+// (LidrOptions::regionalIndices), compiled in as LIDR_REGION_MAP 0 or 1 instead of read from uLidrRegionMap.w,
+// whose branch a SIMD rasteriser runs (a texture fetch a pixel) in every frame. 0 for a program without the map.
+uint32_t regionMapVariantKey(const gl::Program& program, bool regions);
 // The defines of a key (empty for 0).
 ShaderDefines shadingVariantDefines(uint32_t key);
 

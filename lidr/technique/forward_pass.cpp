@@ -6,6 +6,7 @@
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/shader_source.h"
 #include "lidr/render/shading_pass.h"
+#include "lidr/render/shading_variants.h"
 
 namespace lidr {
 
@@ -119,7 +120,8 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
     const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.draw(program, DrawFilter::Opaque, true, &camera, shadingVariantKey(program, shading));
+    scene.draw(program, DrawFilter::Opaque, true, &camera,
+               shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f));
     unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
@@ -130,7 +132,8 @@ void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTarget
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
     const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.drawTransparentSorted(program, camera.eye, shadingVariantKey(program, shading));
+    scene.drawTransparentSorted(program, camera.eye,
+                                shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f));
     unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }

@@ -80,17 +80,27 @@ uniform vec4 uLidrRegionMap;
 float lidrSlotsLeft;
 float lidrRegionRow;
 
+#ifndef GL_ES
+float lidrRegionRowOfPixel() {
+    float tile = floor(gl_FragCoord.x * uLidrRegionMap.x) + uLidrRegionMap.y * floor(gl_FragCoord.y * uLidrRegionMap.x);
+    float row = floor(tile * (1.0 / 256.0));
+    vec2 uv = vec2((tile - row * 256.0 + 0.5) * (1.0 / 256.0), (uLidrRegionMap.z + row + 0.5) / uLightTableRows);
+    return texture2D(uLightPosRadius, uv).x;
+}
+#endif
+
 void lidrBeginLights() {
     lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
     lidrSlotsLeft = float(LIDR_SLOTS);
     lidrRegionRow = 0.0;
 #ifndef GL_ES
-    if (uLidrRegionMap.w > 0.5) {
-        float tile = floor(gl_FragCoord.x * uLidrRegionMap.x) + uLidrRegionMap.y * floor(gl_FragCoord.y * uLidrRegionMap.x);
-        float row = floor(tile * (1.0 / 256.0));
-        vec2 uv = vec2((tile - row * 256.0 + 0.5) * (1.0 / 256.0), (uLidrRegionMap.z + row + 0.5) / uLightTableRows);
-        lidrRegionRow = texture2D(uLightPosRadius, uv).x;
-    }
+#ifdef LIDR_REGION_MAP  // the frame's shading variant (lidr/render/shading_variants.h): regions compiled in or out
+#if LIDR_REGION_MAP
+    lidrRegionRow = lidrRegionRowOfPixel();
+#endif
+#else  // a uniform branch: a SIMD rasteriser runs the lookup under a mask even where regions are off
+    if (uLidrRegionMap.w > 0.5) lidrRegionRow = lidrRegionRowOfPixel();
+#endif
 #endif
 }
 
