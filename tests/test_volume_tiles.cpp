@@ -22,6 +22,16 @@ using namespace lidr;
 using namespace lidr::test;
 
 
+// The camera the CPU tile tests look at their depth fields with: 8 m away, near 0.1 m, far 60 m.
+CameraMatrices fieldCamera(int w, int h) {
+    Camera camera;
+    camera.position = {0.0f, 2.0f, 8.0f};
+    camera.target = {0.0f, 0.0f, 0.0f};
+    camera.nearPlane = 0.1f;
+    camera.farPlane = 60.0f;
+    return cameraMatrices(camera, w, h);
+}
+
 TEST_CASE("volume tiles: a tile is never rejected where a sphere contains a pixel's surface", "[volume-tiles][cpu]") {
     // Random depth fields (a slanted floor, steps and noise, background holes) and random spheres; for every
     // pixel whose surface point (its depth, or anywhere within the margin) lies inside a sphere, the pixel's
@@ -30,12 +40,7 @@ TEST_CASE("volume tiles: a tile is never rejected where a sphere contains a pixe
     const int tileSize = GENERATE(8, 16);
     DYNAMIC_SECTION("seed " << seed << ", tiles " << tileSize) {
         const int w = 96, h = 72;
-        Camera camera;
-        camera.position = {0.0f, 2.0f, 8.0f};
-        camera.target = {0.0f, 0.0f, 0.0f};
-        camera.nearPlane = 0.1f;
-        camera.farPlane = 60.0f;
-        const CameraMatrices cam = cameraMatrices(camera, w, h);
+        const CameraMatrices cam = fieldCamera(w, h);
         std::mt19937 random{uint32_t(seed)};
         std::uniform_real_distribution<float> unit(0.0f, 1.0f);
         std::vector<float> depth(size_t(w) * h);
@@ -100,12 +105,7 @@ TEST_CASE("volume tiles: no pixel is marked by more lights than its tile's candi
     const bool flat = field != 1;
     DYNAMIC_SECTION("seed " << seed << (field == 0 ? ", flat" : field == 1 ? ", slanted" : ", flat, split spans")) {
         const int w = 64, h = 48, tileSize = 16;
-        Camera camera;
-        camera.position = {0.0f, 2.0f, 8.0f};
-        camera.target = {0.0f, 0.0f, 0.0f};
-        camera.nearPlane = 0.1f;
-        camera.farPlane = 60.0f;
-        const CameraMatrices cam = cameraMatrices(camera, w, h);
+        const CameraMatrices cam = fieldCamera(w, h);
         std::mt19937 random{uint32_t(seed)};
         std::uniform_real_distribution<float> unit(0.0f, 1.0f);
         const float step = 1.0f / 16777215.0f;
@@ -238,6 +238,27 @@ TEST_CASE("volume tiles: refused sizes name the rule", "[volume-tiles][cpu][bad-
     CHECK_THROWS_WITH(VolumeTiles(0, 48, 16), Catch::Contains("at least 1 x 1"));
 }
 
+// A scene of these tests by name at w x h, opaque: "room", "overlap-K" (K coincident lights per cluster on a floor
+// seen from above) or an occluded bench scene (hall-N, city-N).
+Scene namedScene(const std::string& name, int w, int h) {
+    Scene scene;
+    if (name == "room") {
+        scene = makeDefaultScene();
+    } else if (name.rfind("overlap-", 0) == 0) {
+        ControlledOverlapOptions o;
+        o.overlap = std::stoi(name.substr(8));
+        o.width = w;
+        o.height = h;
+        scene = makeControlledOverlapScene(o);
+    } else {
+        REQUIRE(makeOccludedSceneByName(name, scene));
+    }
+    scene.width = w;
+    scene.height = h;
+    scene.transparency = false;
+    return scene;
+}
+
 TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volume-tiles][lidr]") {
     struct Case {
         const char* scene;
@@ -246,15 +267,7 @@ TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volu
     const Case c = GENERATE(Case{"room", 4, 8}, Case{"room", 16, 8}, Case{"hall-255", 8, 8}, Case{"hall-255", 16, 8},
                             Case{"city-255", 4, 8}, Case{"hall-1024", 16, 16});
     DYNAMIC_SECTION(c.scene << " bitshift b" << c.budget << " " << c.bits << "-bit") {
-        Scene scene;
-        if (std::string(c.scene) == "room") {
-            scene = makeDefaultScene();
-        } else {
-            REQUIRE(makeOccludedSceneByName(c.scene, scene));
-        }
-        scene.width = 192;
-        scene.height = 144;
-        scene.transparency = false;
+        const Scene scene = namedScene(c.scene, 192, 144);
         LidrOptions o;
         o.packing = {PackingSchemeKind::BitShift, c.budget, c.bits};
         o.transparency = false;
@@ -321,19 +334,7 @@ TEST_CASE("the overlap probe over the tiles' candidate bounds measures what it m
     const char* name = GENERATE("room", "hall-255", "hall-1024", "overlap-16");
     DYNAMIC_SECTION(name) {
         if (testGl().gles) return;  // no tiles on OpenGL ES
-        Scene scene;
-        if (std::string(name) == "room") {
-            scene = makeDefaultScene();
-        } else if (std::string(name) == "overlap-16") {
-            ControlledOverlapOptions o;
-            o.overlap = 16;
-            scene = makeControlledOverlapScene(o);
-        } else {
-            REQUIRE(makeOccludedSceneByName(name, scene));
-        }
-        scene.width = 192;
-        scene.height = 144;
-        scene.transparency = false;
+        const Scene scene = namedScene(name, 192, 144);
         LidrOptions o;
         o.transparency = false;
         const RenderResult tiled = renderAndEvaluate(scene, o);
@@ -360,19 +361,7 @@ TEST_CASE("tile culling gives way to volume meshes where a tile frame measured t
     };
     const Case c = GENERATE(Case{"overlap-8", true}, Case{"hall-255", false});
     DYNAMIC_SECTION(c.name) {
-        Scene scene;
-        if (c.tilesSaveLittle) {
-            ControlledOverlapOptions o;
-            o.overlap = 8;
-            o.width = 256;
-            o.height = 192;
-            scene = makeControlledOverlapScene(o);
-        } else {
-            REQUIRE(makeOccludedSceneByName(c.name, scene));
-            scene.width = 256;
-            scene.height = 192;
-        }
-        scene.transparency = false;
+        const Scene scene = namedScene(c.name, 256, 192);
         LidrOptions options;
         options.transparency = false;
         LidrRenderer renderer(testGl(), scene, options, scene.width, scene.height);
