@@ -557,6 +557,9 @@ TEST_CASE("timing is off by default: no timer queries, no pass times, in every m
         auto* autoMode = dynamic_cast<AutoModeRenderer*>(renderer.get());
         while (autoMode && autoMode->measuring())
             renderer->render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
+        // LIDR's second frame may give up tiles its first measured as not worth their read-back and draw the
+        // volume meshes, whose program is compiled on first use (doc/architecture.md, "Tiles only where they pay").
+        renderer->render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
         const int objects = gl::liveGlObjects();
         for (int frame = 0; frame < 3; ++frame) {
             const FrameStats& stats = renderer->render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
@@ -580,8 +583,15 @@ TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a r
     // The passes a frame has, from a renderer that waits for its own frame's results.
     LidrRenderer waiting(testGl(), scene, o, scene.width, scene.height);
     waiting.setTiming(true, true);
-    std::vector<std::string> names;
-    for (const PassTime& p : waiting.render(scene.camera, lights, shading).passes) names.push_back(p.pass);
+    // The depth read-back ("volume-tiles") runs only in frames that cull by tiles, which a frame gives up where the
+    // last tile frame saved too little (doc/architecture.md, "Tiles only where they pay"): left out of the lists.
+    auto passNames = [](const FrameStats& stats) {
+        std::vector<std::string> names;
+        for (const PassTime& p : stats.passes)
+            if (p.pass != "volume-tiles") names.push_back(p.pass);
+        return names;
+    };
+    const std::vector<std::string> names = passNames(waiting.render(scene.camera, lights, shading));
     CHECK(waiting.lastFrame().timingLag == 0);
     REQUIRE(names.size() >= 3);
 
@@ -595,17 +605,13 @@ TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a r
         if (stats.passes.empty()) continue;
         if (firstWithTimes < 0) firstWithTimes = frame;
         CHECK(stats.timingLag >= 1);
-        std::vector<std::string> got;
-        for (const PassTime& p : stats.passes) {
-            got.push_back(p.pass);
-            CHECK(p.milliseconds >= 0.0);
-        }
-        CHECK(got == names);
+        for (const PassTime& p : stats.passes) CHECK(p.milliseconds >= 0.0);
+        CHECK(passNames(stats) == names);
     }
     CHECK(firstWithTimes >= 1);  // never the frame itself: no stall on its queries
     CHECK(firstWithTimes <= 2);
     // One set of queries per ring slot at most: the other slots' sets.
-    CHECK(gl::liveGlObjects() - objects <= (FrameTimer::kRingFrames - 1) * static_cast<int>(names.size()));
+    CHECK(gl::liveGlObjects() - objects <= (FrameTimer::kRingFrames - 1) * static_cast<int>(names.size() + 1));  // + volume-tiles
 }
 
 TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on with the next pass", "[embed][timing]") {
