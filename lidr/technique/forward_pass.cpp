@@ -19,6 +19,10 @@ std::string perSampleVersion(std::string source) {
     if (at == std::string::npos) throw Error("shader without #version 120");
     return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
 }
+// The frame's shading variant of a forward program: suns, output transform, and whether indices are region-local.
+uint32_t variantKey(const gl::Program& program, const LightTable& table, const ShadingParameters& shading, bool lights) {
+    return shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f);
+}
 }  // namespace
 
 ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
@@ -120,8 +124,7 @@ void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices,
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
     const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.draw(program, DrawFilter::Opaque, true, &camera,
-               shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f));
+    scene.draw(program, DrawFilter::Opaque, true, &camera, variantKey(program, table, shading, lights));
     unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
@@ -132,8 +135,7 @@ void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTarget
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
     const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.drawTransparentSorted(program, camera.eye,
-                                shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f));
+    scene.drawTransparentSorted(program, camera.eye, variantKey(program, table, shading, lights));
     unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }

@@ -13,6 +13,15 @@
 namespace lidr {
 
 namespace {
+// Pixels of the light's sphere rectangle on screen (0 off screen): about what its volume mesh covers.
+double sphereRectPixels(const CameraMatrices& cam, const PointLight& l) {
+    glm::ivec4 r;
+    if (!spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r)) return 0.0;
+    return double(r.z - r.x + 1) * double(r.w - r.y + 1);
+}
+}  // namespace
+
+namespace {
 // The options a context without occlusion queries (OpenGL ES 2.0) can run: an automatic budget is measured by
 // occlusion queries over the stencil count, so there it becomes the fixed kBudgetWithoutOcclusionQueries
 // (bit-shift; the automatic width stays). FrameStats::autoDecision.budgetFallback says so each frame.
@@ -333,9 +342,7 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
             continue;
         if (volumePass_.drawsScreenTiles()) {
             ++meshLights;
-            glm::ivec4 r;
-            if (spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r))
-                meshRectArea += double(r.z - r.x + 1) * double(r.w - r.y + 1);
+            meshRectArea += sphereRectPixels(cam, l);
         }
         if (options_.cullLights && volumePass_.drawsScreenTiles() && !volumePass_.sphereReachesTiles(posRadius) &&
             !(drawTransparent_ && reachesTransparentMesh({index, posRadius})))
@@ -628,11 +635,7 @@ OverlapProbe::Areas LidrRenderer::probeAreas() const {
 
 double LidrRenderer::lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const {
     double area = 0.0;
-    for (const PointLight& l : lights) {
-        glm::ivec4 r;
-        if (spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r))
-            area += double(r.z - r.x + 1) * double(r.w - r.y + 1);
-    }
+    for (const PointLight& l : lights) area += sphereRectPixels(cam, l);
     return area;
 }
 
