@@ -28,20 +28,15 @@ RenderState onceAtPrepassDepth(GLint stamp) {
 
 MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
                                                    const MultipassOptions& options, int width, int height)
-    : options_(options),
-      scene_(scene, DrawOrder::Reversed),  // the stamps keep the first fragment: see render()
-      targets_(info, width, height, options.msaaSamples),
-      lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
-      shadows_(info),
-      timer_(info, options.timingMethod),
-      info_(info) {
+    // The scene drawn in reverse: the stamps keep the first fragment (see render()).
+    : ForwardRendererBase(info, scene, ForwardRendererSetup::of(options, scene, width, height, DrawOrder::Reversed)),
+      options_(options) {
     const ShaderDefines defines = lightTable_.defines();
     ambient_ = gl::Program::create("forward-ambient", buildShaderSource("geometry.vert"),
                                    buildShaderSource("forward_ambient.frag", defines), geometryAttributes());
     light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
                                  buildShaderSource("forward_light.frag", defines), geometryAttributes());
     lightDefines_ = defines;
-    timer_.setEnabled(options.timing);
 }
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -54,19 +49,9 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     const FrameScope frame(stats_, timer_, lights.size());
     meshDraws_ = 0;
 
-    if (static_cast<int>(lights.size()) > lightTable_.capacity())
-        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-
-    TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights, shadowTiles);
-    lightTableTime.end();
-
-    TimedPass depthPrepassTime(timer_, "depth-prepass");
-    targets_.bindColor();
-    depthPrepass_.run(scene_, cam);
-    depthPrepassTime.end();
+    growLightTable(lights.size());
+    updateLights(lights, shading);
+    drawDepthPrepass(cam);
 
     TimedPass ambientTime(timer_, "ambient");
     // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
@@ -161,10 +146,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         encodeTime.end();
     }
 
-    StateCache::current().bindFramebuffer(0);
-    checkGl("MultipassForwardRenderer::render");
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
+    finishFrame("MultipassForwardRenderer::render");
     return stats_;
 }
 

@@ -13,14 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "lidr/render/depth_prepass.h"
-#include "lidr/gl/frame_timer.h"
-#include "lidr/render/gpu_scene.h"
-#include "lidr/render/light_table.h"
+#include "lidr/render/forward_renderer_base.h"
 #include "lidr/render/present.h"
-#include "lidr/gl/render_targets.h"
-#include "lidr/render/renderer.h"
-#include "lidr/render/shadow_maps.h"
 
 namespace lidr {
 
@@ -36,35 +30,20 @@ struct MultipassOptions {
     TimingMethod timingMethod = TimingMethod::Auto;
 };
 
-class MultipassForwardRenderer final : public Renderer {
+class MultipassForwardRenderer final : public ForwardRendererBase {
 public:
     MultipassForwardRenderer(const GlInfo& info, const Scene& scene, const MultipassOptions& options, int width,
                              int height);
     std::string modeName() const override { return "forward-multipass"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
-    const RenderTargets& targets() const override { return targets_; }
-    void setTiming(bool on, bool waitForResults = false) override {
-        timer_.setEnabled(on);
-        timer_.setWaitForResults(waitForResults);
-    }
     long meshDrawCalls() const { return meshDraws_; }  // light-pass mesh draws of the last frame
-
-    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
 
 private:
     MultipassOptions options_;
-    GpuScene scene_;
-    RenderTargets targets_;
-    LightTable lightTable_;
-    DepthPrepass depthPrepass_;
     gl::Program ambient_, light_;
     ShaderDefines lightDefines_;  // light_'s, for its shadowed twin (ShadowMaps::program)
-    ShadowMaps shadows_;
     OutputEncodePass outputEncode_;  // its passes sum linear light; the output transform runs over the sum
-    FrameTimer timer_;
-    const GlInfo info_;
     long meshDraws_ = 0;
 };
 
