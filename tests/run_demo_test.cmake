@@ -15,6 +15,26 @@ function(run_demo dir what)
   set(summary "${text}" PARENT_SCOPE)
 endfunction()
 
+# lidr-demo --headless --no-reference --frames 1 --out OUT/bad with ARGS ("|" between words): fails unless it
+# exits non-zero by itself (a crash exits with a signal) with stderr matching EXPECTED; with NO_CONTEXT, also
+# unless it refused before creating a GL context.
+function(expect_refused args expected)
+  cmake_parse_arguments(PARSE_ARGV 2 REFUSED "NO_CONTEXT" "" "")
+  string(REPLACE "|" " " shown "${args}")
+  string(REPLACE "|" ";" argv "${args}")
+  execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/bad ${argv}
+                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(r EQUAL 0 OR NOT r MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "lidr-demo ${shown}: expected a clean non-zero exit, got '${r}'\n${out}${err}")
+  endif()
+  if(NOT err MATCHES "${expected}")
+    message(FATAL_ERROR "lidr-demo ${shown}: stderr lacks '${expected}'\n${err}")
+  endif()
+  if(REFUSED_NO_CONTEXT AND out MATCHES "GL: ")
+    message(FATAL_ERROR "lidr-demo ${shown}: a context was created before the error\n${out}")
+  endif()
+endfunction()
+
 execute_process(COMMAND ${DEMO} --headless --width 320 --height 240 --frames 1 --out ${OUT} --dump ${OUT}/dump
                 RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
@@ -105,16 +125,7 @@ set(bad_runs
   "--mode|tiled|--tile-size|5000"
   "--mode|tiled|--dump|${OUT}/bad-dump")
 foreach(args IN LISTS bad_runs)
-  string(REPLACE "|" " " shown "${args}")
-  string(REPLACE "|" ";" argv "${args}")
-  execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/bad ${argv}
-                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(r EQUAL 0 OR NOT r MATCHES "^[0-9]+$")
-    message(FATAL_ERROR "lidr-demo ${shown}: expected a clean non-zero exit, got '${r}'\n${out}${err}")
-  endif()
-  if(NOT err MATCHES "error")
-    message(FATAL_ERROR "lidr-demo ${shown}: no error message on stderr\n${err}")
-  endif()
+  expect_refused("${args}" "error")
 endforeach()
 
 # Issue 13: values that were accepted silently; each exits non-zero before rendering, with this message.
@@ -154,19 +165,7 @@ foreach(entry IN LISTS bad_values)
   string(REPLACE "@" ";" parts "${entry}")
   list(GET parts 0 args)
   list(GET parts 1 expected)
-  string(REPLACE "|" " " shown "${args}")
-  string(REPLACE "|" ";" argv "${args}")
-  execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/bad ${argv}
-                  RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(r EQUAL 0 OR NOT r MATCHES "^[0-9]+$")
-    message(FATAL_ERROR "lidr-demo ${shown}: expected a clean non-zero exit, got '${r}'\n${out}${err}")
-  endif()
-  if(NOT err MATCHES "${expected}")
-    message(FATAL_ERROR "lidr-demo ${shown}: stderr lacks '${expected}'\n${err}")
-  endif()
-  if(out MATCHES "GL: ")
-    message(FATAL_ERROR "lidr-demo ${shown}: a context was created before the error\n${out}")
-  endif()
+  expect_refused("${args}" "${expected}" NO_CONTEXT)
 endforeach()
 # An --out that cannot be a folder fails before the context, naming the option and the folder.
 execute_process(COMMAND ${DEMO} --headless --no-reference --frames 1 --out ${OUT}/a-file
