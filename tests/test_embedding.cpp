@@ -264,6 +264,30 @@ Scene litFloorScene() {
     return scene;
 }
 
+// The lit floor with its lights and shading at time 0: the frame most tests here render.
+struct LitFloorFrame {
+    Scene scene;
+    std::vector<PointLight> lights;
+    ShadingParameters shading;
+};
+
+LitFloorFrame litFloorFrame() {
+    Scene scene = litFloorScene();
+    std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    return {std::move(scene), std::move(lights), shading};
+}
+
+// A renderer of `mode` built as a program embedding lidr builds it: with no GL error pending (the test's own GL
+// calls left none), and around the constructor, which may bind what it creates, the program's GL state kept.
+std::unique_ptr<Renderer> buildKeepingState(const std::string& mode, const Scene& scene) {
+    REQUIRE(glGetError() == GL_NO_ERROR);
+    RenderModeOptions options;
+    options.mode = mode;
+    const SavedGlState keep;
+    return createRenderer(options, testGl(), scene, scene.width, scene.height);
+}
+
 }  // namespace
 
 TEST_CASE("currentContextGlInfo reads the context current on this thread", "[embed]") {
@@ -281,19 +305,11 @@ TEST_CASE("currentContextGlInfo reads the context current on this thread", "[emb
 // [desktop-state]: the caller's state set here is desktop GL's (glClearDepth, polygon mode, logic op...).
 TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed][desktop-state]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     for (const std::string& mode : renderModeNames()) {
         INFO("mode " << mode);
-        RenderModeOptions options;
-        options.mode = mode;
-        std::unique_ptr<Renderer> renderer;
+        const std::unique_ptr<Renderer> renderer = buildKeepingState(mode, scene);
         FramePresenter presenter;
-        {
-            const SavedGlState keep;  // constructors may bind what they create; the program keeps its state
-            renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
-        }
         const CallerState caller;
         const StateList before = readGlState();
         renderer->render(scene.camera, lights, shading);
@@ -315,18 +331,9 @@ TEST_CASE("every mode's render() and present() leave the caller's GL state as fo
 TEST_CASE("a frame after the caller deleted the buffer its attribute named: no GL error, the attribute as left",
           "[embed]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     const std::string mode = GENERATE(as<std::string>(), "lidr", "forward-multipass", "forward-brute");
     DYNAMIC_SECTION(mode) {
-        REQUIRE(glGetError() == GL_NO_ERROR);
-        RenderModeOptions options;
-        options.mode = mode;
-        auto build = [&] {
-            const SavedGlState keep;
-            return createRenderer(options, testGl(), scene, scene.width, scene.height);
-        };
         auto attribute = [](GLenum what) {
             GLint v = -1;
             glGetVertexAttribiv(gl::kNormal, what, &v);
@@ -337,7 +344,7 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
             glGetVertexAttribPointerv(gl::kNormal, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
             return reinterpret_cast<uintptr_t>(p);
         };
-        std::unique_ptr<Renderer> first = build();
+        std::unique_ptr<Renderer> first = buildKeepingState(mode, scene);
         {
             const float data[16] = {};
             const gl::Buffer own = gl::Buffer::create(GL_ARRAY_BUFFER, data, sizeof data);
@@ -350,7 +357,7 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
         first.reset();
         REQUIRE(attribute(GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING) == 0);
         REQUIRE(offset() == 12);
-        std::unique_ptr<Renderer> second = build();
+        const std::unique_ptr<Renderer> second = buildKeepingState(mode, scene);
         for (int frame = 0; frame < 2; ++frame) {
             INFO("frame " << frame << " of the renderer built after the deletion");
             second->render(scene.camera, lights, shading);
@@ -368,19 +375,10 @@ TEST_CASE("a frame after the caller deleted its current program: no GL error, no
     // GL keeps a program deleted while current until another replaces it; render() replaces it, so giving it
     // back would be GL_INVALID_VALUE (found when a shadow atlas was destroyed with its program current).
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     const std::string mode = GENERATE(as<std::string>(), "lidr", "forward-multipass", "forward-brute");
     DYNAMIC_SECTION(mode) {
-        REQUIRE(glGetError() == GL_NO_ERROR);
-        RenderModeOptions options;
-        options.mode = mode;
-        std::unique_ptr<Renderer> renderer;
-        {
-            const SavedGlState keep;
-            renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
-        }
+        const std::unique_ptr<Renderer> renderer = buildKeepingState(mode, scene);
         {
             const gl::Program own = gl::Program::create(
                 "caller", "#version 120\nattribute vec4 p;\nvoid main() { gl_Position = p; }\n",
@@ -575,9 +573,7 @@ TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a r
         WARN("no timer queries in this context: skipped");
         return;
     }
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     LidrOptions o;
     o.timingMethod = TimingMethod::GpuQueries;
     // The passes a frame has, from a renderer that waits for its own frame's results.
@@ -636,9 +632,7 @@ TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on wit
 
 TEST_CASE("a measuring frame counts each pass's draws, state calls and fragments", "[embed][timing]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
 
     // An application's frames (timing without waiting) never count fragments.
