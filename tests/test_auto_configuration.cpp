@@ -353,10 +353,7 @@ TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candi
 TEST_CASE("auto: a camera flying through the room, lights moving: no frame drops a light, no choice flips back "
           "the next frame", "[render][auto]") {
     testContext();
-    DefaultSceneOptions so;
-    so.width = testWidth();
-    so.height = testHeight();
-    const Scene scene = makeDefaultScene(so);
+    const Scene scene = testRoom();
     LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};

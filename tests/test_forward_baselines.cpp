@@ -98,11 +98,7 @@ TEST_CASE("multi-pass forward equals the reference within the additive 8-bit ble
 }
 
 TEST_CASE("multi-pass forward equals the reference on the default room", "[forward][slow]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    const MultipassCheck c = checkMultipass(makeDefaultScene(o), MultipassOptions{});
+    const MultipassCheck c = checkMultipass(testRoom(2.0f), MultipassOptions{});
     INFO("max error " << c.maxError << ", most lights at a pixel " << c.maxLightsAtPixel << ", PSNR " << c.error.psnr);
     REQUIRE(c.violations == 0);
     CHECK(c.error.psnr > 45.0);

@@ -135,11 +135,7 @@ TEST_CASE("bit-shift CPU model: every index in every slot decodes back, newest f
 }
 
 TEST_CASE("LIDR matches the brute-force reference on the default room wherever overlap <= budget", "[lidr][slow]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom(2.0f);
     LidrOptions options;  // the defaults: automatic budget and width, sphere test
     const RenderResult r = renderAndEvaluate(scene, options);
     requireMatchesReference(r);
@@ -152,10 +148,7 @@ TEST_CASE("LIDR matches the brute-force reference on the default room wherever o
 }
 
 TEST_CASE("LIDR matches the reference on the default room with the exact stencil volume test", "[lidr][exact]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     LidrOptions cheap, exact;
     cheap.volumeTest = VolumeTest::BackFace;
     exact.volumeTest = VolumeTest::ExactStencil;
@@ -175,10 +168,7 @@ TEST_CASE("LIDR matches the reference on the default room with the exact stencil
 }
 
 TEST_CASE("the sphere test marks exactly the lights that reach each surface point, in a few draws", "[lidr][sphere]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     LidrOptions sphere, stencil;
     sphere.volumeTest = VolumeTest::Sphere;
     sphere.transparency = stencil.transparency = false;
@@ -342,10 +332,7 @@ TEST_CASE("light volumes crossing the near and the far plane", "[lidr]") {
 }
 
 TEST_CASE("the fixed-point light table (no float textures) shades like the float one", "[lidr][light-table]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     LidrOptions fixed;
     fixed.forceFixedLightTable = true;
     // In linear steps: the bounds count the fixed table's quantisation, which the sRGB encode magnifies near

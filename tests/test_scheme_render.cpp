@@ -115,10 +115,7 @@ TEST_CASE("controlled overlap under the exact tests (stencil and sphere): every 
 }
 
 TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[render][schemes][default-room]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     const ConfigCase c = GENERATE(from_range(withVolumeTests(
         packingCases({4}, {8}), {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere})));
     DYNAMIC_SECTION(c.name) {
@@ -136,11 +133,7 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
 }
 
 TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][default-room][slow]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    Scene scene = makeDefaultScene(o);
+    Scene scene = testRoom(2.0f);
     const ConfigCase c = GENERATE(from_range(packingCases()));
     DYNAMIC_SECTION(c.name) {
         Scene s = scene;
@@ -205,12 +198,9 @@ TEST_CASE("CPU sorting, one group: under back-face the disjoint pair conflicts (
 }
 
 TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", "[cpu-sorted]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     const std::vector<PointLight> lights = scene.lightsAt(1.0f);
-    const CameraMatrices cam = cameraMatrices(scene.camera, o.width, o.height);
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
     std::vector<VolumeLight> volumes;
     for (uint32_t index : LidrRenderer::drawOrder(lights)) {
         const PointLight& l = lights[index - 1];

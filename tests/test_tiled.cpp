@@ -391,11 +391,7 @@ TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer; 
 }
 
 TEST_CASE("tiled equals the reference on the default room, with and without depth bounds", "[tiled]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom(2.0f);
     const ImageRGBA8 reference = referenceImage(scene, scene.lightsAt(scene.time), false);
     for (bool bounds : {true, false}) {
         TiledOptions t;
