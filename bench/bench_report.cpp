@@ -185,6 +185,7 @@ nlohmann::json rowJson(const Row& r) {
     if (r.autoBudget || r.autoIndexBits)
         j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
+    if (!r.multipassAccumulation.empty()) j["multipass"] = {{"accumulation", r.multipassAccumulation}};
     j["msaa"] = c.msaa;
     j["per_sample"] = c.perSample;
     j["transparency"] = c.transparency;

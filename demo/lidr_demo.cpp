@@ -259,6 +259,13 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
+    if (const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(renderer.get())) {
+        // Where its passes summed their light (doc/colour.md): half float, or the 8-bit target and why.
+        summary["multipass"] = {{"accumulation", multipass->accumulation()},
+                                {"accumulation_note", multipass->accumulationNote()}};
+        s << "multi-pass accumulation: " << multipass->accumulation()
+          << (multipass->accumulationNote().empty() ? "" : " (" + multipass->accumulationNote() + ")") << "\n";
+    }
     s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();

@@ -306,7 +306,8 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
     AutoModeRenderer renderer(testGl(), scene, o, scene.width, scene.height, ao);
     REQUIRE(renderer.candidates() == std::vector<std::string>{"lidr", "tiled", "forward-multipass"});
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255, false, 0, false);
-    // linear output: the bound counts linear 8-bit steps (multi-pass rounds each pass; doc/colour.md)
+    // linear output: the bound counts linear 8-bit steps (multi-pass in its 8-bit target, where the context has no
+    // half-float colour buffers, rounds each pass; doc/colour.md)
     const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     std::vector<PointLight> lights = scene.lightsAt(scene.time);
     reference.render(scene.camera, lights, shading);

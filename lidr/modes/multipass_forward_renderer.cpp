@@ -37,6 +37,20 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
     light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
                                  buildShaderSource("forward_light.frag", defines), geometryAttributes());
     lightDefines_ = defines;
+    if (!options.halfFloatAccumulation) {
+        accumulationNote_ = "forced (MultipassOptions::halfFloatAccumulation false)";
+    } else {
+        try {
+            halfFloat_ = HalfFloatTarget(info, targets_);
+        } catch (const UnsupportedError& e) {
+            accumulationNote_ = e.what();
+        }
+        if (halfFloat_ && targets_.samples() > 0)
+            accumulationNote_ = halfFloat_.multisampleTexture()
+                                    ? "MSAA samples encoded one by one, then averaged"
+                                    : "MSAA samples averaged in linear light, then encoded (no multisample textures "
+                                      "with sample shading, GL 3.2 + ARB_sample_shading)";
+    }
 }
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -51,13 +65,16 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
 
     growLightTable(lights.size());
     updateLights(lights, shading);
-    drawDepthPrepass(cam);
+    // Every pass draws into the half-float target where there is one, else into the 8-bit colour target; both
+    // share the one depth-stencil.
+    const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : targets_.colorPass();
+    drawDepthPrepass(cam, &sumPass);
 
     TimedPass ambientTime(timer_, "ambient");
     // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
     ShadingParameters linearShading = shading;
     linearShading.output = OutputTransform::linear();
-    beginOpaqueShading(targets_, linearShading, true);
+    beginOpaqueShading(sumPass, linearShading, true);
     StateCache& cache = StateCache::current();
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
@@ -138,12 +155,28 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     stats_.volumeDrawCalls = meshDraws_;
     cache.apply(RenderState{});
     lightPassesTime.end();
-    targets_.resolve(timer_);
     const OutputTransform& output = shading.output;
-    if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
+    if (halfFloat_ && halfFloat_.multisampleTexture()) {
+        // Each sample encoded, then the encoded samples averaged, as the single-pass modes resolve.
         TimedPass encodeTime(timer_, "output-encode");
-        outputEncode_.run(targets_, output);
+        outputEncode_.run(targets_, output, halfFloat_.multisampleTexture());
         encodeTime.end();
+        targets_.resolve(timer_);
+    } else if (halfFloat_) {
+        if (targets_.samples() > 0) {  // averaged in linear light, then encoded (doc/colour.md)
+            TimedPass msaaResolveTime(timer_, "msaa-resolve");
+            halfFloat_.resolve();
+        }
+        TimedPass encodeTime(timer_, "output-encode");  // always: it also writes the 8-bit colour target
+        outputEncode_.run(targets_, output, halfFloat_.texture());
+        encodeTime.end();
+    } else {
+        targets_.resolve(timer_);
+        if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
+            TimedPass encodeTime(timer_, "output-encode");
+            outputEncode_.run(targets_, output);
+            encodeTime.end();
+        }
     }
 
     finishFrame("MultipassForwardRenderer::render");

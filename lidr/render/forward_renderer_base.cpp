@@ -35,9 +35,12 @@ void ForwardRendererBase::updateLights(const std::vector<PointLight>& lights, co
     lightTableTime.end();
 }
 
-void ForwardRendererBase::drawDepthPrepass(const CameraMatrices& camera) {
+void ForwardRendererBase::drawDepthPrepass(const CameraMatrices& camera, const PassDescription* pass) {
     TimedPass depthPrepassTime(timer_, "depth-prepass");
-    targets_.bindColor();  // the MSAA target when multisampled
+    if (pass)
+        StateCache::current().beginPass(*pass);
+    else
+        targets_.bindColor();  // the MSAA target when multisampled
     depthPrepass_.run(scene_, camera);
     depthPrepassTime.end();
 }

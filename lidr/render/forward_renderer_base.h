@@ -72,9 +72,10 @@ protected:
     // The frame's shadow maps (drawShadowMaps: the timed "shadow-maps" pass where shadows are on), then the light
     // table with the lights' atlas tiles (the "light-table" pass).
     void updateLights(const std::vector<PointLight>& lights, const ShadingParameters& shading);
-    // The depth pre-pass into targets_'s colour pass (the "depth-prepass" pass): the depth shading then tests
-    // EQUAL, so each pixel is shaded once.
-    void drawDepthPrepass(const CameraMatrices& camera);
+    // The depth pre-pass into targets_'s colour pass, or into `pass` where given (a mode that shades into a target
+    // of its own sharing targets_' depth), as the "depth-prepass" pass: the depth shading then tests EQUAL, so each
+    // pixel is shaded once.
+    void drawDepthPrepass(const CameraMatrices& camera, const PassDescription* pass = nullptr);
     // The end of render() once the passes are drawn and targets_ resolved: the default framebuffer bound, GL
     // errors checked (lidr::Error naming `where`), the passes' times collected into stats_.
     void finishFrame(const char* where);
