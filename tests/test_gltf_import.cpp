@@ -161,6 +161,52 @@ TEST_CASE("glTF: KHR_lights_punctual point lights, range -> radius; spot and dir
     CHECK(scene.warnings.empty());
 }
 
+TEST_CASE("glTF: every number of a light (and of nodes, materials, cameras) must stay finite as a float",
+          "[gltf][cpu][bad-input]") {
+    // JSON cannot write infinity, but 1e39 is a finite double that becomes +inf as the float lidr keeps: it was
+    // read as an infinitely bright light. Each is refused before anything is built, with its JSON pointer.
+    TempDir dir;
+    struct Case {
+        const char* what;
+        const char* pointer;  // where 1e39 goes (a vector component: the vector's other values are valid)
+        Json light;           // light 0
+    };
+    const Json point = {{"type", "point"}, {"range", 5.0}};
+    const Json spot = {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.1}, {"outerConeAngle", 0.5}}}};
+    const std::vector<Case> cases = {
+        {"intensity", "/extensions/KHR_lights_punctual/lights/0/intensity", point},
+        {"colour", "/extensions/KHR_lights_punctual/lights/0/color/2", point},
+        {"range", "/extensions/KHR_lights_punctual/lights/0/range", point},
+        {"inner cone", "/extensions/KHR_lights_punctual/lights/0/spot/innerConeAngle", spot},
+        {"outer cone", "/extensions/KHR_lights_punctual/lights/0/spot/outerConeAngle", spot},
+        {"node translation", "/nodes/1/translation/0", point},
+        {"node scale", "/nodes/1/scale/1", point},
+        {"camera zfar", "/cameras/0/perspective/zfar", point},
+        {"roughness", "/materials/0/pbrMetallicRoughness/roughnessFactor", point},
+    };
+    for (const Case& c : cases) {
+        DYNAMIC_SECTION(c.what) {
+            GltfFile file = oneTriangle();
+            file.doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+            file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {c.light};
+            file.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1.0, 1.0, 1.0};
+            file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 50}}}}};
+            file.doc["materials"] = {{{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2}}}}}}};
+            file.doc["meshes"][0]["primitives"][0]["material"] = 0;
+            file.node({{"mesh", 0}, {"camera", 0}}, true);
+            file.node({{"translation", {0, 1, 1}}, {"scale", {1, 1, 1}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                      true);
+            REQUIRE_NOTHROW(lidr::loadScene(file.writeGltf(dir, "valid.gltf")));  // the file without the 1e39 loads
+            file.doc[Json::json_pointer(c.pointer)] = 1e39;
+            REQUIRE_THROWS_WITH(lidr::loadScene(file.writeGltf(dir, "huge.gltf")),
+                                Contains("huge.gltf: " + std::string(c.pointer) + ": 1e+39 is not finite as a 32-bit float"));
+            file.doc[Json::json_pointer(c.pointer)] = -1e39;
+            REQUIRE_THROWS_WITH(lidr::loadScene(file.writeGltf(dir, "huge.gltf")),
+                                Contains(std::string(c.pointer) + ": -1e+39 is not finite as a 32-bit float"));
+        }
+    }
+}
+
 TEST_CASE("glTF: directional lights past the forward shaders' 4, or with no direction, are left out with a warning",
           "[gltf][cpu]") {
     TempDir dir;

@@ -558,6 +558,48 @@ def build():
     c.error("light-node-light-missing", mutate(lit, lambda d: set_at(d, "/nodes/1/extensions/KHR_lights_punctual", {})),
             "/nodes/1/extensions/KHR_lights_punctual/light: required property missing")
 
+    # ---- numbers past the float range: JSON has no infinity, but 1e39 is a finite double that becomes +inf as a
+    # float; every number lidr reads is refused with its pointer (1e400 does not even parse) -------------------
+    F = "is not finite as a 32-bit float"
+    for name, base, pointer in [
+            ("light-intensity", lit, L + "/intensity"), ("light-color", lit, L + "/color/1"),
+            ("light-range", lit, L + "/range"),
+            ("light-spot-inner", lambda: mutate(lit, lambda d: set_at(d, L, {"type": "spot", "spot": {"outerConeAngle": 0.5}})),
+             L + "/spot/innerConeAngle"),
+            ("light-spot-outer", lambda: mutate(lit, lambda d: set_at(d, L, {"type": "spot", "spot": {}})), L + "/spot/outerConeAngle"),
+            ("node-translation", triangle, "/nodes/0/translation/2"), ("node-scale", triangle, "/nodes/0/scale/0"),
+            ("node-rotation", triangle, "/nodes/0/rotation/3"), ("node-matrix", triangle, "/nodes/0/matrix/12"),
+            ("camera-yfov", full, "/cameras/0/perspective/yfov"), ("camera-zfar", full, "/cameras/0/perspective/zfar"),
+            ("camera-aspect", full, "/cameras/0/perspective/aspectRatio"),
+            ("material-basecolor", textured, "/materials/0/pbrMetallicRoughness/baseColorFactor/0"),
+            ("material-metallic", textured, "/materials/0/pbrMetallicRoughness/metallicFactor"),
+            ("material-alphacutoff", textured, "/materials/0/alphaCutoff"),
+            ("accessor-max", triangle, "/accessors/0/max/1")]:
+        def change(d, pointer=pointer):
+            keys = pointer.strip("/").split("/")
+            if keys[-1].isdigit():  # a vector: give it its length, one component 1e39
+                length = {"translation": 3, "scale": 3, "rotation": 4, "matrix": 16, "baseColorFactor": 4, "color": 3,
+                          "max": 3}[keys[-2]]
+                vector = {"rotation": [0, 0, 0, 1], "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}.get(
+                    keys[-2], [1] * length)
+                vector[int(keys[-1])] = 1e39
+                set_at(d, "/" + "/".join(keys[:-1]), vector)
+            else:
+                set_at(d, pointer, 1e39)
+        c.error("float-range-" + name, mutate(base, change), pointer + ": 1e+39 " + F)
+    c.error("float-range-light-intensity-negative", mutate(lit, lambda d: set_at(d, L + "/intensity", -1e39)),
+            L + "/intensity: -1e+39 " + F)
+    c.error("float-range-json-1e400", mutate(lit, lambda d: set_at(d, L + "/intensity", 1)), "/: malformed JSON: number overflow",
+            raw=json.dumps(lit()).replace('"intensity": 1', '"intensity": 1e400').encode())
+    c.error("light-range-past-limit", mutate(lit, lambda d: set_at(d, L + "/range", 1e20)),
+            L + "/range: must be at most 1e+18 (lidr's largest light radius), got 1e+20")
+    # Rules on the floats lidr keeps: a znear that is 0 as a float, a zfar that rounds to znear.
+    c.error("camera-znear-underflow", mutate(full, lambda d: set_at(d, "/cameras/0/perspective/znear", 1e-50)),
+            "/cameras/0/perspective/znear: must be > 0, got 1e-50")
+    c.error("camera-zfar-rounds-to-znear", mutate(full, lambda d: (set_at(d, "/cameras/0/perspective/znear", 1),
+                                                                  set_at(d, "/cameras/0/perspective/zfar", 1.00000001))),
+            "/cameras/0/perspective/zfar: must be > znear (1)")
+
     # ---- materials, textures, samplers, images ----------------------------------------------------------------
     M = "/materials/0"
     c.error("material-alphamode-bad", mutate(textured, lambda d: set_at(d, M + "/alphaMode", "blend")),
@@ -573,6 +615,10 @@ def build():
             M + "/pbrMetallicRoughness/roughnessFactor: must be in [0, 1]")
     c.error("material-emissive-negative", mutate(textured, lambda d: set_at(d, M + "/emissiveFactor", [0, -1, 0])),
             M + "/emissiveFactor/1: must be in [0, 1]")
+    c.error("material-occlusion-strength-over-1", mutate(textured, lambda d: set_at(d, M + "/occlusionTexture", {"index": 0, "strength": 2})),
+            M + "/occlusionTexture/strength: must be in [0, 1], got 2")
+    c.error("material-normal-scale-1e39", mutate(textured, lambda d: set_at(d, M + "/normalTexture", {"index": 0, "scale": -1e39})),
+            M + "/normalTexture/scale: -1e+39 is not finite as a 32-bit float")
     c.error("material-texcoord-negative", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture/texCoord", -1)),
             M + "/pbrMetallicRoughness/baseColorTexture/texCoord: must be >= 0")
     c.error("material-textureinfo-no-index", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture", {})),

@@ -92,7 +92,14 @@ void Validator::checkMaterials() {
             textureInfo(*pbr, where, "metallicRoughnessTexture");
         }
         textureInfo(material, at, "normalTexture");
+        if (const Json* normal = member(material, at, "normalTexture", Kind::Object))
+            number(*normal, at + "/normalTexture", "scale", 1);  // any finite float
         textureInfo(material, at, "occlusionTexture");
+        if (const Json* occlusion = member(material, at, "occlusionTexture", Kind::Object)) {
+            const double strength = number(*occlusion, at + "/occlusionTexture", "strength", 1);
+            if (!(strength >= 0 && strength <= 1))
+                fail(at + "/occlusionTexture/strength", "must be in [0, 1], got " + str(strength));
+        }
         textureInfo(material, at, "emissiveTexture");
         inRange(numbers(material, at, "emissiveFactor", 3), at + "/emissiveFactor", 0, 1);
         if (const Json* mode = member(material, at, "alphaMode", Kind::String)) {

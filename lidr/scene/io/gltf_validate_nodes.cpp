@@ -11,6 +11,8 @@
 namespace lidr::gltf_validation {
 
 void Validator::checkCameras() {
+    // Every number is a finite float (number()); the rules hold for the floats lidr keeps, so a znear of 1e-50
+    // (0 as a float) or a zfar that rounds to znear is refused here rather than as a bad camera later.
     forEach("cameras", [&](const Json& camera, const std::string& at, size_t) {
         const std::string type = member(camera, at, "type", Kind::String, true)->get<std::string>();
         if (type == "perspective") {
@@ -18,23 +20,24 @@ void Validator::checkCameras() {
             const std::string where = at + "/perspective";
             member(*p, where, "yfov", Kind::Number, true);
             member(*p, where, "znear", Kind::Number, true);
-            const double yfov = number(*p, where, "yfov", 0);
-            if (!(yfov > 0 && yfov < 3.14159265358979))
+            const float yfov = float(number(*p, where, "yfov", 0));
+            if (!(yfov > 0 && yfov < 3.14159265358979f))
                 fail(where + "/yfov", "must be in (0, pi) radians, got " + str(yfov));
-            const double znear = number(*p, where, "znear", 0);
-            if (!(znear > 0)) fail(where + "/znear", "must be > 0, got " + str(znear));
-            if (p->contains("zfar") && !(number(*p, where, "zfar", 0) > znear))
+            const float znear = float(number(*p, where, "znear", 0));
+            if (!(znear > 0)) fail(where + "/znear", "must be > 0, got " + str(number(*p, where, "znear", 0)));
+            if (p->contains("zfar") && !(float(number(*p, where, "zfar", 0)) > znear))
                 fail(where + "/zfar", "must be > znear (" + str(znear) + ")");
-            if (p->contains("aspectRatio") && !(number(*p, where, "aspectRatio", 1) > 0))
+            if (p->contains("aspectRatio") && !(float(number(*p, where, "aspectRatio", 1)) > 0))
                 fail(where + "/aspectRatio", "must be > 0");
         } else if (type == "orthographic") {
             const Json* o = member(camera, at, "orthographic", Kind::Object, true);
             const std::string where = at + "/orthographic";
             for (const char* key : {"xmag", "ymag", "znear", "zfar"}) member(*o, where, key, Kind::Number, true);
-            if (number(*o, where, "xmag", 0) == 0 || number(*o, where, "ymag", 0) == 0)
+            if (float(number(*o, where, "xmag", 0)) == 0 || float(number(*o, where, "ymag", 0)) == 0)
                 fail(where, "xmag and ymag must not be 0");
-            if (!(number(*o, where, "znear", 0) >= 0)) fail(where + "/znear", "must be >= 0");
-            if (!(number(*o, where, "zfar", 0) > number(*o, where, "znear", 0))) fail(where + "/zfar", "must be > znear");
+            const float znear = float(number(*o, where, "znear", 0));
+            if (!(znear >= 0)) fail(where + "/znear", "must be >= 0");
+            if (!(float(number(*o, where, "zfar", 0)) > znear)) fail(where + "/zfar", "must be > znear");
         } else {
             fail(at + "/type", "'" + clipped(type) + "' is not perspective or orthographic");
         }
@@ -59,8 +62,13 @@ void Validator::checkLights() {
         inRange(numbers(light, where, "color", 3), where + "/color", 0, 1);
         const double intensity = number(light, where, "intensity", 1);
         if (!(intensity >= 0 && std::isfinite(intensity))) fail(where + "/intensity", "must be >= 0, got " + str(intensity));
-        if (light.contains("range") && !(number(light, where, "range", 0) > 0))
-            fail(where + "/range", "must be > 0, got " + str(number(light, where, "range", 0)));
+        if (light.contains("range")) {
+            const double range = number(light, where, "range", 0);
+            if (!(float(range) > 0)) fail(where + "/range", "must be > 0, got " + str(range));
+            if (range > double(maxLightRadius))
+                fail(where + "/range", "must be at most " + str(double(maxLightRadius)) + " (lidr's largest light radius), got " +
+                                           str(range));
+        }
         if (type == "spot") {
             const Json* spot = member(light, where, "spot", Kind::Object, true);
             const double inner = number(*spot, where + "/spot", "innerConeAngle", 0);

@@ -2,7 +2,9 @@
 // checks themselves are in gltf_validate_*.cpp, one file per glTF section (gltf_validator_internal.h lists them).
 #include "lidr/scene/io/gltf_validator.h"
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
@@ -145,9 +147,20 @@ const Json* Validator::member(const Json& object, const std::string& at, const c
     return &*it;
 }
 
+double Validator::floatNumber(const Json& value, const std::string& at) const {
+    expect(value, at, Kind::Number);
+    const double d = value.get<double>();
+    // JSON has no infinity, but 1e39 is a finite double that becomes +inf as the float lidr keeps (and tinygltf's
+    // nlohmann refuses 1e400 while parsing): every number the importer reads is held to the float range here.
+    if (!(std::abs(d) <= double(std::numeric_limits<float>::max())))
+        fail(at, str(d) + " is not finite as a 32-bit float (lidr keeps glTF's numbers as floats; at most " +
+                     str(double(std::numeric_limits<float>::max())) + " in magnitude)");
+    return d;
+}
+
 double Validator::number(const Json& object, const std::string& at, const char* key, double fallback) const {
     const Json* value = member(object, at, key, Kind::Number);
-    return value ? value->get<double>() : fallback;
+    return value ? floatNumber(*value, at + "/" + key) : fallback;
 }
 
 int64_t Validator::integer(const Json& object, const std::string& at, const char* key, int64_t fallback, bool required) const {
@@ -188,8 +201,7 @@ std::vector<double> Validator::numbers(const Json& object, const std::string& at
         fail(at + "/" + key, "must have " + std::to_string(size) + " numbers, got " + std::to_string(array->size()));
     std::vector<double> out;
     for (size_t i = 0; i < size; ++i) {
-        expect((*array)[i], at + "/" + key + "/" + std::to_string(i), Kind::Number);
-        out.push_back((*array)[i].get<double>());
+        out.push_back(floatNumber((*array)[i], at + "/" + key + "/" + std::to_string(i)));
     }
     return out;
 }

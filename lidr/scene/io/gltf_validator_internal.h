@@ -41,13 +41,16 @@ private:
     void expect(const Json& value, const std::string& at, Kind kind) const;
     // The member `key` of `object` (at `at`) checked to be of `kind`, or null where it is absent.
     const Json* member(const Json& object, const std::string& at, const char* key, Kind kind, bool required = false) const;
+    // A JSON number (at `at`) that stays finite as a float: glTF's numbers are read into floats.
+    double floatNumber(const Json& value, const std::string& at) const;
+    // The number `key` of `object` (a finite float), or `fallback` where it is absent.
     double number(const Json& object, const std::string& at, const char* key, double fallback) const;
     int64_t integer(const Json& object, const std::string& at, const char* key, int64_t fallback, bool required = false) const;
     size_t count(const char* array) const;
     // An index into the top-level array `target` (or `size` entries named `what`); -1 where absent.
     int64_t indexAt(const Json& value, const std::string& at, size_t size, const char* what) const;
     int64_t index(const Json& object, const std::string& at, const char* key, const char* target, bool required = false) const;
-    // The numbers of a fixed-size array property; empty where absent.
+    // The numbers of a fixed-size array property (each a finite float); empty where absent.
     std::vector<double> numbers(const Json& object, const std::string& at, const char* key, size_t size) const;
     void inRange(const std::vector<double>& values, const std::string& at, double low, double high) const;
 
