@@ -183,6 +183,7 @@ TEST_CASE("glTF: every number of a light (and of nodes, materials, cameras) must
         {"node scale", "/nodes/1/scale/1", point},
         {"camera zfar", "/cameras/0/perspective/zfar", point},
         {"roughness", "/materials/0/pbrMetallicRoughness/roughnessFactor", point},
+        {"emissive strength", "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength", point},
     };
     for (const Case& c : cases) {
         DYNAMIC_SECTION(c.what) {

@@ -619,6 +619,16 @@ def build():
             M + "/occlusionTexture/strength: must be in [0, 1], got 2")
     c.error("material-normal-scale-1e39", mutate(textured, lambda d: set_at(d, M + "/normalTexture", {"index": 0, "scale": -1e39})),
             M + "/normalTexture/scale: -1e+39 is not finite as a 32-bit float")
+    ES = M + "/extensions/KHR_materials_emissive_strength"
+    emissive_strength = lambda value: mutate(textured, lambda d: (
+        set_at(d, "/extensionsUsed", ["KHR_materials_emissive_strength"]), set_at(d, M + "/emissiveFactor", [1, 0.5, 0]),
+        set_at(d, M + "/extensions", {"KHR_materials_emissive_strength": {"emissiveStrength": value}})))
+    ok("valid-emissive-strength", emissive_strength(40))
+    c.error("material-emissive-strength-negative", emissive_strength(-1), ES + "/emissiveStrength: must be >= 0, got -1")
+    c.error("material-emissive-strength-1e39", emissive_strength(1e39), ES + "/emissiveStrength: 1e+39 is not finite as a 32-bit float")
+    c.error("material-emissive-strength-string", emissive_strength("2"), ES + "/emissiveStrength: must be a number, got string")
+    c.error("material-emissive-strength-not-object", mutate(textured, lambda d: set_at(d, M + "/extensions", {
+        "KHR_materials_emissive_strength": 2})), ES + ": must be an object, got number")
     c.error("material-texcoord-negative", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture/texCoord", -1)),
             M + "/pbrMetallicRoughness/baseColorTexture/texCoord: must be >= 0")
     c.error("material-textureinfo-no-index", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture", {})),

@@ -581,16 +581,15 @@ private:
             warn(what + ": sampler's nearest filtering is drawn trilinear");
     }
 
-    // KHR_materials_emissive_strength: the emissive factor times emissiveStrength (>= 0).
-    void readEmissiveStrength(const tinygltf::Material& source, const std::string& name, Material& material) {
+    // KHR_materials_emissive_strength: the emissive factor times emissiveStrength (the validator held it to a
+    // float >= 0; the factor is at most 1, so the product stays finite). The shared shading adds the emission in
+    // every mode (shading.glsl, lidrAmbient), unclamped, in linear light.
+    void readEmissiveStrength(const tinygltf::Material& source, Material& material) {
         const auto it = source.extensions.find("KHR_materials_emissive_strength");
         if (it == source.extensions.end()) return;
         const tinygltf::Value& strength = it->second.Get("emissiveStrength");
         if (!strength.IsNumber() && !strength.IsInt()) return;  // the extension's default, 1
-        const double v = strength.GetNumberAsDouble();
-        if (!(std::isfinite(v) && v >= 0.0))
-            fail(name + ": KHR_materials_emissive_strength emissiveStrength must be finite and >= 0, got " + std::to_string(v));
-        material.emissive *= float(v);
+        material.emissive *= float(strength.GetNumberAsDouble());
     }
 
     int materialFor(int gltfMaterial) {
@@ -632,7 +631,7 @@ private:
             material.alphaCutoff = base.a > 0.0f ? std::min(cutoff / base.a, 2.0f) : (cutoff > 0.0f ? 2.0f : 0.0f);
         }
         material.doubleSided = source.doubleSided;
-        readEmissiveStrength(source, name, material);
+        readEmissiveStrength(source, material);
         // Every texture is read per pixel by the material's shader variant (lidr/render/material_variants.h).
         if (source.emissiveTexture.index >= 0)
             material.emissiveTexture = readTexture(source.emissiveTexture.index, source.emissiveTexture.texCoord,

@@ -109,7 +109,20 @@ void Validator::checkMaterials() {
         }
         if (number(material, at, "alphaCutoff", 0.5) < 0) fail(at + "/alphaCutoff", "must be >= 0");
         member(material, at, "doubleSided", Kind::Boolean);
+        checkMaterialExtensions(material, at);
     });
+}
+
+// The material extensions lidr reads (gltf_validate_document.cpp's list), by the rules of their schemas.
+void Validator::checkMaterialExtensions(const Json& material, const std::string& at) const {
+    const Json* extensions = member(material, at, "extensions", Kind::Object);
+    if (!extensions) return;
+    const std::string where = at + "/extensions";
+    if (const Json* e = member(*extensions, where, "KHR_materials_emissive_strength", Kind::Object)) {
+        const std::string w = where + "/KHR_materials_emissive_strength";
+        const double strength = number(*e, w, "emissiveStrength", 1);
+        if (!(strength >= 0)) fail(w + "/emissiveStrength", "must be >= 0, got " + str(strength));
+    }
 }
 
 }  // namespace lidr::gltf_validation

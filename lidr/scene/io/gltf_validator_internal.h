@@ -123,6 +123,7 @@ private:
     void checkSamplersAndTextures();
     void textureInfo(const Json& object, const std::string& at, const char* key) const;
     void checkMaterials();
+    void checkMaterialExtensions(const Json& material, const std::string& at) const;
 
     // ---- cameras, lights, meshes, skins, nodes, scenes, animations (gltf_validate_nodes.cpp) ----------------
 
