@@ -630,6 +630,44 @@ TEST_CASE("glTF: KHR_texture_transform in lidr's texture space; required extensi
             CHECK(glm::length(got - expected) < 1e-5f);
         }
     }
+    // Every texture slot lidr reads takes its own transform and set (a different transform each here).
+    const std::vector<std::pair<std::string, std::string>> slots = {
+        {"/pbrMetallicRoughness/baseColorTexture", "base colour"},
+        {"/pbrMetallicRoughness/metallicRoughnessTexture", "metallic-roughness"},
+        {"/normalTexture", "normal"}, {"/occlusionTexture", "occlusion"}, {"/emissiveTexture", "emissive"}};
+    file.doc["materials"] = {Json::object()};
+    for (size_t k = 0; k < slots.size(); ++k) {
+        const Json t = {{"offset", {0.25 * double(k), -0.5}}, {"rotation", 0.3 * double(k + 1)},
+                        {"scale", {1.0 + double(k), 2.0}}, {"texCoord", int(k % 2)}};
+        file.doc["materials"][0][Json::json_pointer(slots[k].first)] = {
+            {"index", 0}, {"texCoord", 1 - int(k % 2)}, {"extensions", {{"KHR_texture_transform", t}}}};
+    }
+    file.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    file.doc.erase("extensionsRequired");
+    {
+        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "slots.gltf"));
+        const lidr::Material& m = scene.materials[size_t(scene.meshes[0].material)];
+        const lidr::TextureMapping* mappings[] = {&m.diffuseMapping, &m.metallicRoughnessTexture.mapping,
+                                                  &m.normalTexture.mapping, &m.occlusionTexture.mapping,
+                                                  &m.emissiveTexture.mapping};
+        for (size_t k = 0; k < slots.size(); ++k) {
+            INFO(slots[k].second);
+            CHECK(mappings[k]->texCoord == int(k % 2));  // the override, not the texture info's own set
+            const double offsetU = 0.25 * double(k), offsetV = -0.5, angle = 0.3 * double(k + 1);
+            const double scaleU = 1.0 + double(k), scaleV = 2.0;
+            for (const glm::dvec2 uv : {glm::dvec2(0.0), glm::dvec2(1.0, 0.0), glm::dvec2(0.3, 0.7)}) {
+                // The extension's formula in glTF's space: translation x rotation x scale, counter-clockwise.
+                const glm::dvec2 scaled(uv.x * scaleU, uv.y * scaleV);
+                const glm::dvec2 expected(std::cos(angle) * scaled.x + std::sin(angle) * scaled.y + offsetU,
+                                          -std::sin(angle) * scaled.x + std::cos(angle) * scaled.y + offsetV);
+                const glm::vec3 out = mappings[k]->transform * glm::vec3(float(uv.x), 1.0f - float(uv.y), 1.0f);
+                const glm::dvec2 got(out.x, 1.0 - out.y);
+                INFO("(" << uv.x << ", " << uv.y << ") -> (" << got.x << ", " << got.y << "), expected (" << expected.x
+                         << ", " << expected.y << ")");
+                CHECK(glm::length(got - expected) < 1e-5);
+            }
+        }
+    }
     file.doc["extensionsUsed"] = {"KHR_texture_transform", "EXT_unknown_thing"};
     file.doc["extensionsRequired"] = {"KHR_texture_transform", "EXT_unknown_thing"};
     REQUIRE_THROWS_WITH(lidr::loadScene(file.writeGltf(dir, "unknown.gltf")),

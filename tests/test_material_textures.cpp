@@ -2,7 +2,9 @@
 // every mode; pixels checked against the CPU model of the BRDF (lidr/eval/brdf.h) with the texel the pixel
 // reads, and every mode against the brute-force reference.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include <catch2/catch.hpp>
@@ -117,7 +119,141 @@ long forBand(const Scene& scene, const ImageFloat& depth, double lo, double hi, 
     return count;
 }
 
+// A 4 x 4 texture of four 2 x 2 quadrants, in image order (rows top to bottom): top left, top right, bottom left,
+// bottom right.
+ImageRGBA8 quadrants(const std::array<glm::u8vec4, 4>& colours) {
+    ImageRGBA8 image(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            for (int c = 0; c < 4; ++c) image.pixels[size_t(4 * (4 * y + x) + c)] = colours[size_t(2 * (y / 2) + x / 2)][c];
+    return image;
+}
+
+// The quadrant whose colour a bilinear, REPEAT lookup of quadrants() at glTF's (u, v) (v down the image) gives
+// alone, or -1 where the lookup mixes two quadrants: per axis, both texels it blends lie in one half.
+int cleanQuadrant(const glm::dvec2& uv) {
+    int half[2];
+    for (int a = 0; a < 2; ++a) {
+        const double t = uv[a] * 4.0 - 0.5;  // texel centres at 0.5, 1.5, ...
+        const int i0 = ((int(std::floor(t)) % 4) + 4) % 4, i1 = (i0 + 1) % 4;
+        if (i0 / 2 != i1 / 2) return -1;
+        half[a] = i0 / 2;
+    }
+    return 2 * half[1] + half[0];
+}
+
+// KHR_texture_transform's formula in glTF's texture space (the extension's text, not lidr's matrix):
+// translation x rotation x scale, rotating counter-clockwise by `rotation` (v points down).
+glm::dvec2 gltfTextureTransform(const glm::dvec2& uv, const glm::dvec2& offset, double rotation, const glm::dvec2& scale) {
+    const glm::dvec2 s = uv * scale;
+    return offset + glm::dvec2(std::cos(rotation) * s.x + std::sin(rotation) * s.y,
+                               -std::sin(rotation) * s.x + std::cos(rotation) * s.y);
+}
+
+// What a slot's texel does to the surface the CPU model shades: base colour (sRGB), emission (sRGB), roughness
+// and metallic (G, B), occlusion (R); the factors are 1 (emission: `emissive`).
+struct TexelEffect {
+    BrdfSurface surface;
+    glm::dvec3 emission{0.0};
+    double occlusion = 1.0;
+};
+TexelEffect texelEffect(const std::string& slot, const glm::u8vec4& texel, const glm::dvec3& emissive) {
+    TexelEffect e;
+    e.surface.baseColor = glm::dvec3(0.5), e.surface.metallic = 0.0, e.surface.roughness = 0.6;
+    const glm::dvec3 decoded(srgbToLinear(texel.r / 255.0), srgbToLinear(texel.g / 255.0), srgbToLinear(texel.b / 255.0));
+    if (slot == "base colour") e.surface.baseColor = decoded;
+    if (slot == "emissive") e.emission = emissive * decoded;
+    if (slot == "metallic-roughness") e.surface.roughness = texel.g / 255.0, e.surface.metallic = texel.b / 255.0;
+    if (slot == "occlusion") e.occlusion = texel.r / 255.0;
+    return e;
+}
+
+// The glTF material JSON of texelEffect's slot reading texture 0 through `transform` (KHR_texture_transform).
+Json transformedSlotMaterial(const std::string& slot, const Json& transform, const glm::dvec3& emissive) {
+    Json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"metallicFactor", 0.0},
+                                               {"roughnessFactor", 0.6}}}};
+    const Json info = {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}};
+    if (slot == "base colour") {
+        material["pbrMetallicRoughness"]["baseColorFactor"] = {1, 1, 1, 1};
+        material["pbrMetallicRoughness"]["baseColorTexture"] = info;
+    } else if (slot == "emissive") {
+        material["emissiveFactor"] = {emissive.r, emissive.g, emissive.b};
+        material["emissiveTexture"] = info;
+    } else if (slot == "metallic-roughness") {
+        material["pbrMetallicRoughness"]["metallicFactor"] = 1.0;
+        material["pbrMetallicRoughness"]["roughnessFactor"] = 1.0;
+        material["pbrMetallicRoughness"]["metallicRoughnessTexture"] = info;
+    } else {
+        material["occlusionTexture"] = info;
+    }
+    return material;
+}
+
+// Every pixel of the quad whose transformed lookup lies in one quadrant, against the CPU model of that texel, and
+// every mode against the reference. The quad reads TEXCOORD_1 = (1 - u, (1 + v) / 2) through the transform's
+// texCoord override (the texture info itself names set 0).
+void checkTransformedSlot(const std::string& slot, const Json& extraMaterial = Json::object(),
+                          const std::function<void(BrdfSurface&)>& extraSurface = {}) {
+    TempDir dir;
+    const std::array<glm::u8vec4, 4> colours = {glm::u8vec4(255, 64, 0, 255), glm::u8vec4(0, 128, 255, 255),
+                                                glm::u8vec4(32, 200, 64, 255), glm::u8vec4(220, 220, 120, 255)};
+    const glm::dvec2 offset(0.3, -0.2), scale(1.7, 1.3);
+    const double rotation = 0.7;
+    const Json transform = {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}},
+                            {"texCoord", 1}};
+    const glm::dvec3 emissive(0.5, 1.0, 0.25);
+    Json material = transformedSlotMaterial(slot, transform, emissive);
+    material.merge_patch(extraMaterial);
+    Json extra = Json::object();
+    extra["TEXCOORD_1"] = std::vector<float>{1, 1, 0, 1, 0, 0.5f, 1, 0.5f};  // (1 - u, (1 + v) / 2) of TEXCOORD_0
+    Scene scene = quadScene(dir, material, {quadrants(colours)}, false, extra);
+    if (slot == "occlusion") scene.ambient = glm::vec3(0.8f);
+    ImageFloat depth;
+    const ImageRGBA8 reference = render(scene, "forward-brute", &depth);
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    long count = 0, within = 0, perQuadrant[4] = {0, 0, 0, 0};
+    int worst = 0;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const float d = depth.at(x, y);
+            if (d >= 1.0f) continue;
+            const glm::vec3 p = unprojectPixel(cam, x, y, d);
+            const glm::dvec2 uv0((p.x + 1.0) / 2.0, (1.0 - p.y) / 2.0);  // glTF's TEXCOORD_0 (v down)
+            if (uv0.x < 0.02 || uv0.x > 0.98 || uv0.y < 0.02 || uv0.y > 0.98) continue;
+            const glm::dvec2 uv1(1.0 - uv0.x, 0.5 + 0.5 * uv0.y);
+            const int quadrant = cleanQuadrant(gltfTextureTransform(uv1, offset, rotation, scale));
+            if (quadrant < 0) continue;
+            TexelEffect e = texelEffect(slot, colours[size_t(quadrant)], emissive);
+            if (extraSurface) extraSurface(e.surface);
+            e.surface.position = glm::dvec3(p);
+            e.surface.normal = glm::dvec3(0, 0, 1);
+            e.surface.toEye = glm::normalize(glm::dvec3(scene.camera.position) - e.surface.position);
+            const int error = stepsApart(reference.at(x, y), expectedPixel(e.surface, scene, e.emission, e.occlusion));
+            worst = std::max(worst, error);
+            within += error <= 1;
+            ++count, ++perQuadrant[quadrant];
+        }
+    INFO(slot << ": " << count << " pixels, " << within << " within 1 step, worst " << worst << "; per quadrant "
+              << perQuadrant[0] << " " << perQuadrant[1] << " " << perQuadrant[2] << " " << perQuadrant[3]);
+    REQUIRE(count > 500);
+    for (long q : perQuadrant) CHECK(q > 20);  // the transform reaches every quadrant: offset, rotation and scale all act
+    CHECK(within >= count * 99 / 100);
+    CHECK(worst <= 3);
+    for (const std::string& mode : testedModes()) {
+        if (mode == "forward-brute") continue;
+        INFO(mode);
+        CHECK(render(scene, mode).pixels == reference.pixels);
+    }
+}
+
 }  // namespace
+
+TEST_CASE("KHR_texture_transform: each slot's texture through offset, rotation, scale and texCoord, against a CPU "
+          "lookup", "[material-textures][slow]") {
+    testContext();
+    const std::string slot = GENERATE(as<std::string>(), "base colour", "emissive", "metallic-roughness", "occlusion");
+    DYNAMIC_SECTION(slot) { checkTransformedSlot(slot); }
+}
 
 TEST_CASE("material textures: each texture per pixel against the BRDF model, every mode as the reference",
           "[material-textures]") {

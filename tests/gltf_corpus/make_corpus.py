@@ -629,6 +629,25 @@ def build():
     c.error("material-emissive-strength-string", emissive_strength("2"), ES + "/emissiveStrength: must be a number, got string")
     c.error("material-emissive-strength-not-object", mutate(textured, lambda d: set_at(d, M + "/extensions", {
         "KHR_materials_emissive_strength": 2})), ES + ": must be an object, got number")
+    TT = M + "/pbrMetallicRoughness/baseColorTexture/extensions/KHR_texture_transform"
+    transform = lambda t: mutate(textured, lambda d: (set_at(d, "/extensionsUsed", ["KHR_texture_transform"]), set_at(
+        d, M + "/pbrMetallicRoughness/baseColorTexture/extensions", {"KHR_texture_transform": t})))
+    ok("valid-texture-transform", transform({"offset": [0.5, -2], "rotation": -7.5, "scale": [-1, 3], "texCoord": 0}))
+    c.add("warn-texture-transform-texcoord-2", transform({"texCoord": 2}), "warning",
+          "uses TEXCOORD_2; lidr reads TEXCOORD_0 and TEXCOORD_1, drawn with TEXCOORD_0")
+    c.error("texture-transform-offset-1", transform({"offset": [1]}), TT + "/offset: must have 2 numbers, got 1")
+    c.error("texture-transform-scale-string", transform({"scale": [1, "2"]}), TT + "/scale/1: must be a number, got string")
+    c.error("texture-transform-rotation-1e39", transform({"rotation": 1e39}), TT + "/rotation: 1e+39 is not finite as a 32-bit float")
+    c.error("texture-transform-scale-1e39", transform({"scale": [1, -1e39]}), TT + "/scale/1: -1e+39 is not finite as a 32-bit float")
+    c.error("texture-transform-offset-1e39", transform({"offset": [1e39, 0]}), TT + "/offset/0: 1e+39 is not finite as a 32-bit float")
+    c.error("texture-transform-texcoord-negative", transform({"texCoord": -1}), TT + "/texCoord: must be >= 0")
+    c.error("texture-transform-texcoord-float", transform({"texCoord": 1.5}), TT + "/texCoord: must be an integer, got number 1.5")
+    c.error("texture-transform-not-object", transform([1, 2]), TT + ": must be an object, got array")
+    c.error("texture-transform-matrix-overflow", transform({"offset": [0, 3e38], "scale": [1, 3e38]}),
+            "base colour texture: KHR_texture_transform (offset 0 3e+38, rotation 0, scale 1 3e+38) is not finite as a float matrix")
+    c.error("texture-transform-emissive-1e39", mutate(textured, lambda d: set_at(d, M + "/emissiveTexture", {
+        "index": 0, "extensions": {"KHR_texture_transform": {"rotation": 1e39}}})),
+            M + "/emissiveTexture/extensions/KHR_texture_transform/rotation: 1e+39 is not finite")
     c.error("material-texcoord-negative", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture/texCoord", -1)),
             M + "/pbrMetallicRoughness/baseColorTexture/texCoord: must be >= 0")
     c.error("material-textureinfo-no-index", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture", {})),

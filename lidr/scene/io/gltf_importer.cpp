@@ -517,27 +517,20 @@ private:
         out.name = image.uri.rfind("data:", 0) == 0 || image.uri.empty()
                        ? path_ + "#image" + std::to_string(source)
                        : (fs::path(path_).parent_path() / image.uri).lexically_normal().string();
+        // The validator held every field to its type and to finite floats.
         glm::dvec2 offset(0.0), scale(1.0);
         double rotation = 0.0;
         const auto transform = extensions.find("KHR_texture_transform");
         if (transform != extensions.end()) {
             const tinygltf::Value& t = transform->second;
-            const auto number = [&](const tinygltf::Value& v, const std::string& field) {
-                if (!v.IsNumber() && !v.IsInt()) fail(what + ": KHR_texture_transform " + field + " is not a number");
-                const double d = v.GetNumberAsDouble();
-                if (!std::isfinite(d)) fail(what + ": KHR_texture_transform " + field + " is not finite");
-                return d;
-            };
             const auto pair = [&](const char* field, glm::dvec2& into) {
-                if (!t.Has(field)) return;
-                const tinygltf::Value& v = t.Get(field);
-                if (!v.IsArray() || v.ArrayLen() != 2) fail(what + ": KHR_texture_transform " + field + " is not two numbers");
-                into = glm::dvec2(number(v.Get(0), field), number(v.Get(1), field));
+                if (t.Has(field))
+                    into = glm::dvec2(t.Get(field).Get(0).GetNumberAsDouble(), t.Get(field).Get(1).GetNumberAsDouble());
             };
             pair("offset", offset);
             pair("scale", scale);
-            if (t.Has("rotation")) rotation = number(t.Get("rotation"), "rotation");
-            if (t.Has("texCoord")) texCoord = int(number(t.Get("texCoord"), "texCoord"));
+            if (t.Has("rotation")) rotation = t.Get("rotation").GetNumberAsDouble();
+            if (t.Has("texCoord")) texCoord = t.Get("texCoord").GetNumberAsInt();
         }
         if (texCoord != 0 && texCoord != 1) {
             warn(what + " uses TEXCOORD_" + std::to_string(texCoord) + "; lidr reads TEXCOORD_0 and TEXCOORD_1, drawn with TEXCOORD_0");
@@ -552,6 +545,10 @@ private:
         const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
         const glm::dmat3 flip(1, 0, 0, 0, -1, 0, 0, 1, 1);
         out.mapping.transform = glm::mat3(flip * translate * rotate * scaling * flip);
+        for (int i = 0; i < 9; ++i)  // each field is a finite float, but their sums can still overflow one
+            if (!std::isfinite(glm::value_ptr(out.mapping.transform)[i]))
+                fail(what + ": KHR_texture_transform (offset " + str(offset.x) + " " + str(offset.y) + ", rotation " +
+                     str(rotation) + ", scale " + str(scale.x) + " " + str(scale.y) + ") is not finite as a float matrix");
         return out;
     }
 

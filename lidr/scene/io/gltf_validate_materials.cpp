@@ -77,6 +77,16 @@ void Validator::textureInfo(const Json& object, const std::string& at, const cha
     const std::string where = at + "/" + key;
     index(*info, where, "index", "textures", true);
     if (integer(*info, where, "texCoord", 0) < 0) fail(where + "/texCoord", "must be >= 0");
+    // KHR_texture_transform on any texture info: offset, rotation (radians), scale and a texCoord override.
+    const Json* extensions = member(*info, where, "extensions", Kind::Object);
+    if (!extensions) return;
+    const Json* transform = member(*extensions, where + "/extensions", "KHR_texture_transform", Kind::Object);
+    if (!transform) return;
+    const std::string t = where + "/extensions/KHR_texture_transform";
+    numbers(*transform, t, "offset", 2);
+    number(*transform, t, "rotation", 0);
+    numbers(*transform, t, "scale", 2);
+    if (integer(*transform, t, "texCoord", 0) < 0) fail(t + "/texCoord", "must be >= 0");
 }
 
 void Validator::checkMaterials() {
