@@ -597,6 +597,50 @@ TEST_CASE("glTF: every material texture is read with its set, strength, scale an
     CHECK_THAT(all, !Contains("drawn as its mean") && !Contains("is not drawn"));
 }
 
+TEST_CASE("glTF: KHR_materials_ior and KHR_materials_specular set the dielectric's F0 and F90; their textures warn",
+          "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    for (int m = 1; m < 3; ++m) file.mesh(file.doc["meshes"][0]["primitives"][0]);
+    file.doc["images"] = {{{"uri", "white.png"}}};
+    lidr::ImageRGBA8 white(1, 1);
+    white.pixels = {255, 255, 255, 255};
+    lidr::writePng(dir.file("white.png"), white);
+    file.doc["textures"] = {{{"source", 0}}};
+    file.doc["materials"] = {
+        {{"name", "plain"}},
+        {{"name", "diamond"}, {"extensions", {{"KHR_materials_ior", {{"ior", 2.4}}}}}},
+        {{"name", "tinted"},
+         {"extensions", {{"KHR_materials_ior", {{"ior", 0}}},
+                         {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {0.9, 0.6, 0.2}},
+                                                     {"specularTexture", {{"index", 0}}},
+                                                     {"specularColorTexture", {{"index", 0}}}}}}}}};
+    for (int m = 0; m < 3; ++m) {
+        file.doc["meshes"][size_t(m)]["primitives"][0]["material"] = m;
+        file.node({{"mesh", m}}, true);
+    }
+    file.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular"};
+    file.doc["extensionsRequired"] = {"KHR_materials_ior", "KHR_materials_specular"};  // lidr reads them
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "dielectric.gltf"));
+    const auto material = [&](int mesh) { return scene.materials[size_t(scene.meshes[size_t(mesh)].material)]; };
+    CHECK(material(0).dielectric.isDefault());
+    CHECK(material(1).dielectric.ior == 2.4f);
+    CHECK(material(1).dielectric.f0().g == Approx(std::pow(1.4 / 3.4, 2.0)));
+    CHECK(material(1).dielectric.f90() == 1.0f);
+    const lidr::DielectricSpecular& tinted = material(2).dielectric;
+    CHECK(tinted.ior == 0.0f);
+    CHECK(tinted.weight == 0.5f);
+    requireNear(tinted.color, {0.9f, 0.6f, 0.2f});
+    requireNear(tinted.f0(), glm::vec3(0.45f, 0.3f, 0.1f));  // ior 0: F0 1 x colour x weight
+    CHECK(tinted.f90() == 0.5f);
+    std::string all;
+    for (const std::string& w : scene.warnings) all += w + "\n";
+    INFO(all);
+    REQUIRE(scene.warnings.size() == 2);
+    CHECK_THAT(all, Contains("material 2 'tinted': KHR_materials_specular specularTexture is not drawn") &&
+                        Contains("specularColorTexture is not drawn") && Contains("its factors are"));
+}
+
 TEST_CASE("glTF: KHR_texture_transform in lidr's texture space; required extensions lidr reads load", "[gltf][cpu]") {
     TempDir dir;
     GltfFile file = oneTriangle();

@@ -10,7 +10,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 double alphaOf(const BrdfSurface& s) { return std::max(s.roughness * s.roughness, 0.01); }  // as shading.glsl
 glm::dvec3 albedoOf(const BrdfSurface& s) { return s.baseColor * (1.0 - s.metallic); }
-glm::dvec3 f0Of(const BrdfSurface& s) { return glm::mix(glm::dvec3(0.04), s.baseColor, s.metallic); }
+glm::dvec3 f0Of(const BrdfSurface& s) { return glm::mix(s.dielectricF0, s.baseColor, s.metallic); }
+double f90Of(const BrdfSurface& s) { return s.dielectricF90 + (1.0 - s.dielectricF90) * s.metallic; }
 }  // namespace
 
 BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, const glm::dvec3& normal,
@@ -23,6 +24,10 @@ BrdfSurface brdfSurface(const Material& material, const glm::dvec3& position, co
     s.baseColor = glm::dvec3(m.baseColor);
     s.metallic = m.metallic;
     s.roughness = m.roughness;
+    if (!material.dielectric.isDefault()) {  // the shaders' uniforms are floats
+        s.dielectricF0 = glm::dvec3(material.dielectric.f0());
+        s.dielectricF90 = double(material.dielectric.f90());
+    }
     return s;
 }
 
@@ -39,7 +44,7 @@ glm::dvec3 evaluateBrdf(const BrdfSurface& s, const glm::dvec3& L) {
     const double visibility = 0.5 / (nDotL * std::sqrt(nDotV * nDotV * (1.0 - a2) + a2) +
                                      nDotV * std::sqrt(nDotL * nDotL * (1.0 - a2) + a2));
     const glm::dvec3 f0 = f0Of(s);
-    const glm::dvec3 F = f0 + (1.0 - f0) * std::pow(1.0 - vDotH, 5.0);
+    const glm::dvec3 F = f0 + (f90Of(s) - f0) * std::pow(1.0 - vDotH, 5.0);
     return (1.0 - F) * albedoOf(s) / kPi + F * (D * visibility);
 }
 
@@ -82,7 +87,7 @@ glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient) {
     const glm::dvec4 r = roughness * glm::dvec4(-1.0, -0.0275, -0.572, 0.022) + glm::dvec4(1.0, 0.0425, 1.04, -0.04);
     const double a004 = std::min(r.x * r.x, std::exp2(-9.28 * nDotV)) * r.x + r.y;
     const glm::dvec2 ab = glm::dvec2(-1.04, 1.04) * a004 + glm::dvec2(r.z, r.w);
-    return ambient * (albedoOf(s) + f0Of(s) * ab.x + ab.y);
+    return ambient * (albedoOf(s) + f0Of(s) * ab.x + f90Of(s) * ab.y);
 }
 
 glm::dvec3 directionalAlbedo(const BrdfSurface& s, int steps) {

@@ -12,6 +12,9 @@ struct BrdfSurface {
     glm::dvec3 position{0.0}, normal{0.0, 1.0, 0.0}, toEye{0.0, 1.0, 0.0};  // unit normal and toEye
     glm::dvec3 baseColor{1.0};
     double metallic = 0.0, roughness = 1.0;
+    // The dielectric's F0 and F90 (DielectricSpecular: KHR_materials_ior / _specular); glTF's core 0.04 and 1.
+    glm::dvec3 dielectricF0{0.04};
+    double dielectricF90 = 1.0;
 };
 
 // The surface of `material` (metallicRoughnessOf) at a point seen from `eye`; no texture.
@@ -29,7 +32,7 @@ double distanceAttenuation(const PointLight& light, double distance);
 double spotTerm(const PointLight& light, const glm::dvec3& toLight);
 // lidrDirectionalLights' term of one light: f x pi x colour x n.l, from -direction (no attenuation).
 glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light);
-// lidrAmbient without the emission: ambient x (albedo + F0 A + B), Karis' environment-BRDF fit.
+// lidrAmbient without the emission: ambient x (albedo + F0 A + F90 B), Karis' environment-BRDF fit.
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient);
 // The integral of f x n.l over the hemisphere (the reflected fraction of light from every direction), by
 // numerical quadrature with `steps` x 4 steps: the white-furnace figure (<= 1 conserves energy).

@@ -267,6 +267,10 @@ void GpuScene::setMaterialUniforms(const gl::Program& program, const Material& m
     program.setIfDeclared("uOcclusionStrength", m.occlusionTexture.scale);
     program.setIfDeclared("uNormalScale", m.normalTexture.scale);
     program.setIfDeclared("uAlphaCutoff", m.alphaCutoff);
+    if (!m.dielectric.isDefault()) {  // only its variant declares them (material_variants.h)
+        program.setIfDeclared("uMaterialDielectricF0", m.dielectric.f0());
+        program.setIfDeclared("uMaterialDielectricF90", m.dielectric.f90());
+    }
 }
 
 void GpuScene::drawBatch(DrawState& state, const Batch& b, bool setMaterials) const {

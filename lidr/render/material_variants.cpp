@@ -45,6 +45,7 @@ uint32_t materialFeatures(const Material& material, uint32_t loadedSlots) {
     }
     // Blended materials are drawn after the opaque ones without a depth test of their own: no cut-out there.
     if (material.alphaMode == AlphaMode::Mask && material.opacity >= 1.0f) key |= material_feature::alphaMask;
+    if (!material.dielectric.isDefault()) key |= material_feature::dielectricSpecular;
     return key;
 }
 
@@ -67,6 +68,7 @@ ShaderDefines materialDefines(uint32_t features) {
     }
     if (secondSetUsed) defines.push_back({"LIDR_TEXCOORD1", "1"});
     if (features & material_feature::alphaMask) defines.push_back({"LIDR_ALPHA_MASK", "1"});
+    if (features & material_feature::dielectricSpecular) defines.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});
     return defines;
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // Per-pixel material textures as shader variants (the Filament / bgfx way): a material's features (which textures
-// it has, which coordinate set each reads, alpha MASK) are bits of a key; each program that draws the scene
-// (every mode's shading pass, the brute-force reference, the depth pre-passes) compiles, on first use, the
-// variant of its own sources with the key's defines (gl::Program::variant) and draws the material with it. A
-// material without textures draws with the program as written: key 0. shaders/common/material.glsl reads the
-// defines.
+// it has, which coordinate set each reads, alpha MASK, a dielectric F0 / F90 of its own) are bits of a key; each
+// program that draws the scene (every mode's shading pass, the brute-force reference, the depth pre-passes)
+// compiles, on first use, the variant of its own sources with the key's defines (gl::Program::variant) and draws
+// the material with it. A material without textures draws with the program as written: key 0.
+// shaders/common/material.glsl reads the defines.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +33,7 @@ namespace material_feature {
 constexpr uint32_t texture(TextureSlot slot) { return 1u << int(slot); }          // the slot's texture is read
 constexpr uint32_t secondSet(TextureSlot slot) { return 1u << (8 + int(slot)); }  // ... from TEXCOORD_1
 constexpr uint32_t alphaMask = 1u << 5;
+constexpr uint32_t dielectricSpecular = 1u << 6;  // KHR_materials_ior / _specular: F0 and F90 from uniforms
 }  // namespace material_feature
 
 // The material's key, given which of its textures the scene has loaded (bit i: slot i; a texture dropped for

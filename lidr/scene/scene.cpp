@@ -89,6 +89,11 @@ void validateMaterial(const Material& material, size_t index) {
     }
     if (!(material.alphaCutoff >= 0.0f && std::isfinite(material.alphaCutoff)))
         fail(item, "alphaCutoff must be finite and >= 0, got " + str(material.alphaCutoff));
+    const DielectricSpecular& d = material.dielectric;
+    if (!(std::isfinite(d.ior) && (d.ior == 0.0f || d.ior >= 1.0f)))
+        fail(item, "ior must be finite and >= 1, or 0, got " + str(d.ior));
+    if (!(d.weight >= 0.0f && d.weight <= 1.0f)) fail(item, "specular weight must be in [0, 1], got " + str(d.weight));
+    requireColor(item, "specular colour", d.color);
 }
 
 void validateMesh(const Mesh& mesh, size_t index, size_t materialCount) {
@@ -299,6 +304,11 @@ glm::vec4 spotCone(const PointLight& light) {
     return glm::vec4(glm::normalize(light.direction) * scale, -cosOuter * scale);
 }
 
+glm::vec3 DielectricSpecular::f0() const {
+    const float r = (ior - 1.0f) / (ior + 1.0f);  // ior 0: r = -1, F0 = 1
+    return glm::min(r * r * color, glm::vec3(1.0f)) * weight;
+}
+
 MetallicRoughness metallicRoughnessOf(const Material& m) {
     if (m.metallicRoughness) return {m.diffuse, m.metallic, m.roughness};
     MetallicRoughness out;
@@ -324,7 +334,7 @@ int findOrAddMaterial(Scene& scene, const Material& material) {
             existing.metallicRoughnessTexture == material.metallicRoughnessTexture &&
             existing.occlusionTexture == material.occlusionTexture && existing.normalTexture == material.normalTexture &&
             existing.alphaMode == material.alphaMode && existing.alphaCutoff == material.alphaCutoff &&
-            existing.doubleSided == material.doubleSided)
+            existing.doubleSided == material.doubleSided && existing.dielectric == material.dielectric)
             return int(i);
     }
     scene.materials.push_back(material);

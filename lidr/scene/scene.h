@@ -36,6 +36,21 @@ struct MaterialTexture {
 
 enum class AlphaMode { Opaque, Mask };  // glTF's OPAQUE and MASK (BLEND is opacity < 1)
 
+// The dielectric part's specular reflection (glTF's KHR_materials_ior and KHR_materials_specular): at normal
+// incidence F0 = min(((ior - 1) / (ior + 1))^2 x color, 1) x weight, at grazing angles F90 = weight; a metal's stay
+// its base colour and 1. The defaults are glTF 2.0's core model: ior 1.5 (F0 0.04), weight 1, white. A material
+// with other values is drawn by the shader variant that reads them (lidr/render/material_variants.h).
+struct DielectricSpecular {
+    float ior = 1.5f;        // >= 1, or 0 (F0 1: the extension's conversion of specular-glossiness materials)
+    float weight = 1.0f;     // KHR_materials_specular's specularFactor, [0, 1]
+    glm::vec3 color{1.0f};   // its specularColorFactor (linear), >= 0
+    glm::vec3 f0() const;
+    float f90() const { return weight; }
+    // glTF's core model (F0 0.04, F90 1): drawn by the code every material without the extensions runs.
+    bool isDefault() const { return ior == 1.5f && weight == 1.0f && color == glm::vec3(1.0f); }
+    bool operator==(const DielectricSpecular& o) const { return ior == o.ior && weight == o.weight && color == o.color; }
+};
+
 // Colours are linear (importers decode display-value colours: doc/colour.md); textures are sRGB-encoded.
 struct Material {
     std::string name;
@@ -63,6 +78,7 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;            // MASK: texture alpha below it is cut out (glTF's cutoff / factor alpha)
     bool doubleSided = true;             // false: the back of each triangle is culled (glTF's default is false)
+    DielectricSpecular dielectric{};     // KHR_materials_ior and KHR_materials_specular (their factors)
 };
 
 // The material as the BRDF takes it. Blinn-Phong materials map (doc/colour.md, "Materials"): roughness from

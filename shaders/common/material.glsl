@@ -28,6 +28,12 @@ varying vec2 vTexCoord1;
 #ifdef LIDR_BASE_COLOR_TEXTURE
 uniform mat3 uBaseColorUvTransform;
 #endif
+// KHR_materials_ior / KHR_materials_specular (lidr::DielectricSpecular): the dielectric's F0 and F90 instead of
+// glTF's 0.04 and 1, only in the variant of a material that has them.
+#ifdef LIDR_DIELECTRIC_SPECULAR
+uniform vec3 uMaterialDielectricF0;
+uniform float uMaterialDielectricF90;
+#endif
 #ifdef LIDR_EMISSIVE_TEXTURE
 uniform sampler2D uEmissiveTexture;
 uniform mat3 uEmissiveUvTransform;

@@ -14,6 +14,9 @@ struct LidrSurface {
     vec3 toEye;
     vec3 albedo;     // the diffuse colour: base colour x (1 - metallic)
     vec3 f0;         // specular reflectance at normal incidence: mix(0.04, base colour, metallic)
+#ifdef LIDR_DIELECTRIC_SPECULAR
+    float f90;       // ... at grazing angles: mix(specular weight, 1, metallic) (1 without the extensions)
+#endif
     float alpha;     // GGX alpha = roughness^2, at least 0.01 (a mirror has no lobe; alpha^2 stays normal in fp16)
     float occlusion; // of the ambient light only (glTF: occlusion applies to indirect light)
     vec3 emission;   // emissive factor x emissive texel
@@ -53,7 +56,12 @@ LidrSurface lidrSurface() {
     metallic *= mr.b;
 #endif
     s.albedo = base * (1.0 - metallic);
+#ifdef LIDR_DIELECTRIC_SPECULAR
+    s.f0 = mix(uMaterialDielectricF0, base, metallic);
+    s.f90 = mix(uMaterialDielectricF90, 1.0, metallic);
+#else
     s.f0 = mix(vec3(0.04), base, metallic);
+#endif
     s.alpha = max(roughness * roughness, 0.01);
     s.occlusion = 1.0;
 #ifdef LIDR_OCCLUSION_TEXTURE
@@ -69,14 +77,18 @@ LidrSurface lidrSurface() {
 
 // Ambient light (darkened by the occlusion texture) plus the material's own emission: the light-independent term every mode adds once per pixel.
 // The ambient is uniform radiance from every direction: the diffuse part integrates to ambient x albedo, the
-// specular part to ambient x (F0 A + B), Karis' analytic fit of the split-sum environment BRDF.
+// specular part to ambient x (F0 A + F90 B), Karis' analytic fit of the split-sum environment BRDF.
 vec3 lidrAmbient(LidrSurface s) {
     float nDotV = clamp(dot(s.normal, s.toEye), 0.0, 1.0);
     float roughness = sqrt(s.alpha);
     vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
     float a004 = min(r.x * r.x, exp2(-9.28 * nDotV)) * r.x + r.y;
     vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+#ifdef LIDR_DIELECTRIC_SPECULAR
+    return uAmbient * (s.albedo + s.f0 * ab.x + s.f90 * ab.y) * s.occlusion + s.emission;
+#else
     return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) * s.occlusion + s.emission;
+#endif
 }
 
 // Light arriving from direction L (unit, towards the light) with colour x attenuation: BRDF x pi x colour x
@@ -95,7 +107,11 @@ vec3 lidrShadeIncoming(LidrSurface s, vec3 L, float attenuation, vec3 lightColor
     float D = a2 / (LIDR_PI * denom * denom);
     float visibility = 0.5 / (nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2));
     float fresnelWeight = pow(1.0 - vDotH, 5.0);
+#ifdef LIDR_DIELECTRIC_SPECULAR
+    vec3 F = s.f0 + (s.f90 - s.f0) * fresnelWeight;  // KHR_materials_specular: F90 = the weight for a dielectric
+#else
     vec3 F = s.f0 + (1.0 - s.f0) * fresnelWeight;
+#endif
     vec3 brdf = (1.0 - F) * s.albedo * (1.0 / LIDR_PI) + F * (D * visibility);
     return brdf * (LIDR_PI * nDotL * attenuation) * lightColor;
 }

@@ -648,6 +648,32 @@ def build():
     c.error("texture-transform-emissive-1e39", mutate(textured, lambda d: set_at(d, M + "/emissiveTexture", {
         "index": 0, "extensions": {"KHR_texture_transform": {"rotation": 1e39}}})),
             M + "/emissiveTexture/extensions/KHR_texture_transform/rotation: 1e+39 is not finite")
+    IOR = M + "/extensions/KHR_materials_ior"
+    SPEC = M + "/extensions/KHR_materials_specular"
+    dielectric = lambda ext: mutate(textured, lambda d: (
+        set_at(d, "/extensionsUsed", ["KHR_materials_ior", "KHR_materials_specular"]), set_at(d, M + "/extensions", ext)))
+    ok("valid-ior-specular", dielectric({"KHR_materials_ior": {"ior": 1.33},
+                                         "KHR_materials_specular": {"specularFactor": 0.3, "specularColorFactor": [4, 1, 0]}}))
+    ok("valid-ior-0", dielectric({"KHR_materials_ior": {"ior": 0}}))
+    c.add("warn-specular-texture", dielectric({"KHR_materials_specular": {"specularTexture": {"index": 0}}}), "warning",
+          "KHR_materials_specular specularTexture is not drawn")
+    c.error("material-ior-below-1", dielectric({"KHR_materials_ior": {"ior": 0.5}}), IOR + "/ior: must be >= 1, or 0, got 0.5")
+    c.error("material-ior-1e39", dielectric({"KHR_materials_ior": {"ior": 1e39}}), IOR + "/ior: 1e+39 is not finite as a 32-bit float")
+    c.error("material-ior-not-object", dielectric({"KHR_materials_ior": 1.5}), IOR + ": must be an object, got number")
+    c.error("material-specular-factor-over-1", dielectric({"KHR_materials_specular": {"specularFactor": 1.5}}),
+            SPEC + "/specularFactor: must be in [0, 1], got 1.5")
+    c.error("material-specular-color-negative", dielectric({"KHR_materials_specular": {"specularColorFactor": [1, -0.5, 1]}}),
+            SPEC + "/specularColorFactor/1: must be >= 0, got -0.5")
+    c.error("material-specular-color-2", dielectric({"KHR_materials_specular": {"specularColorFactor": [1, 1]}}),
+            SPEC + "/specularColorFactor: must have 3 numbers, got 2")
+    c.error("material-specular-color-1e39", dielectric({"KHR_materials_specular": {"specularColorFactor": [1, 1, 1e39]}}),
+            SPEC + "/specularColorFactor/2: 1e+39 is not finite as a 32-bit float")
+    c.error("material-specular-texture-index", dielectric({"KHR_materials_specular": {"specularColorTexture": {"index": 4}}}),
+            SPEC + "/specularColorTexture/index: index 4 is out of range (1 textures)")
+    ok("extension-required-ior-specular", mutate(textured, lambda d: (
+        set_at(d, "/extensionsUsed", ["KHR_materials_ior", "KHR_materials_specular"]),
+        set_at(d, "/extensionsRequired", ["KHR_materials_ior", "KHR_materials_specular"]),
+        set_at(d, M + "/extensions", {"KHR_materials_ior": {"ior": 1.7}}))))
     c.error("material-texcoord-negative", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture/texCoord", -1)),
             M + "/pbrMetallicRoughness/baseColorTexture/texCoord: must be >= 0")
     c.error("material-textureinfo-no-index", mutate(textured, lambda d: set_at(d, M + "/pbrMetallicRoughness/baseColorTexture", {})),

@@ -589,6 +589,26 @@ private:
         material.emissive *= float(strength.GetNumberAsDouble());
     }
 
+    // KHR_materials_ior and KHR_materials_specular's factors (validated): the dielectric's F0 and F90, drawn by
+    // every mode through the material's shader variant. Their two textures are not drawn: lidr's material
+    // textures and light tables take texture units 0..15 (WebGL's usual 16), and 16 is the shadow atlas'.
+    void readDielectricSpecular(const tinygltf::Material& source, const std::string& name, Material& material) {
+        const auto ior = source.extensions.find("KHR_materials_ior");
+        if (ior != source.extensions.end() && ior->second.Has("ior"))
+            material.dielectric.ior = float(ior->second.Get("ior").GetNumberAsDouble());
+        const auto specular = source.extensions.find("KHR_materials_specular");
+        if (specular == source.extensions.end()) return;
+        const tinygltf::Value& s = specular->second;
+        if (s.Has("specularFactor")) material.dielectric.weight = float(s.Get("specularFactor").GetNumberAsDouble());
+        if (s.Has("specularColorFactor"))
+            for (int c = 0; c < 3; ++c)
+                material.dielectric.color[c] = float(s.Get("specularColorFactor").Get(c).GetNumberAsDouble());
+        for (const char* texture : {"specularTexture", "specularColorTexture"})
+            if (s.Has(texture))
+                warn(name + ": KHR_materials_specular " + texture +
+                     " is not drawn (no texture unit is left for it); its factors are");
+    }
+
     int materialFor(int gltfMaterial) {
         if (overrideMaterial_ >= 0) return overrideMaterial_;
         if (gltfMaterial < 0) return findOrAddDefaultMaterial(scene_);
@@ -629,6 +649,7 @@ private:
         }
         material.doubleSided = source.doubleSided;
         readEmissiveStrength(source, material);
+        readDielectricSpecular(source, name, material);
         // Every texture is read per pixel by the material's shader variant (lidr/render/material_variants.h).
         if (source.emissiveTexture.index >= 0)
             material.emissiveTexture = readTexture(source.emissiveTexture.index, source.emissiveTexture.texCoord,

@@ -17,7 +17,7 @@ namespace {
 // Extensions lidr reads; a file that requires any other is refused (the specification's rule for
 // extensionsRequired), one that only uses it gets a warning.
 const std::set<std::string> extensionsRead = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                              "KHR_texture_transform"};
+                                              "KHR_materials_ior", "KHR_materials_specular", "KHR_texture_transform"};
 
 // What some well-known extensions do, so a refusal says what the file needs.
 std::string extensionPurpose(const std::string& name) {

@@ -2,6 +2,7 @@
 // is stored), samplers, textures and materials (gltf_validator_internal.h).
 #include <algorithm>
 #include <initializer_list>
+#include <vector>
 
 #include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/gltf_validator_internal.h"
@@ -132,6 +133,21 @@ void Validator::checkMaterialExtensions(const Json& material, const std::string&
         const std::string w = where + "/KHR_materials_emissive_strength";
         const double strength = number(*e, w, "emissiveStrength", 1);
         if (!(strength >= 0)) fail(w + "/emissiveStrength", "must be >= 0, got " + str(strength));
+    }
+    if (const Json* e = member(*extensions, where, "KHR_materials_ior", Kind::Object)) {
+        const std::string w = where + "/KHR_materials_ior";
+        const double ior = number(*e, w, "ior", 1.5);
+        if (!(ior == 0 || ior >= 1)) fail(w + "/ior", "must be >= 1, or 0, got " + str(ior));
+    }
+    if (const Json* e = member(*extensions, where, "KHR_materials_specular", Kind::Object)) {
+        const std::string w = where + "/KHR_materials_specular";
+        const double weight = number(*e, w, "specularFactor", 1);
+        if (!(weight >= 0 && weight <= 1)) fail(w + "/specularFactor", "must be in [0, 1], got " + str(weight));
+        const std::vector<double> color = numbers(*e, w, "specularColorFactor", 3);
+        for (size_t c = 0; c < color.size(); ++c)
+            if (!(color[c] >= 0)) fail(w + "/specularColorFactor/" + std::to_string(c), "must be >= 0, got " + str(color[c]));
+        textureInfo(*e, w, "specularTexture");
+        textureInfo(*e, w, "specularColorTexture");
     }
 }
 
