@@ -60,7 +60,7 @@ std::string sceneNameHelp() {
            "hall-255-shadows-32; doc/shadows.md)";
 }
 
-Scene loadBenchScene(const std::string& name, uint32_t seed) {
+Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
     // "SCENE-shadows-K": SCENE with its K brightest lights that can touch its view casting shadows
     // (chooseShadowCasters, lidr/render/shadow_casters.h); renderFrame turns shadows on for it (benchShading).
     const size_t marker = name.rfind("-shadows-");
@@ -70,7 +70,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
         if (k < 0)
             throw Error("bad scene name '" + name + "': SCENE-shadows-K needs a whole number K >= 0 of shadow casters "
                         "(valid: " + sceneNameHelp() + ")");
-        Scene scene = loadBenchScene(name.substr(0, marker), seed);
+        Scene scene = loadBenchScene(name.substr(0, marker), seed, camera);
         const int chosen = chooseShadowCasters(scene.lights, cameraMatrices(scene.camera, scene.width, scene.height), k);
         if (chosen < k)
             throw Error("scene '" + name + "': only " + std::to_string(chosen) + " of its " +
@@ -79,6 +79,17 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
         scene.name = name;
         return scene;
     }
+    const std::string cameraOption = "--camera " + std::to_string(camera) + ": ";
+    std::string path;
+    if (startsWith(name, "file:"))
+        path = name.substr(5);
+    else
+        for (const char* extension : {".json", ".gltf", ".glb", ".obj"})
+            if (name.size() > std::strlen(extension) && name.compare(name.size() - std::strlen(extension), std::string::npos, extension) == 0)
+                path = name;
+    if (camera >= 0 && path.empty())
+        throw Error(cameraOption + "scene '" + name + "' is built in and has no cameras; --camera picks a camera of the "
+                    "glTF files in --scenes");
     if (name == "room") {
         DefaultSceneOptions o;
         o.seed = seed;
@@ -121,16 +132,18 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
     Scene occluded;
     if (makeOccludedSceneByName(name, occluded, seed)) return occluded;
     if (makeSpotSceneByName(name, occluded, seed)) return occluded;
-    std::string path;
-    if (startsWith(name, "file:"))
-        path = name.substr(5);
-    else
-        for (const char* extension : {".json", ".gltf", ".glb", ".obj"})
-            if (name.size() > std::strlen(extension) && name.compare(name.size() - std::strlen(extension), std::string::npos, extension) == 0)
-                path = name;
     if (path.empty()) throw Error("unknown scene '" + name + "' (valid: " + sceneNameHelp() + ")");
     if (!std::filesystem::exists(path)) throw Error("scene file '" + path + "' does not exist");
-    return loadScene(path);
+    Scene scene = loadScene(path);
+    if (camera >= 0) {
+        try {
+            chooseView(scene, camera);
+            scene.validate();
+        } catch (const Error& e) {
+            throw Error(cameraOption + "scene '" + name + "': " + e.what());
+        }
+    }
+    return scene;
 }
 
 // ---- configurations -------------------------------------------------------------------------------------
@@ -492,7 +505,7 @@ std::string str(const T& v) {
 }  // namespace
 
 Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
-               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights) {
+               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights, int camera) {
     const std::vector<std::string> modes = availableModes();
     const std::vector<std::string> schemes = packingSchemeNames();
     // Names first: every unknown name is reported before any probing.
@@ -514,7 +527,7 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
             if (s < 0) throw Error("MSAA samples must be >= 0, got " + std::to_string(s));
         for (const std::string& name : g.scenes)
             if (!scenes.count(name)) {
-                Scene scene = loadBenchScene(name, seed);
+                Scene scene = loadBenchScene(name, seed, camera);
                 if (extraLights.count > 0) {
                     LightScatterOptions scatter = extraLights;
                     scatter.seed = seed;

@@ -22,7 +22,9 @@ namespace lidr::bench {
 // or a path ending in .json).
 std::string sceneNameHelp();
 // Throws lidr::Error naming the valid forms for an unknown name or a file that does not load.
-Scene loadBenchScene(const std::string& name, uint32_t seed);
+// `camera` >= 0 (lidr-bench --camera N): a glTF file's camera N (chooseView), before the -shadows-K casters are
+// chosen from the view; an error for a scene that is not a glTF file with that camera.
+Scene loadBenchScene(const std::string& name, uint32_t seed, int camera = -1);
 
 // ---- configurations -------------------------------------------------------------------------------------
 struct ModeConfig {
@@ -129,8 +131,9 @@ std::vector<std::string> sweepVolumeTests();
 // a value that no combination of its group can use, or a group with no runnable configuration, is a
 // lidr::Error that says why and lists what is valid. `scenes` is filled with the loaded scenes.
 // `extraLights` (count > 0: lidr-bench --lights N): scattered over every scene after it is loaded.
+// `camera` >= 0: every scene's view is its glTF file's camera N (loadBenchScene).
 Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32_t seed,
-               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights = {});
+               std::map<std::string, Scene>& scenes, const LightScatterOptions& extraLights = {}, int camera = -1);
 
 // "1024x768" -> (1024, 768); "scene" -> (0, 0). Throws lidr::Error.
 std::pair<int, int> parseResolution(const std::string& text);

@@ -424,6 +424,11 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 65535));
     app.add_option("--light-radius", extraLightRadius,
                    "Radius of --lights in scene units (default: chosen from the scene's size and N, doc/colour.md)");
+    int camera = -1;
+    app.add_option("--camera", camera,
+                   "View every --scenes glTF file through its camera N (the index in the file's cameras array, from 0; "
+                   "default: its first camera in node order); a scene without camera N is an error")
+        ->check(CLI::Range(0, 1 << 30));
     app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, osmesa (env LIDR_CONTEXT)")->capture_default_str();
     auto* quickFlag = app.add_flag("--quick", quick, "Seconds-long smoke run: tiny resolution, few configurations, one frame");
     auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
@@ -543,7 +548,7 @@ int main(int argc, char** argv) {
         LightScatterOptions scatter;
         scatter.count = extraLights;
         scatter.radius = float(extraLightRadius);
-        const Plan plan = buildPlan(groups, info, seed, sceneCache, scatter);
+        const Plan plan = buildPlan(groups, info, seed, sceneCache, scatter, camera);
         std::cout << "lidr-bench: " << plan.runs.size() << " configurations to measure, " << plan.skipped.size()
                   << " combinations skipped (refused by the library); GL: " << info.renderer << "\n";
         if (dryRun) {

@@ -50,6 +50,11 @@ void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--spot-share", spotShare,
                    "Make this share (0..1) of the --lights lights spot lights aimed back at their surface (60-degree "
                    "cones; default 0)");
+    app.add_option("--camera", camera,
+                   "View a glTF model (--scene FILE.gltf / .glb) through its camera N: the index in the file's cameras "
+                   "array, from 0; in a scene file, its glTF models' cameras in model order (default: the first camera "
+                   "met in the default scene's node order unless a scene file gives \"camera\", else a view framing "
+                   "the bounds); yfov is kept, the aspect is the image's. Orthographic cameras are refused");
     app.add_flag("!--no-default-lights", defaultRig,
                  "Leave a scene without lights unlit (default: a key light at the eye and ambient 0.1, doc/colour.md)");
 }
@@ -62,7 +67,11 @@ Scene SceneChoice::load() const {
         throw Error("--time must be a finite number of seconds >= 0 (leave it out for the scene's own time), got " +
                     value.str());
     }
+    const auto cameraOption = [&] { return "--camera " + std::to_string(*camera) + ": "; };
     Scene scene;
+    if (camera && sceneFile.empty())
+        throw Error(cameraOption() + "the built-in room has no cameras; --camera picks a camera of a glTF model "
+                    "(--scene FILE.gltf)");
     if (sceneFile.empty()) {
         DefaultSceneOptions o;
         o.seed = seed;
@@ -75,6 +84,22 @@ Scene SceneChoice::load() const {
         objOptions.smoothNormals = smoothNormals;
         scene = loadScene(sceneFile, objOptions);
         if (time) scene.time = float(*time);
+    }
+    // Before the lights: the default rig puts its key light at the eye.
+    if (camera) {
+        try {
+            chooseView(scene, *camera);
+        } catch (const Error& e) {
+            throw Error(cameraOption() + e.what());
+        }
+    }
+    if (!scene.views.empty()) {
+        const size_t count = scene.views.size();
+        std::cout << "camera     "
+                  << (scene.view >= 0 ? scene.views[size_t(scene.view)].name
+                                      : std::string("a view framing the bounds (no camera lidr can draw)"))
+                  << (camera ? " (--camera)" : "") << "; the scene has " << count << (count == 1 ? " camera" : " cameras")
+                  << (camera || count == 1 ? "" : " (--camera N picks another)") << "\n";
     }
     if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
     if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");

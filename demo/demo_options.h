@@ -23,6 +23,7 @@ struct SceneChoice {
     std::optional<double> lightRadius;  // --light-radius R (with --lights); unset: automatic
     std::optional<double> spotShare;    // --spot-share F (with --lights): that share of them are spot lights
     bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
+    std::optional<int> camera;          // --camera N: a glTF model's camera N (chooseView); unset: its first
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
 };

@@ -130,6 +130,9 @@ run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-
 run_bench(1 "unknown sweep 'nope'.*valid: lights, triangles" --sweep nope --out ${OUT}/bad)
 run_bench(1 "--sweep is a fixed sweep" --sweep lights --scenes room --out ${OUT}/bad)
 run_bench(1 "bad scene name 'heavy-0'.*heavy-T" --scenes heavy-0 --out ${OUT}/bad)
+run_bench(1 "--camera 0: scene 'room' is built in and has no cameras" --scenes room --camera 0 --out ${OUT}/bad)
+run_bench(1 "--camera 2: scene '[^']*courtyard.gltf': camera 2 is out of range: the scene has 1 camera"
+          --scenes ${CMAKE_CURRENT_LIST_DIR}/../media/scenes/courtyard.gltf --camera 2 --out ${OUT}/bad)
 # Issue 13: numbers CLI::Range lets through, sample counts that are not powers of two, oversized targets.
 run_bench(1 "--max-seconds must be a finite number in \\[0.001, 36000\\], got nan" --quick --max-seconds nan --out ${OUT}/bad)
 run_bench(1 "--warmup-ms must be a finite number" --quick --warmup-ms nan --out ${OUT}/bad)

@@ -168,7 +168,9 @@ set(bad_values
   "--shadows|8|--shadow-atlas|4096:8192@--shadow-atlas: TILE must be a power of two from 16 to SIZE .4096., got 8192"
   "--shadows|8|--shadow-atlas|4096:x@--shadow-atlas must be SIZE or SIZE:TILE"
   "--shadows|200|--shadow-atlas|64@--shadows: the casters need [0-9]+ shadow maps.*a 64 atlas holds 16"
-  "--scene|${OUT}/wide-spot.json|--shadows|scene@--shadows scene: light 0 is a spot light of 85 degrees marked to cast")
+  "--scene|${OUT}/wide-spot.json|--shadows|scene@--shadows scene: light 0 is a spot light of 85 degrees marked to cast"
+  "--camera|0@--camera 0: the built-in room has no cameras"
+  "--scene|${SOURCE_DIR}/media/scenes/courtyard.gltf|--camera|1@--camera 1: camera 1 is out of range: the scene has 1 camera \\(0")
 file(WRITE ${OUT}/a-file "a file where a folder is asked for\n")
 # glTF files the validator refuses (tests/gltf_corpus has the whole set): a wrong version, and extras nested
 # 100,000 deep, which once overflowed the stack of the JSON parser.

@@ -249,17 +249,45 @@ TEST_CASE("glTF: the first perspective camera is the view, else the default view
         CHECK(scene.camera.farPlane == Approx(40.0f));
         REQUIRE(scene.warnings.size() == 1);
         CHECK_THAT(scene.warnings[0], Contains("orthographic cameras are not supported"));
+        // Every camera is a view, numbered as the file's `cameras`; the default is camera 1, the first usable one.
+        REQUIRE(scene.views.size() == 3);
+        CHECK(scene.view == 1);
+        CHECK(scene.views[1].name == "camera 1");
+        CHECK_THAT(scene.views[0].unusable, Contains("orthographic"));
+        CHECK(scene.views[2].unusable.empty());
+    }
+    SECTION("--camera N: chooseView picks camera N, or names the count") {
+        lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "cameras.gltf"));
+        lidr::chooseView(scene, 2);
+        CHECK(scene.view == 2);
+        requireNear(scene.camera.position, {0, 0, 0});
+        requireNear(scene.camera.target, {0, 0, -1});
+        CHECK(scene.camera.fovYDegrees == Approx(glm::degrees(1.0f)));
+        CHECK(scene.camera.nearPlane == Approx(0.5f));
+        CHECK(scene.camera.farPlane == Approx(1.5f * std::sqrt(2.0f)));  // no zfar: past the bounds
+        REQUIRE_THROWS_WITH(lidr::chooseView(scene, 3),
+                            Contains("camera 3 is out of range: the scene has 3 cameras (0 .. 2"));
+        REQUIRE_THROWS_WITH(lidr::chooseView(scene, -1), Contains("camera -1 is out of range"));
+        REQUIRE_THROWS_WITH(lidr::chooseView(scene, 0),
+                            Contains("camera 0 cannot be the view: it is orthographic; lidr draws perspective cameras only"));
+        CHECK(scene.view == 2);  // a refused choice keeps the view
+        lidr::chooseView(scene, 1);
+        requireNear(scene.camera.position, {5, 1, 0});
     }
     SECTION("no zfar: a far plane past the bounds") {
         file.doc["scenes"][0]["nodes"] = {0, 3};
-        const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "infinite.gltf"));
+        lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "infinite.gltf"));
+        CHECK(scene.view == 2);
         CHECK(scene.camera.nearPlane == Approx(0.5f));
         // farthest corner of the triangle's bounds from the origin: sqrt(2); 1.5 x that
         CHECK(scene.camera.farPlane == Approx(1.5f * std::sqrt(2.0f)));
+        // camera 1 is placed by no node of the default scene
+        REQUIRE_THROWS_WITH(lidr::chooseView(scene, 1), Contains("camera 1 cannot be the view: it is placed by no node"));
     }
     SECTION("no camera") {
         file.doc["scenes"][0]["nodes"] = {0};
         const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "nocamera.gltf"));
+        CHECK(scene.view == -1);
         const lidr::Camera expected = lidr::cameraFramingBounds({0, 0, 0}, {1, 1, 0});
         requireNear(scene.camera.position, expected.position);
         requireNear(scene.camera.target, {0.5f, 0.5f, 0.0f});
@@ -267,6 +295,63 @@ TEST_CASE("glTF: the first perspective camera is the view, else the default view
         CHECK(glm::length(scene.camera.position - scene.camera.target) == Approx(1.1f * std::sqrt(0.5f) / 0.5f));
         CHECK(scene.camera.nearPlane < glm::length(scene.camera.position - scene.camera.target) - std::sqrt(0.5f));
         CHECK(scene.camera.farPlane > glm::length(scene.camera.position - scene.camera.target) + std::sqrt(0.5f));
+    }
+}
+
+TEST_CASE("glTF: a camera is placed by its node's world transform, parents included", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["cameras"] = {{{"type", "perspective"}, {"name", "Side"},
+                            {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 100}, {"aspectRatio", 2.0}}}}};
+    file.node({{"mesh", 0}}, true);
+    // child: 1 along its parent's z, turned 90 degrees about +y (looks down the parent's -x); parent: moved by
+    // (0, 2, 0) and turned 90 degrees about +x (its +z is the world's -y, its -x stays -x).
+    const int child = file.node({{"camera", 0}, {"translation", {0, 0, 1}},
+                                 {"rotation", {0.0, std::sqrt(0.5), 0.0, std::sqrt(0.5)}}}, false);
+    file.node({{"children", {child}}, {"translation", {0, 2, 0}}, {"rotation", {std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)}}},
+              true);
+    const lidr::Scene scene = lidr::loadScene(file.writeGltf(dir, "nested.gltf"));
+    CHECK(scene.view == 0);
+    CHECK(scene.views[0].name == "camera 0 'Side'");
+    requireNear(scene.camera.position, {0, 1, 0});
+    requireNear(scene.camera.target, {-1, 1, 0});
+    requireNear(scene.camera.up, {0, 0, 1});
+    CHECK(scene.camera.fovYDegrees == Approx(glm::degrees(0.7f)));  // yfov kept; the image gives the aspect
+    CHECK(scene.camera.farPlane == Approx(100.0f));
+}
+
+TEST_CASE("glTF: cameras are validated with their JSON pointer", "[gltf][cpu]") {
+    TempDir dir;
+    struct Case {
+        const char* name;
+        Json perspective;
+        const char* message;  // empty: loads
+    };
+    const Case cases[] = {
+        {"no zfar, aspect given", {{"yfov", 1.0}, {"znear", 0.1}, {"aspectRatio", 1.5}}, ""},
+        {"yfov 0", {{"yfov", 0}, {"znear", 0.1}}, "/cameras/0/perspective/yfov: must be in (0, pi) radians"},
+        {"yfov pi", {{"yfov", 3.2}, {"znear", 0.1}}, "/cameras/0/perspective/yfov: must be in (0, pi) radians"},
+        {"yfov not finite as a float", {{"yfov", 1e39}, {"znear", 0.1}}, "/cameras/0/perspective/yfov: 1e+39 is not finite"},
+        {"znear 0", {{"yfov", 1.0}, {"znear", 0}}, "/cameras/0/perspective/znear: must be > 0"},
+        {"zfar below znear", {{"yfov", 1.0}, {"znear", 1}, {"zfar", 0.5}}, "/cameras/0/perspective/zfar: must be > znear (1)"},
+        {"aspect 0", {{"yfov", 1.0}, {"znear", 0.1}, {"aspectRatio", 0}}, "/cameras/0/perspective/aspectRatio: must be > 0"},
+        {"yfov missing", {{"znear", 0.1}}, "/cameras/0/perspective/yfov: required property missing"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        GltfFile file = oneTriangle();
+        file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", c.perspective}}};
+        file.node({{"mesh", 0}}, true);
+        file.node({{"camera", 0}, {"translation", {0, 0, 3}}}, true);
+        const std::string path = file.writeGltf(dir, "camera.gltf");
+        if (std::string(c.message).empty()) {
+            const lidr::Scene scene = lidr::loadScene(path);
+            CHECK(scene.view == 0);
+            requireNear(scene.camera.position, {0, 0, 3});
+            CHECK(scene.camera.farPlane > 3.0f);
+        } else {
+            REQUIRE_THROWS_WITH(lidr::loadScene(path), Contains("camera.gltf: " + std::string(c.message)));
+        }
     }
 }
 
@@ -428,7 +513,38 @@ TEST_CASE("glTF: scene files reference glTF models like OBJ ones", "[gltf][cpu]"
     REQUIRE(scene.lights.size() == 2);  // the model's light first (models come before lights)
     requireNear(scene.lights[0].position, {5, 3, 0});
     CHECK(scene.lights[0].radius == Approx(6.0f));
-    requireNear(scene.camera.position, lidr::Camera().position);  // the scene file's (default) camera
+    requireNear(scene.camera.position, lidr::Camera().position);  // no cameras: the scene file's (default) camera
+    CHECK(scene.views.empty());
+}
+
+TEST_CASE("glTF: a scene file is seen through its models' first camera unless it gives \"camera\"", "[gltf][cpu]") {
+    TempDir dir;
+    GltfFile file = oneTriangle();
+    file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.2}}}},
+                           {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.3}, {"zfar", 30}}}}};
+    file.node({{"mesh", 0}}, true);
+    file.node({{"camera", 1}, {"translation", {0, 0, 4}}}, true);
+    file.node({{"camera", 0}, {"translation", {0, 1, 4}}}, true);
+    file.writeGltf(dir, "seen.gltf");
+    const std::string models = R"("models": [{"file": "seen.gltf", "translate": [10, 0, 0]}, {"file": "seen.gltf"}])";
+    lidr::Scene scene = lidr::loadScene(dir.write("scene.json", "{" + models + "}"));
+    // the first model's camera 1 (first in node order), moved with the model
+    REQUIRE(scene.views.size() == 4);
+    CHECK(scene.view == 1);
+    CHECK(scene.views[3].name == "seen.gltf camera 1");
+    requireNear(scene.camera.position, {10, 0, 4});
+    CHECK(scene.camera.fovYDegrees == Approx(glm::degrees(0.9f)));
+    CHECK(scene.camera.farPlane == Approx(30.0f));
+    lidr::chooseView(scene, 2);  // the second model's camera 0: no zfar, a far plane past the whole scene's bounds
+    requireNear(scene.camera.position, {0, 1, 4});
+    CHECK(scene.camera.farPlane == Approx(1.5f * glm::length(glm::vec3(11, -1, -4))));
+    REQUIRE_THROWS_WITH(lidr::chooseView(scene, 4), Contains("the scene has 4 cameras (0 .. 3"));
+    SECTION("\"camera\" given: the file's camera is the view") {
+        const lidr::Scene own = lidr::loadScene(dir.write("own.json", R"({"camera": {"position": [1, 2, 3]}, )" + models + "}"));
+        requireNear(own.camera.position, {1, 2, 3});
+        CHECK(own.view == -1);
+        CHECK(own.views.size() == 4);
+    }
 }
 
 TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf]") {

@@ -64,6 +64,7 @@ void Viewer::addTextureUnitWarnings() {
 
 bool Viewer::openScene(const std::string& path, const std::string& what, bool keepCamera) {
     demo::SceneChoice choice = sceneChoice_;
+    if (path != choice.sceneFile) choice.camera.reset();  // --camera N was the first file's; a reload keeps it
     choice.sceneFile = path;
     Scene loaded;
     try {

@@ -168,6 +168,16 @@ struct Camera {
     float farPlane = 100.0f;
 };
 
+// A camera a model file brings: a glTF camera, by its index in the file's `cameras`, seen from the first node of the
+// default scene (in node order) that places it, looking down the node's -z with its +y up. `camera` is set where
+// lidr can draw it, a perspective camera placed by a node; otherwise `unusable` says why (orthographic: lidr's
+// light volumes and tiles assume a perspective projection; placed by no node: there is nothing to view from).
+struct SceneView {
+    std::string name;      // "camera 1 'Top'"
+    Camera camera;         // yfov, znear, zfar of the file (no zfar: a far plane past the scene's bounds)
+    std::string unusable;  // empty: lidr draws it
+};
+
 // Limits every scene is checked against before any work (doc/scene-format.md, "Limits").
 constexpr size_t maxSceneLights = 65535;           // the light index is 16 bits; 0 is the null light
 constexpr float maxLightRadius = 1e18f;            // radius^2 and position +- radius stay finite floats
@@ -186,6 +196,12 @@ struct Scene {
     std::vector<LightPath> lightPaths;   // empty (all static), or one per light
     std::vector<DirectionalLight> directionalLights;  // at most maxDirectionalLights; not indexed, not moved
     Camera camera;
+    // A glTF model's cameras, by their index in the file's `cameras`; a scene file's glTF models' cameras, in
+    // model order (empty for OBJ and built-in scenes). `camera` is the first usable one met in node order (in a
+    // scene file: unless it gives "camera"), else the default view framing the bounds; chooseView
+    // (lidr/scene/io/scene_loader.h) picks another. `view`: the index of the one `camera` was set from, -1: none.
+    std::vector<SceneView> views;
+    int view = -1;
     int width = 1024, height = 768;
     float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
     std::string renderMode = "lidr";     // the mode tools render it with (lidr/modes/render_mode.h names them)

@@ -121,6 +121,7 @@ public:
                 if (!isChild[i]) roots.push_back(int(i));
         }
         checkInstancedTriangles(roots);
+        listCameras();
         const size_t trianglesBefore = scene_.triangleCount();
         for (int root : roots) visit(root, transform_, 0);
         if (scene_.triangleCount() == trianglesBefore && contents_.lights == 0) fail("no triangles and no lights");
@@ -779,25 +780,41 @@ private:
         scene_.directionalLights.push_back(light);
     }
 
+    // Every camera of the file becomes a view, usable or not, so views are numbered as the file's `cameras`.
+    void listCameras() {
+        for (size_t i = 0; i < model_.cameras.size(); ++i) {
+            const tinygltf::Camera& source = model_.cameras[i];
+            SceneView view;
+            view.name = "camera " + std::to_string(i) + (source.name.empty() ? "" : " '" + source.name + "'");
+            view.unusable = source.type == "perspective" ? "it is placed by no node of the default scene (nothing to view from)"
+                                                         : "it is orthographic; lidr draws perspective cameras only (its light "
+                                                           "volumes and tiles assume a perspective projection)";
+            if (source.type != "perspective")
+                warn(view.name + ": orthographic cameras are not supported (lidr's light volumes and tiles assume a "
+                                 "perspective projection); it cannot be the view");
+            contents_.views.push_back(view);
+        }
+    }
+
+    // The node's world transform places the camera (the validator checked its numbers as floats); the first node
+    // in node order that places a camera gives its view.
     void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {
         if (size_t(node.camera) >= model_.cameras.size())
             fail(nodeName + ": camera " + std::to_string(node.camera) + " out of range");
         const tinygltf::Camera& source = model_.cameras[size_t(node.camera)];
-        if (source.type != "perspective") {
-            warn("camera " + std::to_string(node.camera) + ": " + source.type + " cameras are not supported; left out");
-            return;
-        }
-        if (contents_.hasCamera) return;  // the first perspective camera is the view
-        Camera camera;
+        SceneView& view = contents_.views[size_t(node.camera)];
+        if (source.type != "perspective" || view.unusable.empty()) return;  // orthographic, or placed before
+        Camera& camera = view.camera;
         camera.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         // A glTF camera looks down its -z with +y up.
         camera.target = camera.position + normalizedOr(glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)), glm::vec3(0, 0, -1));
         camera.up = normalizedOr(glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)), glm::vec3(0, 1, 0));
+        // yfov is kept and the image's aspect is the output's (aspectRatio is not used), as the Khronos viewer does
         camera.fovYDegrees = glm::degrees(float(source.perspective.yfov));
         camera.nearPlane = float(source.perspective.znear);
         camera.farPlane = float(source.perspective.zfar);  // 0: infinite, replaced from the bounds by the caller
-        contents_.hasCamera = true;
-        contents_.camera = camera;
+        view.unusable.clear();
+        if (contents_.firstView < 0) contents_.firstView = node.camera;  // the first camera met is the default view
     }
 
     Scene& scene_;
@@ -823,6 +840,21 @@ float gltfLightRadiusWithoutRange(float brightestChannel) {
 
 GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial) {
     return GltfReader(scene, path, transform, overrideMaterial).read();
+}
+
+void finishGltfViews(Scene& scene) {
+    const glm::vec3 boundsMin = scene.boundsMin(), boundsMax = scene.boundsMax();
+    for (SceneView& view : scene.views) {
+        Camera& camera = view.camera;
+        if (!view.unusable.empty() || camera.farPlane > 0.0f) continue;
+        float farthest = 0.0f;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? boundsMax.x : boundsMin.x, (corner & 2) ? boundsMax.y : boundsMin.y,
+                              (corner & 4) ? boundsMax.z : boundsMin.z);
+            farthest = std::max(farthest, glm::length(p - camera.position));
+        }
+        camera.farPlane = std::max(1.5f * farthest, 2.0f * camera.nearPlane);
+    }
 }
 
 }  // namespace lidr

@@ -3,6 +3,7 @@
 // naming the file; what is read but cannot be drawn as asked (spot and directional lights, MASK alpha, ...) is a
 // warning on the Scene. What is read and how: doc/scene-format.md, "glTF".
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -11,8 +12,10 @@
 namespace lidr {
 
 struct GltfContents {
-    bool hasCamera = false;  // the file has a perspective camera: `camera` is the first one (in node order)
-    Camera camera;
+    // Every camera of the file, by its index in `cameras` (SceneView), placed by the node's world transform
+    // (`transform` included); farPlane 0 where the file gives no zfar (infinite): finishGltfViews sets it.
+    std::vector<SceneView> views;
+    int firstView = -1;      // the first usable camera met in node order (the default view); -1: none
     size_t lights = 0;       // point lights appended
 };
 
@@ -20,6 +23,10 @@ struct GltfContents {
 // and its KHR_lights_punctual point lights to `scene`. `overrideMaterial` >= 0 replaces the file's materials
 // with that scene material.
 GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial = -1);
+
+// Once the whole scene is loaded: every usable view without a zfar gets a far plane past the farthest corner of
+// the scene's bounds.
+void finishGltfViews(Scene& scene);
 
 // A glTF light without `range` has infinite range; lidr's lights need a finite volume. It gets the range r
 // where it stops being visible: with the specification's window over r it differs from the infinite light by

@@ -82,6 +82,12 @@ public:
         bool anyMoves = false;
         for (const LightPath& path : scene_.lightPaths) anyMoves = anyMoves || path.kind != LightPath::Kind::Static;
         if (!anyMoves) scene_.lightPaths.clear();
+        // The glTF models' cameras: the first one met is the view unless the file gives "camera".
+        finishGltfViews(scene_);
+        if (!root.has("camera") && firstModelView_ >= 0) {
+            scene_.view = firstModelView_;
+            scene_.camera = scene_.views[size_t(firstModelView_)].camera;
+        }
 
         try {
             scene_.validate(maxResolution);
@@ -193,9 +199,16 @@ private:
         try {
             const std::string path = resolve(file.text());
             const std::string extension = lowerCaseExtension(path);
-            if (extension == ".gltf" || extension == ".glb")
-                appendGltf(scene_, path, transform, material);  // the scene file's camera stays the view
-            else
+            if (extension == ".gltf" || extension == ".glb") {
+                // Its cameras are numbered after those of the models before it, named with the file.
+                const GltfContents contents = appendGltf(scene_, path, transform, material);
+                if (firstModelView_ < 0 && contents.firstView >= 0)
+                    firstModelView_ = int(scene_.views.size()) + contents.firstView;
+                for (SceneView view : contents.views) {
+                    view.name = file.text() + " " + view.name;
+                    scene_.views.push_back(view);
+                }
+            } else
                 appendObj(scene_, path, transform, material, objOptions);
         } catch (const Error& error) {
             file.fail(error.what());
@@ -436,6 +449,7 @@ private:
     const std::string baseDir_;
     const ObjImportOptions objDefaults_;
     Scene scene_;
+    int firstModelView_ = -1;  // scene_.views' index of the first usable glTF camera met, -1: none
 };
 
 }  // namespace

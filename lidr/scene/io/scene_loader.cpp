@@ -9,21 +9,6 @@
 
 namespace lidr {
 
-namespace {
-
-// A glTF camera without zfar (infinite) gets a far plane past the farthest corner of the scene's bounds.
-float farPlaneEnclosing(const Camera& camera, const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
-    float farthest = 0.0f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? boundsMax.x : boundsMin.x, (corner & 2) ? boundsMax.y : boundsMin.y,
-                          (corner & 4) ? boundsMax.z : boundsMin.z);
-        farthest = std::max(farthest, glm::length(p - camera.position));
-    }
-    return std::max(1.5f * farthest, 2.0f * camera.nearPlane);
-}
-
-}  // namespace
-
 Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults) {
     const std::string extension = lowerCaseExtension(path);
     const std::string format = unsupportedModelFormat(path);
@@ -33,25 +18,39 @@ Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults) {
     if (extension != ".obj" && extension != ".gltf" && extension != ".glb") return loadSceneFile(path, objDefaults);
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
-    bool hasCamera = false;
     if (extension == ".obj") {
         appendObj(scene, path, glm::mat4(1.0f), -1, objDefaults);
     } else {
         const GltfContents contents = appendGltf(scene, path, glm::mat4(1.0f));
-        hasCamera = contents.hasCamera;
-        scene.camera = contents.camera;
+        scene.views = contents.views;
+        scene.view = contents.firstView;
+        finishGltfViews(scene);
     }
-    if (!hasCamera) {
+    if (scene.view >= 0)
+        scene.camera = scene.views[size_t(scene.view)].camera;
+    else
         scene.camera = cameraFramingBounds(scene.boundsMin(), scene.boundsMax(), scene.camera.fovYDegrees);
-    } else if (!(scene.camera.farPlane > 0.0f)) {
-        scene.camera.farPlane = farPlaneEnclosing(scene.camera, scene.boundsMin(), scene.boundsMax());
-    }
     try {
         scene.validate();
     } catch (const Error& error) {
         throw Error(path + ": " + error.what());
     }
     return scene;
+}
+
+void chooseView(Scene& scene, int index) {
+    const size_t count = scene.views.size();
+    if (index < 0 || size_t(index) >= count) {
+        const std::string range = count == 0 ? "no cameras (only a glTF model's cameras can be chosen)"
+                                  : count == 1 ? "1 camera (0; its glTF models' cameras in their order)"
+                                               : std::to_string(count) + " cameras (0 .. " + std::to_string(count - 1) +
+                                                     "; its glTF models' cameras in their order)";
+        throw Error("camera " + std::to_string(index) + " is out of range: the scene has " + range);
+    }
+    const SceneView& view = scene.views[size_t(index)];
+    if (!view.unusable.empty()) throw Error(view.name + " cannot be the view: " + view.unusable);
+    scene.camera = view.camera;
+    scene.view = index;
 }
 
 }  // namespace lidr
