@@ -55,7 +55,7 @@ Scene quadScene(const TempDir& dir, const Json& material, const std::vector<Imag
     for (const ImageRGBA8& image : images) file.pngImage(dir, image);
     file.doc["textures"] = Json::array();
     for (size_t k = 0; k < images.size(); ++k) file.doc["textures"].push_back({{"source", k}});
-    file.doc["materials"] = {material};
+    file.doc["materials"] = Json::array({material});  // not {material}: clang takes that as a copy of the object
     Scene scene = loadScene(file.writeGltf(dir, "quad.gltf"));
     scene.camera.position = glm::vec3(0.0f, 0.0f, fromBehind ? -3.0f : 3.0f);
     scene.camera.target = glm::vec3(0.0f);
