@@ -187,7 +187,7 @@ TEST_CASE("auto: on controlled overlap k the measured budget is k, nothing is dr
 }
 
 TEST_CASE("auto: over 16 lights on a pixel, budget 16 keeps the highest priorities and reports the rest",
-          "[render][auto]") {
+          "[render][auto][every-gl]") {
     Scene scene = floorScene();
     scene.lights.clear();
     for (int i = 0; i < 20; ++i)  // 20 coincident lights, distinct priorities
@@ -273,7 +273,7 @@ TEST_CASE("auto: frames follow the scene without dropping a light, and narrow on
     }
 }
 
-TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][auto]") {
+TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][auto][every-gl]") {
     testContext();
     const Scene scene = controlledScene(2);
     LidrOptions o;
@@ -291,7 +291,7 @@ TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][aut
 }
 
 TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again when the lights change",
-          "[render][auto][auto-mode]") {
+          "[render][auto][auto-mode][every-gl]") {
     testContext();
     Scene scene = floorScene();
     scene.lights.clear();
@@ -336,7 +336,7 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
 }
 
 TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candidate where they are drawn",
-          "[lidr][auto][auto-mode]") {
+          "[lidr][auto][auto-mode][every-gl]") {
     testContext();
     Scene scene = floorScene();
     scene.lights = {light(glm::vec3(0.0f, 0.5f, 0.0f), 3.0f)};

@@ -547,7 +547,7 @@ TEST_CASE("glTF: a scene file is seen through its models' first camera unless it
     }
 }
 
-TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf]") {
+TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf][every-gl]") {
     TempDir dir;
     // A floor quad and a box-like tent, with a red material, two point lights and a camera.
     GltfFile file;

@@ -183,7 +183,7 @@ TEST_CASE("OBJ: a negative Ke is an error naming the keyword; scene-file materia
                         Contains("materials[0].emissive: colour components must be >= 0"));
 }
 
-TEST_CASE("emissive materials look the same in every mode, with no light at all", "[obj]") {
+TEST_CASE("emissive materials look the same in every mode, with no light at all", "[obj][every-gl]") {
     TempDir dir;
     lidr::Scene scene = lidr::loadScene(dir.write("glow.json", R"({
         "camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
