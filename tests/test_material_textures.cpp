@@ -285,7 +285,7 @@ std::vector<DielectricCase> dielectricCases() {
 }  // namespace
 
 TEST_CASE("glTF extensions together: emissive strength, texture transform, ior and specular against the BRDF model, "
-          "every mode as the reference", "[material-textures]") {
+          "every mode as the reference", "[material-textures][every-gl]") {
     // One small quad: an emissive texture through KHR_texture_transform (offset, rotation, scale, the TEXCOORD_1
     // override), emissiveStrength 3 (the emission 3 times brighter in linear light), ior 2 and a coloured
     // specular at weight 0.6: F0 = min(((2 - 1) / (2 + 1))^2 x (2, 1, 0.5), 1) x 0.6, F90 = 0.6.
