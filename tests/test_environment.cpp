@@ -215,3 +215,181 @@ TEST_CASE("environment storage: half floats, RGBM and the 16-bit table decode wi
         CHECK(glm::distance(ab, exact) < 0.02);  // between texel centres (n.v 15.5 / 31): linear in between
     }
 }
+
+// ------------------------------------------------------------------------------------------------------------
+// GL: every mode with the environment on, against the reference and the CPU model.
+
+#include <memory>
+
+#include "gl_test_context.h"
+#include "lidr/eval/image_compare.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/render/environment_maps.h"
+#include "lidr/render/output_transform.h"
+#include "lidr/scene/primitives.h"
+#include "render_helpers.h"
+
+using namespace lidr::test;
+
+namespace {
+
+// The metallic x roughness sweep of flat tiles (test_brdf.cpp's) in the default environment: metallic along x,
+// roughness 0 to 1 along z, an orange-ish base colour; one light, no uniform ambient, so the environment is most of
+// what the tiles show (their reflections sweep the room's walls, floor and panels).
+Scene environmentSweep(int width, int height) {
+    Scene scene;
+    scene.name = "environment-sweep";
+    for (int mi = 0; mi < 4; ++mi)
+        for (int ri = 0; ri < 4; ++ri) {
+            Material m;
+            m.name = "m" + std::to_string(mi) + "r" + std::to_string(ri);
+            m.metallicRoughness = true;
+            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
+            m.metallic = float(mi) / 3.0f;
+            m.roughness = float(ri) / 3.0f;
+            scene.materials.push_back(m);
+            addPlane(scene, glm::vec3(-3.3f + 2.2f * float(mi), 0.0f, -3.3f + 2.2f * float(ri)), glm::vec2(2.0f),
+                     int(scene.materials.size() - 1), 4);
+        }
+    scene.camera.position = glm::vec3(0.5f, 5.0f, 8.5f);
+    scene.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
+    scene.camera.fovYDegrees = 55.0f;
+    scene.camera.nearPlane = 0.5f;
+    scene.camera.farPlane = 40.0f;
+    scene.width = width;
+    scene.height = height;
+    scene.ambient = glm::vec3(0.0f);
+    scene.lights = {light({-1.0f, 2.5f, 1.0f}, 7.0f, {0.6f, 0.55f, 0.5f})};
+    scene.environment = defaultEnvironment();
+    return scene;
+}
+
+// floorScene with shiny and rough metals and dielectrics, in the default environment: curved surfaces (the
+// sphere) and a box, for the image comparisons between modes.
+Scene environmentFloor() {
+    Scene scene = floorScene();
+    const float metallic[] = {1.0f, 0.0f, 1.0f, 0.0f}, roughness[] = {0.15f, 0.4f, 0.6f, 0.9f};
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        Material& m = scene.materials[i];
+        m.metallicRoughness = true;
+        m.metallic = metallic[i % 4];
+        m.roughness = roughness[i % 4];
+    }
+    scene.lights = {light({0.0f, 3.0f, 0.0f}, 9.0f, {0.8f, 0.7f, 0.6f}), light({3.0f, 1.0f, 2.0f}, 5.0f, {0.3f, 0.5f, 1.0f})};
+    scene.ambient = glm::vec3(0.02f);
+    scene.environment = defaultEnvironment();
+    scene.environmentIntensity = 0.8f;
+    return scene;
+}
+
+std::vector<std::string> environmentModes() {
+    if (testGl().gles) return {"lidr", "forward-brute", "forward-multipass"};  // tiled's depth bounds: desktop only
+    return {"lidr", "tiled", "forward-brute", "forward-multipass"};
+}
+
+ImageRGBA8 renderWith(const Scene& scene, const std::string& mode, const ShadingParameters& shading, bool fixedTable,
+                      FrameStats* stats = nullptr) {
+    RenderModeOptions o;
+    o.mode = mode;
+    o.forceFixedLightTable = fixedTable;
+    std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    r->render(scene.camera, scene.lightsAt(scene.time), shading);
+    if (stats) *stats = r->lastFrame();
+    return r->targets().readColor();
+}
+
+struct ModelCheck {
+    long compared = 0, withinOne = 0, bright = 0;
+    int worst = 0;
+};
+
+// Every pixel of the sweep's tiles away from their edges against the CPU model: the environment read from what
+// the GPU holds (EnvironmentMaps::stored), plus the light, through the output transform.
+ModelCheck checkSweepAgainstModel(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth,
+                                  const ShadingParameters& shading, const StoredEnvironment& stored, bool diffuseOnly) {
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    ModelCheck c;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const float d = depth.at(x, y);
+            if (d >= 1.0f) continue;
+            const glm::vec3 p = unprojectPixel(cam, x, y, d);
+            const float u = (p.x + 4.4f) / 2.2f, v = (p.z + 4.4f) / 2.2f;
+            const int mi = int(std::floor(u)), ri = int(std::floor(v));
+            if (mi < 0 || mi > 3 || ri < 0 || ri > 3) continue;
+            const float fu = u - float(mi), fv = v - float(ri);
+            if (fu < 0.08f || fu > 0.83f || fv < 0.08f || fv > 0.83f) continue;
+            const Material& m = scene.materials[size_t(mi * 4 + ri)];
+            const BrdfSurface s = brdfSurface(m, glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
+            glm::dvec3 linear = shadeAmbient(s, glm::dvec3(scene.ambient));
+            linear += shadeEnvironment(s, *scene.environment, stored, scene.environmentIntensity, diffuseOnly);
+            for (const PointLight& l : scene.lights) linear += shadePointLight(s, l);
+            const glm::dvec3 expected = 255.0 * applyOutputTransform(linear, shading.output);
+            const uint8_t* got = image.at(x, y);
+            int e = 0;
+            for (int k = 0; k < 3; ++k) e = std::max(e, int(std::lround(std::abs(double(got[k]) - expected[k]))));
+            ++c.compared;
+            if (e <= 1) ++c.withinOne;
+            if (expected.g > 60.0) ++c.bright;
+            c.worst = std::max(c.worst, e);
+        }
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("environment light: every mode equals the reference, the frame says how it looked the environment up",
+          "[environment]") {
+    testContext();
+    const bool fixedTable = GENERATE(false, true);  // half floats / RGBM (the path of contexts without float textures)
+    DYNAMIC_SECTION((fixedTable ? "RGBM8" : "half-float") << " storage") {
+        Scene scene = environmentFloor();
+        scene.width = isSoftpipe() ? 96 : 160;
+        scene.height = isSoftpipe() ? 72 : 120;
+        const ShadingParameters shading = sceneShading(scene);
+        FrameStats referenceStats;
+        const ImageRGBA8 reference = renderWith(scene, "forward-brute", shading, fixedTable, &referenceStats);
+        INFO("reference: " << referenceStats.environment);
+        const bool lod = testGl().textureLod;
+        CHECK(referenceStats.environment.find(lod ? ", lod" : ", bias") != std::string::npos);
+        CHECK(referenceStats.environment.find(fixedTable || testGl().gles ? "RGBM8" : "half-float") != std::string::npos);
+        // Without the environment the image is darker: the environment is really there.
+        ShadingParameters without = shading;
+        without.environment = {};
+        const ImageError lit = compareImages(renderWith(scene, "forward-brute", without, fixedTable), reference);
+        CHECK(lit.maxAbsError > 40);
+        for (const std::string& mode : environmentModes()) {
+            if (mode == "forward-brute") continue;
+            FrameStats stats;
+            const ImageError e = compareImages(renderWith(scene, mode, shading, fixedTable, &stats), reference);
+            INFO(mode << ": " << stats.environment << ": max " << e.maxAbsError << ", PSNR " << e.psnr);
+            CHECK(stats.environment == referenceStats.environment);
+            if (mode == "forward-multipass")
+                CHECK(e.psnr > 30.0);  // its 8-bit linear sum, clamped before the tone map (doc/colour.md)
+            else
+                CHECK(e.maxAbsError == 0);
+        }
+    }
+}
+
+TEST_CASE("environment light: the sweep matches the CPU model (forward-brute, small)", "[environment]") {
+    testContext();
+    Scene scene = environmentSweep(isSoftpipe() ? 96 : 128, isSoftpipe() ? 72 : 96);
+    const ShadingParameters shading = sceneShading(scene);
+    RenderModeOptions o;
+    o.mode = "forward-brute";
+    std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
+    r->render(scene.camera, scene.lights, shading);
+    if (!testGl().textureLod) SUCCEED("no explicit LOD here: the bias lookup, compared with the LOD path in [slow]");
+    else {
+        EnvironmentMaps maps(testGl(), true);
+        maps.prepare(shading.environment);
+        const ModelCheck c = checkSweepAgainstModel(scene, r->targets().readColor(), r->targets().readDepth(), shading,
+                                                    *maps.stored(), false);
+        INFO(c.compared << " compared, " << c.withinOne << " within one step, worst " << c.worst << ", bright " << c.bright);
+        REQUIRE(c.compared > long(scene.width) * scene.height / 8);
+        REQUIRE(c.bright > c.compared / 4);
+        CHECK(c.withinOne >= c.compared * 99 / 100);
+        CHECK(c.worst <= 3);
+    }
+}

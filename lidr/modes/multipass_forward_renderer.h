@@ -20,6 +20,7 @@
 #include "lidr/render/present.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/shadow_maps.h"
 
 namespace lidr {
@@ -62,6 +63,7 @@ private:
     gl::Program ambient_, light_;
     ShaderDefines lightDefines_;  // light_'s, for its shadowed twin (ShadowMaps::program)
     ShadowMaps shadows_;
+    EnvironmentMaps environment_;
     OutputEncodePass outputEncode_;  // its passes sum linear light; the output transform runs over the sum
     FrameTimer timer_;
     const GlInfo info_;

@@ -9,6 +9,7 @@
 #include "lidr/render/light_table.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/shadow_maps.h"
 
 namespace lidr {
@@ -41,6 +42,7 @@ private:
     gl::Program program_;
     ShaderDefines defines_;
     ShadowMaps shadows_;
+    EnvironmentMaps environment_;
     FrameTimer timer_;
     bool transparency_ = false;  // transparent meshes drawn where the scene has them (objects come and go)
     bool sampleShading_ = false;  // shade every MSAA sample, as LIDR's per-sample path does

@@ -19,6 +19,7 @@
 #include "lidr/render/light_table.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/shadow_maps.h"
 #include "lidr/modes/tile_depth_bounds.h"
 
@@ -100,6 +101,7 @@ private:
     gl::Program program_;
     ShaderDefines programDefines_;  // program_'s, for its shadowed twin (ShadowMaps::program)
     ShadowMaps shadows_;
+    EnvironmentMaps environment_;
     FrameTimer timer_;
     const GlInfo info_;
     std::vector<TileDepthRange> tileDepth_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <thread>
 
@@ -389,6 +390,14 @@ Environment prefilterEnvironment(const CubeImage& radiance, const std::string& n
                      " texels a face, level " + std::to_string(level) + " of " + std::to_string(levels - 1) + ")");
     }
     return env;
+}
+
+void validateEnvironmentIntensity(float intensity, const std::string& what) {
+    if (!(std::isfinite(intensity) && intensity >= 0.0f)) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(intensity));
+        throw Error(what + " must be a finite number >= 0, got " + value);
+    }
 }
 
 std::shared_ptr<const Environment> defaultEnvironment() {

@@ -84,6 +84,9 @@ std::array<double, 9> shBasis(const glm::dvec3& direction);
 std::array<glm::dvec3, 9> irradianceSh(const CubeImage& radiance);
 glm::dvec3 irradianceOverPi(const std::array<glm::dvec3, 9>& sh, const glm::dvec3& normal);
 
+// Throws lidr::Error "`what` must be a finite number >= 0, got X" for a negative or non-finite intensity.
+void validateEnvironmentIntensity(float intensity, const std::string& what);
+
 // Progress of a long step, one call per step done ("prefiltering level 2 of 4"); tools print it on stderr.
 using EnvironmentProgress = std::function<void(const std::string&)>;
 

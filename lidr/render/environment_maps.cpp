@@ -1,0 +1,124 @@
+#include "lidr/render/environment_maps.h"
+#include "lidr/base/gl.h"
+
+#include <sstream>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/bindings.h"
+
+namespace lidr {
+
+EnvironmentMaps::EnvironmentMaps(const GlInfo& info, bool floatTextures) : info_(info) {
+    storage_ = floatTextures && info.textureFloat && !info.gles ? EnvironmentStorage::HalfFloat : EnvironmentStorage::Rgbm8;
+    const bool above = info.maxTextureUnits > int(gl::kUnitEnvironmentSplitSum);
+    specularUnit_ = above ? int(gl::kUnitEnvironmentSpecular) : int(gl::kUnitEnvironmentSpecularLow);
+    splitSumUnit_ = above ? int(gl::kUnitEnvironmentSplitSum) : int(gl::kUnitEnvironmentSplitSumLow);
+}
+
+EnvironmentLookup EnvironmentMaps::lookupFor(const GlInfo& info, EnvironmentLight::Lookup choice, std::string* reason) {
+    if (choice == EnvironmentLight::Lookup::DiffuseOnly) {
+        if (reason) *reason = "diffuse only as asked";
+        return EnvironmentLookup::DiffuseOnly;
+    }
+    if (choice == EnvironmentLight::Lookup::Bias) {
+        if (reason) *reason = "mip bias as asked";
+        return EnvironmentLookup::Bias;
+    }
+    if (info.textureLod) return EnvironmentLookup::Lod;
+    if (reason)
+        *reason = std::string("no ") + (info.gles ? "EXT_shader_texture_lod" : "ARB_shader_texture_lod") +
+                  ": roughness as a mip bias over the implicit LOD";
+    return EnvironmentLookup::Bias;
+}
+
+void EnvironmentMaps::prepare(const EnvironmentLight& light, int indexTargets) {
+    reason_.clear();
+    if (!light.on()) {
+        lookup_ = EnvironmentLookup::None;
+        intensity_ = 0.0f;
+        return;
+    }
+    if (light.map != uploaded_) {
+        upload(*light.map);
+        uploaded_ = light.map;
+    }
+    intensity_ = light.intensity;
+    lookup_ = lookupFor(info_, light.lookup, &reason_);
+    if (lookup_ != EnvironmentLookup::DiffuseOnly && specularUnit_ == int(gl::kUnitEnvironmentSpecularLow) &&
+        indexTargets > specularUnit_) {
+        lookup_ = EnvironmentLookup::DiffuseOnly;
+        reason_ = std::to_string(info_.maxTextureUnits) + " texture units and " + std::to_string(indexTargets) +
+                  " index targets: the specular cube's units (6, 7) are the index targets'";
+    }
+}
+
+void EnvironmentMaps::upload(const Environment& environment) {
+    stored_ = std::make_unique<StoredEnvironment>(storeEnvironment(environment, storage_));
+    const StoredEnvironment& s = *stored_;
+    const int levels = int(s.levels.size());
+    const float maxLod = float(s.roughnessLevels - 1);
+    if (storage_ == EnvironmentStorage::HalfFloat) {
+        // The values are already rounded to half floats: GL's conversion from float keeps them exactly.
+        cube_ = gl::Texture::createCube(GL_RGB16F_ARB, s.levels[0].size, levels, GL_RGBA, GL_FLOAT,
+                                        [&](int level, int face) {
+                                            const StoredCube& c = s.levels[size_t(level)];
+                                            return static_cast<const void*>(&c.texels[size_t(face) * size_t(c.size) * size_t(c.size)]);
+                                        },
+                                        maxLod);
+        splitSum_ = gl::Texture::create2D(GL_RGBA16F_ARB, s.tableSize, s.tableSize, GL_RGBA, GL_FLOAT, s.table.data(), GL_LINEAR);
+    } else {
+        std::vector<std::vector<uint8_t>> bytes(s.levels.size());
+        for (size_t l = 0; l < s.levels.size(); ++l)
+            for (const glm::vec4& t : s.levels[l].texels)
+                for (int k = 0; k < 4; ++k) bytes[l].push_back(uint8_t(t[k]));
+        cube_ = gl::Texture::createCube(GL_RGBA8, s.levels[0].size, levels, GL_RGBA, GL_UNSIGNED_BYTE,
+                                        [&](int level, int face) {
+                                            const size_t faceBytes = size_t(4) * size_t(s.levels[size_t(level)].size) *
+                                                                     size_t(s.levels[size_t(level)].size);
+                                            return static_cast<const void*>(&bytes[size_t(level)][size_t(face) * faceBytes]);
+                                        },
+                                        maxLod);
+        std::vector<uint8_t> table;
+        for (const glm::vec4& t : s.table)
+            for (int k = 0; k < 4; ++k) table.push_back(uint8_t(t[k]));
+        splitSum_ = gl::Texture::create2D(GL_RGBA8, s.tableSize, s.tableSize, GL_RGBA, GL_UNSIGNED_BYTE, table.data(), GL_LINEAR);
+    }
+    checkGl("environment upload");
+}
+
+uint32_t EnvironmentMaps::variantKey(const gl::Program& program) const {
+    return environmentVariantKey(program, lookup_, rgbm());
+}
+
+void EnvironmentMaps::bind(const gl::Program& program) const {
+    program.setIfDeclared("uEnvironmentSpecular", specularUnit_);
+    program.setIfDeclared("uEnvironmentSplitSum", splitSumUnit_);
+    if (!program.declares("uEnvironmentSh")) return;
+    glm::vec3 sh[9] = {};
+    glm::vec4 params(0.0f, 0.0f, 0.0f, 2.0f);
+    if (lookup_ != EnvironmentLookup::None && stored_) {
+        for (int i = 0; i < 9; ++i) sh[i] = glm::vec3(uploaded_->sh[size_t(i)] * double(intensity_));
+        params = glm::vec4(intensity_, rgbm() ? stored_->range : 0.0f, float(stored_->roughnessLevels - 1),
+                           float(stored_->tableSize));
+        if (lookup_ != EnvironmentLookup::DiffuseOnly) {
+            cube_.bind(specularUnit_);
+            splitSum_.bind(splitSumUnit_);
+            glActiveTexture(GL_TEXTURE0);
+        }
+    }
+    program.uniform<glm::vec3>("uEnvironmentSh").setArray(sh, 9);
+    program.set("uEnvironment", params);
+}
+
+std::string EnvironmentMaps::describe() const {
+    if (lookup_ == EnvironmentLookup::None || !stored_) return "none";
+    std::ostringstream s;
+    s << uploaded_->name << ", intensity " << intensity_ << ", " << environmentLookupName(lookup_);
+    if (!reason_.empty()) s << " (" << reason_ << ")";
+    s << ", " << (rgbm() ? "RGBM8" : "half-float") << " cube " << stored_->levels[0].size << " x "
+      << stored_->levels[0].size << " x 6, " << stored_->roughnessLevels << " roughness levels, units " << specularUnit_
+      << " and " << splitSumUnit_;
+    return s.str();
+}
+
+}  // namespace lidr
