@@ -173,6 +173,15 @@ void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::Shad
       << firstFrameMaps << " maps drawn on the first frame, " << last.shadowMapsDrawn << " on the last\n";
 }
 
+// The environment light as the frame looked it up (FrameStats::environment): summary.json's "environment" and
+// the text line.
+void addEnvironmentSummary(nlohmann::json& summary, std::ostream& s, const Scene& scene, const FrameStats& last) {
+    summary["environment"] = {{"description", last.environment},
+                              {"name", scene.environment ? scene.environment->name : std::string("none")},
+                              {"intensity", scene.environmentIntensity}};
+    s << "environment " << last.environment << "\n";
+}
+
 int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
                     bool withReference, const demo::RendererChoice& rc, const demo::ShadowChoice& shadowChoice) {
     std::vector<PointLight> lights = scene.lightsAt(scene.time);
@@ -213,6 +222,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
     addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
+    addEnvironmentSummary(summary, s, scene, stats);
     if (autoMode) {
         summary["auto_mode"] = {{"chosen", autoMode->lastMode()}, {"reason", autoMode->reason()},
                                 {"candidates", autoMode->candidates()}};
@@ -424,6 +434,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
     addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
+    addEnvironmentSummary(summary, s, scene, stats);
     if (decision.autoBudget || decision.autoIndexBits || *decision.budgetFallback) {
         s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
           << (decision.autoIndexBits ? " (narrowest)" : " (fixed)")

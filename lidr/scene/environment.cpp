@@ -172,6 +172,24 @@ CubeImage downsampleCube(const CubeImage& cube) {
     return out;
 }
 
+CubeImage resampleCube(const CubeImage& source, int size) {
+    CubeImage from = source;
+    while (from.size >= 4 * size && from.size % 2 == 0) from = downsampleCube(from);
+    if (from.size == size) return from;
+    CubeImage cube(size);
+    constexpr int n = 4;
+    for (int f = 0; f < 6; ++f)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                glm::dvec3 sum(0.0);
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i)
+                        sum += sampleCubeBilinear(from, cubeDirection(f, (x + (i + 0.5) / n) / size, (y + (j + 0.5) / n) / size));
+                cube.at(f, x, y) = glm::vec3(sum / double(n * n));
+            }
+    return cube;
+}
+
 glm::dvec2 equirectCoordinates(const glm::dvec3& d) {
     return {std::atan2(d.z, d.x) / (2.0 * kPi) + 0.5, std::asin(std::clamp(d.y, -1.0, 1.0)) / kPi + 0.5};
 }

@@ -58,6 +58,9 @@ glm::dvec3 sampleCubeBilinear(const CubeImage& cube, const glm::dvec3& direction
 glm::dvec3 sampleCubeTrilinear(const std::vector<CubeImage>& levels, const glm::dvec3& direction, double lod);
 // The level below: each texel the mean of the four above it (a cube of size 1 stays).
 CubeImage downsampleCube(const CubeImage& cube);
+// The cube at another size: halved (box) while at least four times `size` and even, then 4 x 4 bilinear
+// samples a texel.
+CubeImage resampleCube(const CubeImage& cube, int size);
 
 // Equirectangular mapping as three.js's equirectUv (and so the .hdr panoramas other viewers read): u =
 // atan2(z, x) / 2 pi + 0.5 across, v = asin(y) / pi + 0.5 up, so the top row looks up (+y), the image's middle
