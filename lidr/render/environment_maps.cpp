@@ -3,13 +3,19 @@
 
 #include <sstream>
 
+#include <glm/gtc/packing.hpp>
+
 #include "lidr/base/error.h"
 #include "lidr/gl/bindings.h"
 
 namespace lidr {
 
+namespace {
+constexpr GLenum kHalfFloatOes = 0x8D61;  // OES_texture_half_float's HALF_FLOAT_OES (not GL 3.0's HALF_FLOAT)
+}  // namespace
+
 EnvironmentMaps::EnvironmentMaps(const GlInfo& info, bool floatTextures) : info_(info) {
-    storage_ = floatTextures && info.textureFloat && !info.gles ? EnvironmentStorage::HalfFloat : EnvironmentStorage::Rgbm8;
+    storage_ = floatTextures && info.halfFloatLinear ? EnvironmentStorage::HalfFloat : EnvironmentStorage::Rgbm8;
     const bool above = info.maxTextureUnits > int(gl::kUnitEnvironmentSplitSum);
     specularUnit_ = above ? int(gl::kUnitEnvironmentSpecular) : int(gl::kUnitEnvironmentSpecularLow);
     splitSumUnit_ = above ? int(gl::kUnitEnvironmentSplitSum) : int(gl::kUnitEnvironmentSplitSumLow);
@@ -57,7 +63,24 @@ void EnvironmentMaps::upload(const Environment& environment) {
     const StoredEnvironment& s = *stored_;
     const int levels = int(s.levels.size());
     const float maxLod = float(s.roughnessLevels - 1);
-    if (storage_ == EnvironmentStorage::HalfFloat) {
+    if (storage_ == EnvironmentStorage::HalfFloat && info_.gles) {
+        // OES_texture_half_float: the halves themselves (the values are half floats already).
+        std::vector<std::vector<uint16_t>> halves(s.levels.size());
+        for (size_t l = 0; l < s.levels.size(); ++l)
+            for (const glm::vec4& t : s.levels[l].texels)
+                for (int k = 0; k < 4; ++k) halves[l].push_back(glm::packHalf1x16(t[k]));
+        cube_ = gl::Texture::createCube(GL_RGBA, s.levels[0].size, levels, GL_RGBA, kHalfFloatOes,
+                                        [&](int level, int face) {
+                                            const size_t faceHalves = size_t(4) * size_t(s.levels[size_t(level)].size) *
+                                                                      size_t(s.levels[size_t(level)].size);
+                                            return static_cast<const void*>(&halves[size_t(level)][size_t(face) * faceHalves]);
+                                        },
+                                        maxLod);
+        std::vector<uint16_t> table;
+        for (const glm::vec4& t : s.table)
+            for (int k = 0; k < 4; ++k) table.push_back(glm::packHalf1x16(t[k]));
+        splitSum_ = gl::Texture::create2D(GL_RGBA, s.tableSize, s.tableSize, GL_RGBA, kHalfFloatOes, table.data(), GL_LINEAR);
+    } else if (storage_ == EnvironmentStorage::HalfFloat) {
         // The values are already rounded to half floats: GL's conversion from float keeps them exactly.
         cube_ = gl::Texture::createCube(GL_RGB16F_ARB, s.levels[0].size, levels, GL_RGBA, GL_FLOAT,
                                         [&](int level, int face) {
@@ -108,6 +131,7 @@ void EnvironmentMaps::bind(const gl::Program& program) const {
     }
     program.uniform<glm::vec3>("uEnvironmentSh").setArray(sh, 9);
     program.set("uEnvironment", params);
+    program.setIfDeclared("uEnvironmentSize", stored_ ? float(stored_->levels[0].size) : 1.0f);
 }
 
 std::string EnvironmentMaps::describe() const {

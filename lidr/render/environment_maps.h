@@ -23,7 +23,8 @@ namespace lidr {
 class EnvironmentMaps {
 public:
     // floatTextures false: RGBA8 storage even where the context has float textures (a renderer's
-    // forceFixedLightTable: the path of contexts without them). OpenGL ES and WebGL always store RGBA8.
+    // forceFixedLightTable: the path of contexts without them). Half floats need linear filtering of them
+    // (GlInfo::halfFloatLinear: desktop float textures, ES OES_texture_half_float + _linear).
     EnvironmentMaps(const GlInfo& info, bool floatTextures);
     // The frame's environment: uploaded where it is another Environment than the last frame's (the intensity is a
     // uniform), the lookup chosen. indexTargets: the index targets LIDR's forward pass binds this frame (0 for

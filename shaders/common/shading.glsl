@@ -85,6 +85,7 @@ LidrSurface lidrSurface() {
 uniform vec3 uEnvironmentSh[9];  // E(n) / pi x intensity: c0 + c1 y + c2 z + c3 x + c4 xy + c5 yz + c6 (3z^2 - 1) + c7 xz + c8 (x^2 - y^2)
 uniform vec4 uEnvironment;       // intensity, RGBM range (0: half floats), the LOD of roughness 1, split-sum table size
 uniform samplerCube uEnvironmentSpecular;  // GGX-prefiltered radiance, roughness r at LOD r x uEnvironment.z
+uniform float uEnvironmentSize;            // its level 0's texels a side
 uniform sampler2D uEnvironmentSplitSum;    // (A, B) per (n.v, roughness) at texel centres
 
 // The irradiance over pi (a white Lambert surface's light), from 9 spherical harmonics (lidr::irradianceOverPi).
@@ -134,7 +135,19 @@ vec3 lidrEnvironment(LidrSurface s, float nDotV, float roughness) {
 #if LIDR_ENVIRONMENT_LOOKUP == 1
     vec4 texel = textureCubeLod(uEnvironmentSpecular, r, roughness * uEnvironment.z);
 #else
-    vec4 texel = textureCube(uEnvironmentSpecular, r, roughness * uEnvironment.z);  // bias over the implicit LOD
+    // A bias over the implicit LOD GL takes from the pixel's derivatives: the roughness's LOD minus an estimate of
+    // that implicit LOD, so the two add up to about the roughness's (where derivatives exist: desktop GLSL 1.20,
+    // ES with OES_standard_derivatives; else the roughness's LOD as the bias alone, sharper where the reflection
+    // changes slowly across pixels). The estimate: the reflection's change per pixel over twice its major axis
+    // (a face's coordinates run over [-|ma|, |ma|]) in texels of level 0.
+    float bias = roughness * uEnvironment.z;
+#if !defined(GL_ES) || defined(GL_OES_standard_derivatives)
+    vec3 dx = dFdx(r), dy = dFdy(r);
+    float major = max(abs(r.x), max(abs(r.y), abs(r.z)));
+    float footprint = sqrt(max(dot(dx, dx), dot(dy, dy))) * uEnvironmentSize * 0.5 / major;
+    bias -= log2(max(footprint, 1e-6));
+#endif
+    vec4 texel = textureCube(uEnvironmentSpecular, r, bias);
 #endif
     vec2 ab = lidrEnvironmentSplitSum(nDotV, roughness);
     light += lidrEnvironmentRadiance(texel) * (s.f0 * ab.x + ab.y) * uEnvironment.x;
