@@ -66,6 +66,9 @@ void SceneChoice::addOptions(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--environment-intensity", environmentIntensity,
                    "Scale of the environment light's radiance, a finite number >= 0 (default: the scene's, 1)");
+    app.add_option("--export-environment", exportEnvironment,
+                   "Also write the environment light as an equirectangular Radiance HDR panorama (1024 x 512, three.js's "
+                   "mapping; scripts/threejs_compare.py gives it to three.js)");
 }
 
 namespace {
@@ -99,16 +102,21 @@ void SceneChoice::applyEnvironment(Scene& scene, bool model) const {
         scene.environmentIntensity = float(*environmentIntensity);
     }
     if (environment == "auto") {
-        // Models carry no environment: they get the default one, which takes the uniform ambient's place.
-        if (model && !scene.environment) {
-            scene.environment = defaultEnvironment();
-            scene.ambient = glm::vec3(0.0f);
-        }
+        if (model) giveModelDefaultEnvironment(scene);
         return;
     }
     scene.environment = loadEnvironment(environment, slowStepsOnStderr());
     if (model && scene.environment) scene.ambient = glm::vec3(0.0f);
 }
+
+namespace {
+void exportEnvironmentPanorama(const Scene& scene, const std::string& file) {
+    if (!scene.environment)
+        throw Error("--export-environment writes the environment light, and this scene has none (--environment default)");
+    writeHdr(file, equirectFromCube(scene.environment->specular[0], 1024));
+    std::cout << "environment " << scene.environment->name << " written to " << file << " (1024 x 512)\n";
+}
+}  // namespace
 
 Scene SceneChoice::load() const {
     // Checked first, before the scene is built; float(time) must also stay finite.
@@ -136,6 +144,7 @@ Scene SceneChoice::load() const {
         model = ext == ".gltf" || ext == ".glb" || ext == ".obj";
     }
     applyEnvironment(scene, model);
+    if (!exportEnvironment.empty()) exportEnvironmentPanorama(scene, exportEnvironment);
     if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
     if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");
     if (lights) {

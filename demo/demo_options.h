@@ -27,6 +27,7 @@ struct SceneChoice {
     // default, none or a file (lidr::loadEnvironment); --environment-intensity (unset: the scene's, 1).
     std::string environment = "auto";
     std::optional<double> environmentIntensity;
+    std::string exportEnvironment;  // --export-environment FILE.hdr: the environment's panorama (level 0), written on load
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
     // The environment `load` gives `scene`, read from `modelFile` (empty: a scene file or a built-in scene); also

@@ -173,6 +173,12 @@ void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::Shad
       << firstFrameMaps << " maps drawn on the first frame, " << last.shadowMapsDrawn << " on the last\n";
 }
 
+// The camera as three.js's PerspectiveCamera takes it (scripts/threejs_compare.py renders the same view).
+nlohmann::json cameraJson(const Camera& c) {
+    return {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}},
+            {"up", {c.up.x, c.up.y, c.up.z}}, {"fov_y_degrees", c.fovYDegrees}, {"near", c.nearPlane}, {"far", c.farPlane}};
+}
+
 // The environment light as the frame looked it up (FrameStats::environment): summary.json's "environment" and
 // the text line.
 void addEnvironmentSummary(nlohmann::json& summary, std::ostream& s, const Scene& scene, const FrameStats& last) {
@@ -207,7 +213,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     nlohmann::json summary;
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
-    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height}, {"camera", cameraJson(scene.camera)},
                         {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
                         {"warnings", warnings}};
     summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
@@ -337,7 +343,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     nlohmann::json summary;
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
-    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height}, {"camera", cameraJson(scene.camera)},
                         {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
                         {"warnings", warnings}};
     const AutoDecision& decision = stats.autoDecision;

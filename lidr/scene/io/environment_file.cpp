@@ -139,6 +139,13 @@ std::shared_ptr<const Environment> loadEnvironment(const std::string& source, co
     return fromPanorama(source, progress);
 }
 
+bool giveModelDefaultEnvironment(Scene& scene) {
+    if (scene.environment) return false;
+    scene.environment = defaultEnvironment();
+    scene.ambient = glm::vec3(0.0f);
+    return true;
+}
+
 ImageRGBFloat readHdr(const std::string& path) {
     int w = 0, h = 0;
     const StbFloats pixels = loadPixels(path, true, maxEnvironmentPanoramaWidth, w, h);

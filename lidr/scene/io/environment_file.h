@@ -4,6 +4,7 @@
 #include <string>
 
 #include "lidr/scene/environment.h"
+#include "lidr/scene/scene.h"
 
 namespace lidr {
 
@@ -20,6 +21,12 @@ constexpr int maxEnvironmentFaceSize = 4096;
 // found, not readable, not a Radiance HDR file, the wrong proportions or face sizes, too large, a pixel not
 // finite, negative or above 1e12).
 std::shared_ptr<const Environment> loadEnvironment(const std::string& source, const EnvironmentProgress& progress = {});
+
+// What lidr's tools (lidr-demo and lidr-viewer with --environment auto, the web page) give a glTF or OBJ model,
+// which carries no environment of its own: the default environment, in place of the uniform ambient (set to 0),
+// as the viewers people compare with light a model. Nothing where the scene has an environment already. Returns
+// whether it gave one.
+bool giveModelDefaultEnvironment(Scene& scene);
 
 // A Radiance HDR file as linear RGB floats, rows top to bottom (stb_image); throws lidr::Error as above.
 ImageRGBFloat readHdr(const std::string& path);
