@@ -429,8 +429,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     }
     if (!dumpDir.empty()) writeFrameArtefacts(dumpDir, artefacts, renderer.scheme());
 
-    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
-    // A short human summary on stdout and in summary.txt.
+    // A short human summary on stdout and in summary.txt (summary.json after it: the shadow and environment parts
+    // are added on the way).
     std::ostringstream s;
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
       << " triangles, " << lights.size() << " lights\n";
@@ -489,6 +489,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
           << E["pixels_within_budget"]["pixels_over_1"] << "\n";
     }
     s << "outputs    " << outDir << "/{lidr,reference,difference,index_lists,overlap,marked}.png, summary.json\n";
+    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
     std::ofstream(path(outDir, "summary.txt")) << s.str();
     std::cout << s.str();
     return 0;
