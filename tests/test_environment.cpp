@@ -340,25 +340,8 @@ namespace {
 // roughness 0 to 1 along z, an orange-ish base colour; one light, no uniform ambient, so the environment is most of
 // what the tiles show (their reflections sweep the room's walls, floor and panels).
 Scene environmentSweep(int width, int height) {
-    Scene scene;
+    Scene scene = metallicRoughnessSweep([](int j) { return float(j) / 3.0f; }, glm::vec3(0.5f, 5.0f, 8.5f));
     scene.name = "environment-sweep";
-    for (int mi = 0; mi < 4; ++mi)
-        for (int ri = 0; ri < 4; ++ri) {
-            Material m;
-            m.name = "m" + std::to_string(mi) + "r" + std::to_string(ri);
-            m.metallicRoughness = true;
-            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
-            m.metallic = float(mi) / 3.0f;
-            m.roughness = float(ri) / 3.0f;
-            scene.materials.push_back(m);
-            addPlane(scene, glm::vec3(-3.3f + 2.2f * float(mi), 0.0f, -3.3f + 2.2f * float(ri)), glm::vec2(2.0f),
-                     int(scene.materials.size() - 1), 4);
-        }
-    scene.camera.position = glm::vec3(0.5f, 5.0f, 8.5f);
-    scene.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
-    scene.camera.fovYDegrees = 55.0f;
-    scene.camera.nearPlane = 0.5f;
-    scene.camera.farPlane = 40.0f;
     scene.width = width;
     scene.height = height;
     scene.ambient = glm::vec3(0.0f);
@@ -401,42 +384,19 @@ ImageRGBA8 renderWith(const Scene& scene, const std::string& mode, const Shading
     return r->targets().readColor();
 }
 
-struct ModelCheck {
-    long compared = 0, withinOne = 0, bright = 0;
-    int worst = 0;
-};
-
-// Every pixel of the sweep's tiles away from their edges against the CPU model: the environment read from what
-// the GPU holds (EnvironmentMaps::stored), plus the light, through the output transform.
-ModelCheck checkSweepAgainstModel(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth,
+// The sweep against the CPU model (checkSweep): the environment read from what the GPU holds
+// (EnvironmentMaps::stored), the ambient and the light, through the output transform.
+SweepCheck checkSweepAgainstModel(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth,
                                   const ShadingParameters& shading, const StoredEnvironment& stored, bool diffuseOnly) {
-    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
-    ModelCheck c;
-    for (int y = 0; y < scene.height; ++y)
-        for (int x = 0; x < scene.width; ++x) {
-            const float d = depth.at(x, y);
-            if (d >= 1.0f) continue;
-            const glm::vec3 p = unprojectPixel(cam, x, y, d);
-            const float u = (p.x + 4.4f) / 2.2f, v = (p.z + 4.4f) / 2.2f;
-            const int mi = int(std::floor(u)), ri = int(std::floor(v));
-            if (mi < 0 || mi > 3 || ri < 0 || ri > 3) continue;
-            const float fu = u - float(mi), fv = v - float(ri);
-            if (fu < 0.08f || fu > 0.83f || fv < 0.08f || fv > 0.83f) continue;
-            const Material& m = scene.materials[size_t(mi * 4 + ri)];
-            const BrdfSurface s = brdfSurface(m, glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
+    return checkSweep(
+        scene, image, depth, shading.output,
+        [&](const BrdfSurface& s, const glm::vec3&) {
             glm::dvec3 linear = shadeAmbient(s, glm::dvec3(scene.ambient));
             linear += shadeEnvironment(s, *scene.environment, stored, scene.environmentIntensity, diffuseOnly);
             for (const PointLight& l : scene.lights) linear += shadePointLight(s, l);
-            const glm::dvec3 expected = 255.0 * applyOutputTransform(linear, shading.output);
-            const uint8_t* got = image.at(x, y);
-            int e = 0;
-            for (int k = 0; k < 3; ++k) e = std::max(e, int(std::lround(std::abs(double(got[k]) - expected[k]))));
-            ++c.compared;
-            if (e <= 1) ++c.withinOne;
-            if (expected.g > 60.0) ++c.bright;
-            c.worst = std::max(c.worst, e);
-        }
-    return c;
+            return linear;
+        },
+        1, 60.0);
 }
 
 }  // namespace
@@ -488,7 +448,7 @@ TEST_CASE("environment light: the sweep matches the CPU model (forward-brute, sm
     else {
         EnvironmentMaps maps(testGl(), true);
         maps.prepare(shading.environment);
-        const ModelCheck c = checkSweepAgainstModel(scene, r->targets().readColor(), r->targets().readDepth(), shading,
+        const SweepCheck c = checkSweepAgainstModel(scene, r->targets().readColor(), r->targets().readDepth(), shading,
                                                     *maps.stored(), false);
         INFO(c.compared << " compared, " << c.withinOne << " within one step, worst " << c.worst << ", bright " << c.bright);
         REQUIRE(c.compared > long(scene.width) * scene.height / 8);
@@ -658,7 +618,7 @@ TEST_CASE("environment light: every mode against the CPU model, both storages (m
         r->render(scene.camera, scene.lights, shading);
         EnvironmentMaps maps(testGl(), !fixedTable);
         maps.prepare(shading.environment);
-        const ModelCheck c = checkSweepAgainstModel(scene, r->targets().readColor(), r->targets().readDepth(), shading,
+        const SweepCheck c = checkSweepAgainstModel(scene, r->targets().readColor(), r->targets().readDepth(), shading,
                                                     *maps.stored(), false);
         INFO(c.compared << " compared, " << c.withinOne << " within one step, worst " << c.worst);
         REQUIRE(c.compared > long(scene.width) * scene.height / 8);

@@ -58,53 +58,53 @@ void EnvironmentMaps::prepare(const EnvironmentLight& light, int indexTargets) {
     }
 }
 
+namespace {
+// The stored values (StoredEnvironment: half floats as floats, RGBM bytes as 0..255) converted per component to
+// the pixel type GL takes: each level's texels, and the table's.
+template <typename T, typename Convert>
+void converted(const StoredEnvironment& s, const Convert& convert, std::vector<std::vector<T>>& levels, std::vector<T>& table) {
+    levels.assign(s.levels.size(), {});
+    for (size_t l = 0; l < s.levels.size(); ++l)
+        for (const glm::vec4& t : s.levels[l].texels)
+            for (int k = 0; k < 4; ++k) levels[l].push_back(convert(t[k]));
+    for (const glm::vec4& t : s.table)
+        for (int k = 0; k < 4; ++k) table.push_back(convert(t[k]));
+}
+
+template <typename T>
+void uploadAs(const StoredEnvironment& s, GLint cubeFormat, GLint tableFormat, GLenum type,
+              const std::vector<std::vector<T>>& levels, const std::vector<T>& table, gl::Texture& cube,
+              gl::Texture& splitSum) {
+    cube = gl::Texture::createCube(cubeFormat, s.levels[0].size, int(levels.size()), GL_RGBA, type,
+                                   [&](int level, int face) {
+                                       const size_t side = size_t(s.levels[size_t(level)].size);
+                                       return static_cast<const void*>(&levels[size_t(level)][size_t(face) * 4 * side * side]);
+                                   },
+                                   float(s.roughnessLevels - 1));
+    splitSum = gl::Texture::create2D(tableFormat, s.tableSize, s.tableSize, GL_RGBA, type, table.data(), GL_LINEAR);
+}
+}  // namespace
+
 void EnvironmentMaps::upload(const Environment& environment) {
     stored_ = std::make_unique<StoredEnvironment>(storeEnvironment(environment, storage_));
     const StoredEnvironment& s = *stored_;
-    const int levels = int(s.levels.size());
-    const float maxLod = float(s.roughnessLevels - 1);
     if (storage_ == EnvironmentStorage::HalfFloat && info_.gles) {
         // OES_texture_half_float: the halves themselves (the values are half floats already).
-        std::vector<std::vector<uint16_t>> halves(s.levels.size());
-        for (size_t l = 0; l < s.levels.size(); ++l)
-            for (const glm::vec4& t : s.levels[l].texels)
-                for (int k = 0; k < 4; ++k) halves[l].push_back(glm::packHalf1x16(t[k]));
-        cube_ = gl::Texture::createCube(GL_RGBA, s.levels[0].size, levels, GL_RGBA, kHalfFloatOes,
-                                        [&](int level, int face) {
-                                            const size_t faceHalves = size_t(4) * size_t(s.levels[size_t(level)].size) *
-                                                                      size_t(s.levels[size_t(level)].size);
-                                            return static_cast<const void*>(&halves[size_t(level)][size_t(face) * faceHalves]);
-                                        },
-                                        maxLod);
+        std::vector<std::vector<uint16_t>> levels;
         std::vector<uint16_t> table;
-        for (const glm::vec4& t : s.table)
-            for (int k = 0; k < 4; ++k) table.push_back(glm::packHalf1x16(t[k]));
-        splitSum_ = gl::Texture::create2D(GL_RGBA, s.tableSize, s.tableSize, GL_RGBA, kHalfFloatOes, table.data(), GL_LINEAR);
+        converted(s, [](float v) { return uint16_t(glm::packHalf1x16(v)); }, levels, table);
+        uploadAs(s, GL_RGBA, GL_RGBA, kHalfFloatOes, levels, table, cube_, splitSum_);
     } else if (storage_ == EnvironmentStorage::HalfFloat) {
-        // The values are already rounded to half floats: GL's conversion from float keeps them exactly.
-        cube_ = gl::Texture::createCube(GL_RGB16F_ARB, s.levels[0].size, levels, GL_RGBA, GL_FLOAT,
-                                        [&](int level, int face) {
-                                            const StoredCube& c = s.levels[size_t(level)];
-                                            return static_cast<const void*>(&c.texels[size_t(face) * size_t(c.size) * size_t(c.size)]);
-                                        },
-                                        maxLod);
-        splitSum_ = gl::Texture::create2D(GL_RGBA16F_ARB, s.tableSize, s.tableSize, GL_RGBA, GL_FLOAT, s.table.data(), GL_LINEAR);
+        // Floats already rounded to halves: GL's conversion keeps them exactly.
+        std::vector<std::vector<float>> levels;
+        std::vector<float> table;
+        converted(s, [](float v) { return v; }, levels, table);
+        uploadAs(s, GL_RGB16F_ARB, GL_RGBA16F_ARB, GL_FLOAT, levels, table, cube_, splitSum_);
     } else {
-        std::vector<std::vector<uint8_t>> bytes(s.levels.size());
-        for (size_t l = 0; l < s.levels.size(); ++l)
-            for (const glm::vec4& t : s.levels[l].texels)
-                for (int k = 0; k < 4; ++k) bytes[l].push_back(uint8_t(t[k]));
-        cube_ = gl::Texture::createCube(GL_RGBA8, s.levels[0].size, levels, GL_RGBA, GL_UNSIGNED_BYTE,
-                                        [&](int level, int face) {
-                                            const size_t faceBytes = size_t(4) * size_t(s.levels[size_t(level)].size) *
-                                                                     size_t(s.levels[size_t(level)].size);
-                                            return static_cast<const void*>(&bytes[size_t(level)][size_t(face) * faceBytes]);
-                                        },
-                                        maxLod);
+        std::vector<std::vector<uint8_t>> levels;
         std::vector<uint8_t> table;
-        for (const glm::vec4& t : s.table)
-            for (int k = 0; k < 4; ++k) table.push_back(uint8_t(t[k]));
-        splitSum_ = gl::Texture::create2D(GL_RGBA8, s.tableSize, s.tableSize, GL_RGBA, GL_UNSIGNED_BYTE, table.data(), GL_LINEAR);
+        converted(s, [](float v) { return uint8_t(v); }, levels, table);
+        uploadAs(s, GL_RGBA8, GL_RGBA8, GL_UNSIGNED_BYTE, levels, table, cube_, splitSum_);
     }
     checkGl("environment upload");
 }

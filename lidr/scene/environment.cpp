@@ -82,6 +82,23 @@ double lodFraction(double lod, int levels, int& d1, int& d2) {
 
 bool isPowerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
+// A cube of `size` whose texels are the mean of radiance(direction) over 4 x 4 samples each.
+template <typename Radiance>
+CubeImage supersampledCube(int size, const Radiance& radiance) {
+    CubeImage cube(size);
+    constexpr int n = 4;
+    for (int f = 0; f < 6; ++f)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                glm::dvec3 sum(0.0);
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i)
+                        sum += radiance(cubeDirection(f, (x + (i + 0.5) / n) / size, (y + (j + 0.5) / n) / size));
+                cube.at(f, x, y) = glm::vec3(sum / double(n * n));
+            }
+    return cube;
+}
+
 // body(row) for rows 0 .. rows - 1, on the machine's cores (one thread in the web build: no threads there).
 template <typename Body>
 void forEachRow(int rows, const Body& body) {
@@ -176,18 +193,7 @@ CubeImage resampleCube(const CubeImage& source, int size) {
     CubeImage from = source;
     while (from.size >= 4 * size && from.size % 2 == 0) from = downsampleCube(from);
     if (from.size == size) return from;
-    CubeImage cube(size);
-    constexpr int n = 4;
-    for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                glm::dvec3 sum(0.0);
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i)
-                        sum += sampleCubeBilinear(from, cubeDirection(f, (x + (i + 0.5) / n) / size, (y + (j + 0.5) / n) / size));
-                cube.at(f, x, y) = glm::vec3(sum / double(n * n));
-            }
-    return cube;
+    return supersampledCube(size, [&](const glm::dvec3& d) { return sampleCubeBilinear(from, d); });
 }
 
 glm::dvec2 equirectCoordinates(const glm::dvec3& d) {
@@ -213,20 +219,7 @@ glm::dvec3 sampleEquirect(const ImageRGBFloat& image, const glm::dvec2& uv) {
 }  // namespace
 
 CubeImage cubeFromEquirect(const ImageRGBFloat& equirect, int size) {
-    CubeImage cube(size);
-    constexpr int n = 4;
-    for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                glm::dvec3 sum(0.0);
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i) {
-                        const glm::dvec3 d = cubeDirection(f, (x + (i + 0.5) / n) / size, (y + (j + 0.5) / n) / size);
-                        sum += sampleEquirect(equirect, equirectCoordinates(d));
-                    }
-                cube.at(f, x, y) = glm::vec3(sum / double(n * n));
-            }
-    return cube;
+    return supersampledCube(size, [&](const glm::dvec3& d) { return sampleEquirect(equirect, equirectCoordinates(d)); });
 }
 
 ImageRGBFloat equirectFromCube(const CubeImage& cube, int width) {
@@ -294,20 +287,7 @@ glm::dvec3 roomRadiance(const glm::dvec3& d) {
 }
 }  // namespace
 
-CubeImage makeRoomEnvironmentCube(int size) {
-    CubeImage cube(size);
-    constexpr int n = 4;
-    for (int f = 0; f < 6; ++f)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                glm::dvec3 sum(0.0);
-                for (int j = 0; j < n; ++j)
-                    for (int i = 0; i < n; ++i)
-                        sum += roomRadiance(cubeDirection(f, (x + (i + 0.5) / n) / size, (y + (j + 0.5) / n) / size));
-                cube.at(f, x, y) = glm::vec3(sum / double(n * n));
-            }
-    return cube;
-}
+CubeImage makeRoomEnvironmentCube(int size) { return supersampledCube(size, roomRadiance); }
 
 std::array<double, 9> shBasis(const glm::dvec3& d) {
     return {0.282094791773878, 0.488602511902920 * d.y, 0.488602511902920 * d.z, 0.488602511902920 * d.x,
