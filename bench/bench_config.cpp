@@ -157,6 +157,7 @@ std::string ModeConfig::label() const {
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
                (volumeDetail ? " detail" : "") + meshes;
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
+    if (mode == "forward-multipass" && multipassEightBit) return mode + " 8-bit";
     return mode;
 }
 
@@ -237,6 +238,7 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     // (min/max on), as lidr-demo --mode auto does: with ModeConfig's `false` it timed a slower tiled than the
     // tiled rows and kept LIDR where they put tiled ahead (city-255).
     if (c.mode == "tiled") o.tiled.depthBounds = c.tiledDepthBounds;
+    o.multipass.halfFloatAccumulation = !(c.mode == "forward-multipass" && c.multipassEightBit);
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);
@@ -603,6 +605,12 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                 for (bool db : g.tiledDepthBounds) {
                                     ModeConfig c = base;
                                     c.tiledDepthBounds = db;
+                                    configs.push_back(c);
+                                }
+                            } else if (mode == "forward-multipass") {
+                                for (bool eightBit : g.multipassEightBit) {
+                                    ModeConfig c = base;
+                                    c.multipassEightBit = eightBit;
                                     configs.push_back(c);
                                 }
                             } else {

@@ -38,6 +38,9 @@ struct ModeConfig {
     bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
     // mode "tiled"
     bool tiledDepthBounds = false;
+    // mode "forward-multipass": its passes summed in the 8-bit colour target (MultipassOptions::
+    // halfFloatAccumulation false) rather than in half float where the context has it
+    bool multipassEightBit = false;
     // every mode
     int msaa = 0;
     // With MSAA: LIDR's per-sample index lists (LidrOptions::perSampleIndices) and a reference shaded per
@@ -73,6 +76,7 @@ struct SweepGroup {
     std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
+    std::vector<bool> multipassEightBit{false};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
     std::vector<int> volumeTileSizes{16};

@@ -184,6 +184,10 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
     app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
     app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
+    app.add_option("--multipass-accumulation", multipassAccumulation,
+                   "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
+                   "8-bit colour target), 8-bit (the 8-bit target, to compare)")
+        ->capture_default_str();
     std::string schemes;
     for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
     app.add_option("--scheme", scheme,
@@ -410,6 +414,9 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.depthBounds = !noDepthBounds;
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
+    if (multipassAccumulation != "auto" && multipassAccumulation != "8-bit")
+        throw Error("--multipass-accumulation must be auto or 8-bit, got '" + multipassAccumulation + "'");
+    o.multipass.halfFloatAccumulation = multipassAccumulation == "auto";
     o.forceFixedLightTable = fixedLightTable;
     outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;

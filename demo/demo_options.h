@@ -58,6 +58,7 @@ struct RendererChoice {
     bool noDepthBounds = false;
     bool packedDepth = false;
     bool halfZ = false;
+    std::string multipassAccumulation = "auto";  // or 8-bit (MultipassOptions::halfFloatAccumulation false)
     std::string scheme = "auto";      // bit-shift, budget and width chosen per frame (doc/auto.md)
     std::string budget = "auto";      // or 1, 2, 4, 8, 16 (with a named scheme)
     std::string indexBits = "auto";   // or 4, 8, 16 (with a named scheme)

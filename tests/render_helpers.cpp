@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
 #include "lidr/modes/reference_renderer.h"
 
@@ -79,6 +80,14 @@ SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFl
             c.worst = std::max(c.worst, e);
         }
     return c;
+}
+
+Scene testRoom(float time) {
+    DefaultSceneOptions o;
+    o.width = testWidth();
+    o.height = testHeight();
+    o.time = time;
+    return makeDefaultScene(o);
 }
 
 Scene floorScene() {

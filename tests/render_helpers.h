@@ -38,6 +38,8 @@ struct SweepCheck {
 SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth, const OutputTransform& output,
                       const std::function<glm::dvec3(const BrdfSurface&, const glm::vec3&)>& model, int channel,
                       double brightLevel);
+// lidr's default room (255 lights) at testWidth() x testHeight(), at `time` seconds.
+Scene testRoom(float time = 0.0f);
 
 struct RenderResult {
     ImageRGBA8 lidr, reference;
