@@ -87,17 +87,24 @@ def sphere(cx, cy, cz, r, rings, segments):
     return pos, nor, idx
 
 
+def grid_indices(rows, columns):
+    """Two triangles per cell of a (rows + 1) x (columns + 1) vertex grid stored row by row."""
+    idx = []
+    for i in range(rows):
+        for j in range(columns):
+            a = i * (columns + 1) + j
+            b = a + columns + 1
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return idx
+
+
 def floor(size, cells):
     pos, nor, idx = [], [], []
     for i in range(cells + 1):
         for j in range(cells + 1):
             pos.append((-size + 2 * size * j / cells, 0.0, -size + 2 * size * i / cells))
             nor.append((0.0, 1.0, 0.0))
-    for i in range(cells):
-        for j in range(cells):
-            a = i * (cells + 1) + j
-            b = a + cells + 1
-            idx += [a, b, a + 1, a + 1, b, b + 1]
+    idx += grid_indices(cells, cells)
     return pos, nor, idx
 
 
@@ -164,11 +171,7 @@ def torus(cx, cy, cz, major, minor, rings, segments):
             pos.append((cx + (major + minor * math.cos(v)) * math.cos(u), cy + minor * math.sin(v),
                         cz + (major + minor * math.cos(v)) * math.sin(u)))
             nor.append(n)
-    for i in range(rings):
-        for j in range(segments):
-            a = i * (segments + 1) + j
-            b = a + segments + 1
-            idx += [a, b, a + 1, a + 1, b, b + 1]
+    idx += grid_indices(rings, segments)
     return pos, nor, idx
 
 
