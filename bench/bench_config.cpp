@@ -57,10 +57,21 @@ std::string sceneNameHelp() {
            "block grid with N lights of 1-4 m, e.g. hall-255), spots-N / spots-N-points (many-N-top with the particles "
            "as spot lights aimed down, or the same lights as points), file:PATH or a path ending in .json, .gltf, .glb "
            "or .obj; any of them with -shadows-K (its K brightest lights that can touch the view cast shadows, e.g. "
-           "hall-255-shadows-32; doc/shadows.md)";
+           "hall-255-shadows-32; doc/shadows.md), and then with +environment (lit by the built-in studio "
+           "environment too, e.g. hall-255+environment; --environment none,default runs each scene both ways)";
 }
 
 Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
+    // "SCENE+environment": SCENE lit by the built-in environment too (issue 39), its ambient and lights as they are.
+    const std::string withEnvironment = "+environment";
+    if (name.size() > withEnvironment.size() &&
+        name.compare(name.size() - withEnvironment.size(), withEnvironment.size(), withEnvironment) == 0 &&
+        !startsWith(name, "file:")) {
+        Scene scene = loadBenchScene(name.substr(0, name.size() - withEnvironment.size()), seed, camera);
+        scene.environment = defaultEnvironment();
+        scene.name = name;
+        return scene;
+    }
     // "SCENE-shadows-K": SCENE with its K brightest lights that can touch its view casting shadows
     // (chooseShadowCasters, lidr/render/shadow_casters.h); renderFrame turns shadows on for it (benchShading).
     const size_t marker = name.rfind("-shadows-");

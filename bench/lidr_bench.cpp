@@ -361,13 +361,18 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, multipassAccumulation{"auto"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"};
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, environments{"none"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, multipassAccumulation{"auto"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"};
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     std::vector<std::string> sweeps;
     bool quick = false, full = false, noProgress = false, noPlots = false, dryRun = false, list = false;
     unsigned seed = 1;
     app.add_option("--scenes,--scene", scenes, "Scenes: " + sceneNameHelp())->capture_default_str();
+    app.add_option("--environment", environments,
+                   "Environment light of every --scenes scene: none (default: the scene's own look), default (the "
+                   "built-in studio room: the scene runs as SCENE+environment), or none,default for both in one run "
+                   "(doc/benchmarks.md, \"Environment light\")")
+        ->capture_default_str();
     app.add_option("--modes", modes, "Render modes (default: all the library has)");
     app.add_option("--schemes", schemes, "Packing schemes for mode lidr (default: all the library has)");
     app.add_option("--budgets", budgets, "LIDR light slots per pixel")->capture_default_str();
@@ -471,7 +476,7 @@ int main(int argc, char** argv) {
         finiteIn("--warmup-ms", settings.warmupMs, 0.0, 60000.0);
         // ---- the sweep, from a preset or the lists -------------------------------------------------------
         std::vector<SweepGroup> groups;
-        const bool listsGiven = app.count("--scenes") || app.count("--modes") || app.count("--schemes") ||
+        const bool listsGiven = app.count("--scenes") || app.count("--environment") || app.count("--modes") || app.count("--schemes") ||
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
                                 app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--multipass-accumulation") || app.count("--volume-detail") ||
                                 app.count("--resolution");
@@ -499,7 +504,12 @@ int main(int argc, char** argv) {
         } else {
             SweepGroup g;
             g.name = "command-line";
-            g.scenes = splitList(scenes);
+            for (const std::string& scene : splitList(scenes))
+                for (const std::string& environment : splitList(environments)) {
+                    if (environment != "none" && environment != "default")
+                        throw Error("--environment must be none, default or both (none,default), got '" + environment + "'");
+                    g.scenes.push_back(environment == "none" ? scene : scene + "+environment");
+                }
             g.modes = modes.empty() ? availableModes() : splitList(modes);
             g.schemes = schemes.empty() ? packingSchemeNames() : splitList(schemes);
             g.budgets = intList(budgets, "budget");

@@ -7,12 +7,17 @@
 #include "lidr/gl/render_targets.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
 #include <cmath>
 #include <initializer_list>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include "lidr/technique/packing_scheme.h"
+#include "lidr/scene/io/environment_file.h"
+#include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/render/shadow_atlas.h"
@@ -56,8 +61,67 @@ void SceneChoice::addOptions(CLI::App& app) {
                    "met in the default scene's node order unless a scene file gives \"camera\", else a view framing "
                    "the bounds); yfov is kept, the aspect is the image's. Orthographic cameras are refused");
     app.add_flag("!--no-default-lights", defaultRig,
-                 "Leave a scene without lights unlit (default: a key light at the eye and ambient 0.1, doc/colour.md)");
+                 "Leave a scene without lights unlit (default: a key light at the eye, and ambient 0.1 where there is no "
+                 "environment, doc/colour.md)");
+    app.add_option("--environment", environment,
+                   "Image-based environment light: auto (default: glTF and OBJ models get the built-in studio room, "
+                   "scene files and built-in scenes keep their own, none unless they ask), default, none, an "
+                   "equirectangular .hdr panorama or a folder of six faces px nx py ny pz nz (doc/colour.md, "
+                   "\"Environment light\")")
+        ->capture_default_str();
+    app.add_option("--environment-intensity", environmentIntensity,
+                   "Scale of the environment light's radiance, a finite number >= 0 (default: the scene's, 1)");
+    app.add_option("--export-environment", exportEnvironment,
+                   "Also write the environment light as an equirectangular Radiance HDR panorama (1024 x 512, three.js's "
+                   "mapping; scripts/threejs_compare.py gives it to three.js)");
 }
+
+namespace {
+// Prints each step of a long environment read on stderr, from the first that ends over a second after the start
+// (the ones before it with it), with the seconds so far.
+EnvironmentProgress slowStepsOnStderr() {
+    struct State {
+        std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+        std::vector<std::string> pending;
+        bool printing = false;
+    };
+    auto state = std::make_shared<State>();
+    return [state](const std::string& step) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - state->start).count();
+        char line[64];
+        std::snprintf(line, sizeof line, " (%.1f s)", seconds);
+        state->pending.push_back("environment: " + step + line);
+        if (!state->printing && seconds < 1.0) return;
+        state->printing = true;
+        for (const std::string& l : state->pending) std::cerr << l << "\n";
+        state->pending.clear();
+    };
+}
+}  // namespace
+
+void SceneChoice::applyEnvironment(Scene& scene, bool model) const {
+    if (environmentIntensity) {
+        if (!(std::isfinite(*environmentIntensity) && *environmentIntensity >= 0.0 &&
+              *environmentIntensity <= double(std::numeric_limits<float>::max())))
+            throw Error("--environment-intensity must be a finite number >= 0, got " + std::to_string(*environmentIntensity));
+        scene.environmentIntensity = float(*environmentIntensity);
+    }
+    if (environment == "auto") {
+        if (model) giveModelDefaultEnvironment(scene);
+        return;
+    }
+    scene.environment = loadEnvironment(environment, slowStepsOnStderr());
+    if (model && scene.environment) scene.ambient = glm::vec3(0.0f);
+}
+
+namespace {
+void exportEnvironmentPanorama(const Scene& scene, const std::string& file) {
+    if (!scene.environment)
+        throw Error("--export-environment writes the environment light, and this scene has none (--environment default)");
+    writeHdr(file, equirectFromCube(scene.environment->specular[0], 1024));
+    std::cout << "environment " << scene.environment->name << " written to " << file << " (1024 x 512)\n";
+}
+}  // namespace
 
 Scene SceneChoice::load() const {
     // Checked first, before the scene is built; float(time) must also stay finite.
@@ -72,6 +136,7 @@ Scene SceneChoice::load() const {
     if (camera && sceneFile.empty())
         throw Error(cameraOption() + "the built-in room has no cameras; --camera picks a camera of a glTF model "
                     "(--scene FILE.gltf)");
+    bool model = false;  // a glTF or OBJ model (no environment of its own)
     if (sceneFile.empty()) {
         DefaultSceneOptions o;
         o.seed = seed;
@@ -84,6 +149,8 @@ Scene SceneChoice::load() const {
         objOptions.smoothNormals = smoothNormals;
         scene = loadScene(sceneFile, objOptions);
         if (time) scene.time = float(*time);
+        const std::string ext = lowerCaseExtension(sceneFile);
+        model = ext == ".gltf" || ext == ".glb" || ext == ".obj";
     }
     // Before the lights: the default rig puts its key light at the eye.
     if (camera) {
@@ -101,6 +168,8 @@ Scene SceneChoice::load() const {
                   << (camera ? " (--camera)" : "") << "; the scene has " << count << (count == 1 ? " camera" : " cameras")
                   << (camera || count == 1 ? "" : " (--camera N picks another)") << "\n";
     }
+    applyEnvironment(scene, model);
+    if (!exportEnvironment.empty()) exportEnvironmentPanorama(scene, exportEnvironment);
     if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
     if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");
     if (lights) {
@@ -125,7 +194,9 @@ Scene SceneChoice::load() const {
     }
     if (defaultRig && addDefaultLightRig(scene))
         std::cout << "lights     none in the scene: the default rig (a key light at the eye, radius "
-                  << scene.lights.back().radius << "; ambient at least 0.1; --no-default-lights to leave it unlit)\n";
+                  << scene.lights.back().radius
+                  << (scene.environment ? "; with the environment" : "; ambient at least 0.1")
+                  << "; --no-default-lights to leave it unlit)\n";
     if (width) scene.width = *width;
     if (height) scene.height = *height;
     scene.validate();

@@ -24,8 +24,16 @@ struct SceneChoice {
     std::optional<double> spotShare;    // --spot-share F (with --lights): that share of them are spot lights
     bool defaultRig = true;             // a scene without lights gets addDefaultLightRig (--no-default-lights: off)
     std::optional<int> camera;          // --camera N: a glTF model's camera N (chooseView); unset: its first
+    // --environment: auto (glTF and OBJ models the default environment, scene files and built-in scenes their own),
+    // default, none or a file (lidr::loadEnvironment); --environment-intensity (unset: the scene's, 1).
+    std::string environment = "auto";
+    std::optional<double> environmentIntensity;
+    std::string exportEnvironment;  // --export-environment FILE.hdr: the environment's panorama (level 0), written on load
     void addOptions(CLI::App& app);
     Scene load() const;  // throws lidr::Error
+    // The environment `load` gives `scene`, read from `modelFile` (empty: a scene file or a built-in scene); also
+    // applied by the viewer when it opens a file. Prints progress on stderr where reading takes over a second.
+    void applyEnvironment(Scene& scene, bool model) const;
 };
 
 // --shadows and its settings, checked (RendererChoice::shadowChoice), applied to each frame's lights and shading.

@@ -187,12 +187,28 @@ void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::Shad
       << firstFrameMaps << " maps drawn on the first frame, " << last.shadowMapsDrawn << " on the last\n";
 }
 
+// The camera as three.js's PerspectiveCamera takes it (scripts/threejs_compare.py renders the same view).
+nlohmann::json cameraJson(const Camera& c) {
+    return {{"position", {c.position.x, c.position.y, c.position.z}}, {"target", {c.target.x, c.target.y, c.target.z}},
+            {"up", {c.up.x, c.up.y, c.up.z}}, {"fov_y_degrees", c.fovYDegrees}, {"near", c.nearPlane}, {"far", c.farPlane}};
+}
+
+// The environment light as the frame looked it up (FrameStats::environment): summary.json's "environment" and
+// the text line.
+void addEnvironmentSummary(nlohmann::json& summary, std::ostream& s, const Scene& scene, const FrameStats& last) {
+    summary["environment"] = {{"description", last.environment},
+                              {"name", scene.environment ? scene.environment->name : std::string("none")},
+                              {"intensity", scene.environmentIntensity}};
+    s << "environment " << last.environment << "\n";
+}
+
 // summary.json's "gl" and "scene", and the text summary's first lines: the scene, its warnings, the renderer.
 void describeRun(nlohmann::json& summary, std::ostream& s, const GlInfo& info, const Scene& scene, size_t lights,
                  const std::vector<std::string>& warnings) {
     summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
                      {"vendor", info.vendor}, {"glsl", info.glslVersion}};
     summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+                        {"camera", cameraJson(scene.camera)},
                         {"triangles", scene.triangleCount()}, {"lights", lights}, {"time", scene.time},
                         {"warnings", warnings}};
     s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
@@ -228,6 +244,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     summary["pass_counts"] = passCountsJson(stats.passes);
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
     addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
+    addEnvironmentSummary(summary, s, scene, stats);
     if (autoMode) {
         summary["auto_mode"] = {{"chosen", autoMode->lastMode()}, {"reason", autoMode->reason()},
                                 {"candidates", autoMode->candidates()}};
@@ -427,11 +444,11 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     }
     if (!dumpDir.empty()) writeFrameArtefacts(dumpDir, artefacts, renderer.scheme());
 
-    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
     addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
+    addEnvironmentSummary(summary, s, scene, stats);
     if (decision.autoBudget || decision.autoIndexBits || *decision.budgetFallback) {
         s << "auto       " << decision.visibleLights << " visible lights, " << decision.indexBits << "-bit indices"
           << (decision.autoIndexBits ? " (narrowest)" : " (fixed)")
@@ -480,6 +497,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
           << E["pixels_within_budget"]["pixels_over_1"] << "\n";
     }
     s << "outputs    " << outDir << "/{lidr,reference,difference,index_lists,overlap,marked}.png, summary.json\n";
+    std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
     std::ofstream(path(outDir, "summary.txt")) << s.str();
     std::cout << s.str();
     return 0;

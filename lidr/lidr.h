@@ -10,6 +10,9 @@
 //   renderers    lidr::LidrRenderer (LidrOptions), or lidr::createRenderer() for any mode by name
 //   output       Renderer::targets().readColor() -> ImageRGBA8 -> lidr::writePng(), or
 //                lidr::FramePresenter::present() into your framebuffer or FBO (lidr/render/present.h)
+//   environment  lidr::defaultEnvironment() (a studio room) or lidr::loadEnvironment("sky.hdr"): set
+//                ShadingParameters::environment (or Scene::environment, which sceneShading copies) for image-based
+//                light (doc/colour.md, "Environment light"; lidr/scene/environment.h)
 //   your shaders LidrOptions::materialShader: a GLSL 1.20 fragment shader that includes "lidr_lights.glsl"
 //                (doc/embedding.md)
 // Every renderer leaves the GL state it found (doc/embedding.md lists what is kept); lidr::SavedGlState keeps
@@ -23,6 +26,8 @@
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
 #include "lidr/scene/scene.h"
+#include "lidr/scene/environment.h"
+#include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/render/present.h"
 #include "lidr/render/renderer.h"

@@ -2,7 +2,8 @@
 # Regenerates the images in doc/images/ with lidr-demo (llvmpipe): the default room at 640x480, and the material
 # and light model pictures of README.md and doc/scene-format.md at 512x384: the courtyard and the crate (default
 # rig), a generated textured glTF (tests/make_glb.py) under the default rig, with --lights 1024, and with its own
-# KHR_lights_punctual lights (candela, inverse square).
+# KHR_lights_punctual lights (candela, inverse square); models get the default environment light (issue 39), and the
+# metal showcase is drawn without and with it.
 #   bash scripts/doc_images.sh [build-dir]
 set -euo pipefail
 source "$(dirname "$0")/doc_images_env.sh"  # build, demo, out (doc/images), tmp
@@ -44,4 +45,17 @@ for shadows in scene off; do
 done
 cp "$tmp/pillars-scene/tiled.png" "$out/pillar-hall-shadows.png"
 cp "$tmp/pillars-off/tiled.png" "$out/pillar-hall-no-shadows.png"
+# The environment light (doc/colour.md, "Environment light"): the metal showcase (tests/make_glb.py --metal-showcase)
+# under the default rig without an environment (--environment none) and with the default one, side by side.
+python3 tests/make_glb.py "$tmp/helmet.glb" --metal-showcase >/dev/null
+render environment-helmet-none --scene "$tmp/helmet.glb" --environment none
+render environment-helmet-default --scene "$tmp/helmet.glb"
+python3 - "$out/environment-helmet-none.png" "$out/environment-helmet-default.png" "$out/environment-helmet.png" <<'PY'
+import sys
+sys.path.insert(0, "web")
+from run_chromium_check import read_png, write_png
+(w, h, a), (_, _, b) = read_png(sys.argv[1]), read_png(sys.argv[2])
+write_png(sys.argv[3], 2 * w, h, b"".join(a[y * w * 4:(y + 1) * w * 4] + b[y * w * 4:(y + 1) * w * 4] for y in range(h)))
+PY
+rm "$out/environment-helmet-none.png" "$out/environment-helmet-default.png"
 echo "wrote $(ls "$out" | wc -l) images to $out"

@@ -7,9 +7,15 @@ grooves, metallic-roughness and occlusion (repeated by KHR_texture_transform), t
 with emissiveFactor 1 and a metallic-roughness texture, one box an alpha MASK cut-out, double-sided.
 --punctual adds KHR_lights_punctual lights in the specification's units: a warm 30 cd point light with range 5,
 a blue 8 cd point light without range, an 80 cd spot light shining straight down and a 0.8 lux directional sun.
+--metal-showcase writes another model instead, a helmet-like one without lights for the environment light
+(issue 39): a metal shell with a panel texture (painted dielectric stripes on metal, roughness varying with
+scratches, panel grooves in a normal texture, occlusion in them), a gold visor (smooth metal), a dark rough
+metal neck ring and two ear pods with emissive strips: metallic, rough, textured and emissive, as the glTF
+sample DamagedHelmet is, so a viewer without an environment shows its metal near-black.
 Python's standard library only.
 
     python3 tests/make_glb.py OUT.glb [--triangles N] [--textured] [--punctual]
+    python3 tests/make_glb.py OUT.glb --metal-showcase
 """
 import argparse
 import json
@@ -81,18 +87,186 @@ def sphere(cx, cy, cz, r, rings, segments):
     return pos, nor, idx
 
 
+def grid_indices(rows, columns):
+    """Two triangles per cell of a (rows + 1) x (columns + 1) vertex grid stored row by row."""
+    idx = []
+    for i in range(rows):
+        for j in range(columns):
+            a = i * (columns + 1) + j
+            b = a + columns + 1
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return idx
+
+
 def floor(size, cells):
     pos, nor, idx = [], [], []
     for i in range(cells + 1):
         for j in range(cells + 1):
             pos.append((-size + 2 * size * j / cells, 0.0, -size + 2 * size * i / cells))
             nor.append((0.0, 1.0, 0.0))
-    for i in range(cells):
-        for j in range(cells):
-            a = i * (cells + 1) + j
-            b = a + cells + 1
-            idx += [a, b, a + 1, a + 1, b, b + 1]
+    idx += grid_indices(cells, cells)
     return pos, nor, idx
+
+
+class Glb:
+    """A binary buffer, its views and accessors, written out as one .glb."""
+
+    def __init__(self):
+        self.binary = bytearray()
+        self.views, self.accessors = [], []
+
+    def view(self, data, target):
+        while len(self.binary) % 4:
+            self.binary.append(0)
+        self.views.append({"buffer": 0, "byteOffset": len(self.binary), "byteLength": len(data)})
+        if target:
+            self.views[-1]["target"] = target
+        self.binary.extend(data)
+        return len(self.views) - 1
+
+    def attributes(self, pos, nor, idx, uvs=None):
+        """POSITION, NORMAL (and TEXCOORD_0) accessors and the index accessor of one primitive."""
+        lo = [min(p[i] for p in pos) for i in range(3)]
+        hi = [max(p[i] for p in pos) for i in range(3)]
+        pv = self.view(struct.pack("<%df" % (3 * len(pos)), *[c for p in pos for c in p]), 34962)
+        nv = self.view(struct.pack("<%df" % (3 * len(nor)), *[c for n in nor for c in n]), 34962)
+        iv = self.view(struct.pack("<%dI" % len(idx), *idx), 34963)
+        attributes = {"POSITION": len(self.accessors), "NORMAL": len(self.accessors) + 1}
+        self.accessors += [
+            {"bufferView": pv, "componentType": 5126, "count": len(pos), "type": "VEC3", "min": lo, "max": hi},
+            {"bufferView": nv, "componentType": 5126, "count": len(nor), "type": "VEC3"},
+            {"bufferView": iv, "componentType": 5125, "count": len(idx), "type": "SCALAR"},
+        ]
+        indices = len(self.accessors) - 1
+        if uvs is not None:
+            flat = [c for uv in uvs for c in uv]
+            attributes["TEXCOORD_0"] = len(self.accessors)
+            self.accessors.append({"bufferView": self.view(struct.pack("<%df" % len(flat), *flat), 34962),
+                                   "componentType": 5126, "count": len(pos), "type": "VEC2"})
+        return attributes, indices
+
+    def write(self, path, doc):
+        while len(self.binary) % 4:
+            self.binary.append(0)
+        doc.update({"accessors": self.accessors, "bufferViews": self.views,
+                    "buffers": [{"byteLength": len(self.binary)}]})
+        text = json.dumps(doc, separators=(",", ":")).encode()
+        text += b" " * (-len(text) % 4)
+        total = 12 + 8 + len(text) + 8 + len(self.binary)
+        with open(path, "wb") as f:
+            f.write(struct.pack("<III", 0x46546C67, 2, total))
+            f.write(struct.pack("<II", len(text), 0x4E4F534A) + text)
+            f.write(struct.pack("<II", len(self.binary), 0x004E4942) + bytes(self.binary))
+        return total
+
+
+def torus(cx, cy, cz, major, minor, rings, segments):
+    """A ring about the y axis."""
+    pos, nor, idx = [], [], []
+    for i in range(rings + 1):
+        u = 2 * math.pi * i / rings
+        for j in range(segments + 1):
+            v = 2 * math.pi * j / segments
+            n = (math.cos(v) * math.cos(u), math.sin(v), math.cos(v) * math.sin(u))
+            pos.append((cx + (major + minor * math.cos(v)) * math.cos(u), cy + minor * math.sin(v),
+                        cz + (major + minor * math.cos(v)) * math.sin(u)))
+            nor.append(n)
+    idx += grid_indices(rings, segments)
+    return pos, nor, idx
+
+
+def metal_showcase(out):
+    """The --metal-showcase helmet: see the module's text."""
+    glb = Glb()
+    size = 128
+
+    def panel(x, y):  # panel edges every 32 texels; a painted stripe band; scratches
+        edge = x % 32 < 2 or y % 32 < 2
+        stripe = 40 <= y < 56
+        scratch = (x * 7 + y * 13) % 29 == 0 or (x + 3 * y) % 37 == 0
+        return edge, stripe, scratch
+
+    def base(x, y):
+        edge, stripe, _ = panel(x, y)
+        if stripe:
+            return (200, 40, 30, 255)  # red paint
+        return (70, 70, 75, 255) if edge else (190, 190, 195, 255)
+
+    def metal_rough(x, y):
+        edge, stripe, scratch = panel(x, y)
+        roughness = 200 if scratch else (150 if edge else 90)
+        return (0, 150 if stripe else roughness, 0 if stripe else 255, 255)
+
+    def normal(x, y):  # grooves at the panel edges
+        gx = (0.7 if x % 32 == 0 else -0.7 if x % 32 == 1 else 0.0)
+        gy = (0.7 if y % 32 == 0 else -0.7 if y % 32 == 1 else 0.0)
+        n = (gx, gy, 1.0)
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(int(round((c / length * 0.5 + 0.5) * 255)) for c in n) + (255,)
+
+    def occlusion(x, y):
+        edge, _, _ = panel(x, y)
+        return (110 if edge else 255, 0, 0, 255)
+
+    images = [png(size, size, base), png(size, size, metal_rough), png(size, size, normal), png(size, size, occlusion),
+              png(32, 8, lambda x, y: (40, 230, 255, 255) if 2 <= y < 6 and x % 8 < 5 else (0, 0, 0, 255))]
+    image_list = [{"bufferView": glb.view(data, None), "mimeType": "image/png"} for data in images]
+
+    def sphere_uv(pos, c):
+        uv = []
+        for p in pos:
+            d = [p[i] - c[i] for i in range(3)]
+            r = math.sqrt(sum(x * x for x in d)) or 1.0
+            uv.append((math.atan2(d[2], d[0]) / (2 * math.pi) * 3.0 + 0.5,
+                       math.acos(max(-1.0, min(1.0, d[1] / r))) / math.pi * 1.5))
+        return uv
+
+    def cut(part, keep):
+        """The triangles of (pos, nor, idx) whose centroid passes keep(x, y, z)."""
+        pos, nor, idx = part
+        kept = []
+        for t in range(0, len(idx), 3):
+            c = [sum(pos[idx[t + k]][i] for k in range(3)) / 3 for i in range(3)]
+            if keep(*c):
+                kept += idx[t:t + 3]
+        return pos, nor, kept
+
+    shell = cut(sphere(0.0, 0.0, 0.0, 1.0, 48, 64), lambda x, y, z: y > -0.55 and not (z > 0.45 and -0.35 < y < 0.45))
+    visor = cut(sphere(0.0, 0.02, 0.04, 0.96, 48, 64), lambda x, y, z: z > 0.4 and -0.4 < y < 0.5)
+    ring = torus(0.0, -0.62, 0.0, 0.78, 0.14, 48, 16)
+    ear_l, ear_r = box(-1.0, 0.05, 0.0, 0.12, 0.28, 0.28), box(1.0, 0.05, 0.0, 0.12, 0.28, 0.28)
+
+    def ear_uv(pos):
+        return [((p[2] + 0.28) / 0.56, (p[1] + 0.23) / 0.56) for p in pos]
+
+    textured = {"baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1},
+                "metallicFactor": 1.0, "roughnessFactor": 1.0, "baseColorFactor": [1, 1, 1, 1]}
+    materials = [
+        {"name": "shell", "pbrMetallicRoughness": textured, "normalTexture": {"index": 2, "scale": 1.0},
+         "occlusionTexture": {"index": 3, "strength": 1.0}},
+        {"name": "gold visor", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.78, 0.34, 1.0],
+                                                         "metallicFactor": 1.0, "roughnessFactor": 0.12}},
+        {"name": "neck ring", "pbrMetallicRoughness": {"baseColorFactor": [0.35, 0.35, 0.38, 1.0],
+                                                        "metallicFactor": 1.0, "roughnessFactor": 0.5}},
+        {"name": "ear pods", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.56, 0.6, 1.0],
+                                                       "metallicFactor": 1.0, "roughnessFactor": 0.35},
+         "emissiveFactor": [1, 1, 1], "emissiveTexture": {"index": 4}},
+    ]
+    parts = [(shell, 0, sphere_uv(shell[0], (0, 0, 0))), (visor, 1, None), (ring, 2, None),
+             (ear_l, 3, ear_uv(ear_l[0])), (ear_r, 3, ear_uv(ear_r[0]))]
+    meshes, nodes = [], []
+    for k, ((pos, nor, idx), material, uvs) in enumerate(parts):
+        attributes, indices = glb.attributes(pos, nor, idx, uvs)
+        meshes.append({"name": "part%d" % k, "primitives": [{"attributes": attributes, "indices": indices,
+                                                              "material": material}]})
+        nodes.append({"mesh": k})
+    doc = {"asset": {"version": "2.0", "generator": "lidr tests/make_glb.py --metal-showcase"},
+           "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
+           "materials": materials, "images": image_list,
+           "textures": [{"source": i} for i in range(len(image_list))]}
+    total = glb.write(out, doc)
+    triangles = sum(len(p[0][2]) // 3 for p in parts)
+    print("make_glb.py: wrote %s (%d triangles, %d bytes, --metal-showcase)" % (out, triangles, total))
 
 
 def main():
@@ -102,7 +276,12 @@ def main():
                     help="add a tessellated sphere so the model has about this many triangles")
     ap.add_argument("--textured", action="store_true", help="texture coordinates and glTF textures (see above)")
     ap.add_argument("--punctual", action="store_true", help="KHR_lights_punctual point and spot lights (see above)")
+    ap.add_argument("--metal-showcase", action="store_true",
+                    help="a helmet-like metallic, rough, textured, emissive model without lights (see above)")
     args = ap.parse_args()
+    if args.metal_showcase:
+        metal_showcase(args.out)
+        return
 
     parts = [
         (floor(4.0, 8), (0.8, 0.8, 0.8)),
@@ -118,22 +297,13 @@ def main():
         rings = max(4, args.triangles // (2 * segments))
         parts.append((sphere(0.0, 2.5, -3.0, 0.8, rings, segments), (0.6, 0.6, 0.65)))
 
-    binary = bytearray()
-    views, accessors, meshes, materials, nodes = [], [], [], [], []
-
-    def add_view(data, target):
-        while len(binary) % 4:
-            binary.append(0)
-        views.append({"buffer": 0, "byteOffset": len(binary), "byteLength": len(data)})
-        if target:
-            views[-1]["target"] = target
-        binary.extend(data)
-        return len(views) - 1
+    glb = Glb()
+    meshes, materials, nodes = [], [], []
 
     images = []
     if args.textured:
         for data in textures():
-            images.append({"bufferView": add_view(data, None), "mimeType": "image/png"})
+            images.append({"bufferView": glb.view(data, None), "mimeType": "image/png"})
 
     def uv_of(k, p, n):
         """Texture coordinates: the floor's world x, z; the sphere's longitude, latitude; a box's face plane."""
@@ -147,25 +317,12 @@ def main():
         return (p[a] * 0.8, p[b] * 0.8)
 
     for k, ((pos, nor, idx), colour) in enumerate(parts):
-        pv = add_view(struct.pack("<%df" % (3 * len(pos)), *[c for p in pos for c in p]), 34962)
-        nv = add_view(struct.pack("<%df" % (3 * len(nor)), *[c for n in nor for c in n]), 34962)
-        iv = add_view(struct.pack("<%dI" % len(idx), *idx), 34963)
-        lo = [min(p[i] for p in pos) for i in range(3)]
-        hi = [max(p[i] for p in pos) for i in range(3)]
-        attributes = {"POSITION": len(accessors), "NORMAL": len(accessors) + 1}
-        accessors += [
-            {"bufferView": pv, "componentType": 5126, "count": len(pos), "type": "VEC3", "min": lo, "max": hi},
-            {"bufferView": nv, "componentType": 5126, "count": len(nor), "type": "VEC3"},
-            {"bufferView": iv, "componentType": 5125, "count": len(idx), "type": "SCALAR"},
-        ]
+        uvs = [uv_of(k, p, n) for p, n in zip(pos, nor)] if args.textured else None
+        attributes, indices = glb.attributes(pos, nor, idx, uvs)
         material = {"name": "material%d" % k,
                     "pbrMetallicRoughness": {"baseColorFactor": list(colour) + [1.0],
                                              "metallicFactor": 0.0, "roughnessFactor": 0.6}}
         if args.textured:
-            uvs = [c for p, n in zip(pos, nor) for c in uv_of(k, p, n)]
-            attributes["TEXCOORD_0"] = len(accessors)
-            accessors.append({"bufferView": add_view(struct.pack("<%df" % len(uvs), *uvs), 34962),
-                              "componentType": 5126, "count": len(pos), "type": "VEC2"})
             repeat = {"extensions": {"KHR_texture_transform": {"scale": [4, 4]}}}
             pbr = material["pbrMetallicRoughness"]
             if k == 0:  # floor: checker, grooves, MR, occlusion, repeated 4 times
@@ -183,15 +340,12 @@ def main():
                 material.update({"alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True})
         materials.append(material)
         meshes.append({"name": "part%d" % k, "primitives": [
-            {"attributes": attributes, "indices": attributes["NORMAL"] + 1, "material": k}]})
+            {"attributes": attributes, "indices": indices, "material": k}]})
         nodes.append({"mesh": k})
-    while len(binary) % 4:
-        binary.append(0)
 
     doc = {"asset": {"version": "2.0", "generator": "lidr tests/make_glb.py"},
            "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}], "nodes": nodes, "meshes": meshes,
-           "materials": materials, "accessors": accessors, "bufferViews": views,
-           "buffers": [{"byteLength": len(binary)}]}
+           "materials": materials}
     if images:
         doc.update({"images": images, "textures": [{"source": i} for i in range(len(images))],
                     "extensionsUsed": ["KHR_texture_transform"]})
@@ -210,13 +364,7 @@ def main():
             nodes.append(node)
         doc["scenes"][0]["nodes"] = list(range(len(nodes)))
         doc["extensionsUsed"] = doc.get("extensionsUsed", []) + ["KHR_lights_punctual"]
-    text = json.dumps(doc, separators=(",", ":")).encode()
-    text += b" " * (-len(text) % 4)
-    total = 12 + 8 + len(text) + 8 + len(binary)
-    with open(args.out, "wb") as f:
-        f.write(struct.pack("<III", 0x46546C67, 2, total))
-        f.write(struct.pack("<II", len(text), 0x4E4F534A) + text)
-        f.write(struct.pack("<II", len(binary), 0x004E4942) + bytes(binary))
+    total = glb.write(args.out, doc)
     triangles = sum(len(p[0][2]) // 3 for p in parts)
     print("make_glb.py: wrote %s (%d triangles, %d bytes)" % (args.out, triangles, total))
 

@@ -1,5 +1,8 @@
 #include "render_helpers.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
@@ -16,6 +19,67 @@ PointLight light(glm::vec3 position, float radius, glm::vec3 color, float priori
     l.color = color;
     l.priority = priority;
     return l;
+}
+
+Scene metallicRoughnessSweep(float (*roughness)(int j), const glm::vec3& eye) {
+    Scene scene;
+    scene.name = "metallic-roughness-sweep";
+    for (int mi = 0; mi < 4; ++mi)
+        for (int ri = 0; ri < 4; ++ri) {
+            Material m;
+            m.name = "m" + std::to_string(mi) + "r" + std::to_string(ri);
+            m.metallicRoughness = true;
+            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
+            m.metallic = float(mi) / 3.0f;
+            m.roughness = roughness(ri);
+            scene.materials.push_back(m);
+            addPlane(scene, glm::vec3(-3.3f + 2.2f * float(mi), 0.0f, -3.3f + 2.2f * float(ri)), glm::vec2(2.0f),
+                     int(scene.materials.size() - 1), 4);
+        }
+    scene.camera.position = eye;
+    scene.camera.target = glm::vec3(0.0f);
+    scene.camera.fovYDegrees = 55.0f;
+    scene.camera.nearPlane = 0.5f;
+    scene.camera.farPlane = 40.0f;
+    scene.width = testWidth();
+    scene.height = testHeight();
+    return scene;
+}
+
+int sweepTileAt(const CameraMatrices& camera, const ImageFloat& depth, int x, int y, glm::vec3& point) {
+    const float d = depth.at(x, y);
+    if (d >= 1.0f) return -1;
+    point = unprojectPixel(camera, x, y, d);
+    const float u = (point.x + 4.4f) / 2.2f, v = (point.z + 4.4f) / 2.2f;
+    const int mi = int(std::floor(u)), ri = int(std::floor(v));
+    if (mi < 0 || mi > 3 || ri < 0 || ri > 3) return -1;
+    const float fu = u - float(mi), fv = v - float(ri);
+    if (fu < 0.08f || fu > 0.83f || fv < 0.08f || fv > 0.83f) return -1;  // a tile is 2.0 of its 2.2 m cell
+    return mi * 4 + ri;
+}
+
+SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth, const OutputTransform& output,
+                      const std::function<glm::dvec3(const BrdfSurface&, const glm::vec3&)>& model, int channel,
+                      double brightLevel) {
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    SweepCheck c;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            glm::vec3 p;
+            const int tile = sweepTileAt(cam, depth, x, y, p);
+            if (tile < 0) continue;
+            const BrdfSurface s =
+                brdfSurface(scene.materials[size_t(tile)], glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
+            const glm::dvec3 expected = 255.0 * applyOutputTransform(model(s, p), output);
+            const uint8_t* got = image.at(x, y);
+            int e = 0;
+            for (int k = 0; k < 3; ++k) e = std::max(e, int(std::lround(std::abs(double(got[k]) - expected[k]))));
+            ++c.compared;
+            if (e <= 1) ++c.withinOne;
+            if (expected[channel] > brightLevel) ++c.bright;
+            c.worst = std::max(c.worst, e);
+        }
+    return c;
 }
 
 Scene testRoom(float time) {

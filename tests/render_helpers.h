@@ -1,10 +1,13 @@
 #pragma once
 // Shared by the GL tests: small controlled scenes, and "render with LIDR and with the brute-force reference,
 // then evaluate" in one call.
+#include <functional>
 #include <vector>
 
 #include "lidr/platform/context.h"
+#include "lidr/eval/brdf.h"
 #include "lidr/eval/frame_evaluation.h"
+#include "lidr/render/output_transform.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/scene/scene.h"
 
@@ -17,6 +20,24 @@ PointLight light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1
 // size is testWidth() x testHeight(). No lights: tests add their own.
 Scene floorScene();
 
+// A 4 x 4 sweep of flat 2 x 2 m tiles on y = 0 in 2.2 m cells centred on the origin: metallic i / 3 along x,
+// roughness(j) along z, base colour (0.9, 0.6, 0.3); seen from `eye` towards the origin (55 degrees, near 0.5,
+// far 40), testWidth() x testHeight(). No lights, the default ambient: tests add their own (test_brdf.cpp,
+// test_environment.cpp).
+Scene metallicRoughnessSweep(float (*roughness)(int j), const glm::vec3& eye);
+// The sweep's tile under pixel (x, y) of a frame with that depth, away from the tile's edges (where the pixel
+// centre's triangle may differ): its material index (i x 4 + j) and the surface point; -1 for none.
+int sweepTileAt(const CameraMatrices& camera, const ImageFloat& depth, int x, int y, glm::vec3& point);
+// Every sweep pixel (sweepTileAt) of a frame against the CPU model: model(surface, point) is the pixel's linear
+// light (the surface: its tile's material, normal up, seen from the camera), `output` makes it 8-bit. The pixels
+// compared, those within one step of it, those whose expected `channel` passes brightLevel, the worst step.
+struct SweepCheck {
+    long compared = 0, withinOne = 0, bright = 0;
+    int worst = 0;
+};
+SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFloat& depth, const OutputTransform& output,
+                      const std::function<glm::dvec3(const BrdfSurface&, const glm::vec3&)>& model, int channel,
+                      double brightLevel);
 // lidr's default room (255 lights) at testWidth() x testHeight(), at `time` seconds.
 Scene testRoom(float time = 0.0f);
 

@@ -137,27 +137,8 @@ namespace {
 
 // A 4 x 4 sweep of flat tiles (metallic along x, roughness along z) on y = 0, lit by three lights and the ambient.
 Scene sweepScene() {
-    Scene scene;
+    Scene scene = metallicRoughnessSweep([](int j) { return 0.25f + 0.25f * float(j); }, glm::vec3(0.0f, 7.0f, 7.5f));
     scene.name = "brdf-sweep";
-    for (int mi = 0; mi < 4; ++mi)
-        for (int ri = 0; ri < 4; ++ri) {
-            Material m;
-            m.name = "m" + std::to_string(mi) + "r" + std::to_string(ri);
-            m.metallicRoughness = true;
-            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
-            m.metallic = float(mi) / 3.0f;
-            m.roughness = 0.25f + 0.25f * float(ri);
-            scene.materials.push_back(m);
-            addPlane(scene, glm::vec3(-3.3f + 2.2f * float(mi), 0.0f, -3.3f + 2.2f * float(ri)), glm::vec2(2.0f),
-                     int(scene.materials.size() - 1), 4);
-        }
-    scene.camera.position = glm::vec3(0.0f, 7.0f, 7.5f);
-    scene.camera.target = glm::vec3(0.0f, 0.0f, 0.0f);
-    scene.camera.fovYDegrees = 55.0f;
-    scene.camera.nearPlane = 0.5f;
-    scene.camera.farPlane = 40.0f;
-    scene.width = testWidth();
-    scene.height = testHeight();
     scene.ambient = glm::vec3(0.05f);
     scene.lights = {light({-1.0f, 2.5f, 1.0f}, 9.0f, {1.0f, 0.95f, 0.9f}), light({2.5f, 1.5f, -2.0f}, 6.0f, {0.4f, 0.6f, 1.2f}),
                     // at the eye (the default light rig's key light): v.h rounds to 1 and above there
@@ -221,40 +202,21 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
                                          {{1.0f, -0.05f, 0.0f}, {0.5f, 0.5f, 0.6f}},
                                          {{0.1f, 1.0f, 0.2f}, {5.0f, 5.0f, 5.0f}}};
         r->render(scene.camera, scene.lights, shading);
-        const ImageRGBA8 image = r->targets().readColor();
-        const ImageFloat depth = r->targets().readDepth();
-        const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
-        long compared = 0, withinOne = 0, lit = 0, nearRangeEnd = 0;
-        int worst = 0;
-        for (int y = 0; y < scene.height; ++y)
-            for (int x = 0; x < scene.width; ++x) {
-                const float d = depth.at(x, y);
-                if (d >= 1.0f) continue;
-                const glm::vec3 p = unprojectPixel(cam, x, y, d);
-                // the tile under the pixel, away from its edges (where the pixel centre's triangle may differ)
-                const float u = (p.x + 4.4f) / 2.2f, v = (p.z + 4.4f) / 2.2f;
-                const int mi = int(std::floor(u)), ri = int(std::floor(v));
-                if (mi < 0 || mi > 3 || ri < 0 || ri > 3) continue;
-                const float fu = u - float(mi), fv = v - float(ri);
-                if (fu < 0.08f || fu > 0.83f || fv < 0.08f || fv > 0.83f) continue;  // tile 2.0 of a 2.2 cell
-                const Material& m = scene.materials[size_t(mi * 4 + ri)];
-                const BrdfSurface s = brdfSurface(m, glm::dvec3(p), glm::dvec3(0, 1, 0), glm::dvec3(cam.eye));
+        long nearRangeEnd = 0;
+        const SweepCheck c = checkSweep(
+            scene, r->targets().readColor(), r->targets().readDepth(), shading.output,
+            [&](const BrdfSurface& s, const glm::vec3& p) {
                 glm::dvec3 linear = shadeAmbient(s, glm::dvec3(scene.ambient));
                 for (const PointLight& l : modelLights) linear += shadePointLight(s, l);
                 const PointLight& first = modelLights[0];
                 const double toFirst = glm::distance(glm::dvec3(p), glm::dvec3(first.position));
-                const bool nearEnd = toFirst > 0.8 * first.radius && toFirst < first.radius;
+                nearRangeEnd += toFirst > 0.8 * first.radius && toFirst < first.radius;
                 for (const DirectionalLight& l : shading.directionalLights) linear += shadeDirectionalLight(s, l);
-                const glm::dvec3 expected = 255.0 * applyOutputTransform(linear, shading.output);
-                const uint8_t* got = image.at(x, y);
-                int e = 0;
-                for (int k = 0; k < 3; ++k) e = std::max(e, int(std::lround(std::abs(double(got[k]) - expected[k]))));
-                ++compared;
-                nearRangeEnd += nearEnd;
-                if (e <= 1) ++withinOne;
-                if (expected.r > 40.0) ++lit;
-                worst = std::max(worst, e);
-            }
+                return linear;
+            },
+            0, 40.0);
+        const long compared = c.compared, withinOne = c.withinOne, lit = c.bright;
+        const int worst = c.worst;
         INFO(mode << ": " << compared << " pixels compared, " << withinOne << " within 1 step, worst " << worst);
         REQUIRE(compared > long(scene.width) * scene.height / 8);
         REQUIRE(lit > compared / 4);  // the lights really light the sweep

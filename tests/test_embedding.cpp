@@ -46,9 +46,10 @@ StateList readGlState() {
     GLint active = 0, units = 0;
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
     glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-    for (int i = 0; i < std::min(units, 16); ++i) {
+    for (int i = 0; i < std::min(units, SavedGlState::kMaxTextureUnits); ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         ints("texture 2D unit " + std::to_string(i), GL_TEXTURE_BINDING_2D);
+        ints("cube map unit " + std::to_string(i), GL_TEXTURE_BINDING_CUBE_MAP);  // the environment light's
     }
     glActiveTexture(active);
     for (GLenum e : {GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_UNPACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
@@ -112,7 +113,7 @@ StateList readGlState() {
 // The program's own GL objects and a state far from every default, as an application would leave it
 // before handing the frame to lidr (and expect back after).
 struct CallerState {
-    gl::Texture textures[2], target;
+    gl::Texture textures[2], target, cube;
     gl::Framebuffer fbo;
     gl::Renderbuffer renderbuffer;
     gl::Buffer vertices, elements;
@@ -121,6 +122,8 @@ struct CallerState {
 
     CallerState() {
         for (auto& t : textures) t = gl::Texture::create2D(GL_RGBA8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE);
+        const uint8_t texel[4] = {};
+        cube = gl::Texture::createCube(GL_RGBA8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, [&](int, int) { return texel; }, 0.0f);
         target = gl::Texture::create2D(GL_RGBA8, 32, 32, GL_RGBA, GL_UNSIGNED_BYTE);
         fbo = gl::Framebuffer::create();
         fbo.bind();
@@ -157,9 +160,10 @@ struct CallerState {
         glUseProgram(0);
         GLint units = 0;
         glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-        for (int i = 0; i < std::min(units, 16); ++i) {
+        for (int i = 0; i < std::min(units, SavedGlState::kMaxTextureUnits); ++i) {
             glActiveTexture(GL_TEXTURE0 + i);
             glBindTexture(GL_TEXTURE_2D, 0);
+            glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
         }
         glActiveTexture(GL_TEXTURE0);
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -192,7 +196,10 @@ struct CallerState {
         program.use();
         GLint units = 0;
         glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-        for (int i = 0; i < std::min(units, 16); ++i) textures[i % 2].bind(i);
+        for (int i = 0; i < std::min(units, SavedGlState::kMaxTextureUnits); ++i) {
+            textures[i % 2].bind(i);
+            cube.bind(i);
+        }
         glActiveTexture(GL_TEXTURE5);
         glPixelStorei(GL_PACK_ALIGNMENT, 2);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
@@ -305,7 +312,9 @@ TEST_CASE("currentContextGlInfo reads the context current on this thread", "[emb
 // [desktop-state]: the caller's state set here is desktop GL's (glClearDepth, polygon mode, logic op...).
 TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed][desktop-state][every-gl]") {
     testContext();
-    const auto [scene, lights, shading] = litFloorFrame();
+    const auto [scene, lights, floorShading] = litFloorFrame();
+    ShadingParameters shading = floorShading;
+    shading.environment.map = defaultEnvironment();  // its cube and table bound on units 17 and 18 (or 6 and 7)
     for (const std::string& mode : renderModeNames()) {
         INFO("mode " << mode);
         const std::unique_ptr<Renderer> renderer = buildKeepingState(mode, scene);

@@ -65,16 +65,26 @@ TEST_CASE("GLSL ES 1.00 from the GLSL 1.20 sources: a new header, the rest byte 
     const std::string desktop = buildShaderSource("lidr_forward.frag", {{"LIDR_SLOTS", "4"}}, unpack);
     REQUIRE_THAT(desktop, StartsWith("#version 120\n"));  // the desktop source is not touched
     const std::string es = glslEs100FromGlsl120(desktop, ShaderStage::Fragment, "lidr_forward.frag");
+    // shading.glsl's environment light: the bias lookup's derivatives (dFdx) and the LOD lookup (textureCubeLod, which
+    // is EXT_shader_texture_lod's textureCubeLodEXT) enable their extensions where the context has them.
     const std::string header = "#version 100\n"
+                               "#ifdef GL_OES_standard_derivatives\n#extension GL_OES_standard_derivatives : enable\n#endif\n"
+                               "#ifdef GL_EXT_shader_texture_lod\n#extension GL_EXT_shader_texture_lod : enable\n#endif\n"
                                "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
                                "precision highp float;\n"
                                "precision highp sampler2D;\n"
+                               "precision highp samplerCube;\n"
                                "#else\n"
                                "precision mediump float;\n"
                                "precision mediump sampler2D;\n"
+                               "precision mediump samplerCube;\n"
                                "#define LIDR_FRAGMENT_FP16 1\n"
                                "#endif\n";
-    REQUIRE(es == header + afterVersionLine(desktop));
+    std::string body = afterVersionLine(desktop);
+    REQUIRE(body.find("textureCubeLod(") != std::string::npos);
+    for (size_t p = 0; (p = body.find("textureCubeLod(", p)) != std::string::npos; p += 18)
+        body.replace(p, 15, "textureCubeLodEXT(");
+    REQUIRE(es == header + body);
 
     // Vertex shaders: highp is the ES default, nothing to add.
     const std::string vertex = buildShaderSource("geometry.vert");

@@ -217,7 +217,13 @@ void Viewer::buildUi(int fbw, int fbh) {
     ImGui::TextWrapped("GL %s, GLSL %s, %s", info.version.c_str(), info.glslVersion.c_str(), info.backend.c_str());
     ImGui::Text("%s, %dx%d, %d lights", scene_.name.c_str(), width_, height_, int(scene_.lights.size()));
     if (ImGui::CollapsingHeader("file (drop one on the window)", ImGuiTreeNodeFlags_DefaultOpen)) uiFile();
-    if (ImGui::CollapsingHeader("settings", ImGuiTreeNodeFlags_DefaultOpen)) uiSettings();
+    if (ImGui::CollapsingHeader("settings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        uiSettings();
+        // The environment light (--environment): its intensity is a uniform, changed without a rebuild.
+        if (shading_.environment.on())
+            ImGui::SliderFloat("environment", &shading_.environment.intensity, 0.0f, 4.0f, "%.2f x");
+        if (renderer_) ImGui::TextWrapped("environment: %s", renderer_->lastFrame().environment.c_str());
+    }
     if (ImGui::CollapsingHeader("frame", ImGuiTreeNodeFlags_DefaultOpen)) uiStats();
     if (ImGui::CollapsingHeader("debug view (V)", ImGuiTreeNodeFlags_DefaultOpen)) uiViews();
     if (ImGui::CollapsingHeader("animation and camera", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -28,6 +28,7 @@
 #include "lidr/render/shadow_atlas.h"
 #include "lidr/render/shadow_casters.h"
 #include "lidr/scene/default_scene.h"
+#include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/scene/light_scatter.h"
 #include "web_check.h"
@@ -50,6 +51,10 @@ struct Settings {
     bool paused = false;
     std::string shadows = "off";  // off, scene (the lights' own flags), or K: the K brightest lights in view
     bool shadowFilter = false;    // filtered shadow edges (ShadowSettings::filtered)
+    // The environment light (doc/colour.md): auto (a model gets the built-in studio room in place of the uniform
+    // ambient, the room none), default, none, or a .hdr the page wrote into its file system; and its intensity.
+    std::string environment = "auto";
+    float environmentIntensity = 1.0f;
 };
 
 // The page's shadow atlas: 2048 texels a side, the largest tile (up to 512) that holds the casters' maps.
@@ -78,6 +83,8 @@ struct Page {
     bool dragging = false;
     std::string message;  // the last refusal or error, shown in red
     std::string viewNote;  // what the current debug view shows
+    std::shared_ptr<const Environment> environmentFile;  // the last .hdr read, for environment = its path
+    std::string environmentFileName;
 };
 Page* page = nullptr;
 
@@ -104,6 +111,19 @@ std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& s
     if (int(lights.size()) > page->settings.lightCount) lights.resize(size_t(page->settings.lightCount));
     shading = sceneShading(page->scene);
     const Settings& s = page->settings;
+    if (s.environment == "auto") {
+        Scene lit;  // the tools' rule for models (lidr::giveModelDefaultEnvironment), on the shading alone
+        lit.ambient = shading.ambient;
+        if (page->model && !shading.environment.on() && giveModelDefaultEnvironment(lit)) {
+            shading.environment.map = lit.environment;
+            shading.ambient = lit.ambient;
+        }
+    } else if (s.environment == "none") {
+        shading.environment.map = nullptr;
+    } else {
+        shading.environment.map = s.environment == "default" ? defaultEnvironment() : page->environmentFile;
+    }
+    shading.environment.intensity = s.environmentIntensity;
     if (s.shadows == "off") return lights;
     if (s.shadows != "scene")
         chooseShadowCasters(lights, cameraMatrices(camera, kWidth, kHeight), std::stoi(s.shadows));
@@ -153,6 +173,13 @@ bool applySettings(Settings wanted, bool sceneChanged = false) {
                                 wanted.shadows.find_first_not_of("0123456789") == std::string::npos;
             if (!digits) throw Error("shadows: off, scene or a number of lights K, got '" + wanted.shadows + "'");
         }
+        if (wanted.environment != page->settings.environment && wanted.environment != "auto" &&
+            wanted.environment != "none" && wanted.environment != "default") {
+            // A file the page wrote: read (and checked) now; a refusal keeps the environment shown.
+            page->environmentFile = loadEnvironment(wanted.environment);
+            page->environmentFileName = wanted.environment;
+        }
+        validateEnvironmentIntensity(wanted.environmentIntensity, "environment intensity");
         if (wanted.view == "shadow-atlas" && wanted.shadows == "off")
             throw Error("the shadow-atlas view shows the shadow maps: turn shadows on");
         if ((wanted.view == "index-lists" || wanted.view == "overlap") && wanted.mode != "lidr")
@@ -358,7 +385,8 @@ std::string jsonEscape(const std::string& s) {
 extern "C" {
 
 // Sets one setting by name ("mode", "scheme", "budget", "index-bits", "view", "lights", "paused", "shadows":
-// off, scene or K, "shadow-filter": nearest or pcf), returns 1 when
+// off, scene or K, "shadow-filter": nearest or pcf, "environment": auto, default, none or the path of a .hdr
+// the page wrote, "environment-intensity": a number >= 0), returns 1 when
 // applied, 0 when refused (lidr_web_status() then carries the reason).
 EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
     Settings s = page->settings;
@@ -373,8 +401,11 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
         else if (n == "paused") s.paused = v == "1" || v == "true";
         else if (n == "shadows") s.shadows = v;
         else if (n == "shadow-filter") s.shadowFilter = v == "pcf";
+        else if (n == "environment") s.environment = v;
+        else if (n == "environment-intensity") s.environmentIntensity = std::stof(v);
         else throw Error("unknown setting '" + n +
-                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter)");
+                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter, "
+                         "environment, environment-intensity)");
     } catch (const std::logic_error&) {
         page->message = "setting " + n + ": a number, got '" + v + "'";
         return 0;
@@ -489,17 +520,20 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
     std::snprintf(figures, sizeof figures,
                   "\"frameMs\":%.2f,\"renderMs\":%.2f,\"renderMsLast\":%.2f,\"time\":%.2f,\"budget\":%d,"
                   "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
-                  "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d",
+                  "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d,"
+                  "\"environmentIntensity\":%g",
                   page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
                   s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
                   page->model ? "true" : "false", s.paused ? "true" : "false",
                   page->renderer ? page->renderer->lastFrame().shadowCasters : 0,
-                  page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0);
+                  page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0, double(s.environmentIntensity));
     std::string warnings;
     for (const std::string& w : page->fileScene.warnings)
         warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";
     json = "{\"gl\":\"" + jsonEscape(page->context->info().summary()) + "\",\"mode\":\"" + s.mode +
-           "\",\"scheme\":\"" + s.scheme + "\",\"shadows\":\"" + s.shadows + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
+           "\",\"scheme\":\"" + s.scheme + "\",\"shadows\":\"" + s.shadows + "\",\"environment\":\"" +
+           jsonEscape(s.environment) + "\",\"environmentFrame\":\"" +
+           jsonEscape(page->renderer ? page->renderer->lastFrame().environment : std::string("none")) + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
            "\",\"message\":\"" + jsonEscape(page->message) + "\",\"scene\":\"" + jsonEscape(page->sceneName) +
            "\",\"warnings\":[" + warnings + "]," + figures + "}";
     return json.c_str();

@@ -1,13 +1,15 @@
 // lidr-web-native-frame: the native renderer's frame of a scene file with the web page's options, for CTest
 // web.chromium's model check (web/run_chromium_check.py compares the page's frame with it). The page's choices
 // (web/lidr_web.cpp): N lights (the file's, then scattered over it with lidr::scatterLights' defaults), bit-shift
-// packing with budget 4 and 8-bit indices (16 past 255 lights), transparency on, no tile depth bounds, the scene's own camera and time.
+// packing with budget 4 and 8-bit indices (16 past 255 lights), transparency on, no tile depth bounds, the scene's own camera and time,
+// and for a glTF or OBJ model the default environment in place of the ambient (the page's environment "auto").
 // Drawn on OpenGL ES 2.0 (EGL), the API WebGL 1 is. Usage: lidr-web-native-frame SCENE LIGHTS MODE WIDTH HEIGHT OUT.png
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include "lidr/lidr.h"
+#include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/light_scatter.h"
 
 int main(int argc, char** argv) {
@@ -18,6 +20,8 @@ int main(int argc, char** argv) {
     try {
         const int lights = std::stoi(argv[2]), width = std::stoi(argv[4]), height = std::stoi(argv[5]);
         lidr::Scene scene = lidr::loadScene(argv[1]);
+        const std::string ext = lidr::lowerCaseExtension(argv[1]);
+        if (ext == ".glb" || ext == ".gltf" || ext == ".obj") lidr::giveModelDefaultEnvironment(scene);
         const int extra = lights - int(scene.lights.size());
         if (extra > 0) {
             lidr::LightScatterOptions scatter;

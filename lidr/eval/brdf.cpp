@@ -90,6 +90,21 @@ glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient) {
     return ambient * (albedoOf(s) + f0Of(s) * ab.x + f90Of(s) * ab.y);
 }
 
+glm::dvec3 shadeEnvironment(const BrdfSurface& s, const Environment& environment, const StoredEnvironment& stored,
+                            double intensity, bool diffuseOnly) {
+    // The shader's SH uniforms are the coefficients times the intensity, rounded to float.
+    std::array<glm::dvec3, 9> sh;
+    for (size_t i = 0; i < 9; ++i) sh[i] = glm::dvec3(glm::vec3(environment.sh[i] * intensity));
+    glm::dvec3 light = albedoOf(s) * irradianceOverPi(sh, s.normal);
+    if (diffuseOnly) return light;
+    const double nDotV = std::clamp(glm::dot(s.normal, s.toEye), 0.0, 1.0);
+    const double roughness = std::sqrt(alphaOf(s));
+    const glm::dvec3 r = 2.0 * glm::dot(s.normal, s.toEye) * s.normal - s.toEye;
+    const glm::dvec3 radiance = sampleStoredSpecular(stored, r, roughness * (stored.roughnessLevels - 1));
+    const glm::dvec2 ab = sampleStoredSplitSum(stored, nDotV, roughness);
+    return light + radiance * (f0Of(s) * ab.x + f90Of(s) * ab.y) * intensity;
+}
+
 glm::dvec3 directionalAlbedo(const BrdfSurface& s, int steps) {
     // Midpoint rule in (theta, phi) about the normal, d(omega) = sin(theta) d(theta) d(phi): uniform in theta
     // so that a narrow lobe gets steps anywhere in the hemisphere.

@@ -4,6 +4,7 @@
 // terms. Tests check GPU pixels against it and bound its energy (white furnace).
 #include <glm/glm.hpp>
 
+#include "lidr/scene/environment.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
@@ -34,6 +35,12 @@ double spotTerm(const PointLight& light, const glm::dvec3& toLight);
 glm::dvec3 shadeDirectionalLight(const BrdfSurface& s, const DirectionalLight& light);
 // lidrAmbient without the emission: ambient x (albedo + F0 A + F90 B), Karis' environment-BRDF fit.
 glm::dvec3 shadeAmbient(const BrdfSurface& s, const glm::dvec3& ambient);
+// lidrEnvironment (shading.glsl) without the occlusion: albedo x E(n) / pi from the spherical harmonics, plus, unless
+// diffuseOnly, the radiance in the reflected direction read from `stored` as the GPU filters it (trilinear at
+// roughness x (levels - 1), faces clamped at their edges, decoded after filtering) times the split sum F0 A + B
+// (the stored table, bilinear); all times `intensity`. roughness = sqrt(alpha) as the shader takes it.
+glm::dvec3 shadeEnvironment(const BrdfSurface& s, const Environment& environment, const StoredEnvironment& stored,
+                            double intensity, bool diffuseOnly = false);
 // The integral of f x n.l over the hemisphere (the reflected fraction of light from every direction), by
 // numerical quadrature with `steps` x 4 steps: the white-furnace figure (<= 1 conserves energy).
 glm::dvec3 directionalAlbedo(const BrdfSurface& s, int steps = 256);

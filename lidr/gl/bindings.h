@@ -39,6 +39,15 @@ enum TextureUnit : int {
     // float light table and take the fixed table's unit (ShadowMaps::unit).
     kUnitShadowAtlas = 16,
     kUnitShadowAtlasOn16 = kUnitLightPosRadiusLow,
+    // Every shading pass with an environment light (lidr/render/environment_maps.h): the prefiltered cube and the
+    // split-sum table, above the shadow atlas where the context has more than 18 units; with fewer (WebGL's usual
+    // 16) on the two highest index-target units, which only LIDR frames with more than 6 index targets (budget 16
+    // at 16-bit indices) use: those frames take the environment's diffuse term alone (doc/colour.md). So the
+    // environment never raises the units a shading pass needs (12).
+    kUnitEnvironmentSpecular = 17,
+    kUnitEnvironmentSplitSum = 18,
+    kUnitEnvironmentSpecularLow = 6,
+    kUnitEnvironmentSplitSumLow = 7,
     // FramePresenter: the frame.
     kUnitPresentedFrame = 0,
     // The highest unit a shading pass binds (capability checks).

@@ -108,6 +108,8 @@ static GlInfo esContextGlInfo(GlInfo info) {
     glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
     info.fragmentHighp = precision >= 23;  // fp32; ES 2.0 lets highp be absent in fragment shaders (precision 0)
     info.drawBuffers = hasExtension("GL_EXT_draw_buffers") && hasDrawBuffersEntryPoint();
+    info.textureLod = hasExtension("GL_EXT_shader_texture_lod");
+    info.halfFloatLinear = hasExtension("GL_OES_texture_half_float") && hasExtension("GL_OES_texture_half_float_linear");
     info.multisampleFbo = false;
     info.maxSamples = 0;
     info.multisampleTexture = info.sampleShading = false;
@@ -167,6 +169,8 @@ GlInfo currentContextGlInfo(const std::string& backendName) {
     info.depthClamp = hasExtension("GL_ARB_depth_clamp") || hasExtension("GL_NV_depth_clamp");
     info.pipelineStatistics = hasExtension("GL_ARB_pipeline_statistics_query");
     info.drawBuffers = hasDrawBuffersEntryPoint();
+    info.textureLod = hasExtension("GL_ARB_shader_texture_lod");
+    info.halfFloatLinear = info.textureFloat;  // RGB16F filters (GL 3.0 requires it; Mesa's ARB_texture_float does)
     info.multisampleFbo = (gl30 || hasExtension("GL_EXT_framebuffer_multisample") ||
                             hasExtension("GL_ARB_framebuffer_object")) && glRenderbufferStorageMultisample;
     if (info.multisampleFbo) glGetIntegerv(GL_MAX_SAMPLES, &info.maxSamples);
@@ -198,8 +202,10 @@ std::string GlInfo::summary() const {
         s << "backend " << backend << ", " << version << ", renderer " << renderer << ", " << glslVersion
           << ", draw buffers " << (drawBuffers ? maxDrawBuffers : 1) << ", MAX blend " << (blendMinMax ? "yes" : "no")
           << ", float textures " << (textureFloat ? "yes" : "no") << ", half-float colour buffers "
-          << (halfFloatColorBuffer ? "yes" : "no") << ", depth textures " << (depthTexture ? "yes" : "no") << ", fragment highp " << (fragmentHighp ? "yes" : "no")
-          << ", depth clamp " << (depthClamp ? "yes" : "no") << ", occlusion and timer queries no, MSAA no";
+          << (halfFloatColorBuffer ? "yes" : "no") << ", depth textures " << (depthTexture ? "yes" : "no")
+          << ", fragment highp " << (fragmentHighp ? "yes" : "no") << ", depth clamp " << (depthClamp ? "yes" : "no")
+          << ", texture LOD " << (textureLod ? "yes" : "no") << ", half-float filtering "
+          << (halfFloatLinear ? "yes" : "no") << ", occlusion and timer queries no, MSAA no";
         return s.str();
     }
     s << "backend " << backend << ", GL " << version << ", renderer " << renderer << ", GLSL " << glslVersion

@@ -33,6 +33,11 @@ struct GlInfo {
                                       // NV_read_depth_stencil (DEPTH_STENCIL, UNSIGNED_INT_24_8)
     bool fragmentHighp = true;        // fp32-class fragment floats; ES: GL_FRAGMENT_PRECISION_HIGH (highp float)
     bool drawBuffers = false;         // GL 2.0 glDrawBuffers; ES: EXT_draw_buffers
+    bool halfFloatLinear = false;     // half-float textures filtered linearly (the environment's cube): desktop
+                                      // with textureFloat; ES: OES_texture_half_float + _linear
+    bool textureLod = false;          // explicit LOD lookups in fragment shaders (textureCubeLod): desktop
+                                      // ARB_shader_texture_lod; ES: EXT_shader_texture_lod (the environment's
+                                      // specular term; without it a mip bias, lidr/render/environment_maps.h)
     bool multisampleFbo = false;      // EXT_framebuffer_multisample (or GL 3.0); ES 2.0: none
     int maxSamples = 0;
     // The optional per-sample MSAA index path (Trebilco's MSAA technique 1): multisample textures

@@ -85,10 +85,33 @@ Texture Texture::create2DMultisample(GLint internalFormat, int width, int height
     return t;
 }
 
+Texture Texture::createCube(GLint internalFormat, int size, int levels, GLenum format, GLenum type,
+                            const std::function<const void*(int level, int face)>& data, float maxLod) {
+    Texture t;
+    static_cast<Object&>(t) = Object(Kind::Texture);
+    t.width_ = t.height_ = size;
+    t.target_ = GL_TEXTURE_CUBE_MAP;
+    if (currentContextIsGles()) internalFormat = GLint(format);  // no sized formats (create2D)
+    glBindTexture(GL_TEXTURE_CUBE_MAP, t.id_);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (!currentContextIsGles()) glTexParameterf(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LOD, maxLod);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int level = 0; level < levels; ++level)
+        for (int face = 0; face < 6; ++face)
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, internalFormat, std::max(1, size >> level),
+                         std::max(1, size >> level), 0, format, type, data(level, face));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    checkGl("Texture::createCube");
+    return t;
+}
+
 void Texture::bind(int unit) const {
     StateCache::current().countTextureBind();
     glActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, id_);
+    glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : target_, id_);
 }
 
 Renderbuffer Renderbuffer::create(GLenum internalFormat, int width, int height, int samples) {
@@ -165,7 +188,7 @@ static GLuint compileShader(GLenum type, const std::string& glsl120, const std::
     const std::string source =
         currentContextIsGles()
             ? glslEs100FromGlsl120(glsl120, type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment, name)
-            : glsl120;
+            : glsl120WithExtensions(glsl120, type == GL_VERTEX_SHADER ? ShaderStage::Vertex : ShaderStage::Fragment);
     GLuint s = glCreateShader(type);
     const char* src = source.c_str();
     glShaderSource(s, 1, &src, nullptr);
@@ -389,6 +412,9 @@ template <> void Uniform<glm::mat4>::set(const glm::mat4& v) const {
     glUniformMatrix4fv(location_, 1, GL_FALSE, glm::value_ptr(v));
 }
 template <> void Uniform<float>::setArray(const float* v, int count) const { glUniform1fv(location_, count, v); }
+template <> void Uniform<glm::vec3>::setArray(const glm::vec3* v, int count) const {
+    glUniform3fv(location_, count, glm::value_ptr(v[0]));
+}
 template <> void Uniform<glm::vec4>::setArray(const glm::vec4* v, int count) const {
     glUniform4fv(location_, count, glm::value_ptr(v[0]));
 }

@@ -56,6 +56,11 @@ public:
                             const void* data = nullptr, GLint filter = GLint(glc::kNearest));
     // A multisample 2D texture (GL 3.2 / ARB_texture_multisample), read with texelFetch per sample.
     static Texture create2DMultisample(GLint internalFormat, int width, int height, int samples);
+    // A cube map of `levels` mip levels (level i: size >> i texels a side, down to 1 x 1 for OpenGL ES 2.0's
+    // completeness), face f of level i from data(i, f) (GL's face order +X, -X, +Y, -Y, +Z, -Z), trilinear
+    // filtering, faces clamped at their edges; GL_TEXTURE_MAX_LOD set to maxLod where the context has it (desktop).
+    static Texture createCube(GLint internalFormat, int size, int levels, GLenum format, GLenum type,
+                              const std::function<const void*(int level, int face)>& data, float maxLod);
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
@@ -63,6 +68,7 @@ public:
 
 private:
     int width_ = 0, height_ = 0, samples_ = 0;
+    GLenum target_ = 0x0DE1;  // GL_TEXTURE_2D
 };
 
 class Renderbuffer : public Object {
@@ -118,6 +124,7 @@ template <> void Uniform<glm::vec3>::set(const glm::vec3& v) const;
 template <> void Uniform<glm::vec4>::set(const glm::vec4& v) const;
 template <> void Uniform<glm::mat4>::set(const glm::mat4& v) const;
 template <> void Uniform<float>::setArray(const float* v, int count) const;
+template <> void Uniform<glm::vec3>::setArray(const glm::vec3* v, int count) const;
 template <> void Uniform<glm::vec4>::setArray(const glm::vec4* v, int count) const;
 
 class Program : public Object {

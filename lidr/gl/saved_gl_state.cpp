@@ -85,6 +85,7 @@ void SavedGlState::save() {
     for (int i = 0; i < units_; ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2D_[i]);
+        glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &cubeMap_[i]);  // the environment light's cube (GL 1.3, ES 2.0)
         if (multisampleTex_) glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &texture2DMs_[i]);
     }
     glActiveTexture(activeTexture_);
@@ -212,6 +213,7 @@ void SavedGlState::restore() const {
     for (int i = 0; i < units_; ++i) {
         glActiveTexture(GL_TEXTURE0 + i);
         glBindTexture(GL_TEXTURE_2D, texture2D_[i]);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cubeMap_[i]);
         if (multisampleTex_) glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, texture2DMs_[i]);
     }
     glActiveTexture(activeTexture_);

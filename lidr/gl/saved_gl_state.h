@@ -19,7 +19,9 @@ public:
     SavedGlState(const SavedGlState&) = delete;
     SavedGlState& operator=(const SavedGlState&) = delete;
 
-    static constexpr int kMaxTextureUnits = 16;  // units 0..15 (lidr uses fewer)
+    // Units 0..18: every unit lidr binds (lidr/gl/bindings.h: the shadow atlas on 16, the environment light on 17
+    // and 18), as many as the context has.
+    static constexpr int kMaxTextureUnits = 19;
     static constexpr int kMaxAttributes = 8;     // generic vertex attributes 0..7 (lidr uses 0..3)
 
 private:
@@ -37,7 +39,7 @@ private:
     bool vao_ = false, readFramebuffer_ = false, depthClamp_ = false, sampleShading_ = false, multisampleTex_ = false;
     int units_ = 0, attributes_ = 0;
     GLint vertexArray_ = 0, program_ = 0, activeTexture_ = 0;
-    GLint texture2D_[kMaxTextureUnits] = {}, texture2DMs_[kMaxTextureUnits] = {};
+    GLint texture2D_[kMaxTextureUnits] = {}, texture2DMs_[kMaxTextureUnits] = {}, cubeMap_[kMaxTextureUnits] = {};
     GLint packAlignment_ = 4, unpackAlignment_ = 4, packRowLength_ = 0, unpackRowLength_ = 0, skip_[4] = {};
     GLint polygonMode_[2] = {};
     GLboolean logicOp_ = 0, alphaToCoverage_ = 0;

@@ -110,6 +110,7 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
         throw Error("shader '" + name + "' is GLSL " + std::to_string(version) +
                     "; OpenGL ES 2.0 compiles GLSL ES 1.00, which lidr makes from GLSL 1.20 sources only");
     const bool writesFragDepth = stage == ShaderStage::Fragment && source.find("gl_FragDepth") != std::string::npos;
+    const bool usesTextureLod = stage == ShaderStage::Fragment && source.find("textureCubeLod") != std::string::npos;
     std::string header = "#version 100\n";
     if (stage == ShaderStage::Fragment) {
         // Conditional: a single-target variant of a shader that names gl_FragData[1] under #if still compiles
@@ -123,13 +124,18 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
         // tests GL_OES_standard_derivatives; the shadow maps' depth: shadow_depth.frag).
         if (source.find("dFdx") != std::string::npos)
             header += "#ifdef GL_OES_standard_derivatives\n#extension GL_OES_standard_derivatives : enable\n#endif\n";
+        // textureCubeLod is EXT_shader_texture_lod's textureCubeLodEXT in ES 2.0 fragment shaders (the environment's
+        // LOD lookup; the variant that calls it is compiled only where GlInfo::textureLod says the context has it).
+        if (usesTextureLod) header += "#ifdef GL_EXT_shader_texture_lod\n#extension GL_EXT_shader_texture_lod : enable\n#endif\n";
         header +=
             "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
             "precision highp float;\n"
             "precision highp sampler2D;\n"
+            "precision highp samplerCube;\n"
             "#else\n"
             "precision mediump float;\n"
             "precision mediump sampler2D;\n"
+            "precision mediump samplerCube;\n"
             "#define LIDR_FRAGMENT_FP16 1\n"
             "#endif\n";
     }
@@ -143,10 +149,22 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
             line = "#line " + std::to_string(number + 1) + " " + std::to_string(string);
         for (size_t p = 0; writesFragDepth && (p = line.find("gl_FragDepth", p)) != std::string::npos; p += 15)
             line.replace(p, 12, "gl_FragDepthEXT");
+        for (size_t p = 0; usesTextureLod && (p = line.find("textureCubeLod(", p)) != std::string::npos; p += 18)
+            line.replace(p, 15, "textureCubeLodEXT(");
         body += line;
         body += '\n';
     }
     return source.substr(0, v) + header + body;
+}
+
+std::string glsl120WithExtensions(const std::string& source, ShaderStage stage) {
+    if (stage != ShaderStage::Fragment || source.find("textureCubeLod") == std::string::npos) return source;
+    const size_t v = source.find("#version");
+    const size_t eol = v == std::string::npos ? std::string::npos : source.find('\n', v);
+    if (eol == std::string::npos) return source;
+    return source.substr(0, eol + 1) +
+           "#ifdef GL_ARB_shader_texture_lod\n#extension GL_ARB_shader_texture_lod : enable\n#endif\n" +
+           source.substr(eol + 1);
 }
 
 std::string perSampleGlsl150(std::string source) {

@@ -50,9 +50,16 @@ enum class ShaderStage { Vertex, Fragment };
 //     paths that proves exact);
 //   `#line L N` -> `#line L+1 N`: GLSL 1.20 counts the next line as L + 1, GLSL ES 1.00 as L (both number source
 //   strings, so the "lidr source strings" names hold).
-//   gl_FragDepth -> EXT_frag_depth's gl_FragDepthEXT, the extension required (the compile names it if missing).
+//   gl_FragDepth -> EXT_frag_depth's gl_FragDepthEXT, the extension required (the compile names it if missing);
+//   textureCubeLod -> EXT_shader_texture_lod's textureCubeLodEXT, the extension enabled where defined; samplerCube
+//   at the precision of sampler2D.
 // Throws lidr::Error for a source that needs more than GLSL 1.20 (the per-sample MSAA path's 1.50), naming it.
 std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, const std::string& name);
+
+// A GLSL 1.20 source as a desktop context compiles it: a fragment shader that names textureCubeLod (shading.glsl's
+// environment lookup) enables ARB_shader_texture_lod where the context defines it (GLSL 1.20 has the *Lod lookups
+// in vertex shaders only; the variant that calls it is compiled only where GlInfo::textureLod says so).
+std::string glsl120WithExtensions(const std::string& source, ShaderStage stage);
 
 // A GLSL 1.20 source (what buildShaderSource makes) as GLSL 1.50 compatibility with ARB_sample_shading, for
 // the per-sample MSAA paths: texelFetch on sampler2DMS and gl_SampleID; the compatibility profile keeps every

@@ -61,6 +61,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
+    prepareEnvironment(shading);
     meshDraws_ = 0;
 
     growLightTable(lights.size());
@@ -84,8 +85,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     GLint stamp = 1;
     cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
-    setShadingUniforms(ambient_, cam, linearShading);
-    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading));
+    setShadingUniforms(ambient_, cam, linearShading, environment_);
+    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading, environment_));
     ambientTime.end();
 
     TimedPass lightPassesTime(timer_, "light-passes");
@@ -102,7 +103,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
                                                                            shading.shadows)
                                                         : light_;
     lightProgram.use();
-    setShadingUniforms(lightProgram, cam, linearShading);
+    setShadingUniforms(lightProgram, cam, linearShading, environment_);
     lightTable_.bind(lightProgram);
     shadows_.bind(lightProgram, shading.shadows);
     const float reach = lightTable_.reachError();

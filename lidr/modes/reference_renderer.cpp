@@ -32,6 +32,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
+    prepareEnvironment(shading);
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     updateLights(lights, shading);
     drawDepthPrepass(cam);  // into the MSAA target when multisampled: the reference has no index pass to feed
@@ -42,15 +43,15 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     const gl::Program& program = shadows_.active() ? shadows_.program("reference-forward", "geometry.vert",
                                                                       "reference_forward.frag", defines_, shading.shadows)
                                                    : program_;
-    useShadingProgram(program, cam, shading, lightTable_);
+    useShadingProgram(program, cam, shading, lightTable_, environment_);
     shadows_.bind(program, shading.shadows);
     program.set("uLightCount", float(lights.size()));
-    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading));
+    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, environment_));
     bruteForceTime.end();
     if (transparency_ && scene_.hasTransparent()) {
         TimedPass bruteForceTransparentTime(timer_, "brute-force-transparent");
         beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
-        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading));
+        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, environment_));
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});

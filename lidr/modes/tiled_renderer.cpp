@@ -79,6 +79,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
+    prepareEnvironment(shading);
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
     growLightTable(lights.size());
@@ -122,17 +123,17 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         shadows_.active() ? shadows_.program("tiled-forward-" + std::to_string(frameInfo_.loopBound), "geometry.vert",
                                              "tiled_forward.frag", programDefines_, shading.shadows)
                           : program_;
-    useShadingProgram(program, cam, shading, lightTable_);
+    useShadingProgram(program, cam, shading, lightTable_, environment_);
     shadows_.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
-    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading));
+    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, environment_));
     tiledForwardTime.end();
 
     if (transparent) {
         TimedPass tiledTransparentTime(timer_, "tiled-transparent");
         beginTransparentShading();  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program, true);
-        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading));
+        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, environment_));
     }
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});  // no scissor or masks on the resolve blit

@@ -21,6 +21,8 @@ constexpr const char* kWantedExtensions[] = {
     "OES_element_index_uint",  "OES_vertex_array_object", "ANGLE_instanced_arrays", "EXT_disjoint_timer_query",
     "OES_standard_derivatives", "EXT_frag_depth",           "EXT_depth_clamp",       "OES_texture_half_float",
     "EXT_color_buffer_half_float",  // with the one before: multi-pass forward sums its passes in half float
+    // the environment light (lidr/render/environment_maps.h): half-float cube filtered, explicit LOD lookups
+    "OES_texture_half_float_linear", "EXT_shader_texture_lod",
 };
 
 class WebGlContext final : public GlContext {

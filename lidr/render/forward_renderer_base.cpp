@@ -12,6 +12,7 @@ ForwardRendererBase::ForwardRendererBase(const GlInfo& info, const Scene& scene,
       targets_(info, setup.width, setup.height, setup.msaaSamples),
       lightTable_(info, setup.lightCapacity, setup.forceFixedLightTable),
       shadows_(info),
+      environment_(info, !setup.forceFixedLightTable),
       timer_(info, setup.timingMethod),
       forceFixedLightTable_(setup.forceFixedLightTable) {
     timer_.setEnabled(setup.timing);
@@ -20,6 +21,11 @@ ForwardRendererBase::ForwardRendererBase(const GlInfo& info, const Scene& scene,
 void ForwardRendererBase::setTiming(bool on, bool waitForResults) {
     timer_.setEnabled(on);
     timer_.setWaitForResults(waitForResults);
+}
+
+void ForwardRendererBase::prepareEnvironment(const ShadingParameters& shading) {
+    environment_.prepare(shading.environment);
+    stats_.environment = environment_.describe();
 }
 
 void ForwardRendererBase::growLightTable(size_t lights) {

@@ -1,10 +1,10 @@
 #pragma once
 // What the forward-shading modes hold and do alike (tiled forward, multi-pass forward and the brute-force
 // reference; a new forward mode derives from it the same way): the scene on the GPU, the render targets, the
-// light table, the depth pre-pass, the shadow maps and the pass timer; the Renderer overrides that only read
+// light table, the depth pre-pass, the shadow maps, the environment light's maps and the pass timer; the Renderer overrides that only read
 // them; and the steps of a frame every such mode takes in the same way, in the order a frame takes them:
 //
-//   render():  checks -> FrameScope -> [growLightTable] -> updateLights (shadow-maps, light-table)
+//   render():  checks -> FrameScope -> prepareEnvironment -> [growLightTable] -> updateLights (shadow-maps, light-table)
 //              -> drawDepthPrepass (depth-prepass) -> the mode's own passes -> targets_.resolve -> finishFrame
 //
 // A mode adds its light lists and programs, and draws its shading passes between the pre-pass and the resolve.
@@ -16,6 +16,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/depth_prepass.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/light_table.h"
 #include "lidr/render/renderer.h"
@@ -66,6 +67,9 @@ protected:
     // Builds the shared objects in the order of the members below; `info` is copied (growLightTable uses it).
     ForwardRendererBase(const GlInfo& info, const Scene& scene, const ForwardRendererSetup& setup);
 
+    // The frame's environment light uploaded where it changed (EnvironmentMaps::prepare) and stats_.environment
+    // saying how it is looked up; its shading passes then bind environment_ with their programs.
+    void prepareEnvironment(const ShadingParameters& shading);
     // A light table that holds `lights` where the current one holds fewer: a frame with more lights than the
     // scene had grows it rather than being refused.
     void growLightTable(size_t lights);
@@ -86,6 +90,7 @@ protected:
     LightTable lightTable_;
     DepthPrepass depthPrepass_;
     ShadowMaps shadows_;
+    EnvironmentMaps environment_;  // half floats unless the fixed light table is forced (the 8-bit storage then)
     FrameTimer timer_;
 
 private:

@@ -5,10 +5,16 @@
 namespace lidr {
 
 ShadingParameters sceneShading(const Scene& scene, const OutputTransform& output) {
-    return {scene.ambient, scene.backgroundColor, output, scene.directionalLights};
+    ShadingParameters shading{scene.ambient, scene.backgroundColor, output, scene.directionalLights};
+    shading.environment.map = scene.environment;
+    shading.environment.intensity = scene.environmentIntensity;
+    return shading;
 }
 
-void checkShadingParameters(const ShadingParameters& shading) { validateDirectionalLights(shading.directionalLights); }
+void checkShadingParameters(const ShadingParameters& shading) {
+    validateDirectionalLights(shading.directionalLights);
+    validateEnvironmentIntensity(shading.environment.intensity, "the environment's intensity");
+}
 
 double FrameStats::frameMilliseconds() const {
     double sum = 0.0;

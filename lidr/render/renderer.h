@@ -12,11 +12,25 @@
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/output_transform.h"
 #include "lidr/render/shadow_settings.h"
+#include "lidr/scene/environment.h"
 #include "lidr/scene/scene.h"
 
 namespace lidr {
 
 class ShadowAtlas;
+
+// The frame's image-based environment light (issue 39): every mode adds it once per pixel with the ambient
+// (shading.glsl's lidrEnvironment: diffuse from its spherical harmonics, specular from its prefiltered cube and the
+// split-sum table). No map: none, the frame is drawn as before environments existed.
+struct EnvironmentLight {
+    std::shared_ptr<const Environment> map{};  // lidr::defaultEnvironment(), lidr::loadEnvironment(file); null: none
+    float intensity = 1.0f;                   // scales the radiance; finite, >= 0
+    // The specular lookup: Lod where the context can (GlInfo::textureLod), else Bias; Bias or DiffuseOnly force
+    // those (each renderer says which ran: FrameStats::environment). None is the same as no map.
+    enum class Lookup { Automatic, Bias, DiffuseOnly };
+    Lookup lookup = Lookup::Automatic;
+    bool on() const { return bool(map); }
+};
 
 struct ShadingParameters {
     glm::vec3 ambient{0.04f};     // linear
@@ -25,11 +39,13 @@ struct ShadingParameters {
     // Not indexed: every mode adds them in its forward pass (at most maxDirectionalLights; shading.glsl).
     std::vector<DirectionalLight> directionalLights{};
     ShadowSettings shadows{};  // the lights with castsShadow cast shadows when enabled (issue 30)
+    EnvironmentLight environment{};  // none by default (the scene's: sceneShading)
 };
 
-// The scene's own shading: its ambient, background and directional lights, with `output`.
+// The scene's own shading: its ambient, background, directional lights and environment, with `output`.
 ShadingParameters sceneShading(const Scene& scene, const OutputTransform& output = OutputTransform{});
-// What every mode's render() checks before any work: the directional lights (validateDirectionalLights).
+// What every mode's render() checks before any work: the directional lights (validateDirectionalLights), the
+// environment's intensity (finite, >= 0).
 void checkShadingParameters(const ShadingParameters& shading);
 
 // What LIDR's automatic configuration chose for a frame (zeros in other modes and for fixed choices).
@@ -74,6 +90,9 @@ struct FrameStats {
     bool volumePassSkipped = false;  // LIDR: no light reaches a visible surface: no volume pass, no index read
     int shadowCasters = 0;    // lights whose shadow maps the frame used
     int shadowMapsDrawn = 0;  // shadow-atlas tiles drawn this frame (0 when nothing changed: ShadowAtlas)
+    // The environment light as this frame looked it up (EnvironmentMaps::describe): "none", or its name, lookup,
+    // storage and size, and why the specular term was left out where it was.
+    std::string environment = "none";
     AutoDecision autoDecision;
     // Timing (Renderer::setTiming): `passes` belong to the frame this many frames before this one (deferred
     // GPU timer queries; 0 for the CPU method or when waiting). Empty `passes`: timing off or nothing yet.

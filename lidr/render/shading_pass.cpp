@@ -71,11 +71,12 @@ void setDirectionalLightUniforms(const gl::Program& program, const std::vector<D
     program.uniform<glm::vec4>("uDirectionalLightColor").setArray(color, count);
 }
 
-uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading) {
-    return shadingVariantKey(program, shading.directionalLights.size(), shading.output);
+uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading, const EnvironmentMaps& environment) {
+    return shadingVariantKey(program, shading.directionalLights.size(), shading.output) | environment.variantKey(program);
 }
 
-void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading) {
+void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
+                        const EnvironmentMaps& environment) {
     program.set("uViewProj", camera.viewProjection);
     program.setIfDeclared("uEyePosition", camera.eye);  // shading.glsl's: a material shader may do without
     program.setIfDeclared("uAmbient", shading.ambient);
@@ -84,12 +85,13 @@ void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera
     // Every sampler gets its own unit even when unused: two sampler types on one unit (an unset sampler
     // defaults to unit 0, where the per-sample path binds a sampler2DMS) make draws fail.
     program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
+    environment.bind(program);
 }
 
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
-                       const LightTable& table) {
+                       const LightTable& table, const EnvironmentMaps& environment) {
     program.use();
-    setShadingUniforms(program, camera, shading);
+    setShadingUniforms(program, camera, shading, environment);
     table.bind(program);
 }
 

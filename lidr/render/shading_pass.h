@@ -8,6 +8,7 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/light_table.h"
 #include "lidr/render/renderer.h"
 #include "lidr/render/shadow_maps.h"
@@ -36,13 +37,14 @@ void setOutputUniforms(const gl::Program& program, const OutputTransform& output
 // Sets shading.glsl's directional-light uniforms (lidrDirectionalLights) where the program declares them.
 void setDirectionalLightUniforms(const gl::Program& program, const std::vector<DirectionalLight>& lights);
 // Sets the per-frame uniforms of shading.glsl (eye, ambient, the directional lights, the output transform, the
-// material texture's unit).
-void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading);
-// The frame's shading variant key of `program` (shading_variants.h), for GpuScene::draw.
-uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading);
+// material texture's unit) and binds the frame's environment light (prepared for this frame).
+void setShadingUniforms(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
+                        const EnvironmentMaps& environment);
+// The frame's shading variant key of `program` (shading_variants.h: suns, output, environment), for GpuScene::draw.
+uint32_t shadingVariantKey(const gl::Program& program, const ShadingParameters& shading, const EnvironmentMaps& environment);
 // Uses the program, sets shading.glsl's uniforms and binds the light table to it.
 void useShadingProgram(const gl::Program& program, const CameraMatrices& camera, const ShadingParameters& shading,
-                       const LightTable& table);
+                       const LightTable& table, const EnvironmentMaps& environment);
 
 // The frame's shadow maps as every mode draws them, before its light table (issue 30): where shadows are on, the
 // atlas's texture unit checked next to a `table`-format light table (ShadowMaps::checkUnits); the maps drawn in a

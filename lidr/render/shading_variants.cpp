@@ -15,6 +15,9 @@ constexpr uint32_t kSrgb = 1u << 23;                // LIDR_SRGB_OUTPUT 1
 constexpr uint32_t kMaxSuns = 7;                    // what bits 17-19 hold (the shader's arrays hold 4)
 constexpr uint32_t kRegionMap = 1u << 24;           // LIDR_REGION_MAP defined ...
 constexpr uint32_t kRegionMapOn = 1u << 25;         // ... as 1 (else 0)
+constexpr uint32_t kEnvironment = 1u << 26;         // LIDR_ENVIRONMENT defined ...
+constexpr int kEnvironmentLookupShift = 27;         // ... as bits 27-28 (EnvironmentLookup)
+constexpr uint32_t kEnvironmentRgbm = 1u << 29;     // LIDR_ENVIRONMENT_RGBM 1
 }  // namespace
 
 namespace {
@@ -37,8 +40,28 @@ uint32_t regionMapVariantKey(const gl::Program& program, bool regions) {
     return uses(program, "uLidrRegionMap") ? kRegionMap | (regions ? kRegionMapOn : 0u) : 0u;
 }
 
+const char* environmentLookupName(EnvironmentLookup lookup) {
+    switch (lookup) {
+    case EnvironmentLookup::None: return "none";
+    case EnvironmentLookup::Lod: return "lod";
+    case EnvironmentLookup::Bias: return "bias";
+    case EnvironmentLookup::DiffuseOnly: return "diffuse-only";
+    }
+    return "?";
+}
+
+uint32_t environmentVariantKey(const gl::Program& program, EnvironmentLookup lookup, bool rgbm) {
+    if (!uses(program, "uAmbient")) return 0;
+    return kEnvironment | (uint32_t(lookup) << kEnvironmentLookupShift) |
+           (rgbm && lookup != EnvironmentLookup::None ? kEnvironmentRgbm : 0u);
+}
+
 ShaderDefines shadingVariantDefines(uint32_t key) {
     ShaderDefines defines;
+    if (key & kEnvironment) {
+        defines.push_back({"LIDR_ENVIRONMENT", std::to_string((key >> kEnvironmentLookupShift) & 3u)});
+        defines.push_back({"LIDR_ENVIRONMENT_RGBM", (key & kEnvironmentRgbm) ? "1" : "0"});
+    }
     if (key & kRegionMap) defines.push_back({"LIDR_REGION_MAP", (key & kRegionMapOn) ? "1" : "0"});
     if (key & kDirectional)
         defines.push_back({"LIDR_DIRECTIONAL_LIGHTS", std::to_string((key >> kDirectionalCountShift) & kMaxSuns)});

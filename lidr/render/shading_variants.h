@@ -23,6 +23,14 @@ uint32_t shadingVariantKey(const gl::Program& program, size_t directionalLights,
 // (LidrOptions::regionalIndices), compiled in as LIDR_REGION_MAP 0 or 1 instead of read from uLidrRegionMap.w,
 // whose branch a SIMD rasteriser runs (a texture fetch a pixel) in every frame. 0 for a program without the map.
 uint32_t regionMapVariantKey(const gl::Program& program, bool regions);
+// How the frame's environment light is looked up (shading.glsl's LIDR_ENVIRONMENT): not at all (a frame without
+// one runs the code it ran before environments existed), its specular cube at an explicit LOD (textureCubeLod),
+// at a mip bias over the implicit LOD (contexts without ARB/EXT_shader_texture_lod), or its diffuse term alone
+// (no texture: where its units are taken). rgbm: the cube and table are RGBA8 (RGBM, 16-bit pairs), else half floats.
+enum class EnvironmentLookup { None = 0, Lod = 1, Bias = 2, DiffuseOnly = 3 };
+const char* environmentLookupName(EnvironmentLookup lookup);  // "none", "lod", "bias", "diffuse-only"
+// 0 where the program does not call lidrAmbient (its uAmbient is not used: depth passes, multi-pass's light passes).
+uint32_t environmentVariantKey(const gl::Program& program, EnvironmentLookup lookup, bool rgbm);
 // The defines of a key (empty for 0).
 ShaderDefines shadingVariantDefines(uint32_t key);
 

@@ -130,7 +130,7 @@ bool addDefaultLightRig(Scene& scene) {
     key.priority = 1.0f;
     scene.lights.push_back(key);
     if (!scene.lightPaths.empty()) scene.lightPaths.push_back(LightPath{});
-    scene.ambient = glm::max(scene.ambient, glm::vec3(0.1f));
+    if (!scene.environment) scene.ambient = glm::max(scene.ambient, glm::vec3(0.1f));  // else the environment is it
     return true;
 }
 

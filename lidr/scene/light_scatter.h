@@ -40,7 +40,8 @@ void addScatteredLights(Scene& scene, const LightScatterOptions& options);
 // model looks lit (doc/colour.md, "Lights for any model"): one white key light at the camera's eye with a
 // radius of three times the geometry's bounds diagonal (so the falloff 1 - d^2/r^2 keeps at least 8/9 of it
 // over the whole model), and the ambient raised to at least 0.1 (uniform light from every direction, lit
-// from behind included). Nothing changes where the scene has lights (point or directional). Returns whether it added the rig.
+// from behind included; not where the scene has an environment light, which lights it from every direction
+// already). Nothing changes where the scene has lights (point or directional). Returns whether it added the rig.
 bool addDefaultLightRig(Scene& scene);
 
 }  // namespace lidr

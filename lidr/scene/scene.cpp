@@ -295,6 +295,7 @@ void Scene::validate(int maxResolution) const {
                                " lights; need none or one per light");
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
     validateDirectionalLights(directionalLights);
+    validateEnvironmentIntensity(environmentIntensity, "environment: intensity");
 }
 
 glm::vec4 spotCone(const PointLight& light) {

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/base/image.h"
+#include "lidr/scene/environment.h"
 
 namespace lidr {
 
@@ -207,6 +208,10 @@ struct Scene {
     std::string renderMode = "lidr";     // the mode tools render it with (lidr/modes/render_mode.h names them)
     glm::vec3 ambient{0.04f};
     glm::vec3 backgroundColor{0.0f};
+    // The image-based environment light (issue 39, lidr/scene/environment.h): none unless asked for (scene files'
+    // "environment"; tools give glTF and OBJ models the default one, doc/colour.md). Added to the ambient.
+    std::shared_ptr<const Environment> environment{};
+    float environmentIntensity = 1.0f;  // finite, >= 0 (validate)
     // How the scene asks to be rendered (tools may override): MSAA samples (0 = off) and whether
     // transparent materials are drawn (after the opaque geometry, back to front).
     int msaaSamples = 0;

@@ -12,8 +12,10 @@ namespace lidr {
 
 namespace {
 // The frame's shading variant of a forward program: suns, output transform, and whether indices are region-local.
-uint32_t variantKey(const gl::Program& program, const LightTable& table, const ShadingParameters& shading, bool lights) {
-    return shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f);
+uint32_t variantKey(const gl::Program& program, const LightTable& table, const ShadingParameters& shading,
+                    const EnvironmentMaps& environment, bool lights) {
+    return shadingVariantKey(program, shading, environment) |
+           regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f);
 }
 }  // namespace
 
@@ -69,13 +71,13 @@ gl::Program ForwardPass::build(const ShaderDefines& extra) const {
 
 const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices,
                                            const LightTable& table, const CameraMatrices& camera,
-                                           const ShadingParameters& shading, bool lights,
-                                           const ShadowMaps* shadows) const {
+                                           const ShadingParameters& shading, const EnvironmentMaps& environment,
+                                           bool lights, const ShadowMaps* shadows) const {
     if (!lights) {
         if (!lightless_)
             lightless_ = gl::Program::create(lightlessName_, lightlessVertex_, lightlessFragment_, geometryAttributes());
         lightless_.use();
-        setShadingUniforms(lightless_, camera, shading);
+        setShadingUniforms(lightless_, camera, shading, environment);
         return lightless_;
     }
     const gl::Program* chosen = &program_;
@@ -88,7 +90,7 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
         chosen = &found->second;
     }
     const gl::Program& program = *chosen;
-    useShadingProgram(program, camera, shading, table);
+    useShadingProgram(program, camera, shading, table, environment);
     if (shadows && shadows->active()) shadows->bind(program, shading.shadows);
     program.setIfDeclared("uLidrMaxLights", maxLights_);
     program.set("uInvViewportSize", glm::vec2(1.0f / targets.width(), 1.0f / targets.height()));
@@ -111,23 +113,24 @@ void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                      bool afterPrepass, bool lights, const ShadowMaps* shadows) const {
+                      const EnvironmentMaps& environment, bool afterPrepass, bool lights, const ShadowMaps* shadows) const {
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
-    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.draw(program, DrawFilter::Opaque, true, &camera, variantKey(program, table, shading, lights));
+    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, environment, lights, shadows);
+    scene.draw(program, DrawFilter::Opaque, true, &camera, variantKey(program, table, shading, environment, lights));
     unbindInputs(indices, lights);
     checkGl("LIDR forward pass");
 }
 
 void ForwardPass::runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                                  const LightTable& table, const CameraMatrices& camera,
-                                 const ShadingParameters& shading, bool lights, const ShadowMaps* shadows) const {
+                                 const ShadingParameters& shading, const EnvironmentMaps& environment, bool lights,
+                                 const ShadowMaps* shadows) const {
     StateCache::current().beginPass(targets.colorPass());
     beginTransparentShading(perSample_);
-    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, lights, shadows);
-    scene.drawTransparentSorted(program, camera.eye, variantKey(program, table, shading, lights));
+    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, environment, lights, shadows);
+    scene.drawTransparentSorted(program, camera.eye, variantKey(program, table, shading, environment, lights));
     unbindInputs(indices, lights);
     checkGl("LIDR transparent forward pass");
 }

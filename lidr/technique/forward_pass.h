@@ -37,20 +37,22 @@ public:
     // shadows (active: the frame has casters): the shadowed twin of the program (LIDR_SHADOWS and the maps'
     // defines, built on first use) looks each listed light's shadow up by its index (the paper's second way;
     // lidrLightShadow in lidr_lights.glsl), the table holding the lights' tiles (LightTable::update).
+    // environment: the frame's environment light, prepared for `indices` (EnvironmentMaps::prepare).
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
              const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-             bool afterPrepass = true, bool lights = true, const ShadowMaps* shadows = nullptr) const;
+             const EnvironmentMaps& environment, bool afterPrepass = true, bool lights = true,
+             const ShadowMaps* shadows = nullptr) const;
     // Transparent geometry over the opaque image, back to front, alpha blended, depth-tested against the
     // opaque depth without writing it; `indices` must come from a front-face volume pass.
     void runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                         const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                        bool lights = true, const ShadowMaps* shadows = nullptr) const;
+                        const EnvironmentMaps& environment, bool lights = true, const ShadowMaps* shadows = nullptr) const;
 
 private:
     // The program for this frame (lights or not) with its inputs bound.
     const gl::Program& bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
-                                  const CameraMatrices& camera, const ShadingParameters& shading, bool lights,
-                                  const ShadowMaps* shadows) const;
+                                  const CameraMatrices& camera, const ShadingParameters& shading,
+                                  const EnvironmentMaps& environment, bool lights, const ShadowMaps* shadows) const;
     // The lit program with `extra` defines (the shadowed twins).
     gl::Program build(const ShaderDefines& extra) const;
     void unbindInputs(const IndexTargets& indices, bool lights) const;

@@ -146,6 +146,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
       scene_(scene),
       targets_(info, width, height, options_.msaaSamples, options_.depthBits),
       shadows_(info),
+      environment_(info, !options_.forceFixedLightTable),
       depthPrepass_(DepthEmulation{options_.emulatedDepthBits}),
       volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}),
       timer_(info, options_.timingMethod) {
@@ -461,14 +462,18 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
 
     TimedPass forwardTime(timer_, "forward");
     const ShadowMaps* shadows = lights && shadows_.active() ? &shadows_ : nullptr;
-    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, options_.depthPrepass, lights,
-                           shadows);
+    environment_.prepare(shading.environment, lights ? indexTargets_->count() : 0);
+    stats_.environment = environment_.describe();
+    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, environment_,
+                           options_.depthPrepass, lights, shadows);
     forwardTime.end();
 
     if (drawTransparent_) {
         TimedPass forwardTransparentTime(timer_, "forward-transparent");
-        currentTransparent_->forward->runTransparent(targets_, transparentIndexTargets(), scene_, lightTable_, cam, shading,
-                                                     lights, shadows);
+        const IndexTargets& transparentTargets = transparentIndexTargets();
+        environment_.prepare(shading.environment, lights ? transparentTargets.count() : 0);
+        currentTransparent_->forward->runTransparent(targets_, transparentTargets, scene_, lightTable_, cam, shading,
+                                                     environment_, lights, shadows);
     }
 }
 

@@ -23,6 +23,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
+#include "lidr/render/environment_maps.h"
 #include "lidr/render/shadow_maps.h"
 #include "lidr/technique/tile_decision.h"
 #include "lidr/technique/volume_tiles.h"
@@ -233,6 +234,7 @@ private:
     // sphere test discards what they shadow (its lights carry their tiles); every forward pass looks the listed
     // lights up by index.
     ShadowMaps shadows_;
+    EnvironmentMaps environment_;
     DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;
     LightVolumePass transparentVolumePass_;

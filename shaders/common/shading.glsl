@@ -22,6 +22,13 @@ struct LidrSurface {
     vec3 emission;   // emissive factor x emissive texel
 };
 
+// The reflectance at grazing angles: the material's own with KHR_materials_ior / _specular, else glTF's 1.
+#ifdef LIDR_DIELECTRIC_SPECULAR
+#define lidrF90(s) (s).f90
+#else
+#define lidrF90(s) 1.0
+#endif
+
 // The shading normal: the interpolated normal, turned to the side the eye sees (a double-sided surface is lit
 // from its own side), then bent by the normal texture in the tangent frame of the pixel.
 vec3 lidrShadingNormal() {
@@ -75,20 +82,110 @@ LidrSurface lidrSurface() {
     return s;
 }
 
+// The environment light (issue 39; lidr/scene/environment.h, lidr/render/environment_maps.h): radiance from
+// every direction, an image. LIDR_ENVIRONMENT is the frame's shading variant (lidr/render/shading_variants.h):
+// 0 none (the code that ran before environments), 1 the specular cube at an explicit LOD (textureCubeLod: desktop
+// ARB_shader_texture_lod, ES EXT_shader_texture_lod), 2 at a mip bias over the implicit LOD (without those), 3 the
+// diffuse term alone; LIDR_ENVIRONMENT_RGBM 1: RGBA8 storage (RGBM cube, 16-bit pairs in the table). A program
+// drawn without a key (none of lidr's shading draws) reads uEnvironment instead and looks up with the bias.
+#ifndef LIDR_ENVIRONMENT
+#define LIDR_ENVIRONMENT_ON 1
+#define LIDR_ENVIRONMENT_LOOKUP 2
+#define LIDR_ENVIRONMENT_UNIFORMS 1
+#elif LIDR_ENVIRONMENT > 0
+#define LIDR_ENVIRONMENT_ON 1
+#define LIDR_ENVIRONMENT_LOOKUP LIDR_ENVIRONMENT
+#endif
+#ifdef LIDR_ENVIRONMENT_ON
+uniform vec3 uEnvironmentSh[9];  // E(n) / pi x intensity: c0 + c1 y + c2 z + c3 x + c4 xy + c5 yz + c6 (3z^2 - 1) + c7 xz + c8 (x^2 - y^2)
+uniform vec4 uEnvironment;       // intensity, RGBM range (0: half floats), the LOD of roughness 1, split-sum table size
+uniform samplerCube uEnvironmentSpecular;  // GGX-prefiltered radiance, roughness r at LOD r x uEnvironment.z
+uniform float uEnvironmentSize;            // its level 0's texels a side
+uniform sampler2D uEnvironmentSplitSum;    // (A, B) per (n.v, roughness) at texel centres
+
+// The irradiance over pi (a white Lambert surface's light), from 9 spherical harmonics (lidr::irradianceOverPi).
+vec3 lidrEnvironmentIrradiance(vec3 n) {
+    vec3 e = uEnvironmentSh[0] + uEnvironmentSh[1] * n.y + uEnvironmentSh[2] * n.z + uEnvironmentSh[3] * n.x +
+             uEnvironmentSh[4] * (n.x * n.y) + uEnvironmentSh[5] * (n.y * n.z) + uEnvironmentSh[6] * (3.0 * n.z * n.z - 1.0) +
+             uEnvironmentSh[7] * (n.x * n.z) + uEnvironmentSh[8] * (n.x * n.x - n.y * n.y);
+    return max(e, vec3(0.0));
+}
+
+#if LIDR_ENVIRONMENT_LOOKUP != 3
+// Decoded after filtering, as the CPU model does (lidr::sampleStoredSpecular): RGBM's rgb x m x range.
+vec3 lidrEnvironmentRadiance(vec4 texel) {
+#ifndef LIDR_ENVIRONMENT_UNIFORMS
+#if LIDR_ENVIRONMENT_RGBM
+    return texel.rgb * (texel.a * uEnvironment.y);
+#else
+    return texel.rgb;
+#endif
+#else
+    return uEnvironment.y > 0.0 ? texel.rgb * (texel.a * uEnvironment.y) : texel.rgb;
+#endif
+}
+
+// The split sum's (A, B): the specular integral under the prefiltered light is radiance x (F0 A + B).
+vec2 lidrEnvironmentSplitSum(float nDotV, float roughness) {
+    vec2 uv = (vec2(nDotV, roughness) * (uEnvironment.w - 1.0) + 0.5) / uEnvironment.w;
+    vec4 t = texture2D(uEnvironmentSplitSum, uv);
+#ifndef LIDR_ENVIRONMENT_UNIFORMS
+#if LIDR_ENVIRONMENT_RGBM
+    return vec2(t.r * 256.0 + t.g, t.b * 256.0 + t.a) * (255.0 / 65535.0);
+#else
+    return t.rg;
+#endif
+#else
+    return uEnvironment.y > 0.0 ? vec2(t.r * 256.0 + t.g, t.b * 256.0 + t.a) * (255.0 / 65535.0) : t.rg;
+#endif
+}
+#endif
+
+// Diffuse from the spherical harmonics, specular from the cube in the reflected direction at the roughness's LOD
+// times the split sum (Karis 2013); the caller applies the occlusion.
+vec3 lidrEnvironment(LidrSurface s, float nDotV, float roughness) {
+    vec3 light = s.albedo * lidrEnvironmentIrradiance(s.normal);
+#if LIDR_ENVIRONMENT_LOOKUP != 3
+    vec3 r = reflect(-s.toEye, s.normal);
+#if LIDR_ENVIRONMENT_LOOKUP == 1
+    vec4 texel = textureCubeLod(uEnvironmentSpecular, r, roughness * uEnvironment.z);
+#else
+    // A bias over the implicit LOD GL takes from the pixel's derivatives: the roughness's LOD minus an estimate of
+    // that implicit LOD, so the two add up to about the roughness's (where derivatives exist: desktop GLSL 1.20,
+    // ES with OES_standard_derivatives; else the roughness's LOD as the bias alone, sharper where the reflection
+    // changes slowly across pixels). The estimate: the reflection's change per pixel over twice its major axis
+    // (a face's coordinates run over [-|ma|, |ma|]) in texels of level 0.
+    float bias = roughness * uEnvironment.z;
+#if !defined(GL_ES) || defined(GL_OES_standard_derivatives)
+    vec3 dx = dFdx(r), dy = dFdy(r);
+    float major = max(abs(r.x), max(abs(r.y), abs(r.z)));
+    float footprint = sqrt(max(dot(dx, dx), dot(dy, dy))) * uEnvironmentSize * 0.5 / major;
+    bias -= log2(max(footprint, 1e-6));
+#endif
+    vec4 texel = textureCube(uEnvironmentSpecular, r, bias);
+#endif
+    vec2 ab = lidrEnvironmentSplitSum(nDotV, roughness);
+    light += lidrEnvironmentRadiance(texel) * (s.f0 * ab.x + lidrF90(s) * ab.y) * uEnvironment.x;
+#endif
+    return light;
+}
+#endif
+
 // Ambient light (darkened by the occlusion texture) plus the material's own emission: the light-independent term every mode adds once per pixel.
 // The ambient is uniform radiance from every direction: the diffuse part integrates to ambient x albedo, the
-// specular part to ambient x (F0 A + F90 B), Karis' analytic fit of the split-sum environment BRDF.
+// specular part to ambient x (F0 A + F90 B), Karis' analytic fit of the split-sum environment BRDF. The
+// environment light, where the frame has one, adds to it (and is darkened by the occlusion too).
 vec3 lidrAmbient(LidrSurface s) {
     float nDotV = clamp(dot(s.normal, s.toEye), 0.0, 1.0);
     float roughness = sqrt(s.alpha);
     vec4 r = roughness * vec4(-1.0, -0.0275, -0.572, 0.022) + vec4(1.0, 0.0425, 1.04, -0.04);
     float a004 = min(r.x * r.x, exp2(-9.28 * nDotV)) * r.x + r.y;
     vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-#ifdef LIDR_DIELECTRIC_SPECULAR
-    return uAmbient * (s.albedo + s.f0 * ab.x + s.f90 * ab.y) * s.occlusion + s.emission;
-#else
-    return uAmbient * (s.albedo + s.f0 * ab.x + ab.y) * s.occlusion + s.emission;
+    vec3 light = uAmbient * (s.albedo + s.f0 * ab.x + lidrF90(s) * ab.y);
+#ifdef LIDR_ENVIRONMENT_ON
+    light += lidrEnvironment(s, nDotV, roughness);
 #endif
+    return light * s.occlusion + s.emission;
 }
 
 // Light arriving from direction L (unit, towards the light) with colour x attenuation: BRDF x pi x colour x

@@ -17,6 +17,7 @@
 #include "lidr/scene/render_mode_names.h"
 #include "lidr/scene/io/file_checks.h"
 #include "lidr/scene/io/gltf_importer.h"
+#include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/json_fields.h"
 #include "lidr/scene/io/obj_importer.h"
 
@@ -45,7 +46,7 @@ public:
         const Field root(document, "", file_);
         root.expectObject({"name", "description", "base", "seed", "base_lights", "resolution", "time", "camera",
                            "ambient", "background", "materials", "models", "primitives", "lights", "generate",
-                           "directional_lights", "scatter_lights", "msaa", "transparency", "mode"});
+                           "directional_lights", "scatter_lights", "msaa", "transparency", "mode", "environment"});
         readBase(root);
         if (root.has("name")) scene_.name = root["name"].text();
         if (root.has("description")) root["description"].text();  // free text for people; only its type is checked
@@ -59,6 +60,7 @@ public:
         if (root.has("camera")) readCamera(root["camera"]);
         if (root.has("ambient")) scene_.ambient = color(root["ambient"]);
         if (root.has("background")) scene_.backgroundColor = color(root["background"]);
+        if (root.has("environment")) readEnvironment(root["environment"]);
         if (root.has("msaa")) {
             scene_.msaaSamples = int(root["msaa"].integer(0, 64));
             if (scene_.msaaSamples != 0 && (scene_.msaaSamples < 2 || (scene_.msaaSamples & (scene_.msaaSamples - 1)) != 0))
@@ -319,6 +321,21 @@ private:
     }
 
     // Not indexed (every mode adds them in its forward pass), so they have their own key, after the models'.
+    // "default", "none", a file (an .hdr panorama or a folder of six faces, relative to the scene file), or
+    // {"source": one of those, "intensity": scale}.
+    void readEnvironment(const Field& field) {
+        const bool object = field.has("source") || field.has("intensity");
+        if (object) field.expectObject({"source", "intensity"});
+        const Field source = object ? field["source"] : field;
+        const std::string text = source.text();
+        try {
+            scene_.environment = loadEnvironment(text == "default" || text == "none" ? text : resolve(text));
+        } catch (const Error& e) {
+            source.fail(e.what());
+        }
+        if (object && field.has("intensity")) scene_.environmentIntensity = nonNegative(field["intensity"]);
+    }
+
     void readDirectionalLights(const Field& field) {
         const std::vector<Field> items = field.items();
         if (scene_.directionalLights.size() + items.size() > maxDirectionalLights)
