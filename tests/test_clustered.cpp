@@ -384,3 +384,461 @@ TEST_CASE("cluster grid: occupied slices hold every slice a pixel's depth can be
     }
     CHECK(grid.stats().entries < dense.stats().entries);
 }
+
+// --- GPU ----------------------------------------------------------------------------------------------------
+
+TEST_CASE("clustered equals the reference on the default room, dense and with occupied clusters", "[clustered]") {
+    DefaultSceneOptions o;
+    o.width = testWidth();
+    o.height = testHeight();
+    o.time = 2.0f;
+    const Scene scene = makeDefaultScene(o);
+    const ImageRGBA8 reference = referenceImage(scene, scene.lightsAt(scene.time), false);
+    long denseEntries = -1;
+    for (bool occupancy : {false, true}) {
+        if (occupancy && !testGl().readDepthStencil) continue;
+        ClusteredOptions c;
+        c.tileSize = 16;
+        c.occupiedClusters = occupancy;
+        const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
+        INFO("occupancy " << occupancy);
+        requireEqualsReference(check);
+        CHECK(check.lists.truthPairs > 1000);
+        CHECK(check.frame.occupancyUsed == occupancy);
+        CHECK(check.frame.indexBits == 8);  // 255 lights
+        if (!occupancy) denseEntries = check.frame.grid.entries;
+        if (occupancy) CHECK(check.frame.grid.entries < denseEntries);
+    }
+}
+
+namespace {
+void checkViews(const std::vector<int>& tileSizes, const std::vector<int>& sliceCounts) {
+    const std::vector<PointLight> lights = scatteredLights(120, 0.4f, 3.5f, 3);
+    for (const Scene& base : {topDownScene(), firstPersonScene()}) {
+        Scene scene = base;
+        scene.lights = lights;
+        const ImageRGBA8 reference = referenceImage(scene, lights, false);
+        for (int tile : tileSizes)
+            for (int slices : sliceCounts)
+                for (ClusterSlicing slicing : {ClusterSlicing::Exponential, ClusterSlicing::NearSlice})
+                    for (bool occupancy : {false, true}) {
+                        if (occupancy && !testGl().readDepthStencil) continue;
+                        ClusteredOptions c;
+                        c.tileSize = tile;
+                        c.slices = slices;
+                        c.slicing = slicing;
+                        c.lightNear = 4.0f;
+                        c.occupiedClusters = occupancy;
+                        const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
+                        INFO("camera y " << scene.camera.position.y << ", tile " << tile << ", " << slices << " "
+                                         << clusterSlicingName(slicing) << " slices, occupancy " << occupancy);
+                        requireEqualsReference(check);
+                        CHECK(check.lists.truthPairs > 500);
+                    }
+    }
+}
+}  // namespace
+
+TEST_CASE("clustered equals the reference in top-down and first-person views, both slicings", "[clustered]") {
+    checkViews({16}, {16});
+}
+
+TEST_CASE("clustered equals the reference in both views with other tile sizes and slice counts", "[clustered][slow]") {
+    checkViews({8, 13, 64}, {1, 7, 32, 64});
+}
+
+TEST_CASE("clustered: depth slices cut the extra pairs of the 2D tile lists in a first-person view",
+          "[clustered][slow]") {
+    Scene scene = firstPersonScene();
+    scene.lights = scatteredLights(200, 0.3f, 2.0f, 21);
+    const ImageRGBA8 reference = referenceImage(scene, scene.lights, false);
+    long previous = -1;
+    for (int slices : {1, 4, 16, 64}) {
+        ClusteredOptions c;
+        c.tileSize = 16;
+        c.slices = slices;
+        const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
+        INFO(slices << " slices: extra pairs " << check.lists.extraPairs << ", true pairs " << check.lists.truthPairs);
+        requireEqualsReference(check);
+        if (previous >= 0) CHECK(check.lists.extraPairs < previous);
+        previous = check.lists.extraPairs;
+    }
+}
+
+TEST_CASE("clustered: pixels next to slice boundaries find lights whose spheres end at the boundaries",
+          "[clustered][boundaries]") {
+    // A first-person view down the floor: every slice boundary crosses the floor along a row of pixels. Lights lie
+    // on the floor with spheres whose view-depth extent ends at a boundary, just short of it or just past it
+    // (relative 1e-4), from either side, so a slice picked one off next to a boundary would miss them.
+    Scene scene = firstPersonScene();
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    ClusteredOptions c;
+    c.tileSize = 16;
+    c.slices = 32;
+    const ClusterSlices slices = clusterSlices(cam, c.slices, c.slicing, c.lightNear);
+    const glm::vec3 eye = cam.eye, fwd = cam.forward;
+    std::vector<PointLight> lights;
+    for (int k = 1; k < c.slices; ++k) {
+        const double d = slices.boundary(k);
+        if (d < 2.0 || d > 22.0) continue;  // where the floor is seen
+        const float radius = float(0.12 * d);
+        int variant = 0;
+        for (float towards : {-1.0f, 1.0f})  // the sphere's far end (-1) or near end (+1) at the boundary
+            for (float off : {-1e-4f, 0.0f, 1e-4f}) {
+                const double centreDepth = d * (1.0 + double(off)) + double(towards * radius);
+                const float x = 1.4f * float(variant++) - 3.5f + 0.3f * float(k % 3);
+                // The floor point at view depth centreDepth in this column: dot(fwd, p - eye) = centreDepth.
+                const float z = eye.z + float((centreDepth - fwd.x * (x - eye.x) + fwd.y * eye.y) / fwd.z);
+                lights.push_back(light({x, 0.0f, z}, radius, glm::vec3(0.2f + 0.02f * float(k), 0.5f, 0.4f)));
+            }
+    }
+    REQUIRE(lights.size() > 30);
+    scene.lights = lights;
+    ClusteredRenderer renderer(testGl(), scene, c, scene.width, scene.height);
+    renderer.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
+    // Pixels whose GPU slice differs from the slice of their depth buffer's view depth: how close to a boundary
+    // they lie (the margins cover them; doc/clustered.md).
+    const std::vector<int> gpu = renderer.pixelSlices();
+    const ImageFloat depth = renderer.targets().readDepth();
+    long surface = 0, differing = 0;
+    double worst = 0.0;
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            const size_t p = size_t(y) * size_t(scene.width) + size_t(x);
+            if (depth.pixels[p] >= 1.0f) continue;
+            ++surface;
+            REQUIRE(gpu[p] >= 0);
+            const double d = viewDepthFromWindowDepth(cam, depth.pixels[p]);
+            const int cpu = slices.sliceOf(d);
+            if (cpu == gpu[p]) continue;
+            ++differing;
+            REQUIRE(std::abs(cpu - gpu[p]) == 1);
+            const double boundary = slices.boundary(std::max(cpu, gpu[p]));
+            worst = std::max(worst, std::abs(d / boundary - 1.0));
+        }
+    WARN("slice boundaries: " << differing << " of " << surface << " surface pixels in another slice than their "
+                              << "depth buffer's view depth; at most " << worst << " (relative) from the boundary");
+    CHECK(worst < 1e-3);  // the depth buffer's own rounding; the shaded point itself is within the slice margins
+    const ClusteredCheck check = renderClustered(scene, c, &lights);
+    requireEqualsReference(check);
+    CHECK(check.lists.truthPairs > 100);
+}
+
+TEST_CASE("clustered: lights crossing the near plane, containing the camera, behind it, huge and tiny",
+          "[clustered][slow]") {
+    Scene low = floorScene();  // low over the floor, so a light crossing the near plane lights what is seen
+    low.camera = camera({0.0f, 0.6f, 4.0f}, {0.0f, 0.0f, -6.0f}, 0.5f, 12.0f);
+    for (const Scene& base : {firstPersonScene(), low}) {
+        Scene scene = base;
+        const glm::vec3 eye = scene.camera.position;
+        const glm::vec3 fwd = glm::normalize(scene.camera.target - eye);
+        const bool isLow = eye.y < 1.0f;
+        scene.lights = {
+            isLow ? light({0.0f, 0.3f, 3.35f}, 0.65f, {1.0f, 0.5f, 0.2f})
+                  : light(eye + fwd * 0.3f + glm::vec3(0, -0.25f, 0), 0.3f, {1.0f, 0.4f, 0.2f}),
+            light(eye + glm::vec3(0.3f, -0.5f, 0), isLow ? 1.2f : 2.5f, {0.3f, 0.9f, 0.4f}),  // contains the camera
+            light(eye - fwd * 2.0f + glm::vec3(0, -1.0f, 0), 3.5f, {0.4f, 0.4f, 1.0f}),      // behind, reaches in
+            light(eye - fwd * 6.0f, 1.0f, {1.0f, 1.0f, 1.0f}),                               // wholly behind
+            light({0.0f, 5.0f, 0.0f}, 200.0f, {0.15f, 0.12f, 0.1f}),                         // huge: everything
+            light({1.0f, 0.01f, isLow ? 1.0f : 4.0f}, 0.05f, {1.0f, 1.0f, 1.0f}),            // tiny, on the floor
+            light({-1.0f, 0.02f, isLow ? 0.0f : 6.0f}, 0.08f, {1.0f, 0.2f, 0.2f}),
+            light({0.0f, 0.5f, 5.0f}, 60.0f, {0.05f, 0.05f, 0.05f}),                         // past the far plane
+        };
+        for (bool occupancy : {false, true})
+            for (bool fixedTable : {false, true}) {
+                ClusteredOptions c;
+                c.tileSize = 16;
+                c.occupiedClusters = occupancy;
+                c.forceFixedLightTable = fixedTable;
+                INFO("low camera " << isLow << ", occupancy " << occupancy << ", fixed table " << fixedTable);
+                const ClusteredCheck check = renderClustered(scene, c);
+                requireEqualsReference(check);
+            }
+    }
+}
+
+TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy, the clusters in front of the "
+          "opaque surface keep lists", "[clustered][transparency]") {
+    Scene scene = firstPersonScene();
+    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
+    const int glass = int(scene.materials.size()) - 1;
+    addSphere(scene, {-1.5f, 1.2f, 6.0f}, 0.8f, glass, 24);
+    addSphere(scene, {1.0f, 1.0f, 4.0f}, 0.6f, glass, 24);
+    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, glass, 24);
+    scene.lights = scatteredLights(80, 0.5f, 3.0f, 5);
+    scene.lights.push_back(light({-1.0f, 1.5f, 7.5f}, 2.0f, {1.0f, 0.8f, 0.5f}));  // in front of the glass
+    scene.lights.push_back(light({0.8f, 1.0f, 4.9f}, 1.0f, {0.5f, 1.0f, 0.5f}));
+    scene.lights.push_back(light({0.2f, 1.3f, 3.4f}, 0.5f, {1.0f, 0.3f, 0.3f}));   // lights only the glass
+    const ImageRGBA8 reference = referenceImage(scene, scene.lights, false);
+    for (bool occupancy : {false, true}) {
+        if (occupancy && !testGl().readDepthStencil) continue;
+        ClusteredOptions c;
+        c.tileSize = 16;
+        c.occupiedClusters = occupancy;
+        const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
+        INFO("occupancy " << occupancy);
+        requireEqualsReference(check);
+        // The glass is drawn: the image differs from the same frame without transparency.
+        ClusteredOptions opaqueOnly = c;
+        opaqueOnly.transparency = false;
+        ClusteredRenderer r(testGl(), scene, opaqueOnly, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, {scene.ambient, scene.backgroundColor});
+        CHECK(compareImages(r.targets().readColor(), check.image).differingPixels > 500);
+        if (occupancy) {
+            // Without the transparent reach the glass would find empty clusters: fewer clusters hold lists.
+            CHECK(r.frameInfo().grid.activeClusters < check.frame.grid.activeClusters);
+            CHECK(compareImages(r.targets().readColor(), reference).differingPixels > 500);
+        }
+    }
+}
+
+TEST_CASE("clustered: MSAA with transparency equals the reference rendered the same way",
+          "[clustered][msaa][transparency]") {
+    const GlInfo& info = testGl();
+    if (!info.multisampleFbo || info.maxSamples < 2) {
+        WARN("no multisample FBOs in this context; MSAA not tested");
+        return;
+    }
+    Scene scene = firstPersonScene();
+    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
+    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
+    scene.lights = scatteredLights(60, 0.5f, 3.0f, 8);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const ImageRGBA8 single = [&] {
+        ClusteredRenderer r(info, scene, ClusteredOptions{}, scene.width, scene.height);
+        r.render(scene.camera, scene.lights, shading);
+        return r.targets().readColor();
+    }();
+    for (int samples : {2, 4}) {
+        if (samples > info.maxSamples) continue;
+        for (bool occupancy : {false, true}) {
+            ClusteredOptions c;
+            c.tileSize = 16;
+            c.msaaSamples = samples;
+            c.occupiedClusters = occupancy && info.readDepthStencil;
+            ClusteredRenderer r(info, scene, c, scene.width, scene.height);
+            r.render(scene.camera, scene.lights, shading);
+            const ImageRGBA8 image = r.targets().readColor();
+            const ImageError e = compareImages(image, referenceImage(scene, scene.lights, false, samples));
+            INFO(samples << "x MSAA, occupancy asked " << occupancy << ": max " << e.maxAbsError << ", differing "
+                         << e.differingPixels);
+            REQUIRE(e.maxAbsError <= 1);
+            CHECK_FALSE(r.frameInfo().occupancyUsed);  // per-sample depth is not read back: the dense grid
+            CHECK(compareImages(image, single).differingPixels > 50);  // the edges really are antialiased
+            REQUIRE_THROWS_WITH(r.pixelSlices(), Catch::Contains("MSAA"));
+        }
+    }
+}
+
+TEST_CASE("clustered: a list longer than the loop bound grows the shader, a full list texture grows, 8-bit indices "
+          "become 16-bit", "[clustered][growth]") {
+    Scene scene = topDownScene();
+    // 70 lights all covering the middle of the floor: the longest cluster list has 70 entries.
+    for (int i = 0; i < 70; ++i)
+        scene.lights.push_back(light({std::cos(i * 0.3f), 0.5f, std::sin(i * 0.3f)}, 4.0f,
+                                     glm::vec3(0.02f + 0.01f * (i % 5), 0.02f, 0.03f)));
+    ClusteredOptions c;
+    c.initialLoopBound = 4;
+    c.tileSize = 4;  // many small clusters: the lists need more than one row of the list texture
+    c.slices = 8;
+    ClusteredRenderer r(testGl(), scene, c, scene.width, scene.height);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    r.render(scene.camera, scene.lights, shading);
+    CHECK(r.frameInfo().grid.maxLights == 70);
+    CHECK(r.frameInfo().loopBound == 128);
+    CHECK(r.frameInfo().shaderRebuilds == 2);  // the first program and the grown one
+    CHECK(r.frameInfo().indexBits == 8);
+    CHECK(r.frameInfo().listTextureRows > 1);
+    CHECK(long(r.frameInfo().listTextureRows) * ClusterGridTextures::kListWidth >= r.frameInfo().grid.entries);
+    const size_t bytes8 = r.listBytes();
+    const ClusteredCheck check = renderClustered(scene, c);
+    requireEqualsReference(check);
+    // 300 lights (the 70 and 230 far away): light indices above 255, so 16-bit lists, same image.
+    std::vector<PointLight> more = scene.lights;
+    for (int i = 0; i < 230; ++i) more.push_back(light({50.0f + float(i), 0.5f, 0.0f}, 1.0f));
+    std::rotate(more.begin(), more.begin() + 70, more.end());  // the lit ones get indices 231..300
+    r.render(scene.camera, more, shading);
+    CHECK(r.frameInfo().indexBits == 16);
+    CHECK(r.frameInfo().shaderRebuilds == 3);
+    CHECK(r.listBytes() >= 2 * bytes8 / 2);
+    const ImageError e = compareImages(r.targets().readColor(), referenceImage(scene, more, false));
+    INFO("16-bit lists: max error " << e.maxAbsError);
+    REQUIRE(e.maxAbsError <= 1);
+    // Back to 8 bits.
+    r.render(scene.camera, scene.lights, shading);
+    CHECK(r.frameInfo().indexBits == 8);
+    REQUIRE(compareImages(r.targets().readColor(), check.reference).maxAbsError <= 1);
+}
+
+TEST_CASE("clustered: 65,535 lights, the last ones lit, equal the reference with those lights alone",
+          "[clustered][growth][slow]") {
+    Scene scene = topDownScene();
+    scene.width = 64;
+    scene.height = 48;
+    std::vector<PointLight> lit = scatteredLights(12, 1.0f, 3.0f, 17);
+    std::vector<PointLight> lights;
+    for (int i = 0; i < 65535 - 12; ++i)  // tiny lights all over the floor, under it: they light nothing
+        lights.push_back(light({-11.0f + 22.0f * float(i % 256) / 255.0f, -0.5f, -11.0f + 22.0f * float(i / 256) / 255.0f},
+                               0.2f, glm::vec3(1.0f)));
+    lights.insert(lights.end(), lit.begin(), lit.end());
+    REQUIRE(lights.size() == 65535);
+    ClusteredOptions c;
+    c.tileSize = 8;
+    ClusteredRenderer r(testGl(), scene, c, scene.width, scene.height);
+    r.render(scene.camera, lights, {scene.ambient, scene.backgroundColor});
+    CHECK(r.frameInfo().indexBits == 16);
+    CHECK(r.frameInfo().grid.assignedLights >= 12);
+    const ImageError e = compareImages(r.targets().readColor(), referenceImage(scene, lit, false));
+    INFO("max error " << e.maxAbsError);
+    REQUIRE(e.maxAbsError <= 1);
+    // The lit lights' indices are 65524..65535: their lists name them.
+    bool named = false;
+    for (uint32_t entry : r.grid().entries()) named = named || entry == 65535u;
+    CHECK(named);
+}
+
+TEST_CASE("clustered: spot lights go on a cluster only where the cone may reach its cell; no light lost",
+          "[clustered][lights][cones]") {
+    std::vector<PointLight> spots = scatteredLights(120, 1.0f, 4.5f, 29);
+    std::mt19937 rng(2029);
+    std::uniform_real_distribution<float> tilt(-0.8f, 0.8f), angle(0.05f, 1.5f);
+    for (PointLight& l : spots) {
+        l.position.y += 1.0f;
+        l.direction = {tilt(rng), -1.0f, tilt(rng)};
+        l.outerConeAngle = angle(rng);
+        l.innerConeAngle = 0.5f * l.outerConeAngle;
+    }
+    spots[0].outerConeAngle = 1.5707963f;
+    Scene scene = firstPersonScene();
+    spots[1].position = scene.camera.position + glm::vec3(0.0f, 0.5f, 0.5f);
+    spots[1].direction = scene.camera.target - spots[1].position;
+    scene.lights = spots;
+    std::vector<PointLight> points = spots;
+    for (PointLight& l : points) l.outerConeAngle = 0.0f;
+    for (bool fixedTable : {false, true}) {
+        ClusteredOptions c;
+        c.tileSize = 16;
+        c.forceFixedLightTable = fixedTable;
+        const ClusteredCheck cones = renderClustered(scene, c, &spots);
+        INFO("fixed table " << fixedTable);
+        requireEqualsReference(cones);
+        ClusteredRenderer r(testGl(), scene, c, scene.width, scene.height);
+        r.render(scene.camera, points, {scene.ambient, scene.backgroundColor});
+        INFO("light-cluster pairs: cones " << cones.frame.grid.entries << ", the same lights as spheres "
+                                           << r.frameInfo().grid.entries);
+        CHECK(cones.lists.truthPairs > 1000);
+        REQUIRE(cones.frame.grid.entries < r.frameInfo().grid.entries);
+    }
+}
+
+TEST_CASE("clustered: heat map of lights per pixel's cluster", "[clustered][heatmap]") {
+    Scene scene = topDownScene();
+    scene.lights = {light({0, 0, 0}, 3.0f), light({0.5f, 0, 0}, 3.0f), light({8, 0, 8}, 1.0f)};
+    ClusteredOptions c;
+    c.tileSize = 16;
+    ClusteredRenderer r(testGl(), scene, c, scene.width, scene.height);
+    r.render(scene.camera, scene.lights, {});
+    const ImageRGBA8 heat = r.clusterHeatMap(2);
+    REQUIRE(heat.width == scene.width);
+    REQUIRE(heat.height == scene.height);
+    const std::vector<int> clusters = r.pixelClusters();
+    for (int count : {0, 1, 2}) {
+        const ImageRGBA8 one = overlapHeatMap(1, 1, {count}, 2);
+        long pixels = 0;
+        for (int y = 0; y < heat.height; ++y)
+            for (int x = 0; x < heat.width; ++x) {
+                const int cluster = clusters[size_t(y) * size_t(heat.width) + size_t(x)];
+                if (cluster < 0) continue;
+                const bool same = std::equal(one.pixels.begin(), one.pixels.end(), heat.at(x, y));
+                REQUIRE(same == (r.grid().counts()[size_t(cluster)] == count));
+                pixels += same;
+            }
+        CHECK(pixels > 0);
+    }
+}
+
+TEST_CASE("clustered: bad input is refused before drawing", "[clustered][bad-input]") {
+    Scene scene = floorScene();
+    scene.lights = {light({0, 1, 0}, 2.0f)};
+    const auto refused = [&](const ClusteredOptions& c) {
+        return ClusteredRenderer(testGl(), scene, c, scene.width, scene.height);
+    };
+    ClusteredOptions c;
+    c.tileSize = 3;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("cluster tile size must be 4..256"));
+    c.tileSize = 300;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("got 300"));
+    c = ClusteredOptions{};
+    c.slices = 0;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("depth slices must be 1..64"));
+    c.slices = 65;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("got 65"));
+    c = ClusteredOptions{};
+    c.occupiedClusters = true;
+    c.preZ = false;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("pre-Z"));
+    c = ClusteredOptions{};
+    c.slicing = ClusterSlicing::NearSlice;
+    c.lightNear = -1.0f;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("positive view depth"));
+    c = ClusteredOptions{};
+    c.initialLoopBound = 0;
+    REQUIRE_THROWS_WITH(refused(c), Catch::Contains("loop bound"));
+    GlInfo noReadBack = testGl();
+    noReadBack.readDepthStencil = false;
+    c = ClusteredOptions{};
+    c.occupiedClusters = true;
+    REQUIRE_THROWS_AS(ClusteredRenderer(noReadBack, scene, c, scene.width, scene.height), UnsupportedError);
+    // No pre-Z and no occupancy is a valid mode: LEQUAL with depth writes in the shading pass.
+    c = ClusteredOptions{};
+    c.preZ = false;
+    c.tileSize = 16;
+    Scene lit = scene;
+    lit.lights = scatteredLights(40, 0.5f, 3.0f, 2);
+    requireEqualsReference(renderClustered(lit, c));
+    ClusteredRenderer r(testGl(), scene, ClusteredOptions{}, scene.width, scene.height);
+    REQUIRE_THROWS_WITH(r.pixelSlices(), Catch::Contains("before a frame"));
+    const std::vector<PointLight> tooMany(65536, light({0, 0, 0}, 1.0f));
+    REQUIRE_THROWS_WITH(r.render(scene.camera, tooMany, {}), Catch::Contains("65535"));
+    std::vector<PointLight> bad = {light({0, 1, 0}, 2.0f), light({0, 1, 0}, -1.0f)};
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("light 2") && Catch::Contains("radius"));
+    bad[1] = light({std::nanf(""), 1, 0}, 1.0f);
+    REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("non-finite"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
+    RenderModeOptions mo;
+    mo.mode = "clustered";
+    mo.clustered.slices = 100;
+    REQUIRE_THROWS_WITH(createRenderer(mo, testGl(), scene, scene.width, scene.height), Catch::Contains("got 100"));
+}
+
+TEST_CASE("clustered: without highp fragment floats the grid has one slice, and still equals the reference",
+          "[clustered][precision]") {
+    GlInfo mediump = testGl();
+    mediump.fragmentHighp = false;
+    Scene scene = firstPersonScene();
+    scene.lights = scatteredLights(60, 0.5f, 3.0f, 12);
+    ClusteredOptions c;
+    c.tileSize = 16;
+    const ClusteredCheck check = renderClustered(scene, c, nullptr, nullptr, &mediump);
+    requireEqualsReference(check);
+    CHECK(check.frame.slicing.count == 1);
+}
+
+TEST_CASE("clustered: every GL object is released with its renderer", "[clustered][resources]") {
+    testContext();
+    const int before = gl::liveGlObjects();
+    {
+        Scene scene = floorScene();
+        scene.lights = {light({0, 1, 0}, 3.0f)};
+        for (bool occupancy : {false, true}) {
+            ClusteredOptions c;
+            c.occupiedClusters = occupancy && testGl().readDepthStencil;
+            ClusteredRenderer r(testGl(), scene, c, scene.width, scene.height);
+            r.render(scene.camera, scene.lights, {});
+            r.pixelSlices();
+            CHECK(gl::liveGlObjects() > before);
+            CHECK(r.lightDataBytes() > 0);
+        }
+    }
+    REQUIRE(gl::liveGlObjects() == before);
+}
