@@ -225,6 +225,22 @@ TEST_CASE("cluster slices: Doom's and Filament's spacing, their boundaries and t
             REQUIRE(s.sliceOf(1000.0) == count - 1);
             REQUIRE(s.sliceOf(-1.0) == 0);
         }
+    // Fitted to the frame's depths: the formula spans them, the ends still reach the planes.
+    for (ClusterSlicing kind : {ClusterSlicing::Exponential, ClusterSlicing::NearSlice}) {
+        const ClusterSlices fitted = clusterSlices(cam, 16, kind, 5.0f, 2.0f, 50.0f);
+        INFO(clusterSlicingName(kind) << " fitted to 2..50");
+        REQUIRE(fitted.boundary(0) == Approx(0.1));
+        REQUIRE(fitted.boundary(16) == Approx(120.0));
+        if (kind == ClusterSlicing::Exponential) {
+            REQUIRE(fitted.boundary(1) == Approx(2.0 * std::pow(25.0, 1.0 / 16.0)).epsilon(1e-4));
+            REQUIRE(fitted.boundary(15) == Approx(50.0 / std::pow(25.0, 1.0 / 16.0)).epsilon(1e-4));
+        } else {
+            REQUIRE(fitted.boundary(1) == Approx(5.0).epsilon(1e-4));
+            REQUIRE(fitted.boundary(15) == Approx(50.0 / std::pow(10.0, 1.0 / 15.0)).epsilon(1e-4));
+        }
+        REQUIRE(fitted.sliceOf(1.0) == 0);
+        REQUIRE(fitted.sliceOf(100.0) == 15);
+    }
     // A near slice outside the view range falls back to Doom's spacing.
     const ClusterSlices doom = clusterSlices(cam, 16, ClusterSlicing::Exponential, 5.0f);
     for (float lightNear : {0.05f, 0.1f, 120.0f, 500.0f}) {
@@ -394,7 +410,7 @@ TEST_CASE("clustered equals the reference on the default room, dense and with oc
     o.time = 2.0f;
     const Scene scene = makeDefaultScene(o);
     const ImageRGBA8 reference = referenceImage(scene, scene.lightsAt(scene.time), false);
-    long denseEntries = -1;
+    long denseClusters = -1;
     for (bool occupancy : {false, true}) {
         if (occupancy && !testGl().readDepthStencil) continue;
         ClusteredOptions c;
@@ -406,8 +422,11 @@ TEST_CASE("clustered equals the reference on the default room, dense and with oc
         CHECK(check.lists.truthPairs > 1000);
         CHECK(check.frame.occupancyUsed == occupancy);
         CHECK(check.frame.indexBits == 8);  // 255 lights
-        if (!occupancy) denseEntries = check.frame.grid.entries;
-        if (occupancy) CHECK(check.frame.grid.entries < denseEntries);
+        // Occupancy: lists only where surfaces are (the slices fitted to the frame's depths, so the entries may
+        // even grow: thinner slices).
+        if (!occupancy) denseClusters = check.frame.grid.activeClusters;
+        if (occupancy) CHECK(check.frame.grid.activeClusters < denseClusters);
+        CHECK(check.frame.grid.listedClusters <= check.frame.grid.activeClusters);
     }
 }
 

@@ -33,7 +33,8 @@ int ClusterSlices::sliceOf(double viewDepth) const {
     return int(std::clamp(k, 0.0, double(count - 1)));
 }
 
-ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlicing slicing, float lightNear) {
+ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlicing slicing, float lightNear,
+                            float fitNear, float fitFar) {
     if (count < 1 || count > ClusterGrid::kMaxSlices)
         throw Error("cluster slices must be 1.." + std::to_string(ClusterGrid::kMaxSlices) + ", got " +
                     std::to_string(count));
@@ -42,7 +43,12 @@ ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlic
     s.nearPlane = camera.nearPlane;
     s.farPlane = camera.farPlane;
     if (count == 1) return s;
-    const double n = camera.nearPlane, f = camera.farPlane;
+    double n = camera.nearPlane, f = camera.farPlane;
+    if (fitNear > 0.0f && fitFar > fitNear) {  // the formula spans the depths given; the ends still reach the planes
+        n = std::clamp(double(fitNear), n, f);
+        f = std::clamp(double(fitFar), n, f);
+        if (!(f > n * 1.0001)) f = n * 1.0001;  // one depth: a thin range around it
+    }
     if (slicing == ClusterSlicing::NearSlice && lightNear > n && lightNear < f) {
         const double l = lightNear;
         s.scale = float(double(count - 1) / std::log2(f / l));
@@ -57,44 +63,52 @@ ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlic
 double cellDistanceSquared(const ClusterCell& cell, const glm::vec3& p) {
     const double x = p.x, y = p.y, pd = -double(p.z);
     const double d0 = cell.nearDepth, d1 = cell.farDepth;
-    const double sx[2] = {cell.slopeX0, cell.slopeX1}, sy[2] = {cell.slopeY0, cell.slopeY1};
-    // Breakpoints of the piecewise quadratic inside (d0, d1): where x = slope * d or y = slope * d.
-    double points[6];  // the two ends and at most 4 breakpoints
-    int n = 0;
-    points[n++] = d0;
-    for (int i = 0; i < 2; ++i) {
-        if (sx[i] != 0.0) {
-            const double d = x / sx[i];
-            if (d > d0 && d < d1) points[n++] = d;
-        }
-        if (sy[i] != 0.0) {
-            const double d = y / sy[i];
-            if (d > d0 && d < d1) points[n++] = d;
-        }
-    }
-    for (int i = 2; i < n; ++i)  // insertion sort of the at most 4 breakpoints
-        for (int j = i; j > 1 && points[j] < points[j - 1]; --j) std::swap(points[j], points[j - 1]);
-    points[n++] = d1;
-    const auto f = [&](double d) {
-        const double gx = std::max({0.0, sx[0] * d - x, x - sx[1] * d});
-        const double gy = std::max({0.0, sy[0] * d - y, y - sy[1] * d});
-        return (d - pd) * (d - pd) + gx * gx + gy * gy;
+    const double sx0 = cell.slopeX0, sx1 = cell.slopeX1, sy0 = cell.slopeY0, sy1 = cell.slopeY1;
+    // f(d) / 2's derivative: (d - pd) plus, for each side the point lies beyond at depth d, s (s d - c). f is convex
+    // and continuously differentiable, so the derivative rises with d and the minimum is where it crosses 0.
+    const auto slopeOf = [&](double d) {
+        double v = d - pd;
+        if (sx0 * d > x) v += sx0 * (sx0 * d - x);
+        else if (x > sx1 * d) v += sx1 * (sx1 * d - x);
+        if (sy0 * d > y) v += sy0 * (sy0 * d - y);
+        else if (y > sy1 * d) v += sy1 * (sy1 * d - y);
+        return v;
     };
-    double best = std::min(f(d0), f(d1));
-    for (int i = 0; i + 1 < n; ++i) {
-        const double a = points[i], b = points[i + 1];
-        if (!(b > a)) continue;
-        // On this piece each side term is inactive or (s d - c)^2 with the same sign throughout: find which at the
-        // middle, then the stationary point of (d - pd)^2 + sum (s d - c)^2 is (pd + sum s c) / (1 + sum s^2).
-        const double mid = 0.5 * (a + b);
+    double best;
+    if (slopeOf(d0) >= 0.0) {
+        best = d0;
+    } else if (slopeOf(d1) <= 0.0) {
+        best = d1;
+    } else {
+        // The piece where it crosses: between the breakpoints (x = s d or y = s d) around the crossing.
+        double points[4];
+        int n = 0;
+        for (double bp : {sx0 != 0.0 ? x / sx0 : -1.0, sx1 != 0.0 ? x / sx1 : -1.0, sy0 != 0.0 ? y / sy0 : -1.0,
+                          sy1 != 0.0 ? y / sy1 : -1.0})
+            if (bp > d0 && bp < d1) points[n++] = bp;
+        for (int i = 1; i < n; ++i)  // insertion sort of at most 4
+            for (int j = i; j > 0 && points[j] < points[j - 1]; --j) std::swap(points[j], points[j - 1]);
+        double lo = d0, hi = d1;
+        for (int i = 0; i < n; ++i) {
+            if (slopeOf(points[i]) >= 0.0) {
+                hi = points[i];
+                break;
+            }
+            lo = points[i];
+        }
+        // On that piece each side is inactive or (s d - c)^2 throughout: the stationary point of
+        // (d - pd)^2 + sum (s d - c)^2 is (pd + sum s c) / (1 + sum s^2).
+        const double mid = 0.5 * (lo + hi);
         double num = pd, den = 1.0;
-        if (sx[0] * mid - x > 0.0) num += sx[0] * x, den += sx[0] * sx[0];
-        else if (x - sx[1] * mid > 0.0) num += sx[1] * x, den += sx[1] * sx[1];
-        if (sy[0] * mid - y > 0.0) num += sy[0] * y, den += sy[0] * sy[0];
-        else if (y - sy[1] * mid > 0.0) num += sy[1] * y, den += sy[1] * sy[1];
-        best = std::min(best, f(std::clamp(num / den, a, b)));
+        if (sx0 * mid > x) num += sx0 * x, den += sx0 * sx0;
+        else if (x > sx1 * mid) num += sx1 * x, den += sx1 * sx1;
+        if (sy0 * mid > y) num += sy0 * y, den += sy0 * sy0;
+        else if (y > sy1 * mid) num += sy1 * y, den += sy1 * sy1;
+        best = std::clamp(num / den, lo, hi);
     }
-    return best;
+    const double gx = std::max(0.0, std::max(sx0 * best - x, x - sx1 * best));
+    const double gy = std::max(0.0, std::max(sy0 * best - y, y - sy1 * best));
+    return (best - pd) * (best - pd) + gx * gx + gy * gy;
 }
 
 namespace {
@@ -199,6 +213,13 @@ void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLig
     indexBits_ = lights.size() <= 255 ? 8 : 16;
     slopeX_ = boundarySlopes(tilesX_, tileSize_, width_, camera.projection[0][0], camera.projection[2][0]);
     slopeY_ = boundarySlopes(tilesY_, tileSize_, height_, camera.projection[1][1], camera.projection[2][1]);
+    // A side plane x + s z = 0 has the unit normal (1, 0, s) / sqrt(1 + s^2).
+    planeScaleX_.resize(slopeX_.size());
+    planeScaleY_.resize(slopeY_.size());
+    for (size_t i = 0; i < slopeX_.size(); ++i) planeScaleX_[i] = 1.0 / std::sqrt(1.0 + double(slopeX_[i]) * slopeX_[i]);
+    for (size_t i = 0; i < slopeY_.size(); ++i) planeScaleY_[i] = 1.0 / std::sqrt(1.0 + double(slopeY_[i]) * slopeY_[i]);
+    columnOutside_.resize(size_t(tilesX_));
+    rowOutside_.resize(size_t(tilesY_));
     const double absolute = absoluteSliceMargin(camera);
     double sliceNear[kMaxSlices], sliceFar[kMaxSlices];
     for (int k = 0; k < slices_; ++k) widenedSlice(slices, k, absolute, sliceNear[k], sliceFar[k]);
@@ -226,20 +247,57 @@ void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLig
         const bool spot = l.isSpot();
         const ViewCone cone = spot ? viewCone(camera, l, radius) : ViewCone{};
         const int tx0 = rect.x / tileSize_, tx1 = rect.z / tileSize_, ty0 = rect.y / tileSize_, ty1 = rect.w / tileSize_;
+        // How far the centre lies outside each tile column's and row's side planes (planes through the eye) and
+        // each slice's depth planes: the largest of a cell's is a lower bound of its distance (the cell lies in
+        // every half-space), so above the radius the cell is out without the exact test, and at or below 0 the
+        // centre is inside it.
+        for (int tx = tx0; tx <= tx1; ++tx)
+            columnOutside_[size_t(tx)] = std::max(-(c.x + slopeX_[size_t(tx)] * double(c.z)) * planeScaleX_[size_t(tx)],
+                                                  (c.x + slopeX_[size_t(tx) + 1] * double(c.z)) * planeScaleX_[size_t(tx) + 1]);
+        for (int ty = ty0; ty <= ty1; ++ty)
+            rowOutside_[size_t(ty)] = std::max(-(c.y + slopeY_[size_t(ty)] * double(c.z)) * planeScaleY_[size_t(ty)],
+                                               (c.y + slopeY_[size_t(ty) + 1] * double(c.z)) * planeScaleY_[size_t(ty) + 1]);
+        const double reachDistance = std::sqrt(reach);
         const size_t pairsBefore = pairCluster_.size();
-        for (int k = k0; k <= k1; ++k)
-            for (int ty = ty0; ty <= ty1; ++ty)
-                for (int tx = tx0; tx <= tx1; ++tx) {
+        // The sphere's part within a slice and a tile row is convex, and x / d is continuous on it, so the columns
+        // whose cells it meets are one run: found from both ends, the cells between need no test.
+        for (int k = k0; k <= k1; ++k) {
+            const double sliceOutside = std::max(sliceNear[k] - depth, depth - sliceFar[k]);
+            if (sliceOutside > reachDistance) continue;
+            for (int ty = ty0; ty <= ty1; ++ty) {
+                const double rowOutside = std::max(sliceOutside, rowOutside_[size_t(ty)]);
+                if (rowOutside > reachDistance) continue;
+                const auto cellOf = [&](int tx) {
+                    return ClusterCell{slopeX_[size_t(tx)], slopeX_[size_t(tx) + 1], slopeY_[size_t(ty)],
+                                       slopeY_[size_t(ty) + 1], float(sliceNear[k]), float(sliceFar[k])};
+                };
+                const auto meets = [&](int tx) {
+                    const double outside = std::max(rowOutside, columnOutside_[size_t(tx)]);
+                    if (outside > reachDistance) return false;
+                    if (outside <= 0.0) return true;  // the centre is inside the cell
+                    // A point of the cell near the centre (its depth clamped to the slice, then x and y to the
+                    // cross-section there): within reach, the cell is too.
+                    const double d = std::clamp(depth, sliceNear[k], sliceFar[k]);
+                    const double qx = std::clamp(double(c.x), double(slopeX_[size_t(tx)]) * d, double(slopeX_[size_t(tx) + 1]) * d);
+                    const double qy = std::clamp(double(c.y), double(slopeY_[size_t(ty)]) * d, double(slopeY_[size_t(ty) + 1]) * d);
+                    if ((qx - c.x) * (qx - c.x) + (qy - c.y) * (qy - c.y) + (d - depth) * (d - depth) <= reach) return true;
+                    ++stats_.cellTests;
+                    return cellDistanceSquared(cellOf(tx), c) <= reach;
+                };
+                int first = tx0;
+                while (first <= tx1 && !meets(first)) ++first;
+                if (first > tx1) continue;
+                int last = tx1;
+                while (last > first && !meets(last)) --last;
+                for (int tx = first; tx <= last; ++tx) {
                     const int tile = ty * tilesX_ + tx;
                     if (occupied && !(((*occupied)[size_t(tile)] >> k) & 1u)) continue;
-                    ++stats_.cellTests;
-                    const ClusterCell cell{slopeX_[size_t(tx)], slopeX_[size_t(tx) + 1], slopeY_[size_t(ty)],
-                                           slopeY_[size_t(ty) + 1], float(sliceNear[k]), float(sliceFar[k])};
-                    if (cellDistanceSquared(cell, c) > reach) continue;
-                    if (spot && !coneMayReachCell(cone, cell, radiusMargin)) continue;
+                    if (spot && !coneMayReachCell(cone, cellOf(tx), radiusMargin)) continue;
                     pairCluster_.push_back(uint32_t(k * tiles + tile));
                     pairLight_.push_back(uint32_t(i + 1));
                 }
+            }
+        }
         if (pairCluster_.size() > pairsBefore) ++stats_.assignedLights;
     }
 

@@ -47,10 +47,13 @@ struct ClusterSlices {
     // boundary: ClusterGrid widens every cell by kSliceRelativeMargin for that).
     int sliceOf(double viewDepth) const;
 };
-// The slicing of `camera` with `count` slices (1..kMaxSlices). NearSlice: `lightNear` (view depth, scene units)
-// is clamped into the view range; at or past it the first slice alone would hold everything, so there it falls
-// back to Exponential.
-ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlicing slicing, float lightNear);
+// The slicing of `camera` with `count` slices (1..kMaxSlices). NearSlice: with `lightNear` (view depth, scene
+// units) outside the view range the first slice would hold nothing or everything, so there it falls back to
+// Exponential. fitNear < fitFar (view depths, e.g. the nearest and farthest surface of the frame): the formula
+// spans them instead of the near and far planes (slice 0 still starts at the near plane and the last ends at the
+// far plane), so the slices are as thin as the frame's depth range allows.
+ClusterSlices clusterSlices(const CameraMatrices& camera, int count, ClusterSlicing slicing, float lightNear,
+                            float fitNear = 0.0f, float fitFar = 0.0f);
 
 struct ClusterGridStats {
     int maxLights = 0;         // longest cluster list
@@ -58,7 +61,7 @@ struct ClusterGridStats {
     long listedClusters = 0;   // clusters with a non-empty list
     long activeClusters = 0;   // clusters that can be shaded: all, or with occupancy the occupied (and transparent) ones
     int assignedLights = 0;    // lights in at least one list
-    long cellTests = 0;        // exact sphere-cell tests made (after the rectangle and slice-range pre-filter)
+    long cellTests = 0;        // exact sphere-cell distances computed (cells the plane tests could not decide)
 };
 
 // A cluster's cell in view space: the rays through its tile's pixels (x / d in [slopeX0, slopeX1], y / d in
@@ -70,8 +73,9 @@ struct ClusterCell {
 };
 // The exact squared distance from a view-space point to the cell (0 inside). The squared distance to the
 // cell's cross-section at depth d (a rectangle) plus (d - depth of the point)^2 is a convex piecewise quadratic in
-// d; its minimum over [nearDepth, farDepth] lies at an end, a breakpoint (where the point's x or y meets a side's
-// slope) or a piece's stationary point, and all of those are tried.
+// d (and continuously differentiable): its minimum over [nearDepth, farDepth] is at an end, or where the derivative
+// crosses 0, found between the breakpoints (where the point's x or y meets a side's slope) as the stationary point
+// of that piece's quadratic.
 double cellDistanceSquared(const ClusterCell& cell, const glm::vec3& viewPoint);
 
 class ClusterGrid {
@@ -132,6 +136,8 @@ private:
     int width_, height_, tileSize_, tilesX_, tilesY_, slices_;
     int indexBits_ = 8;
     std::vector<float> slopeX_, slopeY_;  // tile boundaries: tilesX + 1 and tilesY + 1 view-space slopes
+    std::vector<double> planeScaleX_, planeScaleY_;     // 1 / |normal| of each boundary's side plane
+    std::vector<double> columnOutside_, rowOutside_;    // per light: its centre's distance outside a column, a row
     std::vector<uint32_t> entries_, offsets_;
     std::vector<int> counts_;
     std::vector<uint32_t> pairCluster_, pairLight_;  // the frame's light-cluster pairs, lights in ascending order

@@ -106,8 +106,8 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         depthPrepass_.run(scene_, cam);
     }
 
-    const ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
     const bool occupancy = options_.occupiedClusters && targets_.samples() == 0;
+    ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
     std::vector<uint64_t> occupied;
     double occupancyMs = 0.0;
     if (occupancy) {  // Olsson's occupied-cluster step, from the pre-Z depth
@@ -123,7 +123,17 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         glReadPixels(0, 0, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packedDepth_.data());
         checkGl("clustered: depth read-back");
         constexpr double kScale = 1.0 / 16777215.0;
-        for (size_t i = 0; i < packedDepth_.size(); ++i) depthReadback_[i] = float(double(packedDepth_[i] >> 8) * kScale);
+        uint32_t nearest = 0xFFFFFFu, farthest = 0u;  // of the surfaces (24-bit depths below the cleared 1.0)
+        for (size_t i = 0; i < packedDepth_.size(); ++i) {
+            const uint32_t d = packedDepth_[i] >> 8;
+            depthReadback_[i] = float(double(d) * kScale);
+            if (d < 0xFFFFFFu) nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+        }
+        // The slices span the frame's surfaces (widened by a depth step each way): thinner where they are.
+        if (nearest <= farthest && slices_ > 1)
+            slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear,
+                                    viewDepthFromWindowDepth(cam, float(double(nearest - std::min(nearest, 1u)) * kScale)),
+                                    viewDepthFromWindowDepth(cam, float(double(std::min(farthest + 1, 0xFFFFFEu)) * kScale)));
         occupied = grid_.markOccupiedSlices(depthReadback_, cam, slicing, transparent);
         occupancyMs = nowMilliseconds() - start;
     }

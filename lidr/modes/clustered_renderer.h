@@ -29,9 +29,10 @@ struct ClusteredOptions {
     int slices = 16;     // view-depth slices, 1..ClusterGrid::kMaxSlices
     ClusterSlicing slicing = ClusterSlicing::Exponential;
     float lightNear = 5.0f;  // NearSlice: the first slice's far end (view depth, scene units; Filament's 5 m)
-    // Olsson's occupied-cluster step: the pre-Z depth read back, and only clusters holding a surface (and, with
-    // transparent meshes, those in front of a tile's farthest surface) get lists. Off: every cluster (the dense
-    // grid). Needs a depth read-back (GlInfo::readDepthStencil); not used under MSAA (frameInfo says so).
+    // Olsson's occupied-cluster step: the pre-Z depth read back, the slices fitted to the frame's nearest and
+    // farthest surface (clusterSlices' fit), and only clusters holding a surface (and, with transparent meshes,
+    // those in front of a tile's farthest surface) get lists. Off: every cluster (the dense grid) over the camera's
+    // depth range. Needs a depth read-back (GlInfo::readDepthStencil); not used under MSAA (frameInfo says so).
     bool occupiedClusters = false;
     bool preZ = true;                  // depth pre-pass, then shading with depth EQUAL (no overdraw shading)
     bool transparency = true;          // draw transparent meshes (opacity < 1) after the opaque ones
