@@ -146,7 +146,23 @@ std::string ModeConfig::label() const {
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
                (volumeDetail ? " detail" : "") + meshes;
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
+    if (mode == "clustered") {
+        if (clusterTileSize == 0 && clusterSlices == 0 && clusterSlicing.empty() && clusterOccupancy < 0) return mode;
+        const ModeConfig c = withClusterDefaults();
+        return "clustered t" + std::to_string(c.clusterTileSize) + " s" + std::to_string(c.clusterSlices) + " " +
+               c.clusterSlicing + (c.clusterOccupancy == 1 ? " occupied" : "");
+    }
     return mode;
+}
+
+ModeConfig ModeConfig::withClusterDefaults() const {
+    const ClusteredOptions defaults;
+    ModeConfig c = *this;
+    if (c.clusterTileSize == 0) c.clusterTileSize = defaults.tileSize;
+    if (c.clusterSlices == 0) c.clusterSlices = defaults.slices;
+    if (c.clusterSlicing.empty()) c.clusterSlicing = clusterSlicingName(defaults.slicing);
+    if (c.clusterOccupancy < 0) c.clusterOccupancy = defaults.occupiedClusters ? 1 : 0;
+    return c;
 }
 
 std::string ModeConfig::key() const {
@@ -226,6 +242,10 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     // (min/max on), as lidr-demo --mode auto does: with ModeConfig's `false` it timed a slower tiled than the
     // tiled rows and kept LIDR where they put tiled ahead (city-255).
     if (c.mode == "tiled") o.tiled.depthBounds = c.tiledDepthBounds;
+    if (c.clusterTileSize) o.clustered.tileSize = c.clusterTileSize;
+    if (c.clusterSlices) o.clustered.slices = c.clusterSlices;
+    if (!c.clusterSlicing.empty()) o.clustered.slicing = parseClusterSlicing(c.clusterSlicing);
+    if (c.clusterOccupancy >= 0) o.clustered.occupiedClusters = c.clusterOccupancy == 1;
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);
@@ -381,7 +401,7 @@ std::vector<std::string> sweepVolumeTests() {
 std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
     SweepGroup base;
     base.modes.clear();
-    for (const char* m : {"lidr", "tiled", "forward-multipass"})  // those the library has, in this order
+    for (const char* m : {"lidr", "tiled", "clustered", "forward-multipass"})  // those the library has, in this order
         for (const std::string& have : availableModes())
             if (have == m) base.modes.push_back(have);
     base.schemes = {"bitshift", "auto"};
@@ -594,6 +614,18 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                     c.tiledDepthBounds = db;
                                     configs.push_back(c);
                                 }
+                            } else if (mode == "clustered") {
+                                for (int tile : g.clusterTileSizes)
+                                    for (int slices : g.clusterSlices)
+                                        for (const std::string& slicing : g.clusterSlicings)
+                                            for (int occupancy : g.clusterOccupancy) {
+                                                ModeConfig c = base;
+                                                c.clusterTileSize = tile;
+                                                c.clusterSlices = slices;
+                                                c.clusterSlicing = slicing;
+                                                c.clusterOccupancy = occupancy;
+                                                configs.push_back(c);
+                                            }
                             } else {
                                 configs.push_back(base);
                             }

@@ -38,14 +38,22 @@ struct ModeConfig {
     bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
     // mode "tiled"
     bool tiledDepthBounds = false;
+    // mode "clustered" (ClusteredOptions): 0, "" and -1 leave the library's default
+    int clusterTileSize = 0, clusterSlices = 0;
+    std::string clusterSlicing;   // exponential, near-slice
+    int clusterOccupancy = -1;    // 0 off, 1 on
     // every mode
     int msaa = 0;
     // With MSAA: LIDR's per-sample index lists (LidrOptions::perSampleIndices) and a reference shaded per
     // sample; else one index list per pixel.
     bool perSample = false;
     bool transparency = true;
-    std::string label() const;    // "lidr bitshift b4 8-bit backface", "tiled min/max", "forward-brute", ...
+    // "lidr bitshift b4 8-bit backface", "tiled min/max", "clustered" (the library's default grid), "clustered t32 s16
+    // exponential occupied" (a grid asked for: tile size, slices, slicing, occupancy), "forward-brute", ...
+    std::string label() const;
     std::string key() const;      // label + msaa + transparency: unique per configuration
+    // A copy with the clustered grid's unset fields filled with the library's defaults (what the row ran with).
+    ModeConfig withClusterDefaults() const;
 };
 
 // Render modes the bench can build: the library's factory where it has one, in its order.
@@ -73,6 +81,10 @@ struct SweepGroup {
     std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
+    // The clustered grids (cartesian, like the rest); the defaults: the library's one grid.
+    std::vector<int> clusterTileSizes{0}, clusterSlices{0};
+    std::vector<std::string> clusterSlicings{""};
+    std::vector<int> clusterOccupancy{-1};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
     std::vector<int> volumeTileSizes{16};
@@ -113,7 +125,7 @@ std::vector<SweepGroup> fullPreset();
 // The scaling sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N =
 // 64 .. 16384) and "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), each
 // over LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled
-// min/max and forward-multipass. `quick`: a seconds-long version (tiny resolution, fewer points) for tests.
+// min/max, clustered (the default grid) and forward-multipass. `quick`: a seconds-long version (tiny resolution, fewer points) for tests.
 std::vector<std::string> sweepNames();
 // Throws lidr::Error naming the valid sweeps.
 std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick = false);

@@ -89,7 +89,8 @@ const std::vector<std::string>& resultColumns() {
         "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
         "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls", "true_light_pixels",
         "volume_fragments", "volume_fragments_per_light_pixel", "shadow_casters", "shadow_maps_first_frame",
-        "shadow_maps_first_frame_ms", "shadow_maps_later_frames"};
+        "shadow_maps_first_frame_ms", "shadow_maps_later_frames", "cluster_tile_size", "cluster_slices",
+        "cluster_slicing", "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
     return c;
 }
 
@@ -124,6 +125,9 @@ std::vector<std::string> csvCells(const Row& r) {
     const ModeConfig& c = r.run.config;
     const bool lidr = c.mode == "lidr";
     auto lists = [&](auto v) { return r.hasLists ? std::to_string(v) : std::string(); };
+    auto dropped = [&](auto v) { return r.hasLists || r.hasPixelLists ? std::to_string(v) : std::string(); };
+    const bool clustered = c.mode == "clustered";
+    const ModeConfig grid = c.withClusterDefaults();
     auto err = [&](const std::string& v) { return r.hasError ? v : std::string(); };
     return {std::to_string(r.id), r.run.group, r.run.scene, std::to_string(r.run.width), std::to_string(r.run.height),
             std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
@@ -136,7 +140,7 @@ std::vector<std::string> csvCells(const Row& r) {
             lidr ? num(r.lightVolumeMs) : "", lidr ? num(r.lightVolumeShare()) : "", std::to_string(r.lightDataBytes),
             std::to_string(r.drawnLights), err(num(r.error.rmse, 5)), err(num(finitePsnr(r.error.psnr), 3)),
             err(std::to_string(r.error.maxAbsError)), err(std::to_string(r.error.differingPixels)),
-            err(std::to_string(r.error.comparedPixels)), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
+            err(std::to_string(r.error.comparedPixels)), dropped(r.droppedLightPixels), dropped(r.pixelsWithDrops),
             lists(r.pixelsOverBudget), lists(r.maxMarked), lists(r.invalidSlots),
             r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : "", std::to_string(r.sceneTriangles),
             std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max),
@@ -146,7 +150,11 @@ std::vector<std::string> csvCells(const Row& r) {
             std::to_string(r.glCalls.drawCalls), r.trueLightPixels >= 0 ? std::to_string(r.trueLightPixels) : "",
             r.volumeFragments >= 0 ? std::to_string(r.volumeFragments) : "",
             r.volumeEfficiency() >= 0 ? num(r.volumeEfficiency(), 3) : "", std::to_string(r.shadowCasters),
-            std::to_string(r.shadowMapsFirst), num(r.shadowMapsFirstMs), std::to_string(r.shadowMapsLater)};
+            std::to_string(r.shadowMapsFirst), num(r.shadowMapsFirstMs), std::to_string(r.shadowMapsLater),
+            clustered ? std::to_string(grid.clusterTileSize) : "", clustered ? std::to_string(grid.clusterSlices) : "",
+            clustered ? grid.clusterSlicing : "", clustered ? std::to_string(grid.clusterOccupancy) : "",
+            r.hasPixelLists ? std::to_string(r.extraLightPixels) : "",
+            r.hasPixelLists ? num(r.extraPerTruePair(), 3) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -168,6 +176,11 @@ nlohmann::json rowJson(const Row& r) {
     if (r.autoBudget || r.autoIndexBits)
         j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
+    if (c.mode == "clustered") {  // the grid it ran with (the library's defaults where the run left them)
+        const ModeConfig grid = c.withClusterDefaults();
+        j["clustered"] = {{"tile_size", grid.clusterTileSize}, {"slices", grid.clusterSlices},
+                          {"slicing", grid.clusterSlicing}, {"occupancy", grid.clusterOccupancy == 1}};
+    }
     j["msaa"] = c.msaa;
     j["per_sample"] = c.perSample;
     j["transparency"] = c.transparency;
@@ -203,6 +216,10 @@ nlohmann::json rowJson(const Row& r) {
                       {"invalid_slots", r.invalidSlots}, {"psnr_within_budget_db", finitePsnr(r.psnrWithinBudget)},
                       {"true_light_pixels", r.trueLightPixels}, {"volume_fragments", r.volumeFragments},
                       {"volume_fragments_per_light_pixel", r.volumeEfficiency()}};
+    if (r.hasPixelLists)
+        j["pixel_lists"] = {{"dropped_light_pixels", r.droppedLightPixels}, {"pixels_with_drops", r.pixelsWithDrops},
+                            {"true_light_pixels", r.trueLightPixels}, {"extra_light_pixels", r.extraLightPixels},
+                            {"extra_per_true_pair", r.extraPerTruePair()}};
     return j;
 }
 
@@ -514,7 +531,9 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
     for (const auto& t : methods) o << t << " ";
     o << "(cpu-glfinish: CPU time around glFinish per pass; gpu-timer-query: GL timer queries)\n";
     o << "- PSNR 999 means identical to the reference; error is against forward-brute with the same MSAA and "
-         "transparency; \"dropped\" counts (pixel, light) pairs a LIDR list missed against the CPU truth.\n\n";
+         "transparency; \"dropped\" counts (pixel, light) pairs a LIDR, tiled or clustered list missed against the CPU "
+         "truth; \"per pair\": LIDR's volume-pass fragments per true light-pixel pair, tiled's and clustered's extra "
+         "pairs (listed lights that do not touch the pixel's surface) per true pair.\n\n";
     const Steadiness st = steadiness(rows_);
     o << "## Steadiness\n\n";
     o << "- verdict: **" << st.verdict << "**\n";
@@ -555,8 +574,8 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
             if (sceneKey(r) == key) { first = &r; break; }
         o << "\n### " << key << " (" << first->sceneLights << " lights, " << first->sceneTriangles << " triangles, max overlap "
           << first->maxOverlap << "; " << first->rounds << " rounds, ratios to " << first->baseline << ")\n\n";
-        o << "| config | frame ms | ratio | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px |\n"
-             "|---|---|---|---|---|---|---|---|---|---|\n";
+        o << "| config | frame ms | ratio | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px "
+             "| per pair |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : rows_) {
             if (sceneKey(r) != key) continue;
             o << "| " << r.run.config.key() << " | " << ms(r.frameMs.median) << " (" << ms(r.frameMs.min) << "-"
@@ -570,7 +589,11 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
                   << " | " << r.error.differingPixels;
             else
                 o << "- | - | - | -";
-            o << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
+            o << " | " << (r.hasLists || r.hasPixelLists ? std::to_string(r.droppedLightPixels) : "-") << " | "
+              << (r.volumeEfficiency() >= 0  ? num(r.volumeEfficiency(), 2) + " fragments"
+                  : r.hasPixelLists          ? num(r.extraPerTruePair(), 2) + " extra"
+                                             : std::string("-"))
+              << " |\n";
         }
     }
     shadowSection(o, rows_);
@@ -725,7 +748,8 @@ std::string passesPlot(const std::vector<const Row*>& allRows, const std::string
     const std::vector<const Row*> rows = passPlotRows(allRows);
     double cap = 0.0;
     for (const Row* r : rows)
-        if (r->run.config.mode == "lidr" || r->run.config.mode == "tiled") cap = std::max(cap, r->frameMs.median);
+        if (r->run.config.mode == "lidr" || r->run.config.mode == "tiled" || r->run.config.mode == "clustered")
+            cap = std::max(cap, r->frameMs.median);
     cap = cap > 0 ? 3.0 * cap : 1e300;
     std::vector<const Row*> shown;
     std::string offScale;
@@ -791,7 +815,7 @@ std::string scalingPlot(const std::map<std::string, std::vector<std::pair<double
 }
 
 // The configurations of the scaling sweeps (sweepPreset): LIDR bitshift at budgets 4 and 8 with any volume
-// test, tiled min/max, forward-multipass; no MSAA, opaque. The line's name leaves out the index width (8-bit
+// test, tiled min/max, clustered, forward-multipass; no MSAA, opaque. The line's name leaves out the index width (8-bit
 // up to 255 lights, 16-bit past that).
 std::string sweepLine(const Row& r) {
     const ModeConfig& c = r.run.config;
@@ -799,7 +823,7 @@ std::string sweepLine(const Row& r) {
     if (c.mode == "lidr" && c.scheme == "bitshift" && (c.budget == 4 || c.budget == 8))
         return "lidr bitshift b" + std::to_string(c.budget) + " " + c.volumeTest;
     if (c.mode == "tiled" && c.tiledDepthBounds) return c.label();
-    if (c.mode == "forward-multipass") return c.mode;
+    if (c.mode == "clustered" || c.mode == "forward-multipass") return c.label();
     return "";
 }
 

@@ -113,6 +113,24 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
     app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
     app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
+    const ClusteredOptions clustered;
+    app.add_option("--cluster-tile-size", clusterTileSize,
+                   "Clustered mode: screen tile edge in pixels, " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
+                       std::to_string(ClusterGrid::kMaxTileSize) + " (default " + std::to_string(clustered.tileSize) + ")");
+    app.add_option("--cluster-slices", clusterSlices,
+                   "Clustered mode: view-depth slices, 1.." + std::to_string(ClusterGrid::kMaxSlices) + " (default " +
+                       std::to_string(clustered.slices) + ")");
+    app.add_option("--cluster-slicing", clusterSlicing,
+                   std::string("Clustered mode: exponential (Doom's: near to far plane) or near-slice (Filament's: one "
+                               "slice to --cluster-light-near, exponential beyond) (default ") +
+                       clusterSlicingName(clustered.slicing) + ")");
+    app.add_option("--cluster-light-near", clusterLightNear,
+                   "Clustered mode, near-slice: the first slice's far end, view depth in scene units (default " +
+                       std::to_string(int(clustered.lightNear)) + ")");
+    app.add_option("--cluster-occupancy", clusterOccupancy,
+                   std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
+                               "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
+                       (clustered.occupiedClusters ? "on" : "off") + ")");
     std::string schemes;
     for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
     app.add_option("--scheme", scheme,
@@ -339,6 +357,37 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.depthBounds = !noDepthBounds;
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
+    const bool clusterOptionSet =
+        clusterTileSize || clusterSlices || clusterSlicing || clusterOccupancy || clusterLightNear;
+    if (clusterOptionSet && o.mode != "clustered" && o.mode != "auto")
+        throw Error("--cluster-* options set the clustered mode's grid; the " + o.mode +
+                    " mode has none (use --mode clustered, or auto)");
+    if (clusterTileSize) {
+        if (*clusterTileSize < ClusterGrid::kMinTileSize || *clusterTileSize > ClusterGrid::kMaxTileSize)
+            throw Error("--cluster-tile-size must be " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
+                        std::to_string(ClusterGrid::kMaxTileSize) + " pixels, got " + std::to_string(*clusterTileSize));
+        o.clustered.tileSize = *clusterTileSize;
+    }
+    if (clusterSlices) {
+        if (*clusterSlices < 1 || *clusterSlices > ClusterGrid::kMaxSlices)
+            throw Error("--cluster-slices must be 1.." + std::to_string(ClusterGrid::kMaxSlices) + ", got " +
+                        std::to_string(*clusterSlices));
+        o.clustered.slices = *clusterSlices;
+    }
+    if (clusterSlicing) o.clustered.slicing = parseClusterSlicing(*clusterSlicing);
+    if (clusterLightNear) {
+        if (o.clustered.slicing != ClusterSlicing::NearSlice)
+            throw Error("--cluster-light-near ends the first slice of --cluster-slicing near-slice; the slicing is " +
+                        std::string(clusterSlicingName(o.clustered.slicing)));
+        if (!(*clusterLightNear > 0.0f) || !std::isfinite(*clusterLightNear))
+            throw Error("--cluster-light-near must be a positive view depth, got " + std::to_string(*clusterLightNear));
+        o.clustered.lightNear = *clusterLightNear;
+    }
+    if (clusterOccupancy) {
+        if (*clusterOccupancy != "on" && *clusterOccupancy != "off")
+            throw Error("--cluster-occupancy must be on or off, got '" + *clusterOccupancy + "'");
+        o.clustered.occupiedClusters = *clusterOccupancy == "on";
+    }
     o.forceFixedLightTable = fixedLightTable;
     outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;

@@ -1,4 +1,4 @@
-// lidr-demo: renders a scene with LIDR (or --mode tiled, forward-multipass, forward-brute) and writes what a
+// lidr-demo: renders a scene with LIDR (or --mode tiled, clustered, forward-multipass, forward-brute) and writes what a
 // person needs to judge it.
 //   --headless (default): render the default room (or --scene FILE) offscreen, compare with the brute-force
 //   reference, write images and a summary to --out DIR; --dump DIR adds the raw artefacts.
@@ -152,7 +152,7 @@ std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::
     return context;
 }
 
-// Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+// Every mode but lidr: the image, the reference and the error, and for tiled and clustered the grid and its heat map.
 // The shadow atlas as a picture (the viewer's and the page's debug view, ShadowAtlas::image), where the frame drew
 // one and the context can read it (ES 2.0 reads no depth texture back).
 void writeShadowAtlas(const Renderer& renderer, const GlInfo& info, const std::string& outDir) {
@@ -244,6 +244,34 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
+    const auto* clustered = dynamic_cast<const ClusteredRenderer*>(renderer.get());
+    if (clustered) {
+        const ClusteredFrameInfo& f = clustered->frameInfo();
+        const ClusteredOptions& co = clustered->options();
+        summary["clustered"] = {{"tile_size", co.tileSize}, {"tiles_x", clustered->grid().tilesX()},
+                                {"tiles_y", clustered->grid().tilesY()}, {"slices", f.slicing.count},
+                                {"slicing", clusterSlicingName(co.slicing)}, {"occupancy", f.occupancyUsed},
+                                {"msaa_samples", clustered->targets().samples()},
+                                {"clusters", clustered->grid().clusterCount()},
+                                {"active_clusters", f.grid.activeClusters}, {"listed_clusters", f.grid.listedClusters},
+                                {"max_cluster_lights", f.grid.maxLights}, {"entries", f.grid.entries},
+                                {"cell_tests", f.grid.cellTests}, {"index_bits", f.indexBits},
+                                {"loop_bound", f.loopBound}, {"list_texture_rows", f.listTextureRows},
+                                {"grid_bytes", clustered->gridBytes()}, {"list_bytes", clustered->listBytes()},
+                                {"light_table_bytes", clustered->lightTable().bytes()},
+                                {"cpu_assign_ms_last_frame", f.assignMilliseconds},
+                                {"cpu_occupancy_ms_last_frame", f.occupancyMilliseconds}};
+        if (clustered->targets().samples() == 0) {
+            writePng(path(outDir, "cluster_heatmap.png"), clustered->clusterHeatMap(16));
+            outputs += ", cluster_heatmap.png";
+        }
+        s << "clustered  " << co.tileSize << " px tiles (" << clustered->grid().tilesX() << "x"
+          << clustered->grid().tilesY() << ") x " << f.slicing.count << " " << clusterSlicingName(co.slicing)
+          << " slices, occupancy " << (f.occupancyUsed ? "on" : "off") << ", longest list " << f.grid.maxLights << ", "
+          << f.grid.entries << " entries in " << f.grid.listedClusters << " clusters, " << f.indexBits
+          << "-bit indices, CPU assignment " << f.assignMilliseconds << " ms"
+          << (f.occupancyUsed ? ", occupancy " + std::to_string(f.occupancyMilliseconds) + " ms" : std::string()) << "\n";
+    }
     s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
@@ -277,6 +305,20 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
             summary["tiled"]["max_overlap_touching"] = truth.maxOverlap();
             s << "lists      light-pixels missing from tile lists: " << missing << ", max overlap "
               << truth.maxOverlap() << "\n";
+        }
+        if (clustered && mo.msaaSamples == 0) {  // every light that touches an opaque pixel in its cluster's list
+            const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+            const CoverageTruth truth = computeCoverage(clustered->targets().readDepth(), cam, lights);
+            const ClusterGrid& g = clustered->grid();
+            const PixelListCheck c = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
+            summary["clustered"]["missing_light_pixels"] = c.missingPairs;
+            summary["clustered"]["true_light_pixels"] = c.truthPairs;
+            summary["clustered"]["extra_light_pixels"] = c.extraPairs;
+            summary["clustered"]["extra_per_true_pair"] = c.extraPerTruePair();
+            summary["clustered"]["max_overlap_touching"] = truth.maxOverlap();
+            s << "lists      light-pixels missing from cluster lists: " << c.missingPairs << " of " << c.truthPairs
+              << "; extra (listed, not touching the surface): " << c.extraPairs << ", " << c.extraPerTruePair()
+              << " per true pair; max overlap " << truth.maxOverlap() << "\n";
         }
     }
     s << "outputs    " << outDir << "/{" << outputs << "}, summary.json\n";
