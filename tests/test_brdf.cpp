@@ -110,7 +110,7 @@ Scene sweepScene() {
 TEST_CASE("every mode's pixels are the BRDF model's after the output transform (metallic x roughness sweep)",
           "[brdf]") {
     testContext();
-    std::vector<std::string> modes = {"forward-brute", "lidr", "tiled"};
+    std::vector<std::string> modes = {"forward-brute", "lidr", "clustered", "tiled"};
     if (testGl().gles) modes.pop_back();  // tiled's default depth bounds are refused on ES 2.0
     const std::string mode = GENERATE_COPY(from_range(modes));
     // With directional lights too (not indexed: each mode adds them in its forward pass): a low warm sun, a

@@ -73,8 +73,8 @@ Scene emissiveScene(const glm::vec3& emissive) {
 
 std::vector<std::string> modesOnThisContext() {
     // tiled's default depth bounds are refused on ES 2.0 (doc/contexts.md); auto needs occlusion queries
-    if (testGl().gles) return {"lidr", "forward-multipass", "forward-brute"};
-    return {"lidr", "tiled", "forward-multipass", "forward-brute"};
+    if (testGl().gles) return {"lidr", "clustered", "forward-multipass", "forward-brute"};
+    return {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute"};
 }
 
 // Pixels of `image` whose RGB is not the background (0): their count, and the largest distance from `expected`.

@@ -325,62 +325,106 @@ void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLig
     }
 }
 
-std::vector<uint64_t> ClusterGrid::markOccupiedSlices(const std::vector<float>& windowDepth, const CameraMatrices& camera,
-                                                      const ClusterSlices& slices, bool transparentReach,
-                                                      float depthMargin) const {
-    if (windowDepth.size() != size_t(width_) * size_t(height_))
-        throw Error("cluster grid: " + std::to_string(windowDepth.size()) + " depths for a " + std::to_string(width_) +
-                    "x" + std::to_string(height_) + " grid");
-    if (slices.count != slices_)
-        throw Error("cluster grid: " + std::to_string(slices.count) + " slices given, the grid has " +
-                    std::to_string(slices_));
-    // Slice k holds the window depths [lo[k], hi[k]]: its widened cell's, widened again by depthMargin (the depth
-    // buffer's rounding against the fragment's own depth). Both rise with k, so a depth's slices are a run.
-    const double absolute = absoluteSliceMargin(camera);
-    float lo[kMaxSlices], hi[kMaxSlices];
-    for (int k = 0; k < slices_; ++k) {
-        double n, f;
-        widenedSlice(slices, k, absolute, n, f);
-        lo[k] = k == 0 ? -1.0f : float(windowDepthOf(camera.projection, std::max(n, 1e-30)) - depthMargin);
-        hi[k] = k == slices_ - 1 ? 2.0f : float(windowDepthOf(camera.projection, f) + depthMargin);
-    }
-    std::vector<uint64_t> masks(size_t(tileCount()), 0u);
-    std::vector<uint8_t> background(transparentReach ? size_t(tileCount()) : 0, 0);
+namespace {
+
+// The per-pixel marking of markOccupiedSlices, for float window depths (Depth float, Threshold float) and for
+// packed DEPTH24_STENCIL8 words read back as they are stored (Depth uint32_t, the depth in the top 24 bits;
+// Threshold int64_t in 24-bit steps): slice k holds the depths [lo[k], hi[k]], both rising with k, so a depth's
+// slices are a run.
+template <typename Depth, typename Threshold, typename Value>
+void markSlices(const Depth* depth, int width, int height, int tileSize, int tilesX, int slices, const Threshold* lo,
+                const Threshold* hi, Threshold background, Value value, std::vector<uint64_t>& masks,
+                std::vector<uint8_t>* emptyTiles) {
     // The run of slices of the last depth looked up, and the depths that have the very same run (a depth w has
     // slices first..last: hi[first - 1] < w <= hi[first], lo[last] <= w < lo[last + 1]); neighbouring pixels
     // mostly share it.
-    float aboveLo = 2.0f, upToHi = -1.0f, fromLo = 2.0f, belowLo = -1.0f;
+    Threshold aboveLo = 1, upToHi = 0, fromLo = 1, belowLo = 0;
     uint64_t runBits = 0;
-    for (int y = 0; y < height_; ++y) {
-        const float* row = windowDepth.data() + size_t(y) * size_t(width_);
-        const int rowTile = (y / tileSize_) * tilesX_;
-        for (int tx = 0; tx < tilesX_; ++tx) {
+    for (int y = 0; y < height; ++y) {
+        const Depth* row = depth + size_t(y) * size_t(width);
+        const int rowTile = (y / tileSize) * tilesX;
+        for (int tx = 0; tx < tilesX; ++tx) {
             uint64_t bits = 0;
             bool empty = false;
-            const int xEnd = std::min(width_, (tx + 1) * tileSize_);
-            for (int x = tx * tileSize_; x < xEnd; ++x) {
-                const float w = row[x];
-                if (w >= 1.0f) {
+            const int xEnd = std::min(width, (tx + 1) * tileSize);
+            for (int x = tx * tileSize; x < xEnd; ++x) {
+                const Threshold w = value(row[x]);
+                if (w >= background) {
                     empty = true;
                     continue;
                 }
                 if (!(w > aboveLo && w <= upToHi && w >= fromLo && w < belowLo)) {
                     int first = 0;
-                    while (hi[first] < w) ++first;  // the last slice's hi is 2: always found
+                    while (hi[first] < w) ++first;  // the last slice's hi is past every depth: always found
                     int last = first;
-                    while (last + 1 < slices_ && lo[last + 1] <= w) ++last;
-                    aboveLo = first > 0 ? hi[first - 1] : -2.0f;
+                    while (last + 1 < slices && lo[last + 1] <= w) ++last;
+                    aboveLo = first > 0 ? hi[first - 1] : lo[0] - 1;
                     upToHi = hi[first];
                     fromLo = lo[last];
-                    belowLo = last + 1 < slices_ ? lo[last + 1] : 3.0f;
+                    belowLo = last + 1 < slices ? lo[last + 1] : hi[slices - 1] + 1;
                     runBits = 0;
                     for (int s = first; s <= last; ++s) runBits |= uint64_t(1) << s;
                 }
                 bits |= runBits;
             }
             masks[size_t(rowTile + tx)] |= bits;
-            if (empty && transparentReach) background[size_t(rowTile + tx)] = 1;
+            if (empty && emptyTiles) (*emptyTiles)[size_t(rowTile + tx)] = 1;
         }
+    }
+}
+
+}  // namespace
+
+std::vector<uint64_t> ClusterGrid::markOccupiedSlices(const std::vector<float>& windowDepth, const CameraMatrices& camera,
+                                                      const ClusterSlices& slices, bool transparentReach,
+                                                      float depthMargin) const {
+    if (windowDepth.size() != size_t(width_) * size_t(height_))
+        throw Error("cluster grid: " + std::to_string(windowDepth.size()) + " depths for a " + std::to_string(width_) +
+                    "x" + std::to_string(height_) + " grid");
+    return markOccupied(windowDepth.data(), nullptr, camera, slices, transparentReach, depthMargin);
+}
+
+std::vector<uint64_t> ClusterGrid::markOccupiedSlicesPacked(const std::vector<uint32_t>& packedDepthStencil,
+                                                            const CameraMatrices& camera, const ClusterSlices& slices,
+                                                            bool transparentReach, float depthMargin) const {
+    if (packedDepthStencil.size() != size_t(width_) * size_t(height_))
+        throw Error("cluster grid: " + std::to_string(packedDepthStencil.size()) + " depths for a " +
+                    std::to_string(width_) + "x" + std::to_string(height_) + " grid");
+    return markOccupied(nullptr, packedDepthStencil.data(), camera, slices, transparentReach, depthMargin);
+}
+
+std::vector<uint64_t> ClusterGrid::markOccupied(const float* windowDepth, const uint32_t* packed,
+                                                const CameraMatrices& camera, const ClusterSlices& slices,
+                                                bool transparentReach, float depthMargin) const {
+    if (slices.count != slices_)
+        throw Error("cluster grid: " + std::to_string(slices.count) + " slices given, the grid has " +
+                    std::to_string(slices_));
+    // Slice k holds the window depths [lo[k], hi[k]]: its widened cell's, widened again by depthMargin (the depth
+    // buffer's rounding against the fragment's own depth); the first reaches below 0, the last above 1.
+    const double absolute = absoluteSliceMargin(camera);
+    double lo[kMaxSlices], hi[kMaxSlices];
+    for (int k = 0; k < slices_; ++k) {
+        double n, f;
+        widenedSlice(slices, k, absolute, n, f);
+        lo[k] = k == 0 ? -1.0 : windowDepthOf(camera.projection, std::max(n, 1e-30)) - depthMargin;
+        hi[k] = k == slices_ - 1 ? 2.0 : windowDepthOf(camera.projection, f) + depthMargin;
+    }
+    std::vector<uint64_t> masks(size_t(tileCount()), 0u);
+    std::vector<uint8_t> background(transparentReach ? size_t(tileCount()) : 0, 0);
+    std::vector<uint8_t>* empty = transparentReach ? &background : nullptr;
+    if (windowDepth) {
+        float loF[kMaxSlices], hiF[kMaxSlices];
+        for (int k = 0; k < slices_; ++k) loF[k] = float(lo[k]), hiF[k] = float(hi[k]);
+        markSlices(windowDepth, width_, height_, tileSize_, tilesX_, slices_, loF, hiF, 1.0f,
+                   [](float w) { return w; }, masks, empty);
+    } else {
+        // In 24-bit steps (w = d / (2^24 - 1)), rounded outwards.
+        constexpr double kSteps = 16777215.0;
+        int64_t loI[kMaxSlices], hiI[kMaxSlices];
+        for (int k = 0; k < slices_; ++k)
+            loI[k] = int64_t(std::floor(lo[k] * kSteps)), hiI[k] = int64_t(std::ceil(hi[k] * kSteps));
+        markSlices(packed, width_, height_, tileSize_, tilesX_, slices_, loI, hiI, int64_t(16777215),
+                   [](uint32_t d) { return int64_t(d >> 8); }, masks, empty);
     }
     if (transparentReach) {
         const uint64_t all = slices_ == 64 ? ~uint64_t(0) : (uint64_t(1) << slices_) - 1;

@@ -109,6 +109,11 @@ public:
     std::vector<uint64_t> markOccupiedSlices(const std::vector<float>& windowDepth, const CameraMatrices& camera,
                                              const ClusterSlices& slices, bool transparentReach,
                                              float depthMargin = 1e-6f) const;
+    // The same from DEPTH24_STENCIL8 words as glReadPixels gives them with GL_UNSIGNED_INT_24_8 (the depth in the
+    // top 24 bits, 2^24 - 1 no surface): no conversion to float.
+    std::vector<uint64_t> markOccupiedSlicesPacked(const std::vector<uint32_t>& packedDepthStencil,
+                                                   const CameraMatrices& camera, const ClusterSlices& slices,
+                                                   bool transparentReach, float depthMargin = 1e-6f) const;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -133,6 +138,9 @@ public:
     int indexBits() const { return indexBits_; }
 
 private:
+    std::vector<uint64_t> markOccupied(const float* windowDepth, const uint32_t* packed, const CameraMatrices& camera,
+                                       const ClusterSlices& slices, bool transparentReach, float depthMargin) const;
+
     int width_, height_, tileSize_, tilesX_, tilesY_, slices_;
     int indexBits_ = 8;
     std::vector<float> slopeX_, slopeY_;  // tile boundaries: tilesX + 1 and tilesY + 1 view-space slopes

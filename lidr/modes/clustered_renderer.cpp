@@ -114,27 +114,25 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         TimedPass occupancyTime(timer_, "cluster-occupancy");
         const double start = nowMilliseconds();
         const int w = targets_.width(), h = targets_.height();
-        depthReadback_.resize(size_t(w) * size_t(h));
-        packedDepth_.resize(depthReadback_.size());
+        packedDepth_.resize(size_t(w) * size_t(h));
         targets_.bindColor();
-        // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read), converted
-        // as a float read would: the 24-bit depth times 1 / (2^24 - 1).
+        // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read): the
+        // depth in the top 24 bits, compared in 24-bit steps without a conversion to float.
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glReadPixels(0, 0, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packedDepth_.data());
         checkGl("clustered: depth read-back");
-        constexpr double kScale = 1.0 / 16777215.0;
         uint32_t nearest = 0xFFFFFFu, farthest = 0u;  // of the surfaces (24-bit depths below the cleared 1.0)
-        for (size_t i = 0; i < packedDepth_.size(); ++i) {
-            const uint32_t d = packedDepth_[i] >> 8;
-            depthReadback_[i] = float(double(d) * kScale);
+        for (const uint32_t word : packedDepth_) {
+            const uint32_t d = word >> 8;
             if (d < 0xFFFFFFu) nearest = std::min(nearest, d), farthest = std::max(farthest, d);
         }
         // The slices span the frame's surfaces (widened by a depth step each way): thinner where they are.
+        constexpr double kScale = 1.0 / 16777215.0;
         if (nearest <= farthest && slices_ > 1)
             slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear,
                                     viewDepthFromWindowDepth(cam, float(double(nearest - std::min(nearest, 1u)) * kScale)),
                                     viewDepthFromWindowDepth(cam, float(double(std::min(farthest + 1, 0xFFFFFEu)) * kScale)));
-        occupied = grid_.markOccupiedSlices(depthReadback_, cam, slicing, transparent);
+        occupied = grid_.markOccupiedSlicesPacked(packedDepth_, cam, slicing, transparent);
         occupancyMs = nowMilliseconds() - start;
     }
 

@@ -114,8 +114,7 @@ private:
     int slices_ = 1;  // options_.slices, or 1 without highp fragment floats
     CameraMatrices lastCamera_;
     ClusteredFrameInfo frameInfo_;
-    std::vector<float> depthReadback_;
-    std::vector<uint32_t> packedDepth_;
+    std::vector<uint32_t> packedDepth_;  // the occupied-cluster step's depth read-back
     // pixelSlices(): the slice-output program and its target, made on first use.
     mutable gl::Program sliceProgram_;
     mutable gl::Texture sliceTexture_;
