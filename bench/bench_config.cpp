@@ -96,15 +96,8 @@ Scene loadBenchScene(const std::string& name, uint32_t seed) {
         o.seed = seed;
         return makeControlledOverlapScene(o);
     }
-    if (startsWith(name, "many-")) {
-        const size_t dash = name.find('-', 5);
-        const int n = dash == std::string::npos ? -1 : positiveInt(name.substr(5, dash - 5));
-        const std::string view = dash == std::string::npos ? "" : name.substr(dash + 1);
-        if (n < 1 || (view != "top" && view != "fp"))
-            throw Error("bad scene name '" + name + "': use many-N-top or many-N-fp (valid: " + sceneNameHelp() + ")");
-        return makeManyLightScene(n, view == "top" ? ManyLightView::TopDown : ManyLightView::FirstPerson, 1024, 768,
-                                  seed);
-    }
+    Scene many;
+    if (makeManyLightSceneByName(name, many, seed)) return many;
     if (startsWith(name, "heavy-")) {
         std::string t = name.substr(6);
         long scale = 1;
@@ -382,11 +375,12 @@ std::vector<SweepGroup> fullPreset() {
     spots.volumeTiles = {true};
     groups.push_back(spots);
     for (const std::string& sweep : sweepNames())
-        for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
+        if (sweep != "clusters")  // the clustered grid's own sweep (doc/clustered.md): run it by name
+            for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;
 }
 
-std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows"}; }
+std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows", "clusters"}; }
 
 std::vector<std::string> sweepVolumeTests() {
     std::vector<std::string> tests{"backface"};
@@ -469,6 +463,32 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
             g.reference = false;
             groups.push_back(g);
         }
+        return groups;
+    }
+    if (name == "clusters") {
+        // The clustered grid against the bench scenes (doc/clustered.md, "Sweep"): tile sizes x slice counts x both
+        // slicings over the dense grid, and the occupied-cluster step at the middle sizes; tiled forward (min/max)
+        // and LIDR's default beside them. Every clustered row is judged against the reference and the CPU truth.
+        SweepGroup grids = base;
+        grids.name = "clusters";
+        grids.scenes = quick ? std::vector<std::string>{"hall-64"}
+                             : std::vector<std::string>{"room", "hall-255", "hall-1024", "city-255", "many-4096-top"};
+        grids.resolutions = {quick ? std::make_pair(96, 72) : std::make_pair(1024, 768)};
+        grids.modes = {"clustered", "tiled", "lidr"};
+        grids.schemes = {"auto"};
+        grids.volumeTests = {"sphere"};
+        grids.indexBits = {16};
+        grids.clusterTileSizes = quick ? std::vector<int>{16, 32} : std::vector<int>{16, 32, 64};
+        grids.clusterSlices = quick ? std::vector<int>{8, 16} : std::vector<int>{8, 16, 32, 64};
+        grids.clusterSlicings = {"exponential", "near-slice"};
+        grids.clusterOccupancy = {0};
+        groups.push_back(grids);
+        SweepGroup occupied = grids;
+        occupied.modes = {"clustered"};
+        occupied.clusterSlices = quick ? std::vector<int>{16} : std::vector<int>{16, 32};
+        occupied.clusterSlicings = {"exponential"};
+        occupied.clusterOccupancy = {1};
+        groups.push_back(occupied);
         return groups;
     }
     throw Error("unknown sweep '" + name + "' (valid: " + joinNames(sweepNames()) + ")");

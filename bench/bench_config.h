@@ -122,10 +122,12 @@ std::vector<SweepGroup> quickPreset();
 // fullPreset() includes the scaling sweeps (sweepPreset("lights"), sweepPreset("triangles")).
 std::vector<SweepGroup> fullPreset();
 
-// The scaling sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N =
-// 64 .. 16384) and "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), each
-// over LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled
-// min/max, clustered (the default grid) and forward-multipass. `quick`: a seconds-long version (tiny resolution, fewer points) for tests.
+// The sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N = 64 .. 16384),
+// "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), "hall" and "shadows", each over
+// LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled min/max,
+// clustered (the default grid) and forward-multipass; and "clusters", the clustered grid's own sweep of tile sizes,
+// slice counts, slicings and occupancy on the bench scenes (doc/clustered.md; not part of fullPreset). `quick`: a
+// seconds-long version (tiny resolution, fewer points) for tests.
 std::vector<std::string> sweepNames();
 // Throws lidr::Error naming the valid sweeps.
 std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick = false);

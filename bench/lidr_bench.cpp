@@ -435,7 +435,9 @@ int main(int argc, char** argv) {
     auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
     app.add_option("--sweep", sweeps,
                    "Scaling sweeps instead of the lists: " + joinNames(sweepNames()) +
-                       " (frame time against light count / scene triangles / hall light count / shadow casters in the hall); with --quick, their seconds-long versions")
+                       " (frame time against light count / scene triangles / hall light count / shadow casters in the hall; the "
+                       "clustered grid's tile sizes, slices, slicings and occupancy on the bench scenes); with --quick, "
+                       "their seconds-long versions")
         ->excludes(fullFlag);
     app.add_flag("--no-progress", noProgress, "No progress bar (it is also off when stderr is not a terminal)");
     app.add_flag("--no-plots", noPlots, "Do not run gnuplot");

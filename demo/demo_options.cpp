@@ -35,7 +35,8 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 
 void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, or a "
-                   "built-in occluded bench scene: hall-N / city-N (N lights, e.g. hall-255), spot bench scene spots-N / spots-N-points; default: the built-in room");
+                   "built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), spots-N / spots-N-points, "
+                   "many-N-top / many-N-fp (the room's geometry with N lights); default: the built-in room");
     app.add_flag("--smooth-normals", smoothNormals,
                  "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
                  "model may say otherwise with \"smooth_normals\")");
@@ -68,7 +69,8 @@ Scene SceneChoice::load() const {
         o.seed = seed;
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
-    } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed)) {
+    } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed) ||
+               makeManyLightSceneByName(sceneFile, scene, seed)) {
         if (time) scene.time = float(*time);
     } else {
         ObjImportOptions objOptions;

@@ -32,6 +32,7 @@
 #include "lidr/render/material_variants.h"
 #include "lidr/render/present.h"
 #include "lidr/render/shadow_atlas.h"
+#include "lidr/scene/sphere_bounds.h"
 #include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -310,7 +311,28 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
             const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
             const CoverageTruth truth = computeCoverage(clustered->targets().readDepth(), cam, lights);
             const ClusterGrid& g = clustered->grid();
-            const PixelListCheck c = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
+            const std::vector<int> gpuSlices = clustered->pixelSlices();
+            std::vector<int> pixelClusters(gpuSlices.size(), -1);
+            // Slice boundaries: pixels whose GPU slice is not the slice of their depth buffer's view depth, and how
+            // near a boundary the farthest of them lies (relative; the cell margins cover the GPU's rounding).
+            const ImageFloat depth = clustered->targets().readDepth();
+            const ClusterSlices& slicing = clustered->frameInfo().slicing;
+            long sliceMismatches = 0;
+            double worstMismatch = 0.0;
+            for (int y = 0; y < scene.height; ++y)
+                for (int x = 0; x < scene.width; ++x) {
+                    const size_t p = size_t(y) * size_t(scene.width) + size_t(x);
+                    if (gpuSlices[p] < 0) continue;
+                    pixelClusters[p] = g.clusterOf(g.tileOf(x, scene.height - 1 - y), gpuSlices[p]);
+                    const double d = viewDepthFromWindowDepth(cam, depth.pixels[p]);
+                    const int cpu = slicing.sliceOf(d);
+                    if (cpu == gpuSlices[p]) continue;
+                    ++sliceMismatches;
+                    worstMismatch = std::max(worstMismatch, std::abs(d / slicing.boundary(std::max(cpu, gpuSlices[p])) - 1.0));
+                }
+            summary["clustered"]["slice_mismatch_pixels"] = sliceMismatches;
+            summary["clustered"]["slice_mismatch_worst_relative"] = worstMismatch;
+            const PixelListCheck c = checkPixelLists(truth, pixelClusters, g.entries(), g.offsets(), g.counts());
             summary["clustered"]["missing_light_pixels"] = c.missingPairs;
             summary["clustered"]["true_light_pixels"] = c.truthPairs;
             summary["clustered"]["extra_light_pixels"] = c.extraPairs;
@@ -319,6 +341,8 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
             s << "lists      light-pixels missing from cluster lists: " << c.missingPairs << " of " << c.truthPairs
               << "; extra (listed, not touching the surface): " << c.extraPairs << ", " << c.extraPerTruePair()
               << " per true pair; max overlap " << truth.maxOverlap() << "\n";
+            s << "slices     pixels in another slice than their depth buffer's view depth: " << sliceMismatches
+              << " (at most " << worstMismatch << " relative from the boundary)\n";
         }
     }
     s << "outputs    " << outDir << "/{" << outputs << "}, summary.json\n";

@@ -19,6 +19,7 @@ inline constexpr void (*glMinSampleShading)(GLfloat) = nullptr;
 inline constexpr void (*glGetQueryObjectui64v)(GLuint, GLenum, GLuint64*) = nullptr;
 
 #define GL_RGBA32F_ARB 0x8814
+#define GL_LUMINANCE8 0x8040
 #define GL_LUMINANCE8_ALPHA8 0x8045
 #define GL_SAMPLES_PASSED 0x8914
 #define GL_DEPTH_CLAMP 0x864F

@@ -25,10 +25,13 @@
 namespace lidr {
 
 struct ClusteredOptions {
-    int tileSize = 64;   // screen tile edge in pixels, ClusterGrid::kMinTileSize..kMaxTileSize
-    int slices = 16;     // view-depth slices, 1..ClusterGrid::kMaxSlices
-    ClusterSlicing slicing = ClusterSlicing::Exponential;
-    float lightNear = 5.0f;  // NearSlice: the first slice's far end (view depth, scene units; Filament's 5 m)
+    // The defaults: the fastest grid of the sweep on the bench scenes at 1024x768 (doc/clustered.md, "Sweep").
+    int tileSize = 16;   // screen tile edge in pixels, ClusterGrid::kMinTileSize..kMaxTileSize
+    int slices = 32;     // view-depth slices, 1..ClusterGrid::kMaxSlices
+    ClusterSlicing slicing = ClusterSlicing::NearSlice;
+    // NearSlice: the first slice's far end (view depth, scene units; Filament's 5 m). Measured against the far plane /
+    // 20 (the room's 3 m): many-4096-top's extra pairs per true pair 1.11 at 5 against 3.29 at 3 (doc/clustered.md).
+    float lightNear = 5.0f;
     // Olsson's occupied-cluster step: the pre-Z depth read back, the slices fitted to the frame's nearest and
     // farthest surface (clusterSlices' fit), and only clusters holding a surface (and, with transparent meshes,
     // those in front of a tile's farthest surface) get lists. Off: every cluster (the dense grid) over the camera's
