@@ -145,6 +145,7 @@ std::string ModeConfig::label() const {
         return "clustered t" + std::to_string(c.clusterTileSize) + " s" + std::to_string(c.clusterSlices) + " " +
                c.clusterSlicing + (c.clusterOccupancy == 1 ? " occupied" : "");
     }
+    if (mode == "forward-multipass" && multipassEightBit) return mode + " 8-bit";
     return mode;
 }
 
@@ -239,6 +240,7 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     if (c.clusterSlices) o.clustered.slices = c.clusterSlices;
     if (!c.clusterSlicing.empty()) o.clustered.slicing = parseClusterSlicing(c.clusterSlicing);
     if (c.clusterOccupancy >= 0) o.clustered.occupiedClusters = c.clusterOccupancy == 1;
+    o.multipass.halfFloatAccumulation = !(c.mode == "forward-multipass" && c.multipassEightBit);
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);
@@ -646,6 +648,12 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                                 c.clusterOccupancy = occupancy;
                                                 configs.push_back(c);
                                             }
+                            } else if (mode == "forward-multipass") {
+                                for (bool eightBit : g.multipassEightBit) {
+                                    ModeConfig c = base;
+                                    c.multipassEightBit = eightBit;
+                                    configs.push_back(c);
+                                }
                             } else {
                                 configs.push_back(base);
                             }

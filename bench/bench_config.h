@@ -42,6 +42,9 @@ struct ModeConfig {
     int clusterTileSize = 0, clusterSlices = 0;
     std::string clusterSlicing;   // exponential, near-slice
     int clusterOccupancy = -1;    // 0 off, 1 on
+    // mode "forward-multipass": its passes summed in the 8-bit colour target (MultipassOptions::
+    // halfFloatAccumulation false) rather than in half float where the context has it
+    bool multipassEightBit = false;
     // every mode
     int msaa = 0;
     // With MSAA: LIDR's per-sample index lists (LidrOptions::perSampleIndices) and a reference shaded per
@@ -85,6 +88,7 @@ struct SweepGroup {
     std::vector<int> clusterTileSizes{0}, clusterSlices{0};
     std::vector<std::string> clusterSlicings{""};
     std::vector<int> clusterOccupancy{-1};
+    std::vector<bool> multipassEightBit{false};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
     std::vector<int> volumeTileSizes{16};

@@ -39,6 +39,7 @@ struct Row {
     std::vector<PassStat> passes;
     double lightVolumeMs = 0.0;        // median of the light-volume passes' sum (LIDR), else 0
     size_t lightDataBytes = 0;
+    std::string multipassAccumulation;  // forward-multipass: where its passes summed ("half-float", "8-bit")
     int drawnLights = 0;
     GlCallCounters glCalls;            // the last measured frame's, through the state cache (lidr/gl/gl_state.h)
     // LIDR's automatic configuration, last measured frame: budget and width chosen, re-packs over all frames.

@@ -25,6 +25,7 @@
 #include "bench_report.h"
 #include "lidr/base/error.h"
 #include "lidr/modes/auto_mode_renderer.h"
+#include "lidr/modes/multipass_forward_renderer.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/base/gl.h"
@@ -361,7 +362,7 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"}, clusterTileSizes, clusterSlices,
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, multipassAccumulation{"auto"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"}, clusterTileSizes, clusterSlices,
         clusterSlicings, clusterOccupancy;
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
@@ -387,6 +388,10 @@ int main(int argc, char** argv) {
     app.add_option("--cluster-occupancy", clusterOccupancy,
                    "Clustered mode: lists only for clusters holding a surface (the pre-Z depth read back): on, off "
                    "(default: the library's)");
+    app.add_option("--multipass-accumulation", multipassAccumulation,
+                   "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else "
+                   "8-bit), 8-bit (the 8-bit colour target; row 'forward-multipass 8-bit')")
+        ->capture_default_str();
     app.add_option("--volume-detail", volumeDetail,
                    "LIDR coarse light volumes for lights small on screen (LidrOptions::volumeDetail): off, on")
         ->capture_default_str();
@@ -476,7 +481,7 @@ int main(int argc, char** argv) {
         std::vector<SweepGroup> groups;
         const bool listsGiven = app.count("--scenes") || app.count("--modes") || app.count("--schemes") ||
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
-                                app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--volume-detail") ||
+                                app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--multipass-accumulation") || app.count("--volume-detail") ||
                                 app.count("--cluster-tile-sizes") || app.count("--cluster-slices") ||
                                 app.count("--cluster-slicings") || app.count("--cluster-occupancy") ||
                                 app.count("--resolution");
@@ -515,6 +520,12 @@ int main(int argc, char** argv) {
             g.perSample = onOffList(perSample, "--per-sample value");
             g.transparency = onOffList(transparency, "--transparency value");
             g.tiledDepthBounds = onOffList(tiledBounds, "--tiled-depth-bounds value");
+            g.multipassEightBit.clear();
+            for (const std::string& a : splitList(multipassAccumulation)) {
+                if (a != "auto" && a != "8-bit")
+                    throw Error("--multipass-accumulation value must be auto or 8-bit, got '" + a + "'");
+                g.multipassEightBit.push_back(a == "8-bit");
+            }
             g.volumeDetail = onOffList(volumeDetail, "--volume-detail value");
             g.volumeTiles = onOffList(volumeTiles, "--volume-tiles value");
             g.volumeTileSizes = intList(volumeTileSizes, "--volume-tile-size value");
@@ -813,6 +824,8 @@ int main(int argc, char** argv) {
                 row.baseline = slots[baseline].run->config.key();
                 row.ratio = Stat::of(slot.ratios);
                 row.lightDataBytes = slot.renderer->lightDataBytes();
+                if (const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(slot.renderer.get()))
+                    row.multipassAccumulation = multipass->accumulation();
                 const ImageRGBA8 image = slot.renderer->targets().readColor();
                 if (!run.reference) {
                     row.hasError = false;

@@ -133,6 +133,10 @@ void RendererChoice::addOptions(CLI::App& app) {
                    std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
                                "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
                        (clustered.occupiedClusters ? "on" : "off") + ")");
+    app.add_option("--multipass-accumulation", multipassAccumulation,
+                   "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
+                   "8-bit colour target), 8-bit (the 8-bit target, to compare)")
+        ->capture_default_str();
     std::string schemes;
     for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
     app.add_option("--scheme", scheme,
@@ -390,6 +394,9 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
             throw Error("--cluster-occupancy must be on or off, got '" + *clusterOccupancy + "'");
         o.clustered.occupiedClusters = *clusterOccupancy == "on";
     }
+    if (multipassAccumulation != "auto" && multipassAccumulation != "8-bit")
+        throw Error("--multipass-accumulation must be auto or 8-bit, got '" + multipassAccumulation + "'");
+    o.multipass.halfFloatAccumulation = multipassAccumulation == "auto";
     o.forceFixedLightTable = fixedLightTable;
     outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;

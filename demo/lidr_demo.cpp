@@ -145,12 +145,26 @@ void prepareWritableFolder(const std::string& dir, const std::string& option) {
     std::filesystem::remove(probe, ec);
 }
 
-// The output folder and the GL context every headless run needs.
-std::unique_ptr<GlContext> startHeadless(const std::string& outDir, const demo::RendererChoice& rc) {
+// What every headless run starts with: the scene's lights and shading with the shadow choice applied (before the
+// context: the reference renders with the same lights), the output folder, the GL context, and the scene's
+// warnings with the textures this context has no unit for.
+struct HeadlessStart {
+    std::vector<PointLight> lights;
+    ShadingParameters shading;
+    std::unique_ptr<GlContext> context;
+    std::vector<std::string> warnings;
+};
+
+HeadlessStart startHeadless(const Scene& scene, const std::string& outDir, const demo::RendererChoice& rc,
+                            const demo::ShadowChoice& shadowChoice) {
+    HeadlessStart start{scene.lightsAt(scene.time), sceneShading(scene, rc.outputTransform()), nullptr, scene.warnings};
+    shadowChoice.apply(scene, start.lights, start.shading);
     prepareWritableFolder(outDir, "--out");
-    auto context = GlContext::create(rc.contextOptions());
-    std::cout << "GL: " << context->info().summary() << "\n";
-    return context;
+    start.context = GlContext::create(rc.contextOptions());
+    std::cout << "GL: " << start.context->info().summary() << "\n";
+    for (const std::string& w : textureUnitWarnings(scene, start.context->info().maxTextureUnits))
+        start.warnings.push_back(w);
+    return start;
 }
 
 // Every mode but lidr: the image, the reference and the error, and for tiled and clustered the grid and its heat map.
@@ -174,15 +188,24 @@ void addShadowSummary(nlohmann::json& summary, std::ostream& s, const demo::Shad
       << firstFrameMaps << " maps drawn on the first frame, " << last.shadowMapsDrawn << " on the last\n";
 }
 
+// summary.json's "gl" and "scene", and the text summary's first lines: the scene, its warnings, the renderer.
+void describeRun(nlohmann::json& summary, std::ostream& s, const GlInfo& info, const Scene& scene, size_t lights,
+                 const std::vector<std::string>& warnings) {
+    summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
+                     {"vendor", info.vendor}, {"glsl", info.glslVersion}};
+    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
+                        {"triangles", scene.triangleCount()}, {"lights", lights}, {"time", scene.time},
+                        {"warnings", warnings}};
+    s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
+      << " triangles, " << lights << " lights\n";
+    for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
+    s << "renderer   " << info.renderer << " (" << info.version << ")\n";
+}
+
 int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
                     bool withReference, const demo::RendererChoice& rc, const demo::ShadowChoice& shadowChoice) {
-    std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
-    shadowChoice.apply(scene, lights, shading);  // before the context; the reference renders with the same lights
-    auto context = startHeadless(outDir, rc);
+    const auto [lights, shading, context, warnings] = startHeadless(scene, outDir, rc, shadowChoice);
     const GlInfo& info = context->info();
-    std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
-    for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
     std::unique_ptr<Renderer> renderer = createRenderer(mo, info, scene, scene.width, scene.height);
     renderer->setTiming(true, true);  // each frame's own pass times (waits for GPU queries)
     MedianTimes times;
@@ -197,21 +220,13 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
     writeShadowAtlas(*renderer, info, outDir);
 
     nlohmann::json summary;
-    summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
-                     {"vendor", info.vendor}, {"glsl", info.glslVersion}};
-    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
-                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
-                        {"warnings", warnings}};
+    std::ostringstream s;
+    describeRun(summary, s, info, scene, lights.size(), warnings);
     summary["mode"] = {{"name", renderer->modeName()}, {"drawn_lights", stats.drawnLights},
                        {"light_data_bytes", renderer->lightDataBytes()}};
     summary["timing"] = {{"method", stats.timingMethod}, {"frames", frames}, {"median_ms", times.json()}};
     summary["gl_calls"] = glCallsJson(stats.glCalls);
     summary["pass_counts"] = passCountsJson(stats.passes);
-    std::ostringstream s;
-    s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
-      << " triangles, " << lights.size() << " lights\n";
-    for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
-    s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "mode       " << renderer->modeName() << ", " << stats.drawnLights << " lights drawn\n";
     addShadowSummary(summary, s, shadowChoice, shading, firstFrameMaps, stats);
     if (autoMode) {
@@ -272,6 +287,13 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << f.grid.entries << " entries in " << f.grid.listedClusters << " clusters, " << f.indexBits
           << "-bit indices, CPU assignment " << f.assignMilliseconds << " ms"
           << (f.occupancyUsed ? ", occupancy " + std::to_string(f.occupancyMilliseconds) + " ms" : std::string()) << "\n";
+    }
+    if (const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(renderer.get())) {
+        // Where its passes summed their light (doc/colour.md): half float, or the 8-bit target and why.
+        summary["multipass"] = {{"accumulation", multipass->accumulation()},
+                                {"accumulation_note", multipass->accumulationNote()}};
+        s << "multi-pass accumulation: " << multipass->accumulation()
+          << (multipass->accumulationNote().empty() ? "" : " (" + multipass->accumulationNote() + ")") << "\n";
     }
     s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
@@ -365,13 +387,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
         return runHeadlessMode(scene, modeOptions, outDir, frames, withReference, rc, shadowChoice);
     }
     const LidrOptions options = rc.lidrOptions(scene);
-    std::vector<PointLight> lights = scene.lightsAt(scene.time);
-    ShadingParameters shading = sceneShading(scene, rc.outputTransform());
-    shadowChoice.apply(scene, lights, shading);  // before the context; the reference renders with the same lights
-    auto context = startHeadless(outDir, rc);
+    const auto [lights, shading, context, warnings] = startHeadless(scene, outDir, rc, shadowChoice);
     const GlInfo& info = context->info();
-    std::vector<std::string> warnings = scene.warnings;  // and the textures this context has no unit for
-    for (const std::string& w : textureUnitWarnings(scene, info.maxTextureUnits)) warnings.push_back(w);
 
     LidrRenderer renderer(info, scene, options, scene.width, scene.height);
     renderer.setTiming(true, true);
@@ -391,11 +408,8 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     writeShadowAtlas(renderer, info, outDir);
 
     nlohmann::json summary;
-    summary["gl"] = {{"backend", info.backend}, {"version", info.version}, {"renderer", info.renderer},
-                     {"vendor", info.vendor}, {"glsl", info.glslVersion}};
-    summary["scene"] = {{"name", scene.name}, {"width", scene.width}, {"height", scene.height},
-                        {"triangles", scene.triangleCount()}, {"lights", lights.size()}, {"time", scene.time},
-                        {"warnings", warnings}};
+    std::ostringstream s;  // a short human summary on stdout and in summary.txt
+    describeRun(summary, s, info, scene, lights.size(), warnings);
     const AutoDecision& decision = stats.autoDecision;
     const int budget = renderer.scheme().config().budget;
     summary["lidr"] = {{"scheme", packingSchemeName(renderer.scheme().config().scheme)}, {"budget", budget},
@@ -480,12 +494,6 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     if (!dumpDir.empty()) writeFrameArtefacts(dumpDir, artefacts, renderer.scheme());
 
     std::ofstream(path(outDir, "summary.json")) << summary.dump(2) << "\n";
-    // A short human summary on stdout and in summary.txt.
-    std::ostringstream s;
-    s << "scene      " << scene.name << ", " << scene.width << "x" << scene.height << ", " << scene.triangleCount()
-      << " triangles, " << lights.size() << " lights\n";
-    for (const std::string& warning : warnings) s << "warning    " << warning << "\n";
-    s << "renderer   " << info.renderer << " (" << info.version << ")\n";
     s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";

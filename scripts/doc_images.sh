@@ -5,12 +5,7 @@
 # KHR_lights_punctual lights (candela, inverse square).
 #   bash scripts/doc_images.sh [build-dir]
 set -euo pipefail
-build="${1:-build}"
-out="doc/images"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$out"
-demo="$build/demo/lidr-demo"
+source "$(dirname "$0")/doc_images_env.sh"  # build, demo, out (doc/images), tmp
 common=(--headless --width 640 --height 480 --frames 1)
 "$demo" "${common[@]}" --volume-test backface --transparency off --out "$tmp/back" >/dev/null
 "$demo" "${common[@]}" --volume-test frontface --out "$tmp/front" >/dev/null

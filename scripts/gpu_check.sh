@@ -4,6 +4,9 @@
 # (GPU timer queries). Speed is only measured by the bench; the tests assert images, indices and counts.
 #   bash scripts/gpu_check.sh [OUT [PART]]   OUT default gpu-check; PART: all (default), tests (tests and demo),
 #                                            bench; extra lidr-bench arguments in BENCH_ARGS
+# TEST_ARGS: lidr-tests' test spec (default: every case); BENCH_SET: the lidr-bench selection (default --full;
+# e.g. "--sweep peers" for issue 37's best-peer table). On a machine that is not Debian 12, pack the binaries
+# with scripts/gpu_bundle.sh and set BIN to the bundle's bin/ after sourcing its --env.
 # BIN: a folder holding lidr-tests, lidr-demo and lidr-bench (default: this checkout's build/). The tests read
 # media/ and doc/ under the source folder they were built from (LIDR_SOURCE_DIR): run them from that path.
 # Writes OUT/tests.log, OUT/tests-egl-device.log, OUT/demo/ (images, summary), OUT/bench/ (results.csv,
@@ -33,7 +36,8 @@ status=0
 
 if [ "$part" != bench ]; then
   echo "gpu_check.sh: test suite (LIDR_CONTEXT=${LIDR_CONTEXT:-auto})"
-  "$tests" --durations yes >"$out/tests.log" 2>&1 || status=1
+  read -r -a spec <<<"${TEST_ARGS:-}"
+  "$tests" --durations yes "${spec[@]}" >"$out/tests.log" 2>&1 || status=1
   grep -E "GL context:" -A2 "$out/tests.log" | head -3
   tail -2 "$out/tests.log"
 
@@ -48,8 +52,9 @@ if [ "$part" != bench ]; then
 fi
 
 if [ "$part" != tests ]; then
-  echo "gpu_check.sh: full bench sweep"
+  read -r -a set <<<"${BENCH_SET:---full}"
+  echo "gpu_check.sh: bench ${set[*]}"
   read -r -a extra <<<"${BENCH_ARGS:-}"  # words, no globbing
-  "$bench" --full --no-progress --out "$out/bench" "${extra[@]}" || status=1
+  "$bench" "${set[@]}" --no-progress --out "$out/bench" "${extra[@]}" || status=1
 fi
 exit $status

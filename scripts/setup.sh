@@ -13,6 +13,35 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each step's wall time (and, for the test job, each CTest entry's against its budget: scripts/ci_times.cmake),
+# printed when the job ends, failed or not.
+times_dir="$(mktemp -d)"
+ctest_runs=()
+step() {  # step NAME COMMAND...: runs COMMAND, recording its seconds under NAME
+  local name="$1" start=$SECONDS rc=0
+  shift
+  "$@" || rc=$?
+  printf '%s\t%s\n' "$name" "$((SECONDS - start))" >>"$times_dir/steps"
+  return $rc
+}
+ctest_step() {  # ctest_step NAME BUILD_DIR CTEST_ARGS...: a step that runs CTest in BUILD_DIR, its entries kept
+  local name="$1" dir="$2" index=${#ctest_runs[@]} start=$SECONDS rc=0
+  shift 2
+  ctest --test-dir "$dir" --show-only=json-v1 >"$times_dir/ctest-$index.json" 2>/dev/null || true
+  ctest --test-dir "$dir" "$@" 2>&1 | tee "$times_dir/ctest-$index.log" || rc=$?
+  ctest_runs+=("$times_dir/ctest-$index.log" "$times_dir/ctest-$index.json")
+  printf '%s\t%s\t%s\n' "$name" "$((SECONDS - start))" "$index" >>"$times_dir/steps"
+  return $rc
+}
+print_times() {
+  local runs
+  runs="$(IFS=';'; echo "${ctest_runs[*]:-}")"
+  cmake -DSTEPS="$times_dir/steps" -DRUNS="$runs" -DTOTAL="$SECONDS" -DLIMIT="${CI_TIME_AIM:-1800}" \
+    -P scripts/ci_times.cmake || true
+  rm -rf "$times_dir"
+}
+trap print_times EXIT
+
 job="${1:-}"
 case "$job" in
   demo|test|bench|web) ;;
@@ -56,8 +85,8 @@ if [ ${#missing[@]} -gt 0 ]; then
     exit 1
   fi
   export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  step "install packages" bash -c 'apt-get update -qq && apt-get install -y -qq --no-install-recommends "$@" >/dev/null' \
+    apt "${missing[@]}"
 fi
 
 jobs="${JOBS:-$(nproc)}"
@@ -71,11 +100,11 @@ web_build_and_test() {
     cmake -S . -B "$native_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLIDR_BUILD_TESTS=OFF -DLIDR_BUILD_DEMO=OFF \
       -DLIDR_BUILD_EXAMPLES=OFF >/dev/null
   fi
-  cmake --build "$native_build" -j "$jobs" --target lidr-web-native-frame
+  step "web: lidr-web-native-frame" cmake --build "$native_build" -j "$jobs" --target lidr-web-native-frame
   emcmake cmake -S . -B "$web_build" -DCMAKE_BUILD_TYPE=Release -DLIDR_WEB=ON \
     -DLIDR_NATIVE_FRAME_TOOL="$(cd "$native_build" && pwd)/web/lidr-web-native-frame" >/dev/null
-  cmake --build "$web_build" -j "$jobs"
-  ctest --test-dir "$web_build" --output-on-failure --no-tests=error
+  step "web: build ($web_build/)" cmake --build "$web_build" -j "$jobs"
+  ctest_step "web: tests ($web_build/)" "$web_build" --output-on-failure --no-tests=error
 }
 if [ "$job" = web ]; then
   web_build_and_test
@@ -84,7 +113,7 @@ fi
 
 build="${BUILD_DIR:-build}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build" -j "$jobs"
+step "build ($build/)" cmake --build "$build" -j "$jobs"
 
 case "$job" in
   demo)
@@ -94,16 +123,18 @@ case "$job" in
     BUILD_DIR="$build" bash scripts/bench.sh
     ;;
   test)
-    ctest --test-dir "$build" --output-on-failure -j "$jobs"
+    ctest_step "tests ($build/)" "$build" --output-on-failure -j "$jobs"
     if [ "${SANITIZE:-1}" != 0 ]; then
       # A second build with AddressSanitizer + UBSan and the libFuzzer harnesses (clang): sanitize.cpu,
       # sanitize.gl (a GL subset, tests/CMakeLists.txt) and fuzz.* smoke runs. doc/stability.md says why and how long.
       sanitize_build="${SANITIZE_BUILD_DIR:-build-sanitize}"
+      # -O1 with line tables only (what the sanitizers' reports need): a fifth less compile time than -O2 -g.
       cmake -S . -B "$sanitize_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
-        -DCMAKE_CXX_COMPILER=clang++ -DLIDR_SANITIZE=address,undefined -DLIDR_BUILD_FUZZERS=ON \
+        -DCMAKE_CXX_COMPILER=clang++ "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" \
+        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DLIDR_SANITIZE=address,undefined -DLIDR_BUILD_FUZZERS=ON \
         -DLIDR_BUILD_DEMO=OFF -DLIDR_BUILD_EXAMPLES=OFF -DLIDR_WITH_OSMESA=OFF >/dev/null
-      cmake --build "$sanitize_build" -j "$jobs"
-      ctest --test-dir "$sanitize_build" --output-on-failure -j "$jobs"
+      step "sanitizer build ($sanitize_build/)" cmake --build "$sanitize_build" -j "$jobs"
+      ctest_step "sanitizer tests ($sanitize_build/)" "$sanitize_build" --output-on-failure -j "$jobs"
     fi
     if [ "${WEB:-1}" != 0 ]; then
       web_build_and_test

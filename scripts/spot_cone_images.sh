@@ -4,12 +4,7 @@
 # points (their bounding spheres), side by side, and the lit frame. lidr-demo at 512x384 on the current context.
 #   bash scripts/spot_cone_images.sh [build-dir]
 set -euo pipefail
-build="${1:-build}"
-out="doc/images"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-mkdir -p "$out"
-demo="$build/demo/lidr-demo"
+source "$(dirname "$0")/doc_images_env.sh"  # build, demo, out (doc/images), tmp
 scene="media/scenes/lamp-street.json"
 # The same street with every spot light a point light of the same position, range and colour.
 python3 - "$scene" "$tmp/lamp-street-points.json" <<'PY'

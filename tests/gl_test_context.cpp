@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <string>
 
 #include <catch2/catch.hpp>
 
@@ -42,6 +43,27 @@ const GlInfo& testGl() { return testContext().info(); }
 bool isSoftpipe() { return testGl().renderer.find("softpipe") != std::string::npos; }
 int testWidth() { return isSoftpipe() ? 128 : 256; }
 int testHeight() { return isSoftpipe() ? 96 : 192; }
+
+bool representativeRun() {
+    static const bool representative = [] {
+        const std::string rows = std::getenv("LIDR_TEST_ROWS") ? std::getenv("LIDR_TEST_ROWS") : "";
+        if (rows != "" && rows != "all" && rows != "representative")
+            throw Error("LIDR_TEST_ROWS is 'all' (the default) or 'representative', got '" + rows + "'");
+        return rows == "representative";
+    }();
+    return representative;
+}
+
+RowCount& rowsOfCurrentCase() {
+    static RowCount rows;
+    return rows;
+}
+
+bool takeRow(bool representative) {
+    const bool take = representative || !representativeRun();
+    ++(take ? rowsOfCurrentCase().taken : rowsOfCurrentCase().skipped);
+    return take;
+}
 
 std::string sourcePath(const std::string& relative) { return std::string(LIDR_SOURCE_DIR) + "/" + relative; }
 

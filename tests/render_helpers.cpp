@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "gl_test_context.h"
+#include "lidr/scene/default_scene.h"
 #include "lidr/scene/primitives.h"
 #include "lidr/modes/reference_renderer.h"
 
@@ -15,6 +16,14 @@ PointLight light(glm::vec3 position, float radius, glm::vec3 color, float priori
     l.color = color;
     l.priority = priority;
     return l;
+}
+
+Scene testRoom(float time) {
+    DefaultSceneOptions o;
+    o.width = testWidth();
+    o.height = testHeight();
+    o.time = time;
+    return makeDefaultScene(o);
 }
 
 Scene floorScene() {

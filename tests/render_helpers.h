@@ -17,6 +17,9 @@ PointLight light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1
 // size is testWidth() x testHeight(). No lights: tests add their own.
 Scene floorScene();
 
+// lidr's default room (255 lights) at testWidth() x testHeight(), at `time` seconds.
+Scene testRoom(float time = 0.0f);
+
 struct RenderResult {
     ImageRGBA8 lidr, reference;
     FrameEvaluation evaluation;

@@ -187,7 +187,7 @@ TEST_CASE("auto: on controlled overlap k the measured budget is k, nothing is dr
 }
 
 TEST_CASE("auto: over 16 lights on a pixel, budget 16 keeps the highest priorities and reports the rest",
-          "[render][auto]") {
+          "[render][auto][every-gl]") {
     Scene scene = floorScene();
     scene.lights.clear();
     for (int i = 0; i < 20; ++i)  // 20 coincident lights, distinct priorities
@@ -273,7 +273,7 @@ TEST_CASE("auto: frames follow the scene without dropping a light, and narrow on
     }
 }
 
-TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][auto]") {
+TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][auto][every-gl]") {
     testContext();
     const Scene scene = controlledScene(2);
     LidrOptions o;
@@ -291,7 +291,7 @@ TEST_CASE("auto: contradicting requests are refused before drawing", "[lidr][aut
 }
 
 TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again when the lights change",
-          "[render][auto][auto-mode]") {
+          "[render][auto][auto-mode][every-gl]") {
     testContext();
     Scene scene = floorScene();
     scene.lights.clear();
@@ -306,7 +306,8 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
     AutoModeRenderer renderer(testGl(), scene, o, scene.width, scene.height, ao);
     REQUIRE(renderer.candidates() == std::vector<std::string>{"lidr", "tiled", "clustered", "forward-multipass"});
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255, false, 0, false);
-    // linear output: the bound counts linear 8-bit steps (multi-pass rounds each pass; doc/colour.md)
+    // linear output: the bound counts linear 8-bit steps (multi-pass in its 8-bit target, where the context has no
+    // half-float colour buffers, rounds each pass; doc/colour.md)
     const ShadingParameters shading{scene.ambient, scene.backgroundColor, OutputTransform::linear()};
     std::vector<PointLight> lights = scene.lightsAt(scene.time);
     reference.render(scene.camera, lights, shading);
@@ -337,7 +338,7 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
 }
 
 TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candidate where they are drawn",
-          "[lidr][auto][auto-mode]") {
+          "[lidr][auto][auto-mode][every-gl]") {
     testContext();
     Scene scene = floorScene();
     scene.lights = {light(glm::vec3(0.0f, 0.5f, 0.0f), 3.0f)};
@@ -356,10 +357,7 @@ TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candi
 TEST_CASE("auto: a camera flying through the room, lights moving: no frame drops a light, no choice flips back "
           "the next frame", "[render][auto]") {
     testContext();
-    DefaultSceneOptions so;
-    so.width = testWidth();
-    so.height = testHeight();
-    const Scene scene = makeDefaultScene(so);
+    const Scene scene = testRoom();
     LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};

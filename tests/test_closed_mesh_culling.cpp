@@ -31,7 +31,7 @@ int culledBatches(GpuScene& scene, const CameraMatrices& cam, std::string& sides
 }
 }  // namespace
 
-TEST_CASE("closed meshes: the inner side culled, the same image in every mode", "[render][culling]") {
+TEST_CASE("closed meshes: the inner side culled, the same image in every mode", "[render][culling][every-gl]") {
     testContext();
     struct View {
         const char* name;
@@ -54,6 +54,7 @@ TEST_CASE("closed meshes: the inner side culled, the same image in every mode", 
     const char* modes[] = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute"};
     for (const View& v : views) {
         for (const char* mode : modes) {
+            if (!takeRow(std::string(mode) == "lidr")) continue;
             DYNAMIC_SECTION(v.name << ", " << mode) {
                 Scene scene = floorScene();
                 scene.lights = {light(glm::vec3(0.0f, 1.0f, 0.0f), 5.0f), light(glm::vec3(3.0f, 3.5f, 3.5f), 4.0f),

@@ -25,7 +25,7 @@ bool offered(ContextBackend b) {
 }
 }  // namespace
 
-TEST_CASE("the context is the backend LIDR_CONTEXT names, and GlInfo says which", "[context]") {
+TEST_CASE("the context is the backend LIDR_CONTEXT names, and GlInfo says which", "[context][every-gl]") {
     const GlInfo& info = testGl();
     INFO("GlInfo backend '" << info.backend << "'");
     const ContextBackend used = parseContextBackend(info.backend);  // throws on a name lidr does not know
@@ -35,7 +35,7 @@ TEST_CASE("the context is the backend LIDR_CONTEXT names, and GlInfo says which"
     if (env && *env && parseContextBackend(env) != ContextBackend::Auto) REQUIRE(used == parseContextBackend(env));
 }
 
-TEST_CASE("lidr offers EGL, lidr_osmesa offers only OSMesa", "[context]") {
+TEST_CASE("lidr offers EGL, lidr_osmesa offers only OSMesa", "[context][every-gl]") {
     if (testGl().backend == "osmesa") {
         REQUIRE(availableContextBackends() == std::vector<ContextBackend>{ContextBackend::OSMesa});
     } else {
@@ -46,7 +46,7 @@ TEST_CASE("lidr offers EGL, lidr_osmesa offers only OSMesa", "[context]") {
     }
 }
 
-TEST_CASE("a backend the linked library does not offer is refused, naming it and why", "[context]") {
+TEST_CASE("a backend the linked library does not offer is refused, naming it and why", "[context][every-gl]") {
     testContext();  // the refusal below must leave the test context alone
     for (ContextBackend b : {ContextBackend::EglSurfaceless, ContextBackend::EglDevice, ContextBackend::EglGles2,
                              ContextBackend::Glfw, ContextBackend::GlfwGles2, ContextBackend::OSMesa}) {
@@ -65,7 +65,7 @@ TEST_CASE("a backend the linked library does not offer is refused, naming it and
     REQUIRE(glGetString(GL_VERSION) != nullptr);
 }
 
-TEST_CASE("the context renders: a cleared and a scissor-cleared FBO read back exactly", "[context]") {
+TEST_CASE("the context renders: a cleared and a scissor-cleared FBO read back exactly", "[context][every-gl]") {
     testContext();
     const int w = 8, h = 6;
     gl::Texture color = gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE);

@@ -264,9 +264,33 @@ Scene litFloorScene() {
     return scene;
 }
 
+// The lit floor with its lights and shading at time 0: the frame most tests here render.
+struct LitFloorFrame {
+    Scene scene;
+    std::vector<PointLight> lights;
+    ShadingParameters shading;
+};
+
+LitFloorFrame litFloorFrame() {
+    Scene scene = litFloorScene();
+    std::vector<PointLight> lights = scene.lightsAt(0.0f);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    return {std::move(scene), std::move(lights), shading};
+}
+
+// A renderer of `mode` built as a program embedding lidr builds it: with no GL error pending (the test's own GL
+// calls left none), and around the constructor, which may bind what it creates, the program's GL state kept.
+std::unique_ptr<Renderer> buildKeepingState(const std::string& mode, const Scene& scene) {
+    REQUIRE(glGetError() == GL_NO_ERROR);
+    RenderModeOptions options;
+    options.mode = mode;
+    const SavedGlState keep;
+    return createRenderer(options, testGl(), scene, scene.width, scene.height);
+}
+
 }  // namespace
 
-TEST_CASE("currentContextGlInfo reads the context current on this thread", "[embed]") {
+TEST_CASE("currentContextGlInfo reads the context current on this thread", "[embed][every-gl]") {
     testContext();
     const GlInfo info = currentContextGlInfo("caller");
     CHECK(info.backend == "caller");
@@ -279,21 +303,13 @@ TEST_CASE("currentContextGlInfo reads the context current on this thread", "[emb
 }
 
 // [desktop-state]: the caller's state set here is desktop GL's (glClearDepth, polygon mode, logic op...).
-TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed][desktop-state]") {
+TEST_CASE("every mode's render() and present() leave the caller's GL state as found", "[embed][desktop-state][every-gl]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     for (const std::string& mode : renderModeNames()) {
         INFO("mode " << mode);
-        RenderModeOptions options;
-        options.mode = mode;
-        std::unique_ptr<Renderer> renderer;
+        const std::unique_ptr<Renderer> renderer = buildKeepingState(mode, scene);
         FramePresenter presenter;
-        {
-            const SavedGlState keep;  // constructors may bind what they create; the program keeps its state
-            renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
-        }
         const CallerState caller;
         const StateList before = readGlState();
         renderer->render(scene.camera, lights, shading);
@@ -313,20 +329,12 @@ TEST_CASE("every mode's render() and present() leave the caller's GL state as fo
 // program left it: no buffer, disabled, and, these contexts having client-side arrays, the offset as it was.
 // (WebGL has none and refused that offset back; SavedGlState puts it back as 0 there, which web.chromium checks.)
 TEST_CASE("a frame after the caller deleted the buffer its attribute named: no GL error, the attribute as left",
-          "[embed]") {
+          "[embed][every-gl]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     const std::string mode = GENERATE(as<std::string>(), "lidr", "forward-multipass", "forward-brute");
+    if (!takeRow(mode == "lidr")) return;
     DYNAMIC_SECTION(mode) {
-        REQUIRE(glGetError() == GL_NO_ERROR);
-        RenderModeOptions options;
-        options.mode = mode;
-        auto build = [&] {
-            const SavedGlState keep;
-            return createRenderer(options, testGl(), scene, scene.width, scene.height);
-        };
         auto attribute = [](GLenum what) {
             GLint v = -1;
             glGetVertexAttribiv(gl::kNormal, what, &v);
@@ -337,7 +345,7 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
             glGetVertexAttribPointerv(gl::kNormal, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
             return reinterpret_cast<uintptr_t>(p);
         };
-        std::unique_ptr<Renderer> first = build();
+        std::unique_ptr<Renderer> first = buildKeepingState(mode, scene);
         {
             const float data[16] = {};
             const gl::Buffer own = gl::Buffer::create(GL_ARRAY_BUFFER, data, sizeof data);
@@ -350,7 +358,7 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
         first.reset();
         REQUIRE(attribute(GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING) == 0);
         REQUIRE(offset() == 12);
-        std::unique_ptr<Renderer> second = build();
+        const std::unique_ptr<Renderer> second = buildKeepingState(mode, scene);
         for (int frame = 0; frame < 2; ++frame) {
             INFO("frame " << frame << " of the renderer built after the deletion");
             second->render(scene.camera, lights, shading);
@@ -364,23 +372,15 @@ TEST_CASE("a frame after the caller deleted the buffer its attribute named: no G
 }
 
 TEST_CASE("a frame after the caller deleted its current program: no GL error, no program current after",
-          "[embed]") {
+          "[embed][every-gl]") {
     // GL keeps a program deleted while current until another replaces it; render() replaces it, so giving it
     // back would be GL_INVALID_VALUE (found when a shadow atlas was destroyed with its program current).
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     const std::string mode = GENERATE(as<std::string>(), "lidr", "forward-multipass", "forward-brute");
+    if (!takeRow(mode == "lidr")) return;
     DYNAMIC_SECTION(mode) {
-        REQUIRE(glGetError() == GL_NO_ERROR);
-        RenderModeOptions options;
-        options.mode = mode;
-        std::unique_ptr<Renderer> renderer;
-        {
-            const SavedGlState keep;
-            renderer = createRenderer(options, testGl(), scene, scene.width, scene.height);
-        }
+        const std::unique_ptr<Renderer> renderer = buildKeepingState(mode, scene);
         {
             const gl::Program own = gl::Program::create(
                 "caller", "#version 120\nattribute vec4 p;\nvoid main() { gl_Position = p; }\n",
@@ -398,7 +398,7 @@ TEST_CASE("a frame after the caller deleted its current program: no GL error, no
     }
 }
 
-TEST_CASE("FramePresenter copies the frame into the caller's framebuffer pixel for pixel", "[embed]") {
+TEST_CASE("FramePresenter copies the frame into the caller's framebuffer pixel for pixel", "[embed][every-gl]") {
     testContext();
     const Scene scene = litFloorScene();
     LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
@@ -435,7 +435,7 @@ TEST_CASE("FramePresenter copies the frame into the caller's framebuffer pixel f
     CHECK_THROWS_WITH(presenter.present(renderer.targets(), fbo.id(), 0, 0, 0, 4), Catch::Contains("empty"));
 }
 
-TEST_CASE("a material shader of the program's own iterates exactly the lights the index lists hold", "[embed]") {
+TEST_CASE("a material shader of the program's own iterates exactly the lights the index lists hold", "[embed][every-gl]") {
     testContext();
     const Scene scene = litFloorScene();
     const std::vector<PointLight> lights = scene.lightsAt(0.0f);
@@ -482,7 +482,7 @@ void main() {
     }
 }
 
-TEST_CASE("a toon material through lidr_lights.glsl matches the CPU on the lit floor", "[embed]") {
+TEST_CASE("a toon material through lidr_lights.glsl matches the CPU on the lit floor", "[embed][every-gl]") {
     testContext();
     // One light straight above a flat floor: every floor pixel's light count and toon band follow from its
     // distance to the light alone, which the CPU computes from the depth buffer.
@@ -531,7 +531,7 @@ void main() {
     CHECK(checked > scene.width * scene.height / 4);
 }
 
-TEST_CASE("a material shader that does not compile is an error naming it", "[embed][bad-input]") {
+TEST_CASE("a material shader that does not compile is an error naming it", "[embed][bad-input][every-gl]") {
     testContext();
     const Scene scene = litFloorScene();
     LidrOptions o;
@@ -542,11 +542,12 @@ TEST_CASE("a material shader that does not compile is an error naming it", "[emb
     CHECK_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("no_such_file.glsl"));
 }
 
-TEST_CASE("timing is off by default: no timer queries, no pass times, in every mode", "[embed][timing][modes]") {
+TEST_CASE("timing is off by default: no timer queries, no pass times, in every mode", "[embed][timing][modes][every-gl]") {
     testContext();
     const Scene scene = litFloorScene();
     const std::vector<PointLight> lights = scene.lightsAt(0.0f);
     for (const std::string& mode : renderModeNames()) {
+        if (!takeRow(mode != "auto")) continue;  // auto's trial frames are its candidates' frames
         INFO("mode " << mode);
         RenderModeOptions options;
         options.mode = mode;
@@ -569,15 +570,13 @@ TEST_CASE("timing is off by default: no timer queries, no pass times, in every m
     }
 }
 
-TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a ring of queries", "[embed][timing]") {
+TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a ring of queries", "[embed][timing][every-gl]") {
     testContext();
     if (!testGl().timerQuery) {
         WARN("no timer queries in this context: skipped");
         return;
     }
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     LidrOptions o;
     o.timingMethod = TimingMethod::GpuQueries;
     // The passes a frame has, from a renderer that waits for its own frame's results.
@@ -614,7 +613,7 @@ TEST_CASE("GPU pass times arrive a frame or more later without waiting, from a r
     CHECK(gl::liveGlObjects() - objects <= (FrameTimer::kRingFrames - 1) * static_cast<int>(names.size() + 1));  // + volume-tiles
 }
 
-TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on with the next pass", "[embed][timing]") {
+TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on with the next pass", "[embed][timing][every-gl]") {
     testContext();
     FrameTimer timer(testGl(), TimingMethod::CpuFinish);
     auto failingPass = [&] {
@@ -634,11 +633,9 @@ TEST_CASE("a timed pass that throws is ended by its scope: the timer goes on wit
     CHECK(names == std::vector<std::string>{"failing", "ended-early", "next"});
 }
 
-TEST_CASE("a measuring frame counts each pass's draws, state calls and fragments", "[embed][timing]") {
+TEST_CASE("a measuring frame counts each pass's draws, state calls and fragments", "[embed][timing][every-gl]") {
     testContext();
-    const Scene scene = litFloorScene();
-    const std::vector<PointLight> lights = scene.lightsAt(0.0f);
-    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const auto [scene, lights, shading] = litFloorFrame();
     LidrRenderer renderer(testGl(), scene, LidrOptions{}, scene.width, scene.height);
 
     // An application's frames (timing without waiting) never count fragments.
@@ -690,7 +687,7 @@ TEST_CASE("a measuring frame counts each pass's draws, state calls and fragments
 
 // Implementations may shade more than the covered pixels along triangle edges (llvmpipe counts 2,304 for a 64x32
 // viewport-filling triangle), never fewer; a pass without draws shades nothing.
-TEST_CASE("a pass's fragment count is its fragment shader invocations, within bounds for known draws", "[embed][timing]") {
+TEST_CASE("a pass's fragment count is its fragment shader invocations, within bounds for known draws", "[embed][timing][every-gl]") {
     testContext();
     if (!testGl().pipelineStatistics) {
         WARN("no ARB_pipeline_statistics_query: fragments not counted");

@@ -108,6 +108,8 @@ TEST_CASE("the OpenGL ES 2.0 context: capabilities from its extensions, no deskt
     CHECK(info.backend == "egl-gles2");
     CHECK(info.framebufferObject == hasExtension("GL_OES_packed_depth_stencil"));
     CHECK(info.textureFloat == hasExtension("GL_OES_texture_float"));
+    CHECK(info.halfFloatColorBuffer ==
+          (hasExtension("GL_OES_texture_half_float") && hasExtension("GL_EXT_color_buffer_half_float")));
     CHECK(info.depthTexture == hasExtension("GL_OES_depth_texture"));
     CHECK(info.blendMinMax == hasExtension("GL_EXT_blend_minmax"));
     CHECK(info.drawBuffers == hasExtension("GL_EXT_draw_buffers"));
@@ -121,6 +123,7 @@ TEST_CASE("the OpenGL ES 2.0 context: capabilities from its extensions, no deskt
     // What suite.gles2 runs on: Mesa's ES 2.0 has all of these (the refusal test below covers their absence).
     REQUIRE(info.framebufferObject);
     REQUIRE(info.readDepthStencil);
+    REQUIRE(info.halfFloatColorBuffer);  // multi-pass forward's half-float path runs in suite.gles2
     // A clear of colour, depth and stencil reads back exactly through the ES read paths.
     RenderTargets targets(info, 8, 6);
     targets.bindSingleSample();

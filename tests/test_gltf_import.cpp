@@ -384,7 +384,7 @@ TEST_CASE("glTF: scene files reference glTF models like OBJ ones", "[gltf][cpu]"
     requireNear(scene.camera.position, lidr::Camera().position);  // the scene file's (default) camera
 }
 
-TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf]") {
+TEST_CASE("glTF: a glTF scene renders like the same scene as a lidr JSON file with an OBJ model", "[gltf][every-gl]") {
     TempDir dir;
     // A floor quad and a box-like tent, with a red material, two point lights and a camera.
     GltfFile file;

@@ -108,7 +108,7 @@ const char* lookupName(ShadowLookup l) { return l == ShadowLookup::VolumePass ? 
 }  // namespace
 
 TEST_CASE("LIDR shadows: the shadows are there (the reference with them differs from the one without)",
-          "[shadows][lidr]") {
+          "[shadows][lidr][every-gl]") {
     testContext();
     const Scene scene = pillarFloor();
     const LidrOptions o;
@@ -125,13 +125,18 @@ TEST_CASE("LIDR shadows: the shadows are there (the reference with them differs 
 
 // Every scheme at budgets 1, 4 and 16 (8-bit) and the automatic configuration, both lookups: where the budget
 // holds a pixel's marks the image is the reference's within a step, and with the automatic budget everywhere.
-TEST_CASE("LIDR shadows equal the reference: every scheme x budget 1/4/16 and auto, both lookups", "[shadows][lidr][slow]") {
+TEST_CASE("LIDR shadows equal the reference: every scheme x budget 1/4/16 and auto, both lookups", "[shadows][lidr][slow][every-gl]") {
     testContext();
     std::vector<ConfigCase> cases = packingCases({1, 4, 16}, {8});
     cases.push_back({"auto", PackingConfig{}});
     const ConfigCase c = GENERATE_COPY(from_range(cases));
     const ShadowLookup lookup = GENERATE(ShadowLookup::VolumePass, ShadowLookup::ForwardPass);
     const bool tiles = GENERATE(true, false);
+    // Representative: the automatic configuration with the volume pass's test over tiles, and bit-shift budget 4
+    // with the forward pass's lookup over volume meshes.
+    if (!takeRow((c.name == "auto" && lookup == ShadowLookup::VolumePass && tiles) ||
+                 (c.name == "bitshift budget 4, 8-bit" && lookup == ShadowLookup::ForwardPass && !tiles)))
+        return;
     DYNAMIC_SECTION(c.name << ", lookup in the " << lookupName(lookup) << (tiles ? ", tile-culled" : ", volume meshes")) {
         const Scene scene = pillarFloor();
         LidrOptions o;
@@ -370,7 +375,8 @@ TEST_CASE("LIDR shadows through the automatic mode: every trial frame equals the
         INFO("frame " << frame << " drawn by " << automatic.lastMode() << ": max " << e.maxAbsError << ", casters "
                       << stats.shadowCasters);
         REQUIRE(stats.shadowCasters == 5);
-        // Multi-pass rounds each light's term as it blends: floor(n / 2) + 1 steps with n lights at a pixel
+        // Multi-pass: 1 step in half float; in its 8-bit target (contexts without half-float colour buffers) it
+        // rounds each light's term as it blends: floor(n / 2) + 1 steps with n lights at a pixel
         // (test_forward_baselines.cpp), n at most the scene's 6 here.
         REQUIRE(e.maxAbsError <= (automatic.lastMode() == "forward-multipass" ? int(lights.size()) / 2 + 1 : 1));
         lidrDrew = lidrDrew || automatic.lastMode() == "lidr";

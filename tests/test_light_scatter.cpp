@@ -35,15 +35,26 @@ float liftAboveSomeTriangle(const lidr::Scene& s, glm::vec3 p, float expected) {
     return best;
 }
 
-}  // namespace
-
-TEST_CASE("scattered lights lie on the surfaces, seeded and within limits", "[cpu][scene][scatter]") {
+// A 4 x 1 x 6 box, and 64 lights to scatter over it with seed 7.
+lidr::Scene boxScene() {
     lidr::Scene scene;
     scene.materials.push_back({});
     lidr::addBox(scene, glm::vec3(-2.0f, 0.0f, -3.0f), glm::vec3(2.0f, 1.0f, 3.0f), 0, 1);
+    return scene;
+}
+
+lidr::LightScatterOptions sixtyFourLights() {
     lidr::LightScatterOptions o;
     o.count = 64;
     o.seed = 7;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("scattered lights lie on the surfaces, seeded and within limits", "[cpu][scene][scatter]") {
+    const lidr::Scene scene = boxScene();
+    lidr::LightScatterOptions o = sixtyFourLights();
     const std::vector<lidr::PointLight> a = lidr::scatterLights(scene, o), b = lidr::scatterLights(scene, o);
     REQUIRE(a.size() == 64);
     for (size_t i = 0; i < a.size(); ++i) {
@@ -68,12 +79,8 @@ TEST_CASE("scattered lights lie on the surfaces, seeded and within limits", "[cp
 }
 
 TEST_CASE("scattered spot lights: a share of the same lights, aimed back at their surface", "[cpu][scene][scatter][lights]") {
-    lidr::Scene scene;
-    scene.materials.push_back({});
-    lidr::addBox(scene, glm::vec3(-2.0f, 0.0f, -3.0f), glm::vec3(2.0f, 1.0f, 3.0f), 0, 1);
-    lidr::LightScatterOptions o;
-    o.count = 64;
-    o.seed = 7;
+    const lidr::Scene scene = boxScene();
+    lidr::LightScatterOptions o = sixtyFourLights();
     const std::vector<lidr::PointLight> points = lidr::scatterLights(scene, o);
     o.spotShare = 0.25f;
     const std::vector<lidr::PointLight> mixed = lidr::scatterLights(scene, o);

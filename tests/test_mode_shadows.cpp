@@ -125,14 +125,16 @@ void checkShadowedMode(const std::string& mode, bool fixedTable, bool filtered) 
     const auto& passes = f.second.passes;
     CHECK(std::any_of(passes.begin(), passes.end(), [](const PassTime& p) { return p.pass == "shadow-maps"; }));
 
-    if (mode != "forward-multipass") {
+    const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(renderer.get());
+    if (!multipass || std::string(multipass->accumulation()) == "half-float") {
         // The same lights summed in the same order (ascending lists); one step for reassociation.
+        // Multi-pass in half float: its float sum encoded once, the same step.
         const ImageError e = compareImages(f.image, ref.image);
         INFO(mode << " against the reference: max " << e.maxAbsError << ", " << e.differingPixels << " pixels");
         REQUIRE(e.maxAbsError <= 1);
         return;
     }
-    // Multi-pass rounds each light's term to 8 bits as it blends: floor(n / 2) + 1 steps where n lights touch
+    // Multi-pass in its 8-bit target (no half-float colour buffers) rounds each light's term to 8 bits as it blends: floor(n / 2) + 1 steps where n lights touch
     // the pixel (test_forward_baselines.cpp), shadowed or not.
     const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
     const CoverageTruth touching = computeCoverage(renderer->targets().readDepth(), cam, scene.lights, -2e-3f);
@@ -159,18 +161,22 @@ TEST_CASE("clustered forward equals the reference with shadows on, nearest and f
 }
 
 TEST_CASE("tiled, clustered and multi-pass forward equal the reference with shadows on: spot and point casters",
-          "[shadows][modes][slow]") {
+          "[shadows][modes][slow][every-gl]") {
     testContext();
     const std::string mode = GENERATE(as<std::string>{}, "tiled", "tiled without depth bounds", "clustered",
                                       "clustered occupied", "forward-multipass");
     const bool fixedTable = GENERATE(false, true);
     const bool filtered = GENERATE(false, true);
+    // Representative: tiled filtered with the float table, clustered with occupancy nearest with the fixed-point
+    // one, multi-pass nearest with the fixed-point one.
+    if (!takeRow((mode == "tiled" && !fixedTable && filtered) || (mode == "clustered occupied" && fixedTable && !filtered) ||
+                 (mode == "forward-multipass" && fixedTable && !filtered)))
+        return;
     DYNAMIC_SECTION(mode << (fixedTable ? ", fixed-point light table" : "") << (filtered ? ", filtered" : "")
                          << (mode != "forward-multipass" ? ", a transparent layer" : "")) {
         checkShadowedMode(mode, fixedTable, filtered);
     }
 }
-
 
 TEST_CASE("tiled, clustered and multi-pass forward: a moved caster redraws only its maps; shadows off draws none",
           "[shadows][modes]") {

@@ -62,7 +62,7 @@ void requireNeverBrighter(const RenderResult& r) {
 }
 }  // namespace
 
-TEST_CASE("transparent panes over a lit floor match the reference with the same blending", "[transparency]") {
+TEST_CASE("transparent panes over a lit floor match the reference with the same blending", "[transparency][every-gl]") {
     const Scene scene = glassScene();
     const VolumeTest test = GENERATE(VolumeTest::FrontFace, VolumeTest::BackFace, VolumeTest::ExactStencil,
                                      VolumeTest::Sphere, VolumeTest::SphereRay);
@@ -79,7 +79,7 @@ TEST_CASE("transparent panes over a lit floor match the reference with the same 
     }
 }
 
-TEST_CASE("front-face mode: GPU marks equal the lights crossing each eye ray before the surface", "[frontface]") {
+TEST_CASE("front-face mode: GPU marks equal the lights crossing each eye ray before the surface", "[frontface][every-gl]") {
     const Scene scene = glassScene();
     const VolumeTest test = GENERATE(VolumeTest::FrontFace, VolumeTest::SphereRay);
     INFO("volume test " << volumeTestName(test));
@@ -140,7 +140,7 @@ std::vector<MsaaCase> msaaCases() {
 }
 }  // namespace
 
-TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa]") {
+TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa][every-gl]") {
     const GlInfo& info = testGl();
     if (!info.multisampleFbo || info.maxSamples < 2) {
         WARN("skipped: this context has no multisample FBOs (" << info.summary() << ")");
@@ -165,7 +165,7 @@ TEST_CASE("MSAA: LIDR against the reference with the same MSAA", "[msaa]") {
     }
 }
 
-TEST_CASE("MSAA and pre-pass requests the context or the mode cannot honour are refused", "[msaa][bad-input]") {
+TEST_CASE("MSAA and pre-pass requests the context or the mode cannot honour are refused", "[msaa][bad-input][every-gl]") {
     const Scene scene = glassScene();
     LidrOptions o;
     o.volumeTest = VolumeTest::FrontFace;
@@ -220,7 +220,7 @@ TEST_CASE("the default room with MSAA and glass in front-face mode", "[msaa][tra
 }
 
 TEST_CASE("optional per-sample MSAA index targets (Trebilco's technique 1) match the per-sample reference",
-          "[msaa][per-sample]") {
+          "[msaa][per-sample][every-gl]") {
     const GlInfo& info = testGl();
     const Scene scene = glassScene();
     LidrOptions o;

@@ -46,8 +46,10 @@ std::vector<ConfigCase> controlledOverlapCases() {
 }  // namespace
 
 TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width keeps the top-priority lights, "
-          "counts the rest exactly, corrupts nothing", "[render][schemes]") {
+          "counts the rest exactly, corrupts nothing", "[render][schemes][every-gl]") {
     const ConfigCase c = GENERATE(from_range(controlledOverlapCases()));
+    // Representative: each scheme at budget 4 with 8 lights on a pixel (kept, dropped and counted), 8-bit.
+    if (!takeRow(c.packing.budget == 4 && c.packing.indexBits == 8 && c.overlap == 8)) return;
     DYNAMIC_SECTION(c.name) {
         const int bits = c.packing.indexBits, budget = c.packing.budget;
         ControlledOverlapOptions o;
@@ -85,11 +87,16 @@ TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width 
 }
 
 TEST_CASE("controlled overlap under the exact tests (stencil and sphere): every scheme x width at budgets 2, 8, 16",
-          "[render][schemes][exact]") {
+          "[render][schemes][exact][every-gl]") {
     // softpipe interprets every fragment: budgets 2 and 16 there.
     const std::vector<int> budgets = isSoftpipe() ? std::vector<int>{2, 16} : std::vector<int>{2, 8, 16};
     const ConfigCase c = GENERATE_COPY(
         from_range(withVolumeTests(packingCases(budgets), {VolumeTest::ExactStencil, VolumeTest::Sphere})));
+    // Representative: budget 16, 8-bit; max-stencil under the stencil test, bit-shift under the sphere test.
+    if (!takeRow(c.packing.budget == 16 && c.packing.indexBits == 8 &&
+                 c.packing.scheme == (c.volumeTest == VolumeTest::Sphere ? PackingSchemeKind::BitShift
+                                                                         : PackingSchemeKind::MaxStencil)))
+        return;
     DYNAMIC_SECTION(c.name) {
         const int bits = c.packing.indexBits;
         ControlledOverlapOptions o;
@@ -115,10 +122,7 @@ TEST_CASE("controlled overlap under the exact tests (stencil and sphere): every 
 }
 
 TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[render][schemes][default-room]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     const ConfigCase c = GENERATE(from_range(withVolumeTests(
         packingCases({4}, {8}), {VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere})));
     DYNAMIC_SECTION(c.name) {
@@ -136,11 +140,7 @@ TEST_CASE("the default room with each scheme at budget 4, 8-bit indices", "[rend
 }
 
 TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][default-room][slow]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    Scene scene = makeDefaultScene(o);
+    Scene scene = testRoom(2.0f);
     const ConfigCase c = GENERATE(from_range(packingCases()));
     DYNAMIC_SECTION(c.name) {
         Scene s = scene;
@@ -161,7 +161,7 @@ TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][
 }
 
 TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres can mark one pixel, so they must "
-          "not share a group", "[render][cpu-sorted]") {
+          "not share a group", "[render][cpu-sorted][every-gl]") {
     const Scene scene = makeOccludedLightScene(controlledSize(true), controlledSize(false));
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     REQUIRE(glm::length(lights[0].position - lights[1].position) > 2.05f * (lights[0].radius + lights[1].radius) / 2.0f);
@@ -178,7 +178,7 @@ TEST_CASE("CPU sorting under the back-face test: lights with disjoint spheres ca
 }
 
 TEST_CASE("CPU sorting, one group: under back-face the disjoint pair conflicts (light 2 dropped and counted); under "
-          "the exact tests it does not (both in group 0, nothing dropped)", "[render][cpu-sorted]") {
+          "the exact tests it does not (both in group 0, nothing dropped)", "[render][cpu-sorted][every-gl]") {
     const Scene scene = makeOccludedLightScene(controlledSize(true), controlledSize(false));
     const VolumeTest test = GENERATE(VolumeTest::BackFace, VolumeTest::ExactStencil, VolumeTest::Sphere);
     DYNAMIC_SECTION(volumeTestName(test)) {
@@ -205,12 +205,9 @@ TEST_CASE("CPU sorting, one group: under back-face the disjoint pair conflicts (
 }
 
 TEST_CASE("CPU sorting groups per frame, deterministically, in priority order", "[cpu-sorted]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    const Scene scene = makeDefaultScene(o);
+    const Scene scene = testRoom();
     const std::vector<PointLight> lights = scene.lightsAt(1.0f);
-    const CameraMatrices cam = cameraMatrices(scene.camera, o.width, o.height);
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
     std::vector<VolumeLight> volumes;
     for (uint32_t index : LidrRenderer::drawOrder(lights)) {
         const PointLight& l = lights[index - 1];

@@ -81,7 +81,7 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
     }
 }
 
-TEST_CASE("a compile error in an included file names that file's source string and line", "[shader]") {
+TEST_CASE("a compile error in an included file names that file's source string and line", "[shader][every-gl]") {
     testContext();
     // shading.glsl line 7 is `uniform vec3 uEyePosition;`: defined away it is a syntax error there.
     REQUIRE(lines(shaderFile("shading.glsl")).at(6) == "uniform vec3 uEyePosition;");

@@ -64,7 +64,7 @@ Hit castRay(const glm::dvec3& origin, const glm::dvec3& direction, double& t) {
 }
 }  // namespace
 
-TEST_CASE("shadow atlas: each map holds the nearest surface's depth along its texels' rays", "[shadows]") {
+TEST_CASE("shadow atlas: each map holds the nearest surface's depth along its texels' rays", "[shadows][every-gl]") {
     testContext();
     const Scene scene = floorAndBox();
     GpuScene gpu(scene);
@@ -140,7 +140,7 @@ TEST_CASE("shadow atlas: each map holds the nearest surface's depth along its te
     CHECK(emptyTexels[1] > 3 * 128 * 128 / 2);  // the point light's upper faces see nothing within its range
 }
 
-TEST_CASE("shadow atlas: the packed RGBA8 atlas holds the depth texture's values, slope bias included", "[shadows]") {
+TEST_CASE("shadow atlas: the packed RGBA8 atlas holds the depth texture's values, slope bias included", "[shadows][every-gl]") {
     // Both maps' shaders compute the depth from the world position and add the slope bias from screen derivatives
     // (shadow_depth.frag); one writes gl_FragDepth into a depth texture, the other packs 24 bits into RGBA8. So the
     // two hold the same depth rounded twice, biased or not.
@@ -181,7 +181,7 @@ TEST_CASE("shadow atlas: the packed RGBA8 atlas holds the depth texture's values
     CHECK(worst < 1e-3);
 }
 
-TEST_CASE("shadow atlas: a map is drawn again only when its light moved or a change touched its range", "[shadows]") {
+TEST_CASE("shadow atlas: a map is drawn again only when its light moved or a change touched its range", "[shadows][every-gl]") {
     testContext();
     Scene scene = floorAndBox();
     addBox(scene, glm::vec3(40.0f, 0.0f, 40.0f), glm::vec3(41.0f, 1.0f, 41.0f), 0);  // far from both lights
@@ -207,7 +207,7 @@ TEST_CASE("shadow atlas: a map is drawn again only when its light moved or a cha
     CHECK(atlas.mapsDrawnTotal() == 8);
 }
 
-TEST_CASE("shadow atlas: refused sizes and casters name the rule", "[shadows][bad-input]") {
+TEST_CASE("shadow atlas: refused sizes and casters name the rule", "[shadows][bad-input][every-gl]") {
     testContext();
     ShadowAtlasOptions options;
     options.size = 300;
@@ -277,7 +277,7 @@ TEST_CASE("shadow lookup: the map position the shader derives from the light is 
     CHECK_FALSE(shadowMapCoord(lights[1], 0, lights[1].position + glm::vec3(3.0f, -0.1f, 0.0f)).seen);
 }
 
-TEST_CASE("shadows in the reference: every floor pixel away from a shadow's edge is as a CPU ray cast says", "[shadows]") {
+TEST_CASE("shadows in the reference: every floor pixel away from a shadow's edge is as a CPU ray cast says", "[shadows][every-gl]") {
     // The brute-force reference with shadows against an independent truth: for each light alone, a floor pixel
     // whose segment to the light the box blocks (by the ray cast in double precision) must look as if the light
     // were absent, an unblocked one as if it cast no shadow. Pixels within a band around the true edge (the maps'

@@ -115,7 +115,7 @@ GlCallCounters applyUnusualToUnknownCache(StateCache& cache) {
 
 }  // namespace
 
-TEST_CASE("the state cache skips a repeated state and applies only a changed field", "[state]") {
+TEST_CASE("the state cache skips a repeated state and applies only a changed field", "[state][every-gl]") {
     testContext();
     const StencilTarget target;
     StateCache& cache = StateCache::current();
@@ -150,7 +150,7 @@ TEST_CASE("the state cache skips a repeated state and applies only a changed fie
     requireGlHolds(RenderState{});
 }
 
-TEST_CASE("invalidating the state cache re-applies every field, and GL then holds the RenderState", "[state]") {
+TEST_CASE("invalidating the state cache re-applies every field, and GL then holds the RenderState", "[state][every-gl]") {
     testContext();
     const StencilTarget target;
     StateCache& cache = StateCache::current();
@@ -179,7 +179,7 @@ TEST_CASE("invalidating the state cache re-applies every field, and GL then hold
 }
 
 TEST_CASE("a pass description binds, sets the viewport and draw buffers, and its clear opens the masks it needs",
-          "[state]") {
+          "[state][every-gl]") {
     testContext();
     const int w = 6, h = 4;
     gl::Texture color0 = gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE);
@@ -229,7 +229,7 @@ TEST_CASE("a pass description binds, sets the viewport and draw buffers, and its
 }
 
 TEST_CASE("a frame's GL calls are counted in FrameStats, the same each frame, and leave the cache knowing nothing",
-          "[state][lidr]") {
+          "[state][lidr][every-gl]") {
     testContext();
     Scene scene = makeDefaultScene();
     scene.width = testWidth();
@@ -264,7 +264,7 @@ TEST_CASE("a frame's GL calls are counted in FrameStats, the same each frame, an
 }
 
 TEST_CASE("a uniform no shader declares is an error naming it; one the compiler removed is a harmless -1",
-          "[state][resources]") {
+          "[state][resources][every-gl]") {
     testContext();
     const std::string vertex = "#version 120\nattribute vec3 aPosition;\nvoid main() { gl_Position = vec4(aPosition, 1.0); }\n";
     const std::string fragment =

@@ -334,7 +334,7 @@ TEST_CASE("light grid: tile size is checked, lists are ascending and terminated"
 
 // --- GPU ----------------------------------------------------------------------------------------------
 
-TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer; half-Z ranges hold every depth", "[tiled][depth]") {
+TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer; half-Z ranges hold every depth", "[tiled][depth][every-gl]") {
     Scene scene = firstPersonScene();
     scene.lights = {light({0, 1, 0}, 2.0f)};
     for (bool packed : {false, true})
@@ -390,14 +390,11 @@ TEST_CASE("GPU tile min/max depth equals the CPU reduction of the depth buffer; 
         }
 }
 
-TEST_CASE("tiled equals the reference on the default room, with and without depth bounds", "[tiled]") {
-    DefaultSceneOptions o;
-    o.width = testWidth();
-    o.height = testHeight();
-    o.time = 2.0f;
-    const Scene scene = makeDefaultScene(o);
+TEST_CASE("tiled equals the reference on the default room, with and without depth bounds", "[tiled][every-gl]") {
+    const Scene scene = testRoom(2.0f);
     const ImageRGBA8 reference = referenceImage(scene, scene.lightsAt(scene.time), false);
     for (bool bounds : {true, false}) {
+        if (!takeRow(bounds)) continue;
         TiledOptions t;
         t.depthBounds = bounds;
         const TiledCheck c = renderTiled(scene, t, nullptr, &reference);
@@ -503,7 +500,7 @@ TEST_CASE("tiled: lights crossing the near plane, containing the camera, behind 
     }
 }
 
-TEST_CASE("tiled: transparent meshes are lit from their own lists and blended back to front", "[tiled][transparency]") {
+TEST_CASE("tiled: transparent meshes are lit from their own lists and blended back to front", "[tiled][transparency][every-gl]") {
     Scene scene = firstPersonScene();
     scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
     const int glass = int(scene.materials.size()) - 1;
@@ -539,7 +536,7 @@ TEST_CASE("tiled: transparent meshes are lit from their own lists and blended ba
     }
 }
 
-TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same way", "[tiled][msaa][transparency]") {
+TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same way", "[tiled][msaa][transparency][every-gl]") {
     const GlInfo& info = testGl();
     if (!info.multisampleFbo || info.maxSamples < 2) {
         WARN("no multisample FBOs in this context; MSAA not tested");
@@ -570,7 +567,7 @@ TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same 
     }
 }
 
-TEST_CASE("tiled: a tile list longer than the loop bound grows the shader, a full list texture grows", "[tiled][growth]") {
+TEST_CASE("tiled: a tile list longer than the loop bound grows the shader, a full list texture grows", "[tiled][growth][every-gl]") {
     Scene scene = topDownScene();
     // 70 lights all covering the middle of the floor: the longest tile list has 70 entries.
     for (int i = 0; i < 70; ++i)
@@ -588,7 +585,7 @@ TEST_CASE("tiled: a tile list longer than the loop bound grows the shader, a ful
     CHECK(long(c.frame.listTextureRows) * LightGridTextures::kListWidth >= c.grid.opaqueEntries);
 }
 
-TEST_CASE("tiled: more lights than the scene had grows the light table", "[tiled][growth]") {
+TEST_CASE("tiled: more lights than the scene had grows the light table", "[tiled][growth][every-gl]") {
     Scene scene = topDownScene();
     scene.lights = scatteredLights(3, 1.0f, 3.0f, 9);
     const std::vector<PointLight> more = scatteredLights(60, 0.5f, 2.5f, 10);
@@ -597,7 +594,7 @@ TEST_CASE("tiled: more lights than the scene had grows the light table", "[tiled
     CHECK(c.grid.assignedLights > 30);  // well past the 3 the table was made for
 }
 
-TEST_CASE("tiled: heat map of lights per tile", "[tiled][heatmap]") {
+TEST_CASE("tiled: heat map of lights per tile", "[tiled][heatmap][every-gl]") {
     Scene scene = topDownScene();
     scene.lights = {light({0, 0, 0}, 3.0f), light({0.5f, 0, 0}, 3.0f), light({8, 0, 8}, 1.0f)};
     TiledRenderer r(testGl(), scene, TiledOptions{}, scene.width, scene.height);
@@ -621,7 +618,7 @@ TEST_CASE("tiled: heat map of lights per tile", "[tiled][heatmap]") {
     }
 }
 
-TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input]") {
+TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input][every-gl]") {
     Scene scene = floorScene();
     scene.lights = {light({0, 1, 0}, 2.0f)};
     TiledOptions t;
@@ -654,7 +651,7 @@ TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input]") {
     REQUIRE(glGetError() == GL_NO_ERROR);
 }
 
-TEST_CASE("tiled: every GL object is released with its renderer", "[tiled][resources]") {
+TEST_CASE("tiled: every GL object is released with its renderer", "[tiled][resources][every-gl]") {
     testContext();
     const int before = gl::liveGlObjects();
     {

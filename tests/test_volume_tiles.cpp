@@ -259,13 +259,14 @@ Scene namedScene(const std::string& name, int w, int h) {
     return scene;
 }
 
-TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volume-tiles][lidr]") {
+TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volume-tiles][lidr][every-gl]") {
     struct Case {
         const char* scene;
         int budget, bits;
     };
     const Case c = GENERATE(Case{"room", 4, 8}, Case{"room", 16, 8}, Case{"hall-255", 8, 8}, Case{"hall-255", 16, 8},
                             Case{"city-255", 4, 8}, Case{"hall-1024", 16, 16});
+    if (!takeRow(std::string(c.scene) == "room" && c.budget == 4)) return;
     DYNAMIC_SECTION(c.scene << " bitshift b" << c.budget << " " << c.bits << "-bit") {
         const Scene scene = namedScene(c.scene, 192, 144);
         LidrOptions o;
@@ -286,7 +287,7 @@ TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volu
     }
 }
 
-TEST_CASE("tile culling is skipped where the lights cover less than a screen", "[volume-tiles][lidr]") {
+TEST_CASE("tile culling is skipped where the lights cover less than a screen", "[volume-tiles][lidr][every-gl]") {
     Scene scene = floorScene();
     scene.lights = {light(glm::vec3(0.0f, 0.5f, 0.0f), 1.0f), light(glm::vec3(2.0f, 0.5f, 1.0f), 1.5f)};
     const RenderResult small = renderAndEvaluate(scene, LidrOptions{});
@@ -387,7 +388,7 @@ TEST_CASE("tile culling gives way to volume meshes where a tile frame measured t
     }
 }
 
-TEST_CASE("a frame without a reachable light draws no light volume and reads no index texture", "[volume-tiles][lidr]") {
+TEST_CASE("a frame without a reachable light draws no light volume and reads no index texture", "[volume-tiles][lidr][every-gl]") {
     const bool tiles = GENERATE(true, false);
     const int lightSet = GENERATE(0, 1);  // no lights at all; lights only behind the camera
     DYNAMIC_SECTION((tiles ? "tile-culled" : "volume meshes") << (lightSet ? ", lights behind the camera" : ", no lights")) {

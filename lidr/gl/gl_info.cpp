@@ -94,6 +94,8 @@ static GlInfo esContextGlInfo(GlInfo info) {
 
     info.framebufferObject = hasExtension("GL_OES_packed_depth_stencil");  // lidr shares one depth-stencil
     info.textureFloat = hasExtension("GL_OES_texture_float");
+    info.halfFloatColorBuffer =
+        hasExtension("GL_OES_texture_half_float") && hasExtension("GL_EXT_color_buffer_half_float");
     info.timerQuery = false;
     info.occlusionQuery = false;
     // Mesa's ES 2.0 has EXT_depth_clamp, but applyRenderState turns clamping on through the desktop flags, and
@@ -156,6 +158,10 @@ GlInfo currentContextGlInfo(const std::string& backendName) {
     info.framebufferObject = (gl30 || hasExtension("GL_ARB_framebuffer_object")) && glGenFramebuffers &&
                               glBindFramebuffer && glFramebufferTexture2D;
     info.textureFloat = gl30 || hasExtension("GL_ARB_texture_float");
+    // Without ARB_color_buffer_float a GL 2.1 context clamps fragment colours to [0, 1] whatever the buffer (and
+    // leaves blending into float buffers undefined); with it, and in GL 3.0, the default clamp is FIXED_ONLY.
+    info.halfFloatColorBuffer = info.framebufferObject &&
+                                (gl30 || (hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float")));
     info.timerQuery = (hasExtension("GL_ARB_timer_query") && glGetQueryObjectui64v) ||
                        (hasExtension("GL_EXT_timer_query") && glGetQueryObjectui64vEXT);
     info.depthClamp = hasExtension("GL_ARB_depth_clamp") || hasExtension("GL_NV_depth_clamp");
@@ -191,13 +197,14 @@ std::string GlInfo::summary() const {
     if (gles) {
         s << "backend " << backend << ", " << version << ", renderer " << renderer << ", " << glslVersion
           << ", draw buffers " << (drawBuffers ? maxDrawBuffers : 1) << ", MAX blend " << (blendMinMax ? "yes" : "no")
-          << ", float textures " << (textureFloat ? "yes" : "no") << ", depth textures "
-          << (depthTexture ? "yes" : "no") << ", fragment highp " << (fragmentHighp ? "yes" : "no")
+          << ", float textures " << (textureFloat ? "yes" : "no") << ", half-float colour buffers "
+          << (halfFloatColorBuffer ? "yes" : "no") << ", depth textures " << (depthTexture ? "yes" : "no") << ", fragment highp " << (fragmentHighp ? "yes" : "no")
           << ", depth clamp " << (depthClamp ? "yes" : "no") << ", occlusion and timer queries no, MSAA no";
         return s.str();
     }
     s << "backend " << backend << ", GL " << version << ", renderer " << renderer << ", GLSL " << glslVersion
       << ", FBO " << (framebufferObject ? "yes" : "no") << ", float textures " << (textureFloat ? "yes" : "no")
+      << ", half-float colour buffers " << (halfFloatColorBuffer ? "yes" : "no")
       << ", timer queries " << (timerQuery ? "yes" : "no") << ", max samples " << maxSamples;
     return s.str();
 }

@@ -17,6 +17,11 @@ struct GlInfo {
     bool framebufferObject = false;   // ARB_framebuffer_object or EXT_framebuffer_object + packed depth-stencil;
                                       // ES 2.0: core FBOs + OES_packed_depth_stencil
     bool textureFloat = false;        // ARB_texture_float (light table in float textures); ES: OES_texture_float
+    // Rendering to RGBA16F with additive blending, unclamped (multi-pass forward sums its lights there): GL 3.0,
+    // or GL 2.1 with ARB_texture_float (the format) + ARB_color_buffer_float (float colour buffers blend in float,
+    // fragment colours unclamped for them); ES 2.0 / WebGL 1: OES_texture_half_float + EXT_color_buffer_half_float.
+    // What the extensions promise; the framebuffer's completeness is checked where the target is made.
+    bool halfFloatColorBuffer = false;
     bool timerQuery = false;          // ARB_timer_query or EXT_timer_query; ES: none used (timing is CPU)
     bool occlusionQuery = true;       // sample-count queries (GL 1.5); ES 2.0: none (EXT_occlusion_query_boolean
                                       // only says "any", the overlap probe needs counts)

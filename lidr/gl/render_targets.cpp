@@ -141,15 +141,18 @@ void RenderTargets::bindColor() const { StateCache::current().beginPass(colorPas
 
 void RenderTargets::bindSingleSample() const { StateCache::current().beginPass(singleSamplePass()); }
 
-void RenderTargets::resolve() const {
-    if (samples_ == 0) return;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_.id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, colorFbo_.id());
+void resolveColor(const gl::Framebuffer& from, const gl::Framebuffer& to, int width, int height, const char* what) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to.id());
     readFromColorAttachment0();
     drawToColorAttachment0();
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     StateCache::current().bindFramebuffer(0);
-    checkGl("MSAA resolve");
+    checkGl(what);
+}
+
+void RenderTargets::resolve() const {
+    if (samples_ > 0) resolveColor(msaaFbo_, colorFbo_, width_, height_, "MSAA resolve");
 }
 
 void RenderTargets::resolve(FrameTimer& timer) const {

@@ -56,6 +56,10 @@ private:
     gl::Framebuffer msaaFbo_;
 };
 
+// Colour attachment 0 of the multisample `from` resolved into that of `to` (glBlitFramebuffer, both width x
+// height); leaves framebuffer 0 bound. `what` names the resolve in a GL error.
+void resolveColor(const gl::Framebuffer& from, const gl::Framebuffer& to, int width, int height, const char* what);
+
 // Checks a resolution against the context before anything is allocated.
 void checkResolution(const GlInfo& info, int width, int height);
 // Checks a depth precision against the context before anything is allocated: 24 (always) or 16, which needs a

@@ -149,6 +149,13 @@ std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, c
     return source.substr(0, v) + header + body;
 }
 
+std::string perSampleGlsl150(std::string source) {
+    const std::string v120 = "#version 120";
+    const size_t at = source.find(v120);
+    if (at == std::string::npos) throw Error("shader without #version 120");
+    return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
+}
+
 std::string shaderSourceStrings(const std::string& source) {
     const size_t a = source.find(kSourceStrings);
     if (a == std::string::npos) return {};

@@ -54,6 +54,11 @@ enum class ShaderStage { Vertex, Fragment };
 // Throws lidr::Error for a source that needs more than GLSL 1.20 (the per-sample MSAA path's 1.50), naming it.
 std::string glslEs100FromGlsl120(const std::string& source, ShaderStage stage, const std::string& name);
 
+// A GLSL 1.20 source (what buildShaderSource makes) as GLSL 1.50 compatibility with ARB_sample_shading, for
+// the per-sample MSAA paths: texelFetch on sampler2DMS and gl_SampleID; the compatibility profile keeps every
+// GLSL 1.20 construct the shaders use. Throws lidr::Error for a source without `#version 120`.
+std::string perSampleGlsl150(std::string source);
+
 // "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.
 std::string shaderSourceStrings(const std::string& source);
 

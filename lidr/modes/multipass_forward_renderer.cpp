@@ -28,20 +28,29 @@ RenderState onceAtPrepassDepth(GLint stamp) {
 
 MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
                                                    const MultipassOptions& options, int width, int height)
-    : options_(options),
-      scene_(scene, DrawOrder::Reversed),  // the stamps keep the first fragment: see render()
-      targets_(info, width, height, options.msaaSamples),
-      lightTable_(info, std::max<int>(1, int(scene.lights.size())), options.forceFixedLightTable),
-      shadows_(info),
-      timer_(info, options.timingMethod),
-      info_(info) {
+    // The scene drawn in reverse: the stamps keep the first fragment (see render()).
+    : ForwardRendererBase(info, scene, ForwardRendererSetup::of(options, scene, width, height, DrawOrder::Reversed)),
+      options_(options) {
     const ShaderDefines defines = lightTable_.defines();
     ambient_ = gl::Program::create("forward-ambient", buildShaderSource("geometry.vert"),
                                    buildShaderSource("forward_ambient.frag", defines), geometryAttributes());
     light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
                                  buildShaderSource("forward_light.frag", defines), geometryAttributes());
     lightDefines_ = defines;
-    timer_.setEnabled(options.timing);
+    if (!options.halfFloatAccumulation) {
+        accumulationNote_ = "forced (MultipassOptions::halfFloatAccumulation false)";
+    } else {
+        try {
+            halfFloat_ = HalfFloatTarget(info, targets_);
+        } catch (const UnsupportedError& e) {
+            accumulationNote_ = e.what();
+        }
+        if (halfFloat_ && targets_.samples() > 0)
+            accumulationNote_ = halfFloat_.multisampleTexture()
+                                    ? "MSAA samples encoded one by one, then averaged"
+                                    : "MSAA samples averaged in linear light, then encoded (no multisample textures "
+                                      "with sample shading, GL 3.2 + ARB_sample_shading)";
+    }
 }
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -54,25 +63,18 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     const FrameScope frame(stats_, timer_, lights.size());
     meshDraws_ = 0;
 
-    if (static_cast<int>(lights.size()) > lightTable_.capacity())
-        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-
-    TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights, shadowTiles);
-    lightTableTime.end();
-
-    TimedPass depthPrepassTime(timer_, "depth-prepass");
-    targets_.bindColor();
-    depthPrepass_.run(scene_, cam);
-    depthPrepassTime.end();
+    growLightTable(lights.size());
+    updateLights(lights, shading);
+    // Every pass draws into the half-float target where there is one, else into the 8-bit colour target; both
+    // share the one depth-stencil.
+    const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : targets_.colorPass();
+    drawDepthPrepass(cam, &sumPass);
 
     TimedPass ambientTime(timer_, "ambient");
     // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
     ShadingParameters linearShading = shading;
     linearShading.output = OutputTransform::linear();
-    beginOpaqueShading(targets_, linearShading, true);
+    beginOpaqueShading(sumPass, linearShading, true);
     StateCache& cache = StateCache::current();
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
@@ -153,18 +155,31 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     stats_.volumeDrawCalls = meshDraws_;
     cache.apply(RenderState{});
     lightPassesTime.end();
-    targets_.resolve(timer_);
     const OutputTransform& output = shading.output;
-    if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
+    if (halfFloat_ && halfFloat_.multisampleTexture()) {
+        // Each sample encoded, then the encoded samples averaged, as the single-pass modes resolve.
         TimedPass encodeTime(timer_, "output-encode");
-        outputEncode_.run(targets_, output);
+        outputEncode_.run(targets_, output, halfFloat_.multisampleTexture());
         encodeTime.end();
+        targets_.resolve(timer_);
+    } else if (halfFloat_) {
+        if (targets_.samples() > 0) {  // averaged in linear light, then encoded (doc/colour.md)
+            TimedPass msaaResolveTime(timer_, "msaa-resolve");
+            halfFloat_.resolve();
+        }
+        TimedPass encodeTime(timer_, "output-encode");  // always: it also writes the 8-bit colour target
+        outputEncode_.run(targets_, output, halfFloat_.texture());
+        encodeTime.end();
+    } else {
+        targets_.resolve(timer_);
+        if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
+            TimedPass encodeTime(timer_, "output-encode");
+            outputEncode_.run(targets_, output);
+            encodeTime.end();
+        }
     }
 
-    StateCache::current().bindFramebuffer(0);
-    checkGl("MultipassForwardRenderer::render");
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
+    finishFrame("MultipassForwardRenderer::render");
     return stats_;
 }
 

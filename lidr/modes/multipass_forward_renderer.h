@@ -7,20 +7,19 @@
 // drawn in reverse so that it is the fragment single-pass modes keep (doc/tiled.md, "One fragment per pixel
 // and pass"). Under MSAA meshes are culled by screen rectangles (exactMsaaCulling).
 //
-// Accuracy: every pass writes the 8-bit target, so each term is rounded on its own; at a pixel lit by n
-// lights the image can differ from the single-pass reference by up to floor(n / 2) + 1 steps (doc/tiled.md).
+// Accuracy: the passes sum linear light in a half-float target (HalfFloatTarget) where the context renders to
+// one (GlInfo::halfFloatColorBuffer), and an encode pass runs the output transform over the float sum once, as
+// the single-pass modes do in their shader: within 1 step of the reference, like them (doc/tiled.md). Where the
+// context has none (or MultipassOptions::halfFloatAccumulation is false) they blend into the 8-bit colour
+// target: each term rounded on its own, the sum clamped at 1 before the tone map; at a pixel lit by n lights the
+// linear image can differ from the reference by up to floor(n / 2) + 1 steps (doc/colour.md).
 // Transparent meshes are not drawn: additive light passes cannot alpha-blend a surface over what is behind it.
 #include <string>
 #include <vector>
 
-#include "lidr/render/depth_prepass.h"
-#include "lidr/gl/frame_timer.h"
-#include "lidr/render/gpu_scene.h"
-#include "lidr/render/light_table.h"
+#include "lidr/render/forward_renderer_base.h"
 #include "lidr/render/present.h"
-#include "lidr/gl/render_targets.h"
-#include "lidr/render/renderer.h"
-#include "lidr/render/shadow_maps.h"
+#include "lidr/gl/half_float_target.h"
 
 namespace lidr {
 
@@ -32,39 +31,34 @@ struct MultipassOptions {
     bool exactMsaaCulling = true;
     bool forceFixedLightTable = false;
     int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES: shading multisampled, then resolved
+    // Sum the passes in a half-float target where the context can render to one; false: in the 8-bit colour
+    // target, as where it cannot (the tests of that path; its cost, lidr-bench --multipass-accumulation).
+    bool halfFloatAccumulation = true;
     bool timing = false;  // as LidrOptions::timing
     TimingMethod timingMethod = TimingMethod::Auto;
 };
 
-class MultipassForwardRenderer final : public Renderer {
+class MultipassForwardRenderer final : public ForwardRendererBase {
 public:
     MultipassForwardRenderer(const GlInfo& info, const Scene& scene, const MultipassOptions& options, int width,
                              int height);
     std::string modeName() const override { return "forward-multipass"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
-    const RenderTargets& targets() const override { return targets_; }
-    void setTiming(bool on, bool waitForResults = false) override {
-        timer_.setEnabled(on);
-        timer_.setWaitForResults(waitForResults);
-    }
     long meshDrawCalls() const { return meshDraws_; }  // light-pass mesh draws of the last frame
-
-    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
+    // Where the passes sum their light: "half-float" or "8-bit", chosen when the renderer was made.
+    const char* accumulation() const { return halfFloat_ ? "half-float" : "8-bit"; }
+    // Why the 8-bit target (forced, or what the context lacks); with half float and MSAA, how the samples are
+    // resolved; else empty.
+    const std::string& accumulationNote() const { return accumulationNote_; }
 
 private:
     MultipassOptions options_;
-    GpuScene scene_;
-    RenderTargets targets_;
-    LightTable lightTable_;
-    DepthPrepass depthPrepass_;
+    HalfFloatTarget halfFloat_;  // empty: the passes blend into targets_' 8-bit colour
+    std::string accumulationNote_;
     gl::Program ambient_, light_;
     ShaderDefines lightDefines_;  // light_'s, for its shadowed twin (ShadowMaps::program)
-    ShadowMaps shadows_;
     OutputEncodePass outputEncode_;  // its passes sum linear light; the output transform runs over the sum
-    FrameTimer timer_;
-    const GlInfo info_;
     long meshDraws_ = 0;
 };
 

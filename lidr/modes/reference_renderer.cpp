@@ -11,14 +11,10 @@ namespace lidr {
 ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int width, int height, int lightCapacity,
                                      bool forceFixedLightTable, int msaaSamples, bool transparency,
                                      bool sampleShading)
-    : scene_(scene),
-      targets_(info, width, height, msaaSamples),
-      lightTable_(info, lightCapacity, forceFixedLightTable),
-      shadows_(info),
-      timer_(info),
+    // Timing off: Renderer::setTiming turns it on.
+    : ForwardRendererBase(info, scene, {width, height, msaaSamples, lightCapacity, forceFixedLightTable}),
       transparency_(transparency),
       sampleShading_(sampleShading) {
-    timer_.setEnabled(false);  // Renderer::setTiming turns it on
     if (sampleShading && !info.sampleShading)
         throw UnsupportedError("sample shading (GL 4.0 / ARB_sample_shading) is not available in this context");
     ShaderDefines defines = lightTable_.defines();
@@ -37,16 +33,8 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-    TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights, shadowTiles);
-    lightTableTime.end();
-
-    TimedPass depthPrepassTime(timer_, "depth-prepass");
-    targets_.bindColor();  // the MSAA target when multisampled: the reference has no index pass to feed
-    depthPrepass_.run(scene_, cam);
-    depthPrepassTime.end();
+    updateLights(lights, shading);
+    drawDepthPrepass(cam);  // into the MSAA target when multisampled: the reference has no index pass to feed
 
     TimedPass bruteForceTime(timer_, "brute-force");
     beginOpaqueShading(targets_, shading, true, sampleShading_);
@@ -67,10 +55,7 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});
     targets_.resolve(timer_);
-    cache.bindFramebuffer(0);
-    checkGl("reference render");
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
+    finishFrame("reference render");
     return stats_;
 }
 

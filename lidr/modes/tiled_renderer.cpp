@@ -14,46 +14,41 @@
 namespace lidr {
 
 namespace {
-const TiledOptions& checkedOptions(const TiledOptions& o) {
+void checkOptions(const TiledOptions& o) {
     if (o.depthBounds && !o.preZ)
         throw Error("tiled: per-tile depth bounds need the pre-Z pass (depthBounds without preZ)");
     if (o.halfZ && !o.depthBounds)
         throw Error("tiled: half-Z splits the per-tile depth bounds (halfZ without depthBounds)");
     if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
         throw Error("tiled: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
-    return o;
 }
 
-int lightCapacity(const Scene& scene) { return std::max<int>(1, int(scene.lights.size())); }
-
-}  // namespace
-
-// Before any GL object: per-tile depth bounds write gl_FragCoord.z into colour, and GLSL ES 1.00 declares
-// gl_FragCoord mediump (Mesa's ES 2.0 then gives depth to about 11 bits: bounds that miss the surface).
-static void checkContextFor(const GlInfo& info, const TiledOptions& o) {
+// Before any GL object: the options (checkOptions), then the context: per-tile depth bounds write
+// gl_FragCoord.z into colour, and GLSL ES 1.00 declares gl_FragCoord mediump (Mesa's ES 2.0 then gives depth to
+// about 11 bits: bounds that miss the surface).
+const GlInfo& checkedContext(const GlInfo& info, const TiledOptions& o) {
+    checkOptions(o);
     if (info.gles && o.depthBounds && o.msaaSamples == 0)
         throw UnsupportedError("tiled depth bounds read gl_FragCoord.z, which OpenGL ES 2.0 (GLSL ES 1.00) gives only "
                                "at mediump: use --no-depth-bounds on ES");
+    return info;
 }
+
+}  // namespace
 
 TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const TiledOptions& options, int width,
                              int height)
-    : options_(checkedOptions(options)),
-      scene_(scene),
-      targets_((checkContextFor(info, options_), info), width, height, options.msaaSamples),
+    : ForwardRendererBase(checkedContext(info, options), scene,
+                          ForwardRendererSetup::of(options, scene, width, height)),
+      options_(options),
       grid_(width, height, options.tileSize),
-      gridTextures_(info, grid_.tilesX(), grid_.tilesY()),
-      lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),
-      shadows_(info),
-      timer_(info, options.timingMethod),
-      info_(info) {
+      gridTextures_(info, grid_.tilesX(), grid_.tilesY()) {
     if (options_.depthBounds && options_.msaaSamples == 0)
         depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
                                                          targets_.depthStencil(), options_.forcePackedDepth,
                                                          options_.halfZ);
     buildProgram(options_.initialLoopBound);
     frameInfo_.shaderRebuilds = 0;
-    timer_.setEnabled(options_.timing);
 }
 
 DepthReductionFormat TiledRenderer::depthFormat() const {
@@ -86,15 +81,8 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     const FrameScope frame(stats_, timer_, lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
-    if (static_cast<int>(lights.size()) > lightTable_.capacity()) {  // grow rather than refuse
-        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    }
-    const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-
-    TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights, shadowTiles);
-    lightTableTime.end();
+    growLightTable(lights.size());
+    updateLights(lights, shading);
 
     TimedPass depthPrepassTime(timer_, "depth-prepass");
     if (depthBounds_) {
@@ -155,10 +143,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
-    cache.bindFramebuffer(0);
-    checkGl("TiledRenderer::render");
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
+    finishFrame("TiledRenderer::render");
 
     frameInfo_.grid = gs;
     frameInfo_.assignMilliseconds = assignMs;

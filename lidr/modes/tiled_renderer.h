@@ -11,16 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "lidr/render/depth_prepass.h"
-#include "lidr/gl/frame_timer.h"
-#include "lidr/render/gpu_scene.h"
 #include "lidr/base/image.h"
 #include "lidr/modes/light_grid.h"
-#include "lidr/render/light_table.h"
-#include "lidr/gl/render_targets.h"
-#include "lidr/render/renderer.h"
-#include "lidr/render/shadow_maps.h"
 #include "lidr/modes/tile_depth_bounds.h"
+#include "lidr/render/forward_renderer_base.h"
 
 namespace lidr {
 
@@ -51,7 +45,7 @@ struct TiledFrameInfo {
                                       // do not see CPU work)
 };
 
-class TiledRenderer final : public Renderer {
+class TiledRenderer final : public ForwardRendererBase {
 public:
     // Checks everything before any drawing: FBOs, resolution, tile size (lidr::Error for < 1 or larger than
     // the screen), depthBounds without preZ (lidr::Error).
@@ -61,20 +55,12 @@ public:
     // Light i has index i + 1; at most 65535 lights (the light table grows to hold them).
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
-    const RenderTargets& targets() const override { return targets_; }
-    void setTiming(bool on, bool waitForResults = false) override {
-        timer_.setEnabled(on);
-        timer_.setWaitForResults(waitForResults);
-    }
     size_t lightDataBytes() const override;
 
     const TiledOptions& options() const { return options_; }
     const LightGrid& grid() const { return grid_; }               // the last frame's tile lists
     const TiledFrameInfo& frameInfo() const { return frameInfo_; }
     const std::vector<TileDepthRange>& tileDepth() const { return tileDepth_; }  // empty without depth bounds
-    const LightTable& lightTable() const { return lightTable_; }
-    const ShadowMaps& shadowMaps() const { return shadows_; }
     DepthReductionFormat depthFormat() const;  // of the reduction (meaningful with depthBounds)
     size_t depthReductionBytes() const { return depthBounds_ ? depthBounds_->bytes() : 0; }
     size_t gridBytes() const { return gridTextures_.gridBytes(); }
@@ -84,24 +70,15 @@ public:
     // blue -> yellow up to `budget`, red past it; `transparent` shows the transparent lists.
     ImageRGBA8 tileHeatMap(int budget = 16, bool transparent = false) const;
 
-    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
-
 private:
     void buildProgram(int loopBound);
 
     TiledOptions options_;
-    GpuScene scene_;
-    RenderTargets targets_;
     LightGrid grid_;
     LightGridTextures gridTextures_;
-    LightTable lightTable_;
-    DepthPrepass depthPrepass_;
     std::unique_ptr<TileDepthBounds> depthBounds_;
     gl::Program program_;
     ShaderDefines programDefines_;  // program_'s, for its shadowed twin (ShadowMaps::program)
-    ShadowMaps shadows_;
-    FrameTimer timer_;
-    const GlInfo info_;
     std::vector<TileDepthRange> tileDepth_;
     TiledFrameInfo frameInfo_;
 };

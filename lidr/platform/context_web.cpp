@@ -19,7 +19,8 @@ namespace {
 constexpr const char* kWantedExtensions[] = {
     "WEBGL_draw_buffers",      "EXT_blend_minmax",        "OES_texture_float",     "WEBGL_depth_texture",
     "OES_element_index_uint",  "OES_vertex_array_object", "ANGLE_instanced_arrays", "EXT_disjoint_timer_query",
-    "OES_standard_derivatives", "EXT_frag_depth",           "EXT_depth_clamp",
+    "OES_standard_derivatives", "EXT_frag_depth",           "EXT_depth_clamp",       "OES_texture_half_float",
+    "EXT_color_buffer_half_float",  // with the one before: multi-pass forward sums its passes in half float
 };
 
 class WebGlContext final : public GlContext {

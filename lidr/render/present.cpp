@@ -63,14 +63,36 @@ OutputEncodePass::OutputEncodePass() {
 void OutputEncodePass::run(const RenderTargets& targets, const OutputTransform& output) {
     if (scratch_.width() != targets.width() || scratch_.height() != targets.height())
         scratch_ = gl::Texture::create2D(GL_RGBA8, targets.width(), targets.height(), GL_RGBA, GL_UNSIGNED_BYTE);
-    StateCache& cache = StateCache::current();
-    cache.beginPass(targets.singleSamplePass());
-    cache.apply(RenderState{});
+    StateCache::current().beginPass(targets.singleSamplePass());
     scratch_.bind(gl::kUnitPresentedFrame);
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets.width(), targets.height());
-    program_.use();
-    setOutputUniforms(program_, output);
-    drawFullScreen(program_, triangle_, scratch_);
+    run(targets, output, scratch_);
+}
+
+void OutputEncodePass::run(const RenderTargets& targets, const OutputTransform& output, const gl::Texture& linearFrame) {
+    if (linearFrame.width() != targets.width() || linearFrame.height() != targets.height())
+        throw Error("OutputEncodePass: a " + std::to_string(linearFrame.width()) + "x" +
+                    std::to_string(linearFrame.height()) + " frame for " + std::to_string(targets.width()) + "x" +
+                    std::to_string(targets.height()) + " targets");
+    const bool perSample = linearFrame.samples() > 0;
+    if (perSample && linearFrame.samples() != targets.samples())
+        throw Error("OutputEncodePass: a " + std::to_string(linearFrame.samples()) + "x frame for " +
+                    std::to_string(targets.samples()) + "x targets");
+    if (perSample && !perSampleProgram_)
+        perSampleProgram_ = gl::Program::create(
+            "output-encode-per-sample", perSampleGlsl150(buildShaderSource("present.vert")),
+            perSampleGlsl150(buildShaderSource("output_encode.frag", {{"LIDR_FRAME_PER_SAMPLE", "1"}})),
+            {{"aPosition", gl::kPosition}});
+    const gl::Program& program = perSample ? perSampleProgram_ : program_;
+    StateCache& cache = StateCache::current();
+    cache.beginPass(perSample ? targets.colorPass() : targets.singleSamplePass());
+    RenderState s;
+    s.sampleShading = perSample;
+    cache.apply(s);
+    program.use();
+    setOutputUniforms(program, output);
+    drawFullScreen(program, triangle_, linearFrame);
+    if (perSample) cache.apply(RenderState{});
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     checkGl("OutputEncodePass");

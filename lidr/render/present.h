@@ -28,20 +28,25 @@ private:
     gl::Buffer triangle_;
 };
 
-// The output transform (exposure, tone map, sRGB) applied in place to a frame whose colour target holds linear
-// light: multi-pass forward sums its lights by additive blending, so no one shader sees a pixel's whole sum.
-// The frame is copied to a scratch texture (glCopyTexSubImage2D, GL 1.1 / ES 2.0) and drawn back through
-// output_encode.frag. Its linear sum was rounded to 8 bits per pass first: dark pixels carry that rounding
-// through the encoding's steep start (doc/colour.md).
+// The output transform (exposure, tone map, sRGB) applied to a frame of linear light: multi-pass forward sums
+// its lights by additive blending, so no one shader sees a pixel's whole sum. From a half-float target
+// (HalfFloatTarget) the sum is drawn through output_encode.frag into the colour target; where the context has
+// none, the sum was blended into the 8-bit colour target itself, rounded to 8 bits per pass and clamped at 1,
+// and is copied to a scratch texture (glCopyTexSubImage2D, GL 1.1 / ES 2.0) and drawn back (doc/colour.md).
 class OutputEncodePass {
 public:
     OutputEncodePass();  // compiles its program; needs the context current
     // Into targets.color() (after any MSAA resolve), through the single-sample colour FBO. Leaves the state
     // cache's pass at that FBO with default state.
     void run(const RenderTargets& targets, const OutputTransform& output);
+    // The same from `linearFrame` (the targets' size; read at texel centres, no filtering) into targets.color().
+    // A multisample `linearFrame` (the targets' samples; HalfFloatTarget::multisampleTexture) is encoded sample
+    // by sample (GLSL 1.50, sample shading) into the targets' multisample colour (colorPass()): resolve after.
+    void run(const RenderTargets& targets, const OutputTransform& output, const gl::Texture& linearFrame);
 
 private:
     gl::Program program_;
+    gl::Program perSampleProgram_;  // compiled on first use
     gl::Buffer triangle_;
     gl::Texture scratch_;
 };

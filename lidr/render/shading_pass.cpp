@@ -10,13 +10,19 @@ namespace lidr {
 
 void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& shading, bool afterPrepass,
                         bool sampleShading) {
+    beginOpaqueShading(targets.colorPass(), shading, afterPrepass, sampleShading);
+}
+
+void beginOpaqueShading(PassDescription pass, const ShadingParameters& shading, bool afterPrepass,
+                        bool sampleShading) {
     StateCache& cache = StateCache::current();
-    ClearAction clear;
+    ClearAction& clear = pass.clear;
+    clear = ClearAction{};
     clear.color = true;
     // The background is linear light like everything else: cleared to its output-transformed value.
     clear.colorValue = glm::vec4(glm::vec3(applyOutputTransform(glm::dvec3(shading.background), shading.output)), 1.0f);
     clear.depth = clear.stencil = !afterPrepass;  // without a pre-pass this pass writes its own depth
-    cache.beginPass(targets.colorPass(clear));
+    cache.beginPass(pass);
     RenderState s;
     s.depthTest = true;
     s.depthFunc = afterPrepass ? GL_EQUAL : GL_LEQUAL;

@@ -21,6 +21,9 @@ namespace lidr {
 // stays (lidr/render/gpu_scene.h: DrawOrder). sampleShading: every sample shaded (the per-sample MSAA paths).
 void beginOpaqueShading(const RenderTargets& targets, const ShadingParameters& shading, bool afterPrepass,
                         bool sampleShading = false);
+// The same in `pass` (its own clear replaced): a target beside the RenderTargets sharing their depth-stencil.
+void beginOpaqueShading(PassDescription pass, const ShadingParameters& shading, bool afterPrepass,
+                        bool sampleShading = false);
 
 // The state transparent layers are drawn with, in every mode: over the opaque depth, no depth writes,
 // source-alpha blending, destination alpha kept.

@@ -11,14 +11,6 @@
 namespace lidr {
 
 namespace {
-// Per-sample index reads need texelFetch on sampler2DMS (GLSL 1.50) and gl_SampleID (ARB_sample_shading);
-// the compatibility profile keeps every GLSL 1.20 construct the shaders use.
-std::string perSampleVersion(std::string source) {
-    const std::string v120 = "#version 120";
-    const size_t at = source.find(v120);
-    if (at == std::string::npos) throw Error("shader without #version 120");
-    return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
-}
 // The frame's shading variant of a forward program: suns, output transform, and whether indices are region-local.
 uint32_t variantKey(const gl::Program& program, const LightTable& table, const ShadingParameters& shading, bool lights) {
     return shadingVariantKey(program, shading) | regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f);
@@ -54,8 +46,8 @@ ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, b
                                                 : buildShaderSourceFromText("material shader", materialShader, none, noUnpack);
     lightlessName_ = name + "-no-lights";
     if (perSample) {  // shaded per sample like the lit program
-        lightlessVertex_ = perSampleVersion(lightlessVertex_);
-        lightlessFragment_ = perSampleVersion(lightlessFragment_);
+        lightlessVertex_ = perSampleGlsl150(lightlessVertex_);
+        lightlessFragment_ = perSampleGlsl150(lightlessFragment_);
     }
 }
 
@@ -69,8 +61,8 @@ gl::Program ForwardPass::build(const ShaderDefines& extra) const {
                                ? buildShaderSource("lidr_forward.frag", defines, unpack)
                                : buildShaderSourceFromText("material shader", materialShader_, defines, unpack);
     if (perSample_) {
-        vertex = perSampleVersion(vertex);
-        fragment = perSampleVersion(fragment);
+        vertex = perSampleGlsl150(vertex);
+        fragment = perSampleGlsl150(fragment);
     }
     return gl::Program::create(name_ + (extra.empty() ? "" : "-shadowed"), vertex, fragment, geometryAttributes());
 }

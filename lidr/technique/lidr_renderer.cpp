@@ -3,7 +3,6 @@
 #include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
-#include <numeric>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -11,15 +10,6 @@
 #include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
-
-namespace {
-// Pixels of the light's sphere rectangle on screen (0 off screen): about what its volume mesh covers.
-double sphereRectPixels(const CameraMatrices& cam, const PointLight& l) {
-    glm::ivec4 r;
-    if (!spherePixelRect(cam, l.position, l.radius * LightVolumePass::kSphereRadiusScale, r)) return 0.0;
-    return double(r.z - r.x + 1) * double(r.w - r.y + 1);
-}
-}  // namespace
 
 namespace {
 // The options a context without occlusion queries (OpenGL ES 2.0) can run: an automatic budget is measured by
@@ -137,6 +127,16 @@ int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingCo
     }
     return std::max<int>(255, lights);
 }
+
+// The probe's thresholds a volume pass asks about this frame (bit i: OverlapProbe::kThreshold[i]). Steady frames
+// ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may narrow); only an
+// overflowing frame asks how far over (measuredNeed), and a renderer's first frame asks everything at once.
+unsigned thresholdsToAsk(const AutoConfiguration& a, int budget, bool& narrowingAsked) {
+    narrowingAsked = a.asksNarrowing();
+    return !a.measured() ? OverlapProbe::kAll
+           : narrowingAsked ? OverlapProbe::aroundBudget(budget)
+                            : OverlapProbe::atBudget(budget);
+}
 }  // namespace
 
 LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& requested, int width, int height)
@@ -246,209 +246,41 @@ const IndexTargets& LidrRenderer::transparentIndexTargets() const {
     return transparentIndexTargets_ ? *transparentIndexTargets_ : *indexTargets_;
 }
 
-std::vector<uint32_t> LidrRenderer::drawOrder(const std::vector<PointLight>& lights) {
-    std::vector<uint32_t> order(lights.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](uint32_t a, uint32_t b) { return lights[a].priority > lights[b].priority; });
-    for (uint32_t& i : order) ++i;  // 1-based light indices
-    return order;
-}
-
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
-    const bool autoBits = options_.packing.autoIndexBits(), autoBudget = options_.packing.autoBudget();
-    const PackingConfig& fixed = options_.packing;
-    if (!autoBits && lights.size() > (1u << fixed.indexBits) - 1u)
-        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +
-                    " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
+    checkLightCount(lights);
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
+    volumeQuadPixels_ = volumeStepLights_ = 0;  // this frame's, summed over its volume passes
 
-    // Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
-    const std::vector<int>& sceneShadowTiles =
+    // 0. Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
+    const std::vector<int>& shadowTiles =
         drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-    // The paper's first way: the main sphere test discards the surface points a light's maps shadow.
-    const bool volumeShadows = !sceneShadowTiles.empty() && shading.shadows.lidrLookup == ShadowLookup::VolumePass &&
-                               options_.volumeTest == VolumeTest::Sphere;
-    volumePass_.setShadows(volumeShadows ? &shadows_ : nullptr, shading.shadows);
-
-    const double screenPixels = double(targets_.width()) * targets_.height();
-    double frameRectArea = 0.0;          // lightRectArea, where tiles were considered
-    bool tilesSkippedForSaving = false;  // volume meshes: the last tile frame measured too small a saving
-    // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
-    if (options_.perSampleIndices)
-        targets_.bindColor();
-    else
-        targets_.bindSingleSample();
-    if (options_.depthPrepass) {
-        TimedPass depthPrepassTime(timer_, "depth-prepass");
-        depthPrepass_.run(scene_, cam);
-        if (depthTexture_) {
-            // The shader volume tests read the pre-pass depth from a texture that is not attached to the
-            // framebuffer they draw into (reading an attached one is a feedback loop).
-            if (depthTextureFbo_) {
-                depthTextureFbo_.bind();
-                depthPrepass_.run(scene_, cam);
-                targets_.bindSingleSample();
-                checkGl("pre-pass depth texture for the volume tests (OpenGL ES)");
-            } else {
-                depthTexture_.bind(gl::kUnitDepthCopy);
-                glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
-                checkGl("depth copy for the volume tests");
-            }
-        }
-        depthPrepassTime.end();
-        // Tiles pay for a depth read-back and a CPU pass over it: worth it only where the lights' volumes would
-        // cover more than kTileCullingMinArea screens (their pixel rectangles, summed), and, once a tile frame has
-        // measured it, where they save at least kTileCullingMinSaving screens of volume pixels (scaled by the
-        // lights' area since) or narrow the index width. Every kTileCullingRecheckFrames frames they measure again.
-        frameRectArea = volumeTiles_ ? lightRectArea(cam, lights) : 0.0;
-        bool tiles = volumeTiles_ && frameRectArea >= kTileCullingMinArea * screenPixels;
-        if (tiles && tileRecord_.measured && !tileRecord_.narrower && tileRecord_.framesSince < kTileCullingRecheckFrames &&
-            tileRecord_.savingScreens * frameRectArea / std::max(tileRecord_.rectArea, 1.0) < kTileCullingMinSaving) {
-            tiles = false;
-            tilesSkippedForSaving = true;
-        }
-        if (tiles) {
-            TimedPass volumeTilesTime(timer_, "volume-tiles");
-            volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, targets_.depthBits() == 24);  // the single-sample pre-pass depth
-            volumePass_.setTiles(volumeTiles_.get(), cam);
-        } else {
-            volumePass_.setTiles(nullptr, cam);
-        }
-    } else {
-        ClearAction clear;
-        clear.depth = true;
-        StateCache::current().clear(clear);
-    }
-
+    const bool volumeShadows = useVolumeShadows(shadowTiles, shading);
+    // 1. The depth pre-pass, and the tile decision: whether the light volumes are culled by its depth per tile.
+    depthPrepass(cam);
+    const TileDecision::Choice tiles = cullByTiles(cam, lights);
+    // 2. The frame plan: which lights get an index, their numbers, regions and index width; the light table and
+    //    the packing follow it.
     TimedPass lightTableTime(timer_, "light-table");
-    // Lights that cannot touch a visible surface get no index: outside the view frustum, touching no mesh's
-    // bounds, or (tile-culled volumes) reaching no surface of the pre-pass depth, unless they reach a transparent
-    // mesh. With an automatic width the rest are numbered 1..n in draw order and only they go into the light
-    // table.
-    std::vector<VolumeLight> volumes;
-    std::vector<PointLight> tableLights;
-    frameLights_.clear();
-    // With tiles: the lights volume meshes would draw, and their sphere rectangles (what tiles are measured against).
-    int meshLights = 0;
-    double meshRectArea = 0.0;
-    for (uint32_t index : drawOrder(lights)) {
-        const PointLight& l = lights[index - 1];
-        const glm::vec4 posRadius(l.position, l.radius);
-        if (options_.cullLights && (!sphereMayBeVisible(cam, l.position, l.radius) || !touchesScene(posRadius)))
-            continue;
-        if (volumePass_.drawsScreenTiles()) {
-            ++meshLights;
-            meshRectArea += sphereRectPixels(cam, l);
-        }
-        if (options_.cullLights && volumePass_.drawsScreenTiles() && !volumePass_.sphereReachesTiles(posRadius) &&
-            !(drawTransparent_ && reachesTransparentMesh({index, posRadius})))
-            continue;
-        const int shadowTile = volumeShadows ? sceneShadowTiles[index - 1] : -1;
-        if (autoBits) {
-            tableLights.push_back(l);
-            frameLights_.push_back(index);
-            index = static_cast<uint32_t>(frameLights_.size());
-        }
-        volumes.push_back({index, posRadius, -1, spotCone(l), shadowTile});
-    }
-    stats_.drawnLights = static_cast<int>(volumes.size());
-    frameRegions_ = IndexRegions{};
-    if (autoBits && options_.regionalIndices && volumes.size() > 255 && volumePass_.drawsScreenTiles() &&
-        !drawTransparent_ && targets_.samples() == 0 && !options_.perSampleIndices)
-        numberByRegion(volumes, tableLights);
-    volumePass_.setRegions(frameRegions_);
-    if (frameRegions_.on()) {
-        // The tile -> row map sits in the light table's rows after the regions' (the forward pass reads it).
-        std::vector<float> map(frameRegions_.regionOfTiles.begin(), frameRegions_.regionOfTiles.end());
-        lightTable_.setRegionMap(std::move(map), frameRegions_.count, frameRegions_.tileSize, frameRegions_.tilesX);
-    } else {
-        lightTable_.setRegionMap({}, 0, 1, 1);
-    }
-    // The table's lights are a selection (automatic width, regions): their tiles follow them (tilesFor).
-    lightTable_.update(autoBits ? tableLights : lights, autoBits ? shadows_.tilesFor(frameLights_) : sceneShadowTiles);
-    AutoDecision& decision = stats_.autoDecision;
-    decision.autoBudget = autoBudget;
-    decision.autoIndexBits = autoBits;
-    decision.visibleLights = stats_.drawnLights;
-    decision.indexRegions = frameRegions_.count;
-    int widestList = stats_.drawnLights;  // the most lights one numbering holds (a region's with regions)
-    if (frameRegions_.on()) {
-        widestList = 0;
-        for (const VolumeLight& v : volumes) widestList = std::max(widestList, int(v.index));
-    }
-    const int bits = autoBits ? auto_.chooseIndexBits(widestList) : fixed.indexBits;
-    selectVariant(autoBudget ? auto_.budget() : fixed.budget, bits);
-    selectTransparentVariant(autoBudget ? autoTransparent_.budget() : fixed.budget, bits);
+    plan_ = plan(cam, lights, tiles.tiles, volumeShadows ? &shadowTiles : nullptr);
+    loadPlan(lights, shadowTiles);
+    selectPacking();
     lightTableTime.end();
-
-    // With an automatic budget the probe's measurement decides: a frame whose overlap exceeds the budget it was
-    // packed with is packed again, at once, with the smallest budget that holds it (doc/auto.md).
-    // The transparent lists have their own budget: a ray in front of a surface meets more lights than the
-    // surface does, and only the transparent layers read those lists. The main pass's probe is read only after
-    // the forward passes are queued, so the GPU is not left idle while the CPU waits for it; a frame found over
-    // its budget then is packed and shaded again.
-    int needTransparent = -1;
-    // Nothing for nothing: a frame where no light can reach a visible surface draws no light volume, measures
-    // nothing and shades without reading an index texture or the light table.
-    lightlessFrame_ = volumes.empty();
-    volumeQuadPixels_ = 0;
-    volumeStepLights_ = 0;
-    stats_.volumePassSkipped = lightlessFrame_;
-    if (lightlessFrame_) {
-        stats_.transparentVolumeLights = 0;
-        stats_.transparentVolumePassSkipped = true;
+    // 3. The light volumes into the index targets, 4. the forward passes that read them, and 5. with an automatic
+    //    budget, the re-pack of a frame measured over the budget it was packed with. Nothing for nothing: a frame
+    //    where no light can reach a visible surface draws no volume, measures nothing and reads no index.
+    if (plan_.lightless()) {
         shade(cam, shading, false);
     } else {
-        drawVolumes(cam, volumes, needTransparent);
+        const int needTransparent = drawVolumes(cam, plan_.volumes);
         shade(cam, shading);
+        if (options_.packing.autoBudget()) repackWhileOver(cam, shading, needTransparent);
     }
-    while (autoBudget && !lightlessFrame_) {
-        const int need = measuredNeed();
-        decision.measuredBudget = need;
-        decision.measuredTransparentBudget = std::max(needTransparent, 0);
-        const int repack = auto_.observeNeed(need, narrowingAsked_);
-        const int repackTransparent =
-            needTransparent >= 0 ? autoTransparent_.observeNeed(needTransparent, narrowingAskedTransparent_) : 0;
-        if (repack == 0 && repackTransparent == 0) break;
-        ++decision.repacks;  // both passes again: the main pass's stencil counts must be the last ones drawn
-        if (repack) selectVariant(repack, bits);
-        if (repackTransparent) selectTransparentVariant(repackTransparent, bits);
-        drawVolumes(cam, volumes, needTransparent);
-        shade(cam, shading);
-    }
-    if (transparentIndexTargets_ && stats_.transparentVolumeLights > 0)
-        decision.transparentBudget = currentTransparent_->scheme->config().budget;
-    decision.volumeAreaPerPixel = -1.0;
-    decision.areaBound = false;
-    if (volumePass_.drawsScreenTiles()) {
-        decision.volumeAreaPerPixel = double(volumeQuadPixels_) / screenPixels;
-        decision.areaBound = decision.volumeAreaPerPixel > AutoDecision::kAreaBoundPerPixel;
-        // What the tiles saved: the volume meshes would have covered the drawn lights' rectangles in every draw
-        // (rank window, re-pack) the quads were drawn in; lights the tiles culled would have been drawn too.
-        const double drawsPerLight = volumes.empty() ? 0.0 : double(volumeStepLights_) / double(volumes.size());
-        tileRecord_.measured = true;
-        tileRecord_.savingScreens = (meshRectArea * drawsPerLight - double(volumeQuadPixels_)) / screenPixels;
-        tileRecord_.rectArea = frameRectArea;
-        tileRecord_.narrower = frameRegions_.on() ||
-                               (autoBits && AutoConfiguration::indexBitsFor(meshLights) > AutoConfiguration::indexBitsFor(stats_.drawnLights));
-        tileRecord_.framesSince = 0;
-    } else if (tileRecord_.measured) {
-        ++tileRecord_.framesSince;
-    }
-    decision.tileSavingScreens = tileRecord_.measured ? tileRecord_.savingScreens : -1.0;
-    decision.tilesSkippedForSaving = tilesSkippedForSaving;
-    decision.budget = current_->scheme->config().budget;
-    for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
-        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
-    decision.indexBits = current_->scheme->config().indexBits;
-    if (requestedAutoBudget_ && !autoBudget) decision.budgetFallback = "fixed (no occlusion queries)";
-    stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
+    // 6. The record: what the tiles saved (the next tile decision's measure) and the frame's statistics.
+    recordFrame(tiles);
     targets_.resolve(timer_);
-
     stats_.passes = timer_.collect();
     stats_.timingLag = timer_.lag();
     StateCache::current().bindFramebuffer(0);
@@ -456,72 +288,167 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     return stats_;
 }
 
-void LidrRenderer::numberByRegion(std::vector<VolumeLight>& volumes, std::vector<PointLight>& table) {
-    // A k-d split of the tiles: the region reached by the most lights is halved across its longer side until
-    // every region is reached by at most 255 lights (8-bit indices), or that cannot be had within
-    // kMaxIndexRegions regions, or a single tile is reached by more (then global numbering stays).
-    const int tilesX = volumeTiles_->tilesX(), tilesY = volumeTiles_->tilesY();
-    const size_t mapRows = (size_t(tilesX) * size_t(tilesY) + LightTable::kWidth - 1) / LightTable::kWidth;
-    if (lightTable_.format() != LightTableFormat::Float) return;  // the map needs exact small integers in the table
-    struct Rect {
-        int x0, y0, x1, y1;  // tiles, ends exclusive
-    };
-    std::vector<Rect> rects{{0, 0, tilesX, tilesY}};
-    IndexRegions regions;
-    regions.tilesX = tilesX;
-    regions.tileSize = volumeTiles_->tileSize();
-    regions.regionOfTiles.assign(size_t(tilesX) * size_t(tilesY), 0);
-    std::vector<uint32_t> reached(volumes.size());
-    std::vector<int> perRegion(size_t(kMaxIndexRegions), 0);
-    auto count = [&](uint32_t bits, int add) {
-        for (; bits; bits &= bits - 1) perRegion[size_t(__builtin_ctz(bits))] += add;
-    };
-    int split = -1;  // the region halved last: only the lights that reached it can reach other regions now
-    for (;;) {
-        regions.count = int(rects.size());
-        if ((size_t(regions.count) + mapRows) * LightTable::kWidth - 1 > size_t(lightTable_.capacity())) return;
-        perRegion.resize(rects.size());
-        for (size_t i = 0; i < volumes.size(); ++i) {
-            if (split >= 0 && !(reached[i] & (1u << split))) continue;
-            if (split >= 0) count(reached[i], -1);
-            reached[i] = volumePass_.sphereRegions(volumes[i].posRadius, regions);
-            count(reached[i], +1);
-        }
-        const size_t worst = size_t(std::max_element(perRegion.begin(), perRegion.end()) - perRegion.begin());
-        if (perRegion[worst] <= 255) break;
-        Rect& r = rects[worst];
-        if (rects.size() >= size_t(kMaxIndexRegions) || (r.x1 - r.x0 == 1 && r.y1 - r.y0 == 1)) return;
-        Rect half = r;
-        if (r.x1 - r.x0 >= r.y1 - r.y0)
-            r.x1 = half.x0 = (r.x0 + r.x1) / 2;
-        else
-            r.y1 = half.y0 = (r.y0 + r.y1) / 2;
-        rects.push_back(half);
-        split = int(worst);
-        for (int y = half.y0; y < half.y1; ++y)
-            for (int x = half.x0; x < half.x1; ++x) regions.regionOfTiles[size_t(y) * size_t(tilesX) + size_t(x)] = uint8_t(rects.size() - 1);
+void LidrRenderer::checkLightCount(const std::vector<PointLight>& lights) const {
+    const PackingConfig& fixed = options_.packing;
+    if (!fixed.autoIndexBits() && lights.size() > (1u << fixed.indexBits) - 1u)
+        throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +
+                    " that " + std::to_string(fixed.indexBits) + "-bit indices hold");
+}
+
+bool LidrRenderer::useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading) {
+    const bool on = !shadowTiles.empty() && shading.shadows.lidrLookup == ShadowLookup::VolumePass &&
+                    options_.volumeTest == VolumeTest::Sphere;
+    volumePass_.setShadows(on ? &shadows_ : nullptr, shading.shadows);
+    return on;
+}
+
+void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
+    // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
+    if (options_.perSampleIndices)
+        targets_.bindColor();
+    else
+        targets_.bindSingleSample();
+    if (!options_.depthPrepass) {
+        ClearAction clear;
+        clear.depth = true;
+        StateCache::current().clear(clear);
+        return;
     }
-    // Entries in the lights' draw order, each light once per region it reaches: a pixel lies in one region, so
-    // its list keeps the lights' order. Entry (region r, index k) is the table's texel (k, r).
-    const std::vector<PointLight> lights = std::move(table);
-    const std::vector<uint32_t> sceneIndex = std::move(frameLights_);
-    const size_t last = size_t(regions.count - 1);
-    table.assign(last * 256 + size_t(perRegion[last]),
-                 PointLight{lights.front().position, lights.front().radius, glm::vec3(0.0f), 0.0f});  // unused: black
-    frameLights_.assign(table.size(), 0u);
-    std::vector<VolumeLight> entries;
-    std::fill(perRegion.begin(), perRegion.end(), 0);
-    for (size_t i = 0; i < volumes.size(); ++i)
-        for (uint32_t bits = reached[i]; bits; bits &= bits - 1) {
-            const int r = __builtin_ctz(bits);
-            const uint32_t k = uint32_t(++perRegion[size_t(r)]);
-            const size_t entry = size_t(r) * 256 + k - 1;
-            table[entry] = lights[volumes[i].index - 1];
-            frameLights_[entry] = sceneIndex[volumes[i].index - 1];
-            entries.push_back({k, volumes[i].posRadius, r, volumes[i].cone, volumes[i].shadowTile});
-        }
-    volumes = std::move(entries);
-    frameRegions_ = std::move(regions);
+    TimedPass depthPrepassTime(timer_, "depth-prepass");
+    depthPrepass_.run(scene_, cam);
+    if (!depthTexture_) return;
+    // The shader volume tests read the pre-pass depth from a texture that is not attached to the framebuffer
+    // they draw into (reading an attached one is a feedback loop).
+    if (depthTextureFbo_) {
+        depthTextureFbo_.bind();
+        depthPrepass_.run(scene_, cam);
+        targets_.bindSingleSample();
+        checkGl("pre-pass depth texture for the volume tests (OpenGL ES)");
+    } else {
+        depthTexture_.bind(gl::kUnitDepthCopy);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
+        checkGl("depth copy for the volume tests");
+    }
+}
+
+TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) {
+    if (!options_.depthPrepass) return {};  // no depth to cull by: volume meshes
+    const TileDecision::Choice choice =
+        volumeTiles_ ? tileDecision_.decide(lightRectArea(cam, lights), screenPixels()) : TileDecision::Choice{};
+    if (choice.tiles) {
+        TimedPass volumeTilesTime(timer_, "volume-tiles");
+        volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, targets_.depthBits() == 24);  // the single-sample pre-pass depth
+        volumePass_.setTiles(volumeTiles_.get(), cam);
+    } else {
+        volumePass_.setTiles(nullptr, cam);
+    }
+    return choice;
+}
+
+FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool tiles,
+                             const std::vector<int>* volumeShadowTiles) {
+    FramePlanSettings s;
+    s.cullLights = options_.cullLights;
+    s.tiles = tiles;
+    s.transparentLists = drawTransparent_;
+    s.autoWidth = options_.packing.autoIndexBits() ? &auto_ : nullptr;
+    s.fixedIndexBits = options_.packing.indexBits;
+    // Regions need an opaque, single-sampled frame (one list per pixel, read at its own tile) and exact small
+    // integers in the light table (its tile map).
+    s.regionalIndices = options_.regionalIndices && !drawTransparent_ && targets_.samples() == 0 &&
+                        !options_.perSampleIndices && lightTable_.format() == LightTableFormat::Float;
+    s.maxRegions = kMaxIndexRegions;
+    if (volumeTiles_) {
+        s.tilesX = volumeTiles_->tilesX();
+        s.tilesY = volumeTiles_->tilesY();
+        s.tileSize = volumeTiles_->tileSize();
+    }
+    s.tableCapacity = lightTable_.capacity();
+    s.shadowTiles = volumeShadowTiles;
+    FramePlanQueries q;
+    q.touchesScene = [this](const glm::vec4& sphere) { return touchesScene(sphere); };
+    q.reachesTransparent = [this](const glm::vec4& sphere) { return reachesTransparentMesh(sphere); };
+    q.reachesTiles = [this](const glm::vec4& sphere) { return volumePass_.sphereReachesTiles(sphere); };
+    q.regionsReached = [this](const glm::vec4& sphere, const IndexRegions& regions) {
+        return volumePass_.sphereRegions(sphere, regions);
+    };
+    return planFrame(cam, lights, s, q);
+}
+
+void LidrRenderer::loadPlan(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles) {
+    volumePass_.setRegions(plan_.regions);
+    if (plan_.regions.on()) {
+        // The tile -> row map sits in the light table's rows after the regions' (the forward pass reads it).
+        std::vector<float> map(plan_.regions.regionOfTiles.begin(), plan_.regions.regionOfTiles.end());
+        lightTable_.setRegionMap(std::move(map), plan_.regions.count, plan_.regions.tileSize, plan_.regions.tilesX);
+    } else {
+        lightTable_.setRegionMap({}, 0, 1, 1);
+    }
+    // The table's lights are a selection (automatic width, regions): their tiles follow them (tilesFor).
+    if (plan_.compactNumbering)
+        lightTable_.update(plan_.tableLights, shadows_.tilesFor(plan_.frameLights));
+    else
+        lightTable_.update(lights, shadowTiles);
+}
+
+void LidrRenderer::selectPacking() {
+    const PackingConfig& fixed = options_.packing;
+    selectVariant(fixed.autoBudget() ? auto_.budget() : fixed.budget, plan_.indexBits);
+    selectTransparentVariant(fixed.autoBudget() ? autoTransparent_.budget() : fixed.budget, plan_.indexBits);
+}
+
+void LidrRenderer::repackWhileOver(const CameraMatrices& cam, const ShadingParameters& shading, int needTransparent) {
+    // The main pass's probe is read only after the forward passes are queued, so the GPU is not left idle while
+    // the CPU waits for it. The transparent lists have their own budget: a ray in front of a surface meets more
+    // lights than the surface does, and only the transparent layers read those lists.
+    AutoDecision& decision = stats_.autoDecision;
+    for (;;) {
+        const int need = measuredNeed();
+        decision.measuredBudget = need;
+        decision.measuredTransparentBudget = std::max(needTransparent, 0);
+        const int repack = auto_.observeNeed(need, narrowingAsked_);
+        const int repackTransparent =
+            needTransparent >= 0 ? autoTransparent_.observeNeed(needTransparent, narrowingAskedTransparent_) : 0;
+        if (repack == 0 && repackTransparent == 0) return;
+        ++decision.repacks;  // both passes again: the main pass's stencil counts must be the last ones drawn
+        if (repack) selectVariant(repack, plan_.indexBits);
+        if (repackTransparent) selectTransparentVariant(repackTransparent, plan_.indexBits);
+        needTransparent = drawVolumes(cam, plan_.volumes);
+        shade(cam, shading);
+    }
+}
+
+void LidrRenderer::recordFrame(const TileDecision::Choice& tiles) {
+    lightlessFrame_ = plan_.lightless();
+    stats_.drawnLights = plan_.drawnLights;
+    stats_.volumePassSkipped = lightlessFrame_;
+    if (lightlessFrame_) stats_.transparentVolumePassSkipped = true;
+    stats_.volumeDrawCalls = volumePass_.drawCalls() + transparentVolumePass_.drawCalls();
+    const bool autoBudget = options_.packing.autoBudget();
+    AutoDecision& decision = stats_.autoDecision;
+    decision.autoBudget = autoBudget;
+    decision.autoIndexBits = plan_.compactNumbering;
+    decision.visibleLights = plan_.drawnLights;
+    decision.indexRegions = plan_.regions.count;
+    decision.budget = current_->scheme->config().budget;
+    decision.indexBits = current_->scheme->config().indexBits;
+    for (size_t i = 0; autoBudget && i < OverlapProbe::kThreshold.size(); ++i)
+        if (OverlapProbe::kThreshold[i] == decision.budget) decision.overflowPixels = std::max(0L, pixelsAbove_[i]);
+    if (transparentIndexTargets_ && stats_.transparentVolumeLights > 0)
+        decision.transparentBudget = currentTransparent_->scheme->config().budget;
+    if (requestedAutoBudget_ && !autoBudget) decision.budgetFallback = "fixed (no occlusion queries)";
+    if (tiles.tiles) {
+        decision.volumeAreaPerPixel = double(volumeQuadPixels_) / screenPixels();
+        decision.areaBound = decision.volumeAreaPerPixel > AutoDecision::kAreaBoundPerPixel;
+        // Lights the tiles culled would have been drawn by volume meshes too (plan_.meshRectArea).
+        tileDecision_.recordTileFrame({tiles.rectArea, plan_.meshRectArea, volumeQuadPixels_, volumeStepLights_,
+                                       plan_.volumes.size(), plan_.tilesNarrowed()},
+                                      screenPixels());
+    } else {
+        tileDecision_.recordMeshFrame();
+    }
+    decision.tileSavingScreens = tileDecision_.lastSavingScreens();
+    decision.tilesSkippedForSaving = tiles.skippedForSaving;
 }
 
 void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {
@@ -560,56 +487,12 @@ int LidrRenderer::measuredNeed() {
     return OverlapProbe::smallestBudget(above);
 }
 
-void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent) {
-    const bool measure = options_.packing.autoBudget();
-    needTransparent = -1;
+int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes) {
     pixelsAbove_.fill(0);
-    // Steady frames ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may
-    // narrow). Only an overflowing frame asks how far over, and a renderer's first frame asks everything at once.
-    // The thresholds this frame asks about. The transparent pass's are read at once (the main pass's counts
-    // replace its own in the shared stencil); the main pass's after the forward passes (measuredNeed()).
-    auto ask = [&](const AutoConfiguration& a, int budget, bool& narrowingAsked) {
-        narrowingAsked = a.asksNarrowing();
-        return !a.measured() ? OverlapProbe::kAll
-               : narrowingAsked ? OverlapProbe::aroundBudget(budget)
-                                : OverlapProbe::atBudget(budget);
-    };
-    auto measureTransparent = [&](const glm::ivec4* area) {
-        auto probe = [&](unsigned which) {
-            probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, area);
-            return probe_.pixelsAbove();
-        };
-        const int budget = currentTransparent_->scheme->config().budget;
-        auto above = probe(ask(autoTransparent_, budget, narrowingAskedTransparent_));
-        if (OverlapProbe::smallestBudget(above) < 0) OverlapProbe::merge(above, probe(OverlapProbe::aboveBudget(budget)));
-        needTransparent = OverlapProbe::smallestBudget(above);
-    };
-    if (transparentIndexTargets_) {
-        // First, so that the main pass's per-pixel light counts stay in the shared stencil. Only where
-        // transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds: the
-        // lists outside stay empty, and no transparent surface reads them.
-        glm::ivec4 area(0);
-        std::vector<VolumeLight> reaching;
-        const bool inView = transparentScreenArea(cam, area);
-        if (inView)
-            for (const VolumeLight& v : volumes)
-                if (reachesTransparentMesh(v)) reaching.push_back(v);
-        stats_.transparentVolumeLights = static_cast<int>(reaching.size());
-        stats_.transparentVolumePassSkipped = reaching.empty();
-        TimedPass lightVolumesTransparentTime(timer_, "light-volumes-transparent");
-        transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
-        if (!reaching.empty()) {
-            const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
-            transparentVolumePass_.setScissor(&box);
-            currentTransparent_->scheme->encode(transparentVolumePass_, reaching);
-            transparentVolumePass_.setScissor(nullptr);
-            transparentVolumePass_.end();
-            if (measure) measureTransparent(&box);
-        } else {
-            transparentVolumePass_.end();
-        }
-    }
-
+    // The transparent layers' lists first, so that the main pass's per-pixel light counts stay in the shared
+    // stencil: the transparent pass's thresholds are read at once, the main pass's after the forward passes
+    // (measuredNeed()).
+    const int needTransparent = transparentIndexTargets_ ? drawTransparentVolumes(cam, volumes) : -1;
     TimedPass lightVolumesTime(timer_, "light-volumes");
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
@@ -617,10 +500,47 @@ void LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volu
     volumeStepLights_ += volumePass_.tileStepLights();
     volumePass_.end();
     lightVolumesTime.end();
-    if (measure) {
+    if (options_.packing.autoBudget()) {
         TimedPass probeTime(timer_, "overlap-probe");  // apart: full-screen draws, not volume fragments
-        probe_.issue(ask(auto_, current_->scheme->config().budget, narrowingAsked_), probeAreas());
+        probe_.issue(thresholdsToAsk(auto_, current_->scheme->config().budget, narrowingAsked_), probeAreas());
     }
+    return needTransparent;
+}
+
+int LidrRenderer::drawTransparentVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes) {
+    // Only where transparent geometry can be on screen, and only lights that reach a transparent mesh's bounds:
+    // the lists outside stay empty, and no transparent surface reads them.
+    glm::ivec4 area(0);
+    std::vector<VolumeLight> reaching;
+    if (transparentScreenArea(cam, area))
+        for (const VolumeLight& v : volumes)
+            if (reachesTransparentMesh(v.posRadius)) reaching.push_back(v);
+    stats_.transparentVolumeLights = static_cast<int>(reaching.size());
+    stats_.transparentVolumePassSkipped = reaching.empty();
+    TimedPass lightVolumesTransparentTime(timer_, "light-volumes-transparent");
+    transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
+    if (reaching.empty()) {
+        transparentVolumePass_.end();
+        return -1;
+    }
+    const glm::ivec4 box(area.x, area.y, area.z - area.x + 1, area.w - area.y + 1);
+    transparentVolumePass_.setScissor(&box);
+    currentTransparent_->scheme->encode(transparentVolumePass_, reaching);
+    transparentVolumePass_.setScissor(nullptr);
+    transparentVolumePass_.end();
+    return options_.packing.autoBudget() ? measureTransparentNeed(cam, box) : -1;
+}
+
+int LidrRenderer::measureTransparentNeed(const CameraMatrices& cam, const glm::ivec4& box) {
+    // Over the transparent meshes' pixels only: there alone are these lists read.
+    auto probe = [&](unsigned which) {
+        probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, &box);
+        return probe_.pixelsAbove();
+    };
+    const int budget = currentTransparent_->scheme->config().budget;
+    auto above = probe(thresholdsToAsk(autoTransparent_, budget, narrowingAskedTransparent_));
+    if (OverlapProbe::smallestBudget(above) < 0) OverlapProbe::merge(above, probe(OverlapProbe::aboveBudget(budget)));
+    return OverlapProbe::smallestBudget(above);
 }
 
 OverlapProbe::Areas LidrRenderer::probeAreas() const {
@@ -631,12 +551,6 @@ OverlapProbe::Areas LidrRenderer::probeAreas() const {
         areas[i] = volumePass_.drawsScreenTiles() ? volumePass_.tileCandidateArea(OverlapProbe::kThreshold[i])
                                                   : glm::ivec4(0, 0, -1, -1);
     return areas;
-}
-
-double LidrRenderer::lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const {
-    double area = 0.0;
-    for (const PointLight& l : lights) area += sphereRectPixels(cam, l);
-    return area;
 }
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
@@ -663,12 +577,12 @@ bool LidrRenderer::touchesScene(const glm::vec4& posRadius) const {
     return false;
 }
 
-bool LidrRenderer::reachesTransparentMesh(const VolumeLight& light) const {
+bool LidrRenderer::reachesTransparentMesh(const glm::vec4& posRadius) const {
     for (size_t b = 0; b < scene_.batchCount(); ++b) {
         if (!scene_.batchTransparent(b)) continue;
         glm::vec3 lo, hi;
         scene_.batchBounds(b, lo, hi);
-        if (sphereTouchesBox(glm::vec3(light.posRadius), light.posRadius.w, lo, hi)) return true;
+        if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
     }
     return false;
 }

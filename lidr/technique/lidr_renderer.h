@@ -1,7 +1,9 @@
 #pragma once
 // Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
-// (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file;
-// this class owns the frame: targets, light ordering, culling, timing, readback.
+// (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file, and
+// so is each CPU decision of a frame (the tile decision, tile_decision.h; the frame plan, frame_plan.h); this
+// class owns the frame: it runs the stages in order (render(), doc/architecture.md "One frame of LIDR"), and
+// owns the targets, the packing variants, timing and read-back.
 #include <array>
 #include <map>
 #include <memory>
@@ -13,6 +15,7 @@
 #include "lidr/technique/auto_configuration.h"
 #include "lidr/technique/overlap_probe.h"
 #include "lidr/technique/forward_pass.h"
+#include "lidr/technique/frame_plan.h"
 #include "lidr/gl/frame_timer.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/light_table.h"
@@ -21,6 +24,7 @@
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/renderer.h"
 #include "lidr/render/shadow_maps.h"
+#include "lidr/technique/tile_decision.h"
 #include "lidr/technique/volume_tiles.h"
 
 namespace lidr {
@@ -88,13 +92,13 @@ public:
     // budget instead, the paper's main case (one RGBA8 target at 8-bit indices); options() holds it and
     // FrameStats::autoDecision.budgetFallback says so.
     static constexpr int kBudgetWithoutOcclusionQueries = 4;
-    // LidrOptions::tileCulledVolumes: the lights' summed pixel rectangles, in screens, from which a frame culls by tiles.
-    static constexpr double kTileCullingMinArea = 1.0;
-    // Once a tile frame has measured it: tiles only where they save this many screens of volume pixels (the read-back
-    // costs about half a screen of volume fragments on llvmpipe, doc/benchmarks.md), re-measured every
-    // kTileCullingRecheckFrames frames; where they narrow the index width (or number by region) they stay.
-    static constexpr double kTileCullingMinSaving = 0.75;
-    static constexpr int kTileCullingRecheckFrames = 16;
+    // LidrOptions::tileCulledVolumes: the tile decision's rules (TileDecision, tile_decision.h): tiles from this many
+    // screens of the lights' summed pixel rectangles; once a tile frame has measured it, only where they save
+    // kTileCullingMinSaving screens of volume pixels, re-measured after kTileCullingRecheckFrames frames without;
+    // where they narrow the index width (or number by region) they stay.
+    static constexpr double kTileCullingMinArea = TileDecision::kMinArea;
+    static constexpr double kTileCullingMinSaving = TileDecision::kMinSaving;
+    static constexpr int kTileCullingRecheckFrames = TileDecision::kRecheckFrames;
 
     // Checks everything before any drawing: FBO support, resolution, scheme x budget x width, the volume test's
     // needs; throws UnsupportedError / lidr::Error with the reason.
@@ -121,8 +125,8 @@ public:
     // index (1-based) of index k. Empty: indices are the scene's own.
     // With region-local indices (frameIndexRegions().on()): entry row * 256 + k - 1 is the scene index of index k
     // in region `row` (0: an unused entry); IndexRegions::regionOfPixel gives a pixel's row.
-    const std::vector<uint32_t>& frameLightIndices() const { return frameLights_; }
-    const IndexRegions& frameIndexRegions() const { return frameRegions_; }
+    const std::vector<uint32_t>& frameLightIndices() const { return plan_.frameLights; }
+    const IndexRegions& frameIndexRegions() const { return plan_.regions; }
     static constexpr int kMaxIndexRegions = 32;
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
@@ -140,17 +144,49 @@ public:
     std::vector<uint8_t> readLightCounts() const;
     size_t lightDataBytes() const override;
 
-    // Lights in the order the volume pass draws them: priority high to low, then index low to high.
-    static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights);
+    // Lights in the order the volume pass draws them: priority high to low, then index low to high (lidr::drawOrder).
+    static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights) { return lidr::drawOrder(lights); }
 
     std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
     void checkObjectMaterial(const Material& material) const override;
 
 private:
+    // The stages of a frame, in the order render() runs them (doc/architecture.md, "One frame of LIDR").
+    void checkLightCount(const std::vector<PointLight>& lights) const;  // a fixed width must hold them all
+    // 0. After the shadow maps: whether the main sphere test discards what they shadow (the paper's first way,
+    // ShadowLookup::VolumePass); sets the volume pass's shadows.
+    bool useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading);
+    // 1. The depth pre-pass (and the depth copy the shader volume tests read), or a depth clear without one.
+    void depthPrepass(const CameraMatrices& cam);
+    // 1b. The tile decision (TileDecision) and, where it takes tiles, the pre-pass depth read back per tile and
+    // given to the volume pass.
+    TileDecision::Choice cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights);
+    // 2. The frame plan (frame_plan.h) from this renderer's options, meshes and tiles; then its regions to the volume
+    // pass and its lights into the light table, and the packing variants for its index width.
+    FramePlan plan(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool tiles,
+                   const std::vector<int>* volumeShadowTiles);
+    void loadPlan(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles);
+    void selectPacking();
+    // 3. The volume passes (the transparent layers' own lists first, then the main ones) with the current variants;
+    // with an automatic budget the transparent pass's need is measured (returned; -1 where the transparent lists
+    // were not drawn or not measured) and the main pass's probe issued (read by measuredNeed()).
+    int drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes);
+    int drawTransparentVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes);
+    int measureTransparentNeed(const CameraMatrices& cam, const glm::ivec4& box);
+    // 4. The forward passes (opaque, transparent layers) from the current index lists (with the frame's shadows:
+    // each listed light looked up by index where it casts); lights false: no light is listed anywhere.
+    void shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights = true);
+    // 5. The automatic re-pack: a frame measured over the budget it was packed with is packed again with the
+    // smallest budget that holds it, and shaded again, until it holds (doc/auto.md).
+    void repackWhileOver(const CameraMatrices& cam, const ShadingParameters& shading, int needTransparent);
+    // 6. The frame's record: what the tiles saved (for the next tile decision) and the frame's statistics.
+    void recordFrame(const TileDecision::Choice& tiles);
+
+    double screenPixels() const { return double(targets_.width()) * targets_.height(); }
     // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
     // seen; false when none can.
     bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
-    bool reachesTransparentMesh(const VolumeLight& light) const;  // touches a transparent mesh's bounds
+    bool reachesTransparentMesh(const glm::vec4& posRadius) const;  // touches a transparent mesh's bounds
     bool touchesScene(const glm::vec4& posRadius) const;           // reaches some mesh's bounds
     // One packing of the frame: the scheme and its forward shader, built on first use and kept.
     struct Variant {
@@ -161,15 +197,6 @@ private:
     void selectVariant(int budget, int indexBits);  // current_ and the index targets for its target count
     void selectTransparentVariant(int budget, int indexBits);  // the same for the transparent lists
     IndexTargets& indexTargetsFor(std::map<int, IndexTargets>& cache, int count);
-    // The volume passes (transparent lists first, then the main ones) with the current variants; with an
-    // automatic budget, the overlap each one measured: the smallest budget that drops nothing (0: none does).
-    // needTransparent: -1 where the transparent lists were not drawn (none separate, or none in view).
-    // The volume passes; with an automatic budget the transparent pass's need is measured and the main pass's
-    // probe issued (read by measuredNeed()).
-    void drawVolumes(const CameraMatrices& cam, const std::vector<VolumeLight>& volumes, int& needTransparent);
-    // The forward passes (opaque, transparent layers) from the current index lists (with the frame's shadows:
-    // each listed light looked up by index where it casts).
-    void shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights = true);
     // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
     int measuredNeed();
     // Where the main pass's probe draws each threshold (OverlapProbe::Areas), from the tiles' candidate bounds.
@@ -186,26 +213,13 @@ private:
     OverlapProbe probe_;
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
     bool narrowingAsked_ = true, narrowingAskedTransparent_ = true;  // the last measurement asked below the budget
-    std::vector<uint32_t> frameLights_;
-    IndexRegions frameRegions_;
-    // Region-local numbering of `volumes` (global numbering, scene lights `table`) where it fits in 8 bits.
-    void numberByRegion(std::vector<VolumeLight>& volumes, std::vector<PointLight>& table);
+    FramePlan plan_;  // the last frame's
     // The last frame had no light to index: no volume pass was drawn and its lists are empty (the index targets
     // still hold an earlier frame's; the read-backs answer with the empty lists).
     bool lightlessFrame_ = false;
     long volumeQuadPixels_ = 0;  // this frame's tile quads, every draw of the main volume pass
     long volumeStepLights_ = 0;  // lights asked for by those draws, once per draw
-    // The last frame that culled by tiles: volume-mesh pixels it saved (screens), the lights' rectangle area then,
-    // whether the tiles narrowed the index width or numbered by region, and frames drawn since.
-    struct TileCullingRecord {
-        bool measured = false;
-        double savingScreens = 0.0;
-        double rectArea = 0.0;
-        bool narrower = false;
-        int framesSince = 0;
-    } tileRecord_;
-    // Summed pixel rectangles of the lights' spheres (a bound on what their volume meshes would cover).
-    double lightRectArea(const CameraMatrices& cam, const std::vector<PointLight>& lights) const;
+    TileDecision tileDecision_;
     GpuScene scene_;
     RenderTargets targets_;
     std::map<int, IndexTargets> indexTargetCache_, transparentTargetCache_;  // by target count

@@ -1,0 +1,16 @@
+#pragma once
+// summary.md's targets section (bench_targets.cpp): the issues' speed and accuracy targets, judged on the rows of
+// this run ("met", "**missed**", or "not measured" where a configuration is missing). A new target, mode or peer
+// to compare with goes there.
+#include <ostream>
+#include <vector>
+
+#include "bench_report.h"
+
+namespace lidr::bench {
+
+// Writes "## Targets (issue 6)" (the default room at 1024x768, the budget at or above each scene's maximum
+// overlap) and, where its configurations were measured, "## Targets (issue 25)" (deep, occluded scenes).
+void writeTargets(std::ostream& o, const std::vector<Row>& rows);
+
+}  // namespace lidr::bench
