@@ -415,7 +415,7 @@ TEST_CASE("cluster grid: occupied slices hold every slice a pixel's depth can be
 
 // --- GPU ----------------------------------------------------------------------------------------------------
 
-TEST_CASE("clustered equals the reference on the default room, dense and with occupied clusters", "[clustered]") {
+TEST_CASE("clustered equals the reference on the default room, dense and with occupied clusters", "[clustered][every-gl]") {
     DefaultSceneOptions o;
     o.width = testWidth();
     o.height = testHeight();
@@ -589,7 +589,7 @@ TEST_CASE("clustered: lights crossing the near plane, containing the camera, beh
 }
 
 TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy, the clusters in front of the "
-          "opaque surface keep lists", "[clustered][transparency]") {
+          "opaque surface keep lists", "[clustered][transparency][every-gl]") {
     Scene scene = firstPersonScene();
     scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
     const int glass = int(scene.materials.size()) - 1;
@@ -624,7 +624,7 @@ TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy
 }
 
 TEST_CASE("clustered: MSAA with transparency equals the reference rendered the same way",
-          "[clustered][msaa][transparency]") {
+          "[clustered][msaa][transparency][every-gl]") {
     const GlInfo& info = testGl();
     if (!info.multisampleFbo || info.maxSamples < 2) {
         WARN("no multisample FBOs in this context; MSAA not tested");

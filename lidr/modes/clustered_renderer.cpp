@@ -24,16 +24,16 @@ const ClusteredOptions& checkedOptions(const ClusteredOptions& o) {
     return o;
 }
 
-// Before any GL object: the occupied clusters read the depth buffer back.
+// Before any GL object: the options (checkedOptions), then the context: the occupied clusters read the depth buffer
+// back.
 const GlInfo& checkContextFor(const GlInfo& info, const ClusteredOptions& o) {
+    checkedOptions(o);
     if (o.occupiedClusters && !info.readDepthStencil)
         throw UnsupportedError("clustered: occupied clusters read the pre-Z depth back, which this context cannot "
                                "(no depth read-back: OpenGL ES 2.0 without NV_read_depth_stencil, WebGL); turn "
                                "occupiedClusters off");
     return info;
 }
-
-int lightCapacity(const Scene& scene) { return std::max<int>(1, int(scene.lights.size())); }
 
 // Without highp fragment floats (GLSL ES 1.00's mediump: fp16 world positions) a fragment's view depth is off by
 // far more than any slice margin can hold: such contexts get one slice, the 2D tile lists.
@@ -42,18 +42,13 @@ int slicesFor(const GlInfo& info, int slices) { return info.fragmentHighp ? slic
 
 ClusteredRenderer::ClusteredRenderer(const GlInfo& info, const Scene& scene, const ClusteredOptions& options, int width,
                                      int height)
-    : options_(checkedOptions(options)),
-      scene_(scene),
-      targets_(checkContextFor(info, options_), width, height, options.msaaSamples),
+    : ForwardRendererBase(checkContextFor(info, options), scene,
+                          ForwardRendererSetup::of(options, scene, width, height)),
+      options_(options),
       grid_(width, height, options.tileSize, slicesFor(info, options.slices)),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY(), grid_.sliceCount()),
-      lightTable_(info, lightCapacity(scene), options.forceFixedLightTable),
-      shadows_(info),
-      timer_(info, options.timingMethod),
-      info_(info),
       slices_(grid_.sliceCount()) {
-    buildProgram(options_.initialLoopBound, lightCapacity(scene) <= 255 ? 8 : 16);
-    timer_.setEnabled(options_.timing);
+    buildProgram(options_.initialLoopBound, lightTable_.capacity() <= 255 ? 8 : 16);
 }
 
 std::string ClusteredRenderer::programName() const {
@@ -90,21 +85,9 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
     const FrameScope frame(stats_, timer_, lights.size());
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
-    if (static_cast<int>(lights.size()) > lightTable_.capacity()) {  // grow rather than refuse
-        lightTable_ = LightTable(info_, static_cast<int>(lights.size()), options_.forceFixedLightTable);
-    }
-    const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
-
-    TimedPass lightTableTime(timer_, "light-table");
-    lightTable_.update(lights, shadowTiles);
-    lightTableTime.end();
-
-    if (options_.preZ) {
-        TimedPass depthPrepassTime(timer_, "depth-prepass");
-        targets_.bindColor();
-        depthPrepass_.run(scene_, cam);
-    }
+    growLightTable(lights.size());
+    updateLights(lights, shading);
+    if (options_.preZ) drawDepthPrepass(cam);
 
     const bool occupancy = options_.occupiedClusters && targets_.samples() == 0;
     ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
@@ -182,10 +165,7 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
-    cache.bindFramebuffer(0);
-    checkGl("ClusteredRenderer::render");
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
+    finishFrame("ClusteredRenderer::render");
 
     lastCamera_ = cam;
     frameInfo_.grid = gs;

@@ -13,14 +13,8 @@
 #include <vector>
 
 #include "lidr/base/image.h"
-#include "lidr/gl/frame_timer.h"
-#include "lidr/gl/render_targets.h"
 #include "lidr/modes/cluster_grid.h"
-#include "lidr/render/depth_prepass.h"
-#include "lidr/render/gpu_scene.h"
-#include "lidr/render/light_table.h"
-#include "lidr/render/renderer.h"
-#include "lidr/render/shadow_maps.h"
+#include "lidr/render/forward_renderer_base.h"
 
 namespace lidr {
 
@@ -59,7 +53,9 @@ struct ClusteredFrameInfo {
     double occupancyMilliseconds = 0.0;  // CPU: depth read-back and occupied slices (0 without)
 };
 
-class ClusteredRenderer final : public Renderer {
+// The scene, targets, light table, pre-Z, shadow maps and timer, and the frame steps every forward mode takes
+// alike, come from ForwardRendererBase.
+class ClusteredRenderer final : public ForwardRendererBase {
 public:
     // Checks everything before any drawing: FBOs, resolution, the grid (tile size, slices), occupancy where no
     // depth can be read back, occupancy without pre-Z (lidr::Error / UnsupportedError naming the cause).
@@ -69,19 +65,11 @@ public:
     // Light i has index i + 1; at most 65535 lights (the light table grows to hold them).
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
-    const RenderTargets& targets() const override { return targets_; }
-    void setTiming(bool on, bool waitForResults = false) override {
-        timer_.setEnabled(on);
-        timer_.setWaitForResults(waitForResults);
-    }
     size_t lightDataBytes() const override { return gridTextures_.bytes(); }
 
     const ClusteredOptions& options() const { return options_; }
     const ClusterGrid& grid() const { return grid_; }  // the last frame's cluster lists
     const ClusteredFrameInfo& frameInfo() const { return frameInfo_; }
-    const LightTable& lightTable() const { return lightTable_; }
-    const ShadowMaps& shadowMaps() const { return shadows_; }
     size_t gridBytes() const { return gridTextures_.gridBytes(); }
     size_t listBytes() const { return gridTextures_.listBytes(); }
     // The slice every opaque pixel of the last frame read its lights from, found by the GPU with the shading
@@ -96,24 +84,15 @@ public:
     // overlapHeatMap: blue -> yellow up to `budget`, red past it; background pixels show slice 0's count.
     ImageRGBA8 clusterHeatMap(int budget = 16) const;
 
-    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
-
 private:
     void buildProgram(int loopBound, int indexBits);
     std::string programName() const;
 
     ClusteredOptions options_;
-    GpuScene scene_;
-    RenderTargets targets_;
     ClusterGrid grid_;
     ClusterGridTextures gridTextures_;
-    LightTable lightTable_;
-    DepthPrepass depthPrepass_;
     gl::Program program_;
     ShaderDefines programDefines_;  // program_'s, for its shadowed twin (ShadowMaps::program)
-    ShadowMaps shadows_;
-    FrameTimer timer_;
-    const GlInfo info_;
     int slices_ = 1;  // options_.slices, or 1 without highp fragment floats
     CameraMatrices lastCamera_;
     ClusteredFrameInfo frameInfo_;
