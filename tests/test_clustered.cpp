@@ -31,37 +31,7 @@ using namespace lidr::test;
 
 namespace {
 
-Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane = 0.1f, float farPlane = 60.0f,
-              float fov = 60.0f) {
-    Camera c;
-    c.position = position;
-    c.target = target;
-    c.nearPlane = nearPlane;
-    c.farPlane = farPlane;
-    c.fovYDegrees = fov;
-    return c;
-}
 
-// Random lights over the test floor (24 x 24 m), radii in [rMin, rMax].
-std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> xz(-11.0f, 11.0f), y(0.05f, 3.0f), r(rMin, rMax), c(0.2f, 1.0f);
-    std::vector<PointLight> lights;
-    for (int i = 0; i < count; ++i) lights.push_back(light({xz(rng), y(rng), xz(rng)}, r(rng), {c(rng), c(rng), c(rng)}));
-    return lights;
-}
-
-Scene firstPersonScene() {
-    Scene s = floorScene();
-    s.camera = camera({0.0f, 1.7f, 11.0f}, {0.0f, 1.2f, 0.0f}, 0.1f, 60.0f);
-    return s;
-}
-
-Scene topDownScene() {
-    Scene s = floorScene();
-    s.camera = camera({0.0f, 22.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, 1.0f, 60.0f);
-    return s;
-}
 
 // A point of the cell at parameters (u, v, t) in [0, 1]^3: t along depth, u and v across the cross-section.
 glm::vec3 cellPoint(const ClusterCell& c, double u, double v, double t) {
@@ -271,7 +241,7 @@ TEST_CASE("cluster grid: sizes are checked; lists ascending, terminated, holding
 
     const int width = 160, height = 120;
     const CameraMatrices cam = cameraMatrices(camera({0, 1.7f, 11}, {0, 1.2f, 0}, 0.1f, 60.0f), width, height);
-    std::vector<PointLight> lights = scatteredLights(300, 0.2f, 4.0f, 11);
+    std::vector<PointLight> lights = floorLights(300, 0.2f, 4.0f, 11);
     lights.push_back(light({0, 1.7f, 11}, 0.5f));       // around the eye
     lights.push_back(light({0, 1.7f, 30}, 1.0f));       // wholly behind the eye
     lights.push_back(light({0, 1.0f, 11.2f}, 0.3f));    // crosses the near plane
@@ -399,7 +369,7 @@ TEST_CASE("cluster grid: occupied slices hold every slice a pixel's depth can be
     flat[5] = 1.0f;
     REQUIRE(grid.markOccupiedSlices(flat, cam, slices, true)[0] == 0xFFFFu);
     // Assignment with the masks: only occupied clusters get lists, each the dense grid's list.
-    std::vector<PointLight> lights = scatteredLights(200, 0.3f, 3.0f, 4);
+    std::vector<PointLight> lights = floorLights(200, 0.3f, 3.0f, 4);
     ClusterGrid dense(width, height, 16, 16);
     dense.build(cam, lights, slices);
     grid.build(cam, lights, slices, &masks);
@@ -444,7 +414,7 @@ TEST_CASE("clustered equals the reference on the default room, dense and with oc
 
 namespace {
 void checkViews(const std::vector<int>& tileSizes, const std::vector<int>& sliceCounts) {
-    const std::vector<PointLight> lights = scatteredLights(120, 0.4f, 3.5f, 3);
+    const std::vector<PointLight> lights = floorLights(120, 0.4f, 3.5f, 3);
     for (const Scene& base : {topDownScene(), firstPersonScene()}) {
         Scene scene = base;
         scene.lights = lights;
@@ -481,7 +451,7 @@ TEST_CASE("clustered equals the reference in both views with other tile sizes an
 TEST_CASE("clustered: depth slices cut the extra pairs of the 2D tile lists in a first-person view",
           "[clustered][slow]") {
     Scene scene = firstPersonScene();
-    scene.lights = scatteredLights(200, 0.3f, 2.0f, 21);
+    scene.lights = floorLights(200, 0.3f, 2.0f, 21);
     const ImageRGBA8 reference = referenceImage(scene, scene.lights, false);
     long previous = -1;
     for (int slices : {1, 4, 16, 64}) {
@@ -596,7 +566,7 @@ TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy
     addSphere(scene, {-1.5f, 1.2f, 6.0f}, 0.8f, glass, 24);
     addSphere(scene, {1.0f, 1.0f, 4.0f}, 0.6f, glass, 24);
     addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, glass, 24);
-    scene.lights = scatteredLights(80, 0.5f, 3.0f, 5);
+    scene.lights = floorLights(80, 0.5f, 3.0f, 5);
     scene.lights.push_back(light({-1.0f, 1.5f, 7.5f}, 2.0f, {1.0f, 0.8f, 0.5f}));  // in front of the glass
     scene.lights.push_back(light({0.8f, 1.0f, 4.9f}, 1.0f, {0.5f, 1.0f, 0.5f}));
     scene.lights.push_back(light({0.2f, 1.3f, 3.4f}, 0.5f, {1.0f, 0.3f, 0.3f}));   // lights only the glass
@@ -633,7 +603,7 @@ TEST_CASE("clustered: MSAA with transparency equals the reference rendered the s
     Scene scene = firstPersonScene();
     scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
     addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
-    scene.lights = scatteredLights(60, 0.5f, 3.0f, 8);
+    scene.lights = floorLights(60, 0.5f, 3.0f, 8);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     const ImageRGBA8 single = [&] {
         ClusteredRenderer r(info, scene, ClusteredOptions{}, scene.width, scene.height);
@@ -706,7 +676,7 @@ TEST_CASE("clustered: 65,535 lights, the last ones lit, equal the reference with
     Scene scene = topDownScene();
     scene.width = 64;
     scene.height = 48;
-    std::vector<PointLight> lit = scatteredLights(12, 1.0f, 3.0f, 17);
+    std::vector<PointLight> lit = floorLights(12, 1.0f, 3.0f, 17);
     std::vector<PointLight> lights;
     for (int i = 0; i < 65535 - 12; ++i)  // tiny lights all over the floor, under it: they light nothing
         lights.push_back(light({-11.0f + 22.0f * float(i % 256) / 255.0f, -0.5f, -11.0f + 22.0f * float(i / 256) / 255.0f},
@@ -730,7 +700,7 @@ TEST_CASE("clustered: 65,535 lights, the last ones lit, equal the reference with
 
 TEST_CASE("clustered: spot lights go on a cluster only where the cone may reach its cell; no light lost",
           "[clustered][lights][cones][slow]") {
-    std::vector<PointLight> spots = scatteredLights(120, 1.0f, 4.5f, 29);
+    std::vector<PointLight> spots = floorLights(120, 1.0f, 4.5f, 29);
     std::mt19937 rng(2029);
     std::uniform_real_distribution<float> tilt(-0.8f, 0.8f), angle(0.05f, 1.5f);
     for (PointLight& l : spots) {
@@ -825,7 +795,7 @@ TEST_CASE("clustered: bad input is refused before drawing", "[clustered][bad-inp
     c.preZ = false;
     c.tileSize = 16;
     Scene lit = scene;
-    lit.lights = scatteredLights(40, 0.5f, 3.0f, 2);
+    lit.lights = floorLights(40, 0.5f, 3.0f, 2);
     requireEqualsReference(renderClustered(lit, c));
     ClusteredRenderer r(testGl(), scene, ClusteredOptions{}, scene.width, scene.height);
     REQUIRE_THROWS_WITH(r.pixelSlices(), Catch::Contains("before a frame"));
@@ -847,7 +817,7 @@ TEST_CASE("clustered: without highp fragment floats the grid has one slice, and 
     GlInfo mediump = testGl();
     mediump.fragmentHighp = false;
     Scene scene = firstPersonScene();
-    scene.lights = scatteredLights(60, 0.5f, 3.0f, 12);
+    scene.lights = floorLights(60, 0.5f, 3.0f, 12);
     ClusteredOptions c;
     c.tileSize = 16;
     const ClusteredCheck check = renderClustered(scene, c, nullptr, nullptr, &mediump);
