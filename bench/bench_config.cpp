@@ -118,15 +118,8 @@ Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
         o.seed = seed;
         return makeControlledOverlapScene(o);
     }
-    if (startsWith(name, "many-")) {
-        const size_t dash = name.find('-', 5);
-        const int n = dash == std::string::npos ? -1 : positiveInt(name.substr(5, dash - 5));
-        const std::string view = dash == std::string::npos ? "" : name.substr(dash + 1);
-        if (n < 1 || (view != "top" && view != "fp"))
-            throw Error("bad scene name '" + name + "': use many-N-top or many-N-fp (valid: " + sceneNameHelp() + ")");
-        return makeManyLightScene(n, view == "top" ? ManyLightView::TopDown : ManyLightView::FirstPerson, 1024, 768,
-                                  seed);
-    }
+    Scene many;
+    if (makeManyLightSceneByName(name, many, seed)) return many;
     if (startsWith(name, "heavy-")) {
         std::string t = name.substr(6);
         long scale = 1;
@@ -170,8 +163,24 @@ std::string ModeConfig::label() const {
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
                (volumeDetail ? " detail" : "") + meshes;
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
+    if (mode == "clustered") {
+        if (clusterTileSize == 0 && clusterSlices == 0 && clusterSlicing.empty() && clusterOccupancy < 0) return mode;
+        const ModeConfig c = withClusterDefaults();
+        return "clustered t" + std::to_string(c.clusterTileSize) + " s" + std::to_string(c.clusterSlices) + " " +
+               c.clusterSlicing + (c.clusterOccupancy == 1 ? " occupied" : "");
+    }
     if (mode == "forward-multipass" && multipassEightBit) return mode + " 8-bit";
     return mode;
+}
+
+ModeConfig ModeConfig::withClusterDefaults() const {
+    const ClusteredOptions defaults;
+    ModeConfig c = *this;
+    if (c.clusterTileSize == 0) c.clusterTileSize = defaults.tileSize;
+    if (c.clusterSlices == 0) c.clusterSlices = defaults.slices;
+    if (c.clusterSlicing.empty()) c.clusterSlicing = clusterSlicingName(defaults.slicing);
+    if (c.clusterOccupancy < 0) c.clusterOccupancy = defaults.occupiedClusters ? 1 : 0;
+    return c;
 }
 
 std::string ModeConfig::key() const {
@@ -251,6 +260,10 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     // (min/max on), as lidr-demo --mode auto does: with ModeConfig's `false` it timed a slower tiled than the
     // tiled rows and kept LIDR where they put tiled ahead (city-255).
     if (c.mode == "tiled") o.tiled.depthBounds = c.tiledDepthBounds;
+    if (c.clusterTileSize) o.clustered.tileSize = c.clusterTileSize;
+    if (c.clusterSlices) o.clustered.slices = c.clusterSlices;
+    if (!c.clusterSlicing.empty()) o.clustered.slicing = parseClusterSlicing(c.clusterSlicing);
+    if (c.clusterOccupancy >= 0) o.clustered.occupiedClusters = c.clusterOccupancy == 1;
     o.multipass.halfFloatAccumulation = !(c.mode == "forward-multipass" && c.multipassEightBit);
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
@@ -388,11 +401,12 @@ std::vector<SweepGroup> fullPreset() {
     spots.volumeTiles = {true};
     groups.push_back(spots);
     for (const std::string& sweep : sweepNames())
-        for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
+        if (sweep != "clusters")  // the clustered grid's own sweep (doc/clustered.md): run it by name
+            for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;
 }
 
-std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows"}; }
+std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows", "clusters"}; }
 
 std::vector<std::string> sweepVolumeTests() {
     std::vector<std::string> tests{"backface"};
@@ -407,7 +421,7 @@ std::vector<std::string> sweepVolumeTests() {
 std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
     SweepGroup base;
     base.modes.clear();
-    for (const char* m : {"lidr", "tiled", "forward-multipass"})  // those the library has, in this order
+    for (const char* m : {"lidr", "tiled", "clustered", "forward-multipass"})  // those the library has, in this order
         for (const std::string& have : availableModes())
             if (have == m) base.modes.push_back(have);
     base.schemes = {"bitshift", "auto"};
@@ -475,6 +489,32 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
             g.reference = false;
             groups.push_back(g);
         }
+        return groups;
+    }
+    if (name == "clusters") {
+        // The clustered grid against the bench scenes (doc/clustered.md, "Sweep"): tile sizes x slice counts x both
+        // slicings over the dense grid, and the occupied-cluster step at the middle sizes; tiled forward (min/max)
+        // and LIDR's default beside them. Every clustered row is judged against the reference and the CPU truth.
+        SweepGroup grids = base;
+        grids.name = "clusters";
+        grids.scenes = quick ? std::vector<std::string>{"hall-64"}
+                             : std::vector<std::string>{"room", "hall-255", "hall-1024", "city-255", "many-4096-top"};
+        grids.resolutions = {quick ? std::make_pair(96, 72) : std::make_pair(1024, 768)};
+        grids.modes = {"clustered", "tiled", "lidr"};
+        grids.schemes = {"auto"};
+        grids.volumeTests = {"sphere"};
+        grids.indexBits = {16};
+        grids.clusterTileSizes = quick ? std::vector<int>{16, 32} : std::vector<int>{16, 32, 64};
+        grids.clusterSlices = quick ? std::vector<int>{8, 16} : std::vector<int>{8, 16, 32, 64};
+        grids.clusterSlicings = {"exponential", "near-slice"};
+        grids.clusterOccupancy = {0};
+        groups.push_back(grids);
+        SweepGroup occupied = grids;
+        occupied.modes = {"clustered"};
+        occupied.clusterSlices = quick ? std::vector<int>{16} : std::vector<int>{16, 32};
+        occupied.clusterSlicings = {"exponential"};
+        occupied.clusterOccupancy = {1};
+        groups.push_back(occupied);
         return groups;
     }
     throw Error("unknown sweep '" + name + "' (valid: " + joinNames(sweepNames()) + ")");
@@ -620,6 +660,18 @@ Plan buildPlan(const std::vector<SweepGroup>& groups, const GlInfo& info, uint32
                                     c.tiledDepthBounds = db;
                                     configs.push_back(c);
                                 }
+                            } else if (mode == "clustered") {
+                                for (int tile : g.clusterTileSizes)
+                                    for (int slices : g.clusterSlices)
+                                        for (const std::string& slicing : g.clusterSlicings)
+                                            for (int occupancy : g.clusterOccupancy) {
+                                                ModeConfig c = base;
+                                                c.clusterTileSize = tile;
+                                                c.clusterSlices = slices;
+                                                c.clusterSlicing = slicing;
+                                                c.clusterOccupancy = occupancy;
+                                                configs.push_back(c);
+                                            }
                             } else if (mode == "forward-multipass") {
                                 for (bool eightBit : g.multipassEightBit) {
                                     ModeConfig c = base;

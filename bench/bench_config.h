@@ -40,6 +40,10 @@ struct ModeConfig {
     bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
     // mode "tiled"
     bool tiledDepthBounds = false;
+    // mode "clustered" (ClusteredOptions): 0, "" and -1 leave the library's default
+    int clusterTileSize = 0, clusterSlices = 0;
+    std::string clusterSlicing;   // exponential, near-slice
+    int clusterOccupancy = -1;    // 0 off, 1 on
     // mode "forward-multipass": its passes summed in the 8-bit colour target (MultipassOptions::
     // halfFloatAccumulation false) rather than in half float where the context has it
     bool multipassEightBit = false;
@@ -49,8 +53,12 @@ struct ModeConfig {
     // sample; else one index list per pixel.
     bool perSample = false;
     bool transparency = true;
-    std::string label() const;    // "lidr bitshift b4 8-bit backface", "tiled min/max", "forward-brute", ...
+    // "lidr bitshift b4 8-bit backface", "tiled min/max", "clustered" (the library's default grid), "clustered t32 s16
+    // exponential occupied" (a grid asked for: tile size, slices, slicing, occupancy), "forward-brute", ...
+    std::string label() const;
     std::string key() const;      // label + msaa + transparency: unique per configuration
+    // A copy with the clustered grid's unset fields filled with the library's defaults (what the row ran with).
+    ModeConfig withClusterDefaults() const;
 };
 
 // Render modes the bench can build: the library's factory where it has one, in its order.
@@ -78,6 +86,10 @@ struct SweepGroup {
     std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
+    // The clustered grids (cartesian, like the rest); the defaults: the library's one grid.
+    std::vector<int> clusterTileSizes{0}, clusterSlices{0};
+    std::vector<std::string> clusterSlicings{""};
+    std::vector<int> clusterOccupancy{-1};
     std::vector<bool> multipassEightBit{false};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
@@ -116,10 +128,12 @@ std::vector<SweepGroup> quickPreset();
 // fullPreset() includes the scaling sweeps (sweepPreset("lights"), sweepPreset("triangles")).
 std::vector<SweepGroup> fullPreset();
 
-// The scaling sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N =
-// 64 .. 16384) and "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), each
-// over LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled
-// min/max and forward-multipass. `quick`: a seconds-long version (tiny resolution, fewer points) for tests.
+// The sweeps, by name (sweepNames()): "lights" (frame time against light count, many-N-fp with N = 64 .. 16384),
+// "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), "hall" and "shadows", each over
+// LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled min/max,
+// clustered (the default grid) and forward-multipass; and "clusters", the clustered grid's own sweep of tile sizes,
+// slice counts, slicings and occupancy on the bench scenes (doc/clustered.md; not part of fullPreset). `quick`: a
+// seconds-long version (tiny resolution, fewer points) for tests.
 std::vector<std::string> sweepNames();
 // Throws lidr::Error naming the valid sweeps.
 std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick = false);

@@ -144,7 +144,8 @@ std::string passesPlot(const std::vector<const Row*>& allRows, const std::string
     const std::vector<const Row*> rows = passPlotRows(allRows);
     double cap = 0.0;
     for (const Row* r : rows)
-        if (r->run.config.mode == "lidr" || r->run.config.mode == "tiled") cap = std::max(cap, r->frameMs.median);
+        if (r->run.config.mode == "lidr" || r->run.config.mode == "tiled" || r->run.config.mode == "clustered")
+            cap = std::max(cap, r->frameMs.median);
     cap = cap > 0 ? 3.0 * cap : 1e300;
     std::vector<const Row*> shown;
     std::string offScale;
@@ -210,7 +211,7 @@ std::string scalingPlot(const std::map<std::string, std::vector<std::pair<double
 }
 
 // The configurations of the scaling sweeps (sweepPreset): LIDR bitshift at budgets 4 and 8 with any volume
-// test, tiled min/max, forward-multipass; no MSAA, opaque. The line's name leaves out the index width (8-bit
+// test, tiled min/max, clustered, forward-multipass; no MSAA, opaque. The line's name leaves out the index width (8-bit
 // up to 255 lights, 16-bit past that).
 std::string sweepLine(const Row& r) {
     const ModeConfig& c = r.run.config;
@@ -218,6 +219,7 @@ std::string sweepLine(const Row& r) {
     if (c.mode == "lidr" && c.scheme == "bitshift" && (c.budget == 4 || c.budget == 8))
         return "lidr bitshift b" + std::to_string(c.budget) + " " + c.volumeTest;
     if (c.mode == "tiled" && c.tiledDepthBounds) return c.label();
+    if (c.mode == "clustered") return c.label();
     if (c.mode == "forward-multipass") return c.mode;
     return "";
 }

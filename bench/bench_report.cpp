@@ -89,7 +89,8 @@ const std::vector<std::string>& resultColumns() {
         "baseline", "ratio_to_baseline_median", "ratio_to_baseline_min", "ratio_to_baseline_max", "auto_budget",
         "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls", "true_light_pixels",
         "volume_fragments", "volume_fragments_per_light_pixel", "shadow_casters", "shadow_maps_first_frame",
-        "shadow_maps_first_frame_ms", "shadow_maps_later_frames"};
+        "shadow_maps_first_frame_ms", "shadow_maps_later_frames", "cluster_tile_size", "cluster_slices",
+        "cluster_slicing", "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
     return c;
 }
 
@@ -141,6 +142,9 @@ std::vector<std::string> csvCells(const Row& r) {
     const ModeConfig& c = r.run.config;
     const bool lidr = c.mode == "lidr";
     auto lists = [&](auto v) { return r.hasLists ? std::to_string(v) : std::string(); };
+    auto dropped = [&](auto v) { return r.hasLists || r.hasPixelLists ? std::to_string(v) : std::string(); };
+    const bool clustered = c.mode == "clustered";
+    const ModeConfig grid = c.withClusterDefaults();
     auto err = [&](const std::string& v) { return r.hasError ? v : std::string(); };
     return {std::to_string(r.id), r.run.group, r.run.scene, std::to_string(r.run.width), std::to_string(r.run.height),
             std::to_string(r.sceneLights), std::to_string(r.maxOverlap), c.mode, c.key(), lidr ? c.scheme : "",
@@ -153,7 +157,7 @@ std::vector<std::string> csvCells(const Row& r) {
             lidr ? num(r.lightVolumeMs) : "", lidr ? num(r.lightVolumeShare()) : "", std::to_string(r.lightDataBytes),
             std::to_string(r.drawnLights), err(num(r.error.rmse, 5)), err(num(finitePsnr(r.error.psnr), 3)),
             err(std::to_string(r.error.maxAbsError)), err(std::to_string(r.error.differingPixels)),
-            err(std::to_string(r.error.comparedPixels)), lists(r.droppedLightPixels), lists(r.pixelsWithDrops),
+            err(std::to_string(r.error.comparedPixels)), dropped(r.droppedLightPixels), dropped(r.pixelsWithDrops),
             lists(r.pixelsOverBudget), lists(r.maxMarked), lists(r.invalidSlots),
             r.hasLists ? num(finitePsnr(r.psnrWithinBudget), 3) : "", std::to_string(r.sceneTriangles),
             std::to_string(r.rounds), r.baseline, num(r.ratio.median), num(r.ratio.min), num(r.ratio.max),
@@ -163,7 +167,11 @@ std::vector<std::string> csvCells(const Row& r) {
             std::to_string(r.glCalls.drawCalls), r.trueLightPixels >= 0 ? std::to_string(r.trueLightPixels) : "",
             r.volumeFragments >= 0 ? std::to_string(r.volumeFragments) : "",
             r.volumeEfficiency() >= 0 ? num(r.volumeEfficiency(), 3) : "", std::to_string(r.shadowCasters),
-            std::to_string(r.shadowMapsFirst), num(r.shadowMapsFirstMs), std::to_string(r.shadowMapsLater)};
+            std::to_string(r.shadowMapsFirst), num(r.shadowMapsFirstMs), std::to_string(r.shadowMapsLater),
+            clustered ? std::to_string(grid.clusterTileSize) : "", clustered ? std::to_string(grid.clusterSlices) : "",
+            clustered ? grid.clusterSlicing : "", clustered ? std::to_string(grid.clusterOccupancy) : "",
+            r.hasPixelLists ? std::to_string(r.extraLightPixels) : "",
+            r.hasPixelLists ? num(r.extraPerTruePair(), 3) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -185,6 +193,11 @@ nlohmann::json rowJson(const Row& r) {
     if (r.autoBudget || r.autoIndexBits)
         j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
+    if (c.mode == "clustered") {  // the grid it ran with (the library's defaults where the run left them)
+        const ModeConfig grid = c.withClusterDefaults();
+        j["clustered"] = {{"tile_size", grid.clusterTileSize}, {"slices", grid.clusterSlices},
+                          {"slicing", grid.clusterSlicing}, {"occupancy", grid.clusterOccupancy == 1}};
+    }
     if (!r.multipassAccumulation.empty()) j["multipass"] = {{"accumulation", r.multipassAccumulation}};
     j["msaa"] = c.msaa;
     j["per_sample"] = c.perSample;
@@ -221,6 +234,10 @@ nlohmann::json rowJson(const Row& r) {
                       {"invalid_slots", r.invalidSlots}, {"psnr_within_budget_db", finitePsnr(r.psnrWithinBudget)},
                       {"true_light_pixels", r.trueLightPixels}, {"volume_fragments", r.volumeFragments},
                       {"volume_fragments_per_light_pixel", r.volumeEfficiency()}};
+    if (r.hasPixelLists)
+        j["pixel_lists"] = {{"dropped_light_pixels", r.droppedLightPixels}, {"pixels_with_drops", r.pixelsWithDrops},
+                            {"true_light_pixels", r.trueLightPixels}, {"extra_light_pixels", r.extraLightPixels},
+                            {"extra_per_true_pair", r.extraPerTruePair()}};
     return j;
 }
 

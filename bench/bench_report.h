@@ -58,6 +58,15 @@ struct Row {
     double volumeEfficiency() const {
         return trueLightPixels > 0 && volumeFragments >= 0 ? double(volumeFragments) / double(trueLightPixels) : -1.0;
     }
+    // Tiled and clustered (no MSAA): each pixel's list against the CPU truth. droppedLightPixels and
+    // pixelsWithDrops: pairs missing from it; trueLightPixels: the truth's pairs; extraLightPixels: listed lights
+    // that do not touch the pixel's surface (the conservative test's overhead, clustered's counterpart of LIDR's
+    // volume fragments per pair).
+    bool hasPixelLists = false;
+    long extraLightPixels = -1;
+    double extraPerTruePair() const {
+        return trueLightPixels > 0 && extraLightPixels >= 0 ? double(extraLightPixels) / double(trueLightPixels) : -1.0;
+    }
     long sceneTriangles = 0;
     // Shadows (the -shadows-K scenes): casters, maps drawn by the first frame and that pass's time, the most maps
     // any later frame drew (0: a static scene's maps are drawn once).

@@ -71,7 +71,9 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
     for (const auto& t : methods) o << t << " ";
     o << "(cpu-glfinish: CPU time around glFinish per pass; gpu-timer-query: GL timer queries)\n";
     o << "- PSNR 999 means identical to the reference; error is against forward-brute with the same MSAA and "
-         "transparency; \"dropped\" counts (pixel, light) pairs a LIDR list missed against the CPU truth.\n\n";
+         "transparency; \"dropped\" counts (pixel, light) pairs a LIDR, tiled or clustered list missed against the CPU "
+         "truth; \"per pair\": LIDR's volume-pass fragments per true light-pixel pair, tiled's and clustered's extra "
+         "pairs (listed lights that do not touch the pixel's surface) per true pair.\n\n";
     const Steadiness st = steadiness(rows_);
     o << "## Steadiness\n\n";
     o << "- verdict: **" << st.verdict << "**\n";
@@ -99,8 +101,8 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
             if (sceneKey(r) == key) { first = &r; break; }
         o << "\n### " << key << " (" << first->sceneLights << " lights, " << first->sceneTriangles << " triangles, max overlap "
           << first->maxOverlap << "; " << first->rounds << " rounds, ratios to " << first->baseline << ")\n\n";
-        o << "| config | frame ms | ratio | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px |\n"
-             "|---|---|---|---|---|---|---|---|---|---|\n";
+        o << "| config | frame ms | ratio | vol % | memory KiB | RMSE | PSNR dB | max err | differing px | dropped light-px "
+             "| per pair |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Row& r : rows_) {
             if (sceneKey(r) != key) continue;
             o << "| " << r.run.config.key() << " | " << ms(r.frameMs.median) << " (" << ms(r.frameMs.min) << "-"
@@ -114,7 +116,11 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
                   << " | " << r.error.differingPixels;
             else
                 o << "- | - | - | -";
-            o << " | " << (r.hasLists ? std::to_string(r.droppedLightPixels) : "-") << " |\n";
+            o << " | " << (r.hasLists || r.hasPixelLists ? std::to_string(r.droppedLightPixels) : "-") << " | "
+              << (r.volumeEfficiency() >= 0  ? num(r.volumeEfficiency(), 2) + " fragments"
+                  : r.hasPixelLists          ? num(r.extraPerTruePair(), 2) + " extra"
+                                             : std::string("-"))
+              << " |\n";
         }
     }
     shadowSection(o, rows_);

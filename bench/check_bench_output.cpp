@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
         else { std::cerr << "unknown argument " << a << "\n"; return 2; }
     }
     const std::set<std::string> textColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method",
-                                            "baseline"};
+                                            "baseline", "cluster_slicing"};
     // Empty in a timing-only sweep (no reference): all of them or none.
     const std::set<std::string> errorColumns{"rmse", "psnr_db", "max_abs_error", "differing_pixels", "compared_pixels"};
     auto col = [&](const std::string& name) {
@@ -132,7 +132,8 @@ int main(int argc, char** argv) {
                     "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
                     "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "auto_budget",
                     "auto_index_bits", "auto_repacks", "true_light_pixels", "volume_fragments",
-                    "volume_fragments_per_light_pixel"};
+                    "volume_fragments_per_light_pixel", "cluster_tile_size", "cluster_slices", "cluster_slicing",
+                    "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
                 if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
                 continue;
             }

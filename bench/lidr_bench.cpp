@@ -351,6 +351,7 @@ void printNames() {
               << "packing schemes: " << joinNames(packingSchemeNames()) << "\n"
               << "budgets, index widths: any; each scheme refuses what it cannot do (see --dry-run)\n"
               << "volume tests:   sphere (the library's default), sphere-ray, backface, exact, frontface\n"
+              << "cluster slicings: exponential, near-slice (clustered mode; tile sizes 4..256, slices 1..64)\n"
               << "scenes:         " << sceneNameHelp() << "\n";
 }
 
@@ -361,7 +362,8 @@ int main(int argc, char** argv) {
                  "volume test. Lists are comma-separated; every combination of the lists is measured (combinations "
                  "the library refuses are skipped and listed)."};
     std::vector<std::string> scenes{"room"}, modes, schemes, budgets{"1,2,4,8,16"}, indexBits{"4,8,16"},
-        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, environments{"none"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, multipassAccumulation{"auto"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"};
+        volumeTests{"sphere,backface,exact,frontface"}, msaa{"0"}, environments{"none"}, perSample{"off"}, transparency{"on"}, tiledBounds{"on,off"}, multipassAccumulation{"auto"}, volumeDetail{"off"}, volumeTiles{"on"}, volumeTileSizes{"16"}, regionalIndices{"on"}, resolutions{"1024x768"}, clusterTileSizes, clusterSlices,
+        clusterSlicings, clusterOccupancy;
     std::string outDir = "bench-out", context = "auto";
     Settings settings;
     std::vector<std::string> sweeps;
@@ -382,6 +384,15 @@ int main(int argc, char** argv) {
     app.add_option("--per-sample", perSample, "With MSAA: LIDR per-sample index lists (GL 3.2) off, on")->capture_default_str();
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();
+    app.add_option("--cluster-tile-sizes", clusterTileSizes,
+                   "Clustered mode: screen tile sizes in pixels, 4..256 (default: the library's, ClusteredOptions)");
+    app.add_option("--cluster-slices", clusterSlices,
+                   "Clustered mode: view-depth slice counts, 1..64 (default: the library's)");
+    app.add_option("--cluster-slicings", clusterSlicings,
+                   "Clustered mode: exponential (Doom's), near-slice (Filament's) (default: the library's)");
+    app.add_option("--cluster-occupancy", clusterOccupancy,
+                   "Clustered mode: lists only for clusters holding a surface (the pre-Z depth read back): on, off "
+                   "(default: the library's)");
     app.add_option("--multipass-accumulation", multipassAccumulation,
                    "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else "
                    "8-bit), 8-bit (the 8-bit colour target; row 'forward-multipass 8-bit')")
@@ -439,7 +450,9 @@ int main(int argc, char** argv) {
     auto* fullFlag = app.add_flag("--full", full, "The documented full sweep of doc/benchmarks.md, the scaling sweeps included (takes minutes)")->excludes(quickFlag);
     app.add_option("--sweep", sweeps,
                    "Scaling sweeps instead of the lists: " + joinNames(sweepNames()) +
-                       " (frame time against light count / scene triangles / hall light count / shadow casters in the hall); with --quick, their seconds-long versions")
+                       " (frame time against light count / scene triangles / hall light count / shadow casters in the hall; the "
+                       "clustered grid's tile sizes, slices, slicings and occupancy on the bench scenes); with --quick, "
+                       "their seconds-long versions")
         ->excludes(fullFlag);
     app.add_flag("--no-progress", noProgress, "No progress bar (it is also off when stderr is not a terminal)");
     app.add_flag("--no-plots", noPlots, "Do not run gnuplot");
@@ -479,6 +492,8 @@ int main(int argc, char** argv) {
         const bool listsGiven = app.count("--scenes") || app.count("--environment") || app.count("--modes") || app.count("--schemes") ||
                                 app.count("--budgets") || app.count("--index-bits") || app.count("--volume-tests") ||
                                 app.count("--msaa") || app.count("--per-sample") || app.count("--transparency") || app.count("--tiled-depth-bounds") || app.count("--multipass-accumulation") || app.count("--volume-detail") ||
+                                app.count("--cluster-tile-sizes") || app.count("--cluster-slices") ||
+                                app.count("--cluster-slicings") || app.count("--cluster-occupancy") ||
                                 app.count("--resolution");
         if ((quick || full || !sweeps.empty()) && listsGiven)
             throw Error(std::string("--") + (!sweeps.empty() ? "sweep" : quick ? "quick" : "full") +
@@ -530,6 +545,29 @@ int main(int argc, char** argv) {
             g.volumeTiles = onOffList(volumeTiles, "--volume-tiles value");
             g.volumeTileSizes = intList(volumeTileSizes, "--volume-tile-size value");
             g.regionalIndices = onOffList(regionalIndices, "--regional-indices value");
+            if (!clusterTileSizes.empty()) {
+                g.clusterTileSizes = intList(clusterTileSizes, "--cluster-tile-sizes value");
+                for (int t : g.clusterTileSizes)
+                    if (t < ClusterGrid::kMinTileSize || t > ClusterGrid::kMaxTileSize)
+                        throw Error("--cluster-tile-sizes: " + std::to_string(t) + " is outside " +
+                                    std::to_string(ClusterGrid::kMinTileSize) + ".." +
+                                    std::to_string(ClusterGrid::kMaxTileSize));
+            }
+            if (!clusterSlices.empty()) {
+                g.clusterSlices = intList(clusterSlices, "--cluster-slices value");
+                for (int s : g.clusterSlices)
+                    if (s < 1 || s > ClusterGrid::kMaxSlices)
+                        throw Error("--cluster-slices: " + std::to_string(s) + " is outside 1.." +
+                                    std::to_string(ClusterGrid::kMaxSlices));
+            }
+            if (!clusterSlicings.empty()) {
+                g.clusterSlicings = splitList(clusterSlicings);
+                for (const std::string& s : g.clusterSlicings) parseClusterSlicing(s);  // throws naming the valid ones
+            }
+            if (!clusterOccupancy.empty()) {
+                g.clusterOccupancy.clear();
+                for (bool on : onOffList(clusterOccupancy, "--cluster-occupancy value")) g.clusterOccupancy.push_back(on);
+            }
             for (const std::string& r : splitList(resolutions)) g.resolutions.push_back(parseResolution(r));
             // Lists left at their defaults sweep "whatever the library supports"; typed lists are strict.
             const std::pair<const char*, const char*> typed[] = {
@@ -832,6 +870,35 @@ int main(int argc, char** argv) {
                         }
                     } else {
                         row.error = compareImages(image, reference.image);
+                        // Tiled and clustered: each pixel's list (its tile's, its cluster's) against the CPU truth:
+                        // missing pairs (dropped) and the pairs the conservative test adds (extra).
+                        const auto* tiled = dynamic_cast<TiledRenderer*>(slot.renderer.get());
+                        const auto* clustered = dynamic_cast<ClusteredRenderer*>(slot.renderer.get());
+                        if ((tiled || clustered) && run.config.msaa == 0) {
+                            const CoverageTruth truth =
+                                computeCoverage(slot.renderer->targets().readDepth(),
+                                                cameraMatrices(scene.camera, run.width, run.height), lights);
+                            PixelListCheck check;
+                            if (clustered) {
+                                const ClusterGrid& g = clustered->grid();
+                                check = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(),
+                                                        g.counts());
+                            } else {
+                                const LightGrid& g = tiled->grid();
+                                std::vector<int> tileOfPixel(size_t(run.width) * size_t(run.height));
+                                for (int y = 0; y < run.height; ++y)
+                                    for (int x = 0; x < run.width; ++x)
+                                        tileOfPixel[size_t(y) * size_t(run.width) + size_t(x)] =
+                                            g.tileOf(x, run.height - 1 - y);
+                                check = checkPixelLists(truth, tileOfPixel, g.entries(), g.opaqueOffsets(),
+                                                        g.opaqueCounts());
+                            }
+                            row.hasPixelLists = true;
+                            row.droppedLightPixels = check.missingPairs;
+                            row.pixelsWithDrops = check.pixelsWithMissing;
+                            row.trueLightPixels = check.truthPairs;
+                            row.extraLightPixels = check.extraPairs;
+                        }
                     }
                 }
                 writer->add(row, runInfo);

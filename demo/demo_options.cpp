@@ -40,7 +40,8 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 
 void SceneChoice::addOptions(CLI::App& app) {
     app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, or a "
-                   "built-in occluded bench scene: hall-N / city-N (N lights, e.g. hall-255), spot bench scene spots-N / spots-N-points; default: the built-in room");
+                   "built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), spots-N / spots-N-points, "
+                   "many-N-top / many-N-fp (the room's geometry with N lights); default: the built-in room");
     app.add_flag("--smooth-normals", smoothNormals,
                  "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
                  "model may say otherwise with \"smooth_normals\")");
@@ -142,7 +143,8 @@ Scene SceneChoice::load() const {
         o.seed = seed;
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
-    } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed)) {
+    } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed) ||
+               makeManyLightSceneByName(sceneFile, scene, seed)) {
         if (time) scene.time = float(*time);
     } else {
         ObjImportOptions objOptions;
@@ -209,6 +211,24 @@ void RendererChoice::addOptions(CLI::App& app) {
     app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
     app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
     app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
+    const ClusteredOptions clustered;
+    app.add_option("--cluster-tile-size", clusterTileSize,
+                   "Clustered mode: screen tile edge in pixels, " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
+                       std::to_string(ClusterGrid::kMaxTileSize) + " (default " + std::to_string(clustered.tileSize) + ")");
+    app.add_option("--cluster-slices", clusterSlices,
+                   "Clustered mode: view-depth slices, 1.." + std::to_string(ClusterGrid::kMaxSlices) + " (default " +
+                       std::to_string(clustered.slices) + ")");
+    app.add_option("--cluster-slicing", clusterSlicing,
+                   std::string("Clustered mode: exponential (Doom's: near to far plane) or near-slice (Filament's: one "
+                               "slice to --cluster-light-near, exponential beyond) (default ") +
+                       clusterSlicingName(clustered.slicing) + ")");
+    app.add_option("--cluster-light-near", clusterLightNear,
+                   "Clustered mode, near-slice: the first slice's far end, view depth in scene units (default " +
+                       std::to_string(int(clustered.lightNear)) + ")");
+    app.add_option("--cluster-occupancy", clusterOccupancy,
+                   std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
+                               "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
+                       (clustered.occupiedClusters ? "on" : "off") + ")");
     app.add_option("--multipass-accumulation", multipassAccumulation,
                    "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
                    "8-bit colour target), 8-bit (the 8-bit target, to compare)")
@@ -439,6 +459,37 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.tiled.depthBounds = !noDepthBounds;
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
+    const bool clusterOptionSet =
+        clusterTileSize || clusterSlices || clusterSlicing || clusterOccupancy || clusterLightNear;
+    if (clusterOptionSet && o.mode != "clustered" && o.mode != "auto")
+        throw Error("--cluster-* options set the clustered mode's grid; the " + o.mode +
+                    " mode has none (use --mode clustered, or auto)");
+    if (clusterTileSize) {
+        if (*clusterTileSize < ClusterGrid::kMinTileSize || *clusterTileSize > ClusterGrid::kMaxTileSize)
+            throw Error("--cluster-tile-size must be " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
+                        std::to_string(ClusterGrid::kMaxTileSize) + " pixels, got " + std::to_string(*clusterTileSize));
+        o.clustered.tileSize = *clusterTileSize;
+    }
+    if (clusterSlices) {
+        if (*clusterSlices < 1 || *clusterSlices > ClusterGrid::kMaxSlices)
+            throw Error("--cluster-slices must be 1.." + std::to_string(ClusterGrid::kMaxSlices) + ", got " +
+                        std::to_string(*clusterSlices));
+        o.clustered.slices = *clusterSlices;
+    }
+    if (clusterSlicing) o.clustered.slicing = parseClusterSlicing(*clusterSlicing);
+    if (clusterLightNear) {
+        if (o.clustered.slicing != ClusterSlicing::NearSlice)
+            throw Error("--cluster-light-near ends the first slice of --cluster-slicing near-slice; the slicing is " +
+                        std::string(clusterSlicingName(o.clustered.slicing)));
+        if (!(*clusterLightNear > 0.0f) || !std::isfinite(*clusterLightNear))
+            throw Error("--cluster-light-near must be a positive view depth, got " + std::to_string(*clusterLightNear));
+        o.clustered.lightNear = *clusterLightNear;
+    }
+    if (clusterOccupancy) {
+        if (*clusterOccupancy != "on" && *clusterOccupancy != "off")
+            throw Error("--cluster-occupancy must be on or off, got '" + *clusterOccupancy + "'");
+        o.clustered.occupiedClusters = *clusterOccupancy == "on";
+    }
     if (multipassAccumulation != "auto" && multipassAccumulation != "8-bit")
         throw Error("--multipass-accumulation must be auto or 8-bit, got '" + multipassAccumulation + "'");
     o.multipass.halfFloatAccumulation = multipassAccumulation == "auto";

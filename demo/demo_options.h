@@ -59,6 +59,10 @@ struct RendererChoice {
     bool noDepthBounds = false;
     bool packedDepth = false;
     bool halfZ = false;
+    // The clustered mode's grid (ClusteredOptions); unset: the library's defaults. Refused with other modes.
+    std::optional<int> clusterTileSize, clusterSlices;
+    std::optional<std::string> clusterSlicing, clusterOccupancy;
+    std::optional<float> clusterLightNear;
     std::string multipassAccumulation = "auto";  // or 8-bit (MultipassOptions::halfFloatAccumulation false)
     std::string scheme = "auto";      // bit-shift, budget and width chosen per frame (doc/auto.md)
     std::string budget = "auto";      // or 1, 2, 4, 8, 16 (with a named scheme)

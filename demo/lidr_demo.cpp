@@ -1,4 +1,4 @@
-// lidr-demo: renders a scene with LIDR (or --mode tiled, forward-multipass, forward-brute) and writes what a
+// lidr-demo: renders a scene with LIDR (or --mode tiled, clustered, forward-multipass, forward-brute) and writes what a
 // person needs to judge it.
 //   --headless (default): render the default room (or --scene FILE) offscreen, compare with the brute-force
 //   reference, write images and a summary to --out DIR; --dump DIR adds the raw artefacts.
@@ -32,6 +32,7 @@
 #include "lidr/render/material_variants.h"
 #include "lidr/render/present.h"
 #include "lidr/render/shadow_atlas.h"
+#include "lidr/scene/sphere_bounds.h"
 #include "lidr/base/visualize.h"
 
 #if LIDR_HAVE_GLFW
@@ -166,7 +167,7 @@ HeadlessStart startHeadless(const Scene& scene, const std::string& outDir, const
     return start;
 }
 
-// Every mode but lidr: the image, the reference and the error, and for tiled the grid and its heat map.
+// Every mode but lidr: the image, the reference and the error, and for tiled and clustered the grid and its heat map.
 // The shadow atlas as a picture (the viewer's and the page's debug view, ShadowAtlas::image), where the frame drew
 // one and the context can read it (ES 2.0 reads no depth texture back).
 void writeShadowAtlas(const Renderer& renderer, const GlInfo& info, const std::string& outDir) {
@@ -276,6 +277,34 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
           << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
           << g.opaqueEntries << " entries, CPU assignment " << tiled->frameInfo().assignMilliseconds << " ms\n";
     }
+    const auto* clustered = dynamic_cast<const ClusteredRenderer*>(renderer.get());
+    if (clustered) {
+        const ClusteredFrameInfo& f = clustered->frameInfo();
+        const ClusteredOptions& co = clustered->options();
+        summary["clustered"] = {{"tile_size", co.tileSize}, {"tiles_x", clustered->grid().tilesX()},
+                                {"tiles_y", clustered->grid().tilesY()}, {"slices", f.slicing.count},
+                                {"slicing", clusterSlicingName(co.slicing)}, {"occupancy", f.occupancyUsed},
+                                {"msaa_samples", clustered->targets().samples()},
+                                {"clusters", clustered->grid().clusterCount()},
+                                {"active_clusters", f.grid.activeClusters}, {"listed_clusters", f.grid.listedClusters},
+                                {"max_cluster_lights", f.grid.maxLights}, {"entries", f.grid.entries},
+                                {"cell_tests", f.grid.cellTests}, {"index_bits", f.indexBits},
+                                {"loop_bound", f.loopBound}, {"list_texture_rows", f.listTextureRows},
+                                {"grid_bytes", clustered->gridBytes()}, {"list_bytes", clustered->listBytes()},
+                                {"light_table_bytes", clustered->lightTable().bytes()},
+                                {"cpu_assign_ms_last_frame", f.assignMilliseconds},
+                                {"cpu_occupancy_ms_last_frame", f.occupancyMilliseconds}};
+        if (clustered->targets().samples() == 0) {
+            writePng(path(outDir, "cluster_heatmap.png"), clustered->clusterHeatMap(16));
+            outputs += ", cluster_heatmap.png";
+        }
+        s << "clustered  " << co.tileSize << " px tiles (" << clustered->grid().tilesX() << "x"
+          << clustered->grid().tilesY() << ") x " << f.slicing.count << " " << clusterSlicingName(co.slicing)
+          << " slices, occupancy " << (f.occupancyUsed ? "on" : "off") << ", longest list " << f.grid.maxLights << ", "
+          << f.grid.entries << " entries in " << f.grid.listedClusters << " clusters, " << f.indexBits
+          << "-bit indices, CPU assignment " << f.assignMilliseconds << " ms"
+          << (f.occupancyUsed ? ", occupancy " + std::to_string(f.occupancyMilliseconds) + " ms" : std::string()) << "\n";
+    }
     if (const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(renderer.get())) {
         // Where its passes summed their light (doc/colour.md): half float, or the 8-bit target and why.
         summary["multipass"] = {{"accumulation", multipass->accumulation()},
@@ -316,6 +345,43 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
             summary["tiled"]["max_overlap_touching"] = truth.maxOverlap();
             s << "lists      light-pixels missing from tile lists: " << missing << ", max overlap "
               << truth.maxOverlap() << "\n";
+        }
+        if (clustered && mo.msaaSamples == 0) {  // every light that touches an opaque pixel in its cluster's list
+            const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+            const CoverageTruth truth = computeCoverage(clustered->targets().readDepth(), cam, lights);
+            const ClusterGrid& g = clustered->grid();
+            const std::vector<int> gpuSlices = clustered->pixelSlices();
+            std::vector<int> pixelClusters(gpuSlices.size(), -1);
+            // Slice boundaries: pixels whose GPU slice is not the slice of their depth buffer's view depth, and how
+            // near a boundary the farthest of them lies (relative; the cell margins cover the GPU's rounding).
+            const ImageFloat depth = clustered->targets().readDepth();
+            const ClusterSlices& slicing = clustered->frameInfo().slicing;
+            long sliceMismatches = 0;
+            double worstMismatch = 0.0;
+            for (int y = 0; y < scene.height; ++y)
+                for (int x = 0; x < scene.width; ++x) {
+                    const size_t p = size_t(y) * size_t(scene.width) + size_t(x);
+                    if (gpuSlices[p] < 0) continue;
+                    pixelClusters[p] = g.clusterOf(g.tileOf(x, scene.height - 1 - y), gpuSlices[p]);
+                    const double d = viewDepthFromWindowDepth(cam, depth.pixels[p]);
+                    const int cpu = slicing.sliceOf(d);
+                    if (cpu == gpuSlices[p]) continue;
+                    ++sliceMismatches;
+                    worstMismatch = std::max(worstMismatch, std::abs(d / slicing.boundary(std::max(cpu, gpuSlices[p])) - 1.0));
+                }
+            summary["clustered"]["slice_mismatch_pixels"] = sliceMismatches;
+            summary["clustered"]["slice_mismatch_worst_relative"] = worstMismatch;
+            const PixelListCheck c = checkPixelLists(truth, pixelClusters, g.entries(), g.offsets(), g.counts());
+            summary["clustered"]["missing_light_pixels"] = c.missingPairs;
+            summary["clustered"]["true_light_pixels"] = c.truthPairs;
+            summary["clustered"]["extra_light_pixels"] = c.extraPairs;
+            summary["clustered"]["extra_per_true_pair"] = c.extraPerTruePair();
+            summary["clustered"]["max_overlap_touching"] = truth.maxOverlap();
+            s << "lists      light-pixels missing from cluster lists: " << c.missingPairs << " of " << c.truthPairs
+              << "; extra (listed, not touching the surface): " << c.extraPairs << ", " << c.extraPerTruePair()
+              << " per true pair; max overlap " << truth.maxOverlap() << "\n";
+            s << "slices     pixels in another slice than their depth buffer's view depth: " << sliceMismatches
+              << " (at most " << worstMismatch << " relative from the boundary)\n";
         }
     }
     s << "outputs    " << outDir << "/{" << outputs << "}, summary.json\n";

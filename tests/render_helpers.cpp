@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <catch2/catch.hpp>
 
@@ -107,6 +108,36 @@ Scene floorScene() {
     s.height = testHeight();
     s.ambient = glm::vec3(0.05f);
     return s;
+}
+
+Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane, float farPlane, float fov) {
+    Camera c;
+    c.position = position;
+    c.target = target;
+    c.nearPlane = nearPlane;
+    c.farPlane = farPlane;
+    c.fovYDegrees = fov;
+    return c;
+}
+
+Scene firstPersonScene() {
+    Scene s = floorScene();
+    s.camera = camera({0.0f, 1.7f, 11.0f}, {0.0f, 1.2f, 0.0f}, 0.1f, 60.0f);
+    return s;
+}
+
+Scene topDownScene() {
+    Scene s = floorScene();
+    s.camera = camera({0.0f, 22.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, 1.0f, 60.0f);
+    return s;
+}
+
+std::vector<PointLight> floorLights(int count, float rMin, float rMax, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> xz(-11.0f, 11.0f), y(0.05f, 3.0f), r(rMin, rMax), c(0.2f, 1.0f);
+    std::vector<PointLight> lights;
+    for (int i = 0; i < count; ++i) lights.push_back(light({xz(rng), y(rng), xz(rng)}, r(rng), {c(rng), c(rng), c(rng)}));
+    return lights;
 }
 
 RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options) {

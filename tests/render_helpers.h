@@ -19,6 +19,13 @@ PointLight light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1
 // A 24 x 24 m floor (finely tessellated) with a box and a sphere on it, seen from above at an angle; the
 // size is testWidth() x testHeight(). No lights: tests add their own.
 Scene floorScene();
+// floorScene() seen first-person (eye 1.7 m over the floor, looking along it) and from 22 m above.
+Scene firstPersonScene();
+Scene topDownScene();
+// A camera at `position` looking at `target` (fovY in degrees).
+Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane = 0.1f, float farPlane = 60.0f, float fov = 60.0f);
+// `count` random lights over floorScene()'s 24 x 24 m, 0.05..3 m high, radii in [rMin, rMax], colours 0.2..1.
+std::vector<PointLight> floorLights(int count, float rMin, float rMax, unsigned seed);
 
 // A 4 x 4 sweep of flat 2 x 2 m tiles on y = 0 in 2.2 m cells centred on the origin: metallic i / 3 along x,
 // roughness(j) along z, base colour (0.9, 0.6, 0.3); seen from `eye` towards the origin (55 degrees, near 0.5,

@@ -80,8 +80,9 @@ if(r EQUAL 0 OR NOT err MATCHES "--depth-bits must be 24, 16 or 16-emulated")
   message(FATAL_ERROR "lidr-demo --depth-bits 20: exit ${r}, '${err}'")
 endif()
 
-# The other render modes: their image, the reference and, for tiled, the tile heat map; tiled must miss no light.
-foreach(mode tiled forward-multipass forward-brute auto)
+# The other render modes: their image, the reference and, for tiled and clustered, the heat map; tiled and clustered
+# must miss no light.
+foreach(mode tiled clustered forward-multipass forward-brute auto)
   run_demo(${mode} "--mode ${mode}" --mode ${mode} --width 160 --height 120 --frames 1)
   foreach(f ${mode}.png reference.png difference.png summary.json summary.txt)
     if(NOT EXISTS ${OUT}/${mode}/${f})
@@ -126,6 +127,15 @@ string(JSON missing GET "${summary}" tiled missing_light_pixels)
 if(NOT missing EQUAL 0)
   message(FATAL_ERROR "lidr-demo --mode tiled: ${missing} light-pixels missing from tile lists")
 endif()
+if(NOT EXISTS ${OUT}/clustered/cluster_heatmap.png)
+  message(FATAL_ERROR "lidr-demo --mode clustered did not write cluster_heatmap.png")
+endif()
+file(READ ${OUT}/clustered/summary.json summary)
+string(JSON missing GET "${summary}" clustered missing_light_pixels)
+string(JSON true_pairs GET "${summary}" clustered true_light_pixels)
+if(NOT missing EQUAL 0 OR true_pairs LESS 1000)
+  message(FATAL_ERROR "lidr-demo --mode clustered: ${missing} of ${true_pairs} light-pixels missing from cluster lists")
+endif()
 
 # Each bad input: a clear message and a non-zero exit, never a crash (a crash exits with a signal).
 set(bad_runs
@@ -146,6 +156,13 @@ endforeach()
 
 # Issue 13: values that were accepted silently; each exits non-zero before rendering, with this message.
 set(bad_values
+  "--mode|clustered|--cluster-tile-size|2@--cluster-tile-size must be 4..256 pixels, got 2"
+  "--mode|clustered|--cluster-slices|65@--cluster-slices must be 1..64, got 65"
+  "--mode|clustered|--cluster-slicing|linear@unknown cluster slicing 'linear' \\(valid: exponential, near-slice\\)"
+  "--mode|clustered|--cluster-slicing|exponential|--cluster-light-near|4@--cluster-light-near ends the first slice of --cluster-slicing near-slice"
+  "--mode|clustered|--cluster-light-near|0@--cluster-light-near must be a positive view depth, got 0"
+  "--mode|clustered|--cluster-occupancy|maybe@--cluster-occupancy must be on or off, got 'maybe'"
+  "--mode|tiled|--cluster-slices|8@--cluster-\\* options set the clustered mode's grid.*the tiled mode has none"
   "--time|nan@--time must be a finite number of seconds >= 0.*got nan"
   "--time|-1@--time must be a finite number of seconds >= 0.*got -1"
   "--msaa|3@--msaa must be 0 \\(off\\) or a power of two 2, 4, 8.*got 3"

@@ -304,7 +304,7 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
     AutoModeOptions ao;
     ao.trialFrames = 2;
     AutoModeRenderer renderer(testGl(), scene, o, scene.width, scene.height, ao);
-    REQUIRE(renderer.candidates() == std::vector<std::string>{"lidr", "tiled", "forward-multipass"});
+    REQUIRE(renderer.candidates() == std::vector<std::string>{"lidr", "tiled", "clustered", "forward-multipass"});
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 255, false, 0, false);
     // linear output: the bound counts linear 8-bit steps (multi-pass in its 8-bit target, where the context has no
     // half-float colour buffers, rounds each pass; doc/colour.md)
@@ -313,7 +313,7 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
     reference.render(scene.camera, lights, shading);
     const ImageRGBA8 truth = reference.targets().readColor();
     std::vector<std::string> drawnWith;
-    for (int f = 0; f < 8; ++f) {
+    for (int f = 0; f < 10; ++f) {
         renderer.render(scene.camera, lights, shading);
         drawnWith.push_back(renderer.lastMode());
         // Trial frames are ordinary frames: every one is the right image.
@@ -322,12 +322,14 @@ TEST_CASE("auto mode: measures each candidate, keeps the fastest, measures again
         REQUIRE(e.maxAbsError <= 2);
     }
     // Two trial frames per candidate, the candidates taking turns, then the choice.
-    REQUIRE(std::vector<std::string>(drawnWith.begin(), drawnWith.begin() + 6) ==
-            std::vector<std::string>{"lidr", "tiled", "forward-multipass", "lidr", "tiled", "forward-multipass"});
+    REQUIRE(std::vector<std::string>(drawnWith.begin(), drawnWith.begin() + 8) ==
+            std::vector<std::string>{"lidr", "tiled", "clustered", "forward-multipass", "lidr", "tiled", "clustered",
+                                     "forward-multipass"});
     REQUIRE_FALSE(renderer.measuring());
-    REQUIRE(drawnWith[6] == drawnWith[7]);
-    REQUIRE(renderer.reason().find(drawnWith[6] + " fastest") == 0);
-    for (const char* m : {"lidr ", "tiled ", "forward-multipass "}) REQUIRE(renderer.reason().find(m) != std::string::npos);
+    REQUIRE(drawnWith[8] == drawnWith[9]);
+    REQUIRE(renderer.reason().find(drawnWith[8] + " fastest") == 0);
+    for (const char* m : {"lidr ", "tiled ", "clustered ", "forward-multipass "})
+        REQUIRE(renderer.reason().find(m) != std::string::npos);
     // Half the lights leave: measured again.
     lights.resize(12);
     renderer.render(scene.camera, lights, shading);
@@ -346,9 +348,10 @@ TEST_CASE("auto mode: multi-pass, which draws no transparent layers, is no candi
     addBox(scene, glm::vec3(-1.0f, 0.0f, -1.0f), glm::vec3(1.0f), int(scene.materials.size() - 1));
     RenderModeOptions o;
     o.mode = "auto";
-    REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates() == std::vector<std::string>{"lidr", "tiled"});
+    REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates() ==
+            std::vector<std::string>{"lidr", "tiled", "clustered"});
     o.transparency = false;
-    REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates().size() == 3);
+    REQUIRE(AutoModeRenderer(testGl(), scene, o, 64, 48).candidates().size() == 4);
 }
 
 TEST_CASE("auto: a camera flying through the room, lights moving: no frame drops a light, no choice flips back "

@@ -151,7 +151,7 @@ Scene sweepScene() {
 TEST_CASE("every mode's pixels are the BRDF model's after the output transform (metallic x roughness sweep)",
           "[brdf][every-gl]") {
     testContext();
-    std::vector<std::string> modes = {"forward-brute", "lidr", "tiled"};
+    std::vector<std::string> modes = {"forward-brute", "lidr", "clustered", "tiled"};
     if (testGl().gles) modes.pop_back();  // tiled's default depth bounds are refused on ES 2.0
     const std::string mode = GENERATE_COPY(from_range(modes));
     // With directional lights too (not indexed: each mode adds them in its forward pass): a low warm sun, a
@@ -161,7 +161,9 @@ TEST_CASE("every mode's pixels are the BRDF model's after the output transform (
     // across it, one without range (gltfLightRadiusWithoutRange's cut) and a spot; float and fixed-point table.
     const int variant = GENERATE(0, 1, 2, 3, 4);
     const bool directional = variant == 1, spots = variant == 2, inverseSquare = variant >= 3, fixedTable = variant == 4;
-    if (!takeRow((mode == "lidr" && variant == 2) || (mode == "tiled" && variant == 4))) return;
+    if (!takeRow((mode == "lidr" && variant == 2) || (mode == "tiled" && variant == 4) ||
+                 (mode == "clustered" && variant == 1)))
+        return;
     DYNAMIC_SECTION(mode << (directional ? " + directional lights" : spots ? " + spot lights" : "")
                          << (inverseSquare ? " inverse-square lights" : "") << (fixedTable ? ", fixed-point table" : "")) {
         Scene scene = sweepScene();

@@ -51,7 +51,7 @@ TEST_CASE("closed meshes: the inner side culled, the same image in every mode", 
          "-B-"},
         {"a mirrored box (the winding turned over)", [](Scene&) {}, "-FB"},
     };
-    const char* modes[] = {"lidr", "tiled", "forward-multipass", "forward-brute"};
+    const char* modes[] = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute"};
     for (const View& v : views) {
         for (const char* mode : modes) {
             if (!takeRow(std::string(mode) == "lidr")) continue;

@@ -75,8 +75,8 @@ Scene emissiveScene(const glm::vec3& emissive) {
 // false); "forward-multipass" sums in half float where the context renders to it.
 std::vector<std::string> modesOnThisContext() {
     // tiled's default depth bounds are refused on ES 2.0 (doc/contexts.md); auto needs occlusion queries
-    if (testGl().gles) return {"lidr", "forward-multipass", "forward-multipass 8-bit", "forward-brute"};
-    return {"lidr", "tiled", "forward-multipass", "forward-multipass 8-bit", "forward-brute"};
+    if (testGl().gles) return {"lidr", "clustered", "forward-multipass", "forward-multipass 8-bit", "forward-brute"};
+    return {"lidr", "tiled", "clustered", "forward-multipass", "forward-multipass 8-bit", "forward-brute"};
 }
 
 RenderModeOptions modeOptions(const std::string& mode) {
@@ -136,7 +136,7 @@ TEST_CASE("every mode writes the output transform of its linear light (CPU model
     const std::string mode = GENERATE_COPY(from_range(modesOnThisContext()));
     // Representative: each tone map once, each in another mode.
     if (!takeRow((mode == "lidr" && c == 2) || (mode == "tiled" && c == 4) || (mode == "forward-multipass" && c == 3) ||
-                 (mode == "forward-brute" && c == 6)))
+                 (mode == "forward-brute" && c == 6) || (mode == "clustered" && c == 1)))
         return;
     DYNAMIC_SECTION(mode << ": " << cases[c].name) {
         const Scene scene = emissiveScene(cases[c].emissive);

@@ -68,7 +68,8 @@ glm::mat4 exactMove() {
 
 TEST_CASE("dynamic scene: a moved, added or removed object renders as the scene built that way", "[dynamic][gl][every-gl]") {
     testContext();
-    const std::string mode = GENERATE(as<std::string>{}, "lidr", "tiled", "forward-multipass", "forward-brute", "auto");
+    const std::string mode =
+        GENERATE(as<std::string>{}, "lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto");
     if (!takeRow(mode == "lidr")) return;
     INFO("mode " << mode);
     const Scene scene = sceneWithLights();

@@ -370,8 +370,8 @@ Scene environmentFloor() {
 }
 
 std::vector<std::string> environmentModes() {
-    if (testGl().gles) return {"lidr", "forward-brute", "forward-multipass"};  // tiled's depth bounds: desktop only
-    return {"lidr", "tiled", "forward-brute", "forward-multipass"};
+    if (testGl().gles) return {"lidr", "clustered", "forward-brute", "forward-multipass"};  // tiled's depth bounds: desktop only
+    return {"lidr", "tiled", "clustered", "forward-brute", "forward-multipass"};
 }
 
 // Whether multi-pass sums its passes in 8 bits on this context (MultipassForwardRenderer::accumulation): its

@@ -256,7 +256,8 @@ TEST_CASE("render-mode factory builds every mode, all close to the reference", "
     ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, 2);
     reference.render(scene.camera, scene.lights, shading);
     const ImageRGBA8 ref = reference.targets().readColor();
-    REQUIRE(renderModeNames() == std::vector<std::string>{"lidr", "tiled", "forward-multipass", "forward-brute", "auto"});
+    REQUIRE(renderModeNames() ==
+            std::vector<std::string>{"lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto"});
     for (const std::string& mode : renderModeNames()) {
         RenderModeOptions o;
         o.mode = mode;
@@ -266,19 +267,25 @@ TEST_CASE("render-mode factory builds every mode, all close to the reference", "
         r->render(scene.camera, scene.lights, shading);
         const ImageError e = compareImages(r->targets().readColor(), ref);
         INFO(mode << ": max " << e.maxAbsError);
-        // Two lights at most per pixel: one step for lidr and tiled, floor(2 / 2) + 1 for multi-pass.
-        // auto: any of the first three (its first frame is LIDR's trial frame).
+        // Two lights at most per pixel: one step for lidr, tiled and clustered, floor(2 / 2) + 1 for multi-pass.
+        // auto: any of the first four (its first frame is LIDR's trial frame).
         REQUIRE(e.maxAbsError <= (mode == "forward-multipass" || mode == "auto" ? 2 : mode == "forward-brute" ? 0 : 1));
         CHECK(r->lastFrame().passes.size() >= 2);
     }
     RenderModeOptions bad;
     bad.mode = "deferred";
     REQUIRE_THROWS_WITH(createRenderer(bad, testGl(), scene, scene.width, scene.height),
-                        Catch::Contains("'deferred'") && Catch::Contains("lidr, tiled, forward-multipass, forward-brute"));
+                        Catch::Contains("'deferred'") &&
+                            Catch::Contains("lidr, tiled, clustered, forward-multipass, forward-brute"));
     RenderModeOptions tiled;
     tiled.mode = "tiled";
     tiled.tiled.tileSize = 0;
     REQUIRE_THROWS_AS(createRenderer(tiled, testGl(), scene, scene.width, scene.height), Error);
+    RenderModeOptions clustered;
+    clustered.mode = "clustered";
+    clustered.clustered.slices = 0;
+    REQUIRE_THROWS_WITH(createRenderer(clustered, testGl(), scene, scene.width, scene.height),
+                        Catch::Contains("slices must be 1..64"));
 }
 
 TEST_CASE("scene files choose a render mode with \"mode\"", "[forward][modes][scene][cpu]") {
@@ -362,9 +369,10 @@ TEST_CASE("every mode shades the last fragment drawn at the nearest depth, once"
     add("lidr", 0, false);
     add("lidr", 4, false);
     add("tiled", 0, false);
+    add("clustered", 0, false);
     const Variant v = GENERATE_COPY(from_range(variants));
     if (!takeRow(v.name == "lidr, MSAA 0" || v.name == "forward-multipass, MSAA 0" || v.name == "tiled, MSAA 0, no pre-pass" ||
-                 v.name == "lidr, MSAA 4, no pre-pass"))
+                 v.name == "lidr, MSAA 4, no pre-pass" || v.name == "clustered, MSAA 0, no pre-pass"))
         return;
     DYNAMIC_SECTION(v.name) {
         if (v.samples > 0 && (!info.multisampleFbo || info.maxSamples < v.samples)) {
@@ -378,6 +386,7 @@ TEST_CASE("every mode shades the last fragment drawn at the nearest depth, once"
         o.lidr.depthPrepass = v.prepass;
         o.tiled.preZ = v.prepass;
         o.tiled.depthBounds = v.prepass;
+        o.clustered.preZ = v.prepass;
         std::unique_ptr<Renderer> once = createRenderer(o, info, single, single.width, single.height);
         std::unique_ptr<Renderer> twice = createRenderer(o, info, doubled, doubled.width, doubled.height);
         once->render(single.camera, single.lights, shading);

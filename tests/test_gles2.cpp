@@ -19,6 +19,7 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/modes/clustered_renderer.h"
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/scene/default_scene.h"
 #include "pixel_list_geometry.h"
@@ -263,7 +264,17 @@ TEST_CASE("ES 2.0 refuses what it lacks before drawing, naming the missing featu
     REQUIRE_THROWS_WITH(TiledRenderer(es, scene, tiled, w, h), Contains("mediump") && Contains("--no-depth-bounds"));
     tiled.depthBounds = false;
     REQUIRE_NOTHROW(TiledRenderer(es, scene, tiled, w, h));
-
+    // Clustered runs as it is (its slices come from the highp world position, not gl_FragCoord); occupied clusters
+    // read depth back, which needs NV_read_depth_stencil; without highp fragments the grid has one slice.
+    ClusteredOptions clustered;
+    REQUIRE_NOTHROW(ClusteredRenderer(es, scene, clustered, w, h));
+    clustered.occupiedClusters = true;
+    GlInfo noDepthReadBack = es;
+    noDepthReadBack.readDepthStencil = false;
+    REQUIRE_THROWS_WITH(ClusteredRenderer(noDepthReadBack, scene, clustered, w, h), Contains("read the pre-Z depth back"));
+    GlInfo mediump = es;
+    mediump.fragmentHighp = false;
+    REQUIRE(ClusteredRenderer(mediump, scene, ClusteredOptions{}, w, h).grid().sliceCount() == 1);
 
     // An automatic budget cannot be measured without occlusion queries: a fixed one, said in the frame's stats.
     Scene lit = scene;

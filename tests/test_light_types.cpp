@@ -208,7 +208,7 @@ TEST_CASE("every mode equals the reference with directional lights present, and 
     const Case c = GENERATE(Case{"40 point lights + 2 directional", 40}, Case{"2 directional lights alone", 0},
                             Case{"30 point + 24 spot + 6 stress spot lights + 2 directional", 30},
                             Case{"30 point + 24 spot + 6 stress spot lights + 2 directional, every other one inverse-square", 30});
-    std::vector<std::string> modes = {"lidr", "tiled", "forward-multipass", "forward-brute"};
+    std::vector<std::string> modes = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute"};
     if (testGl().gles) modes.erase(modes.begin() + 1);  // tiled's default depth bounds are refused on ES 2.0
     const std::string mode = GENERATE_COPY(from_range(modes));
     const bool spots = std::string(c.name).find("spot") != std::string::npos;
@@ -257,7 +257,7 @@ TEST_CASE("every mode equals the reference with directional lights present, and 
         const ImageRGBA8 image = renderer->targets().readColor();
         const auto* multipass = dynamic_cast<const MultipassForwardRenderer*>(renderer.get());
         if (!multipass || std::string(multipass->accumulation()) == "half-float") {
-            // The same lights summed in the same order (tiled: ascending tile lists); one step for reassociation.
+            // The same lights summed in the same order (tiled, clustered: ascending lists); one step for reassociation.
             // Multi-pass in half float: its float sum encoded once, the same step.
             const ImageError e = compareImages(image, reference);
             INFO(mode << " against the reference: max " << e.maxAbsError << ", PSNR " << e.psnr);

@@ -73,7 +73,7 @@ Scene quadScene(const TempDir& dir, const Json& material, const std::vector<Imag
 }
 
 std::vector<std::string> testedModes() {
-    std::vector<std::string> modes = {"forward-brute", "lidr", "tiled"};
+    std::vector<std::string> modes = {"forward-brute", "lidr", "clustered", "tiled"};
     if (testGl().gles) modes.pop_back();  // tiled's default depth bounds are refused on ES 2.0
     return modes;
 }
@@ -519,7 +519,7 @@ TEST_CASE("alpha MASK and doubleSided: cut-out pixels and the back of a one-side
                 CHECK(shown == quadPixels);
                 CHECK(cutShown == cut);
             }
-            if (mode == "lidr" || mode == "tiled") CHECK(image.pixels == reference.pixels);
+            if (mode == "lidr" || mode == "tiled" || mode == "clustered") CHECK(image.pixels == reference.pixels);
         }
         if (what == "cut-out") {  // LIDR's light lists against the reference, pixel by pixel
             LidrOptions options;

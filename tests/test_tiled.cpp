@@ -32,25 +32,6 @@ using namespace lidr::test;
 
 namespace {
 
-Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane = 0.1f, float farPlane = 60.0f,
-              float fov = 60.0f) {
-    Camera c;
-    c.position = position;
-    c.target = target;
-    c.nearPlane = nearPlane;
-    c.farPlane = farPlane;
-    c.fovYDegrees = fov;
-    return c;
-}
-
-// Random lights over the test floor (24 x 24 m), radii in [rMin, rMax].
-std::vector<PointLight> scatteredLights(int count, float rMin, float rMax, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> xz(-11.0f, 11.0f), y(0.05f, 3.0f), r(rMin, rMax), c(0.2f, 1.0f);
-    std::vector<PointLight> lights;
-    for (int i = 0; i < count; ++i) lights.push_back(light({xz(rng), y(rng), xz(rng)}, r(rng), {c(rng), c(rng), c(rng)}));
-    return lights;
-}
 
 // The brute-force reference, transparent meshes included (back to front, alpha blended, every light).
 ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, bool fixedTable,
@@ -121,17 +102,6 @@ void requireEqualsReference(const TiledCheck& c) {
     REQUIRE(c.frame.loopBound >= std::max(c.grid.maxOpaqueLights, c.grid.maxTransparentLights));
 }
 
-Scene firstPersonScene() {
-    Scene s = floorScene();
-    s.camera = camera({0.0f, 1.7f, 11.0f}, {0.0f, 1.2f, 0.0f}, 0.1f, 60.0f);
-    return s;
-}
-
-Scene topDownScene() {
-    Scene s = floorScene();
-    s.camera = camera({0.0f, 22.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, 1.0f, 60.0f);
-    return s;
-}
 
 }  // namespace
 
@@ -406,7 +376,7 @@ TEST_CASE("tiled equals the reference on the default room, with and without dept
 
 namespace {
 void checkViews(const std::vector<int>& tileSizes) {
-    const std::vector<PointLight> lights = scatteredLights(120, 0.4f, 3.5f, 3);
+    const std::vector<PointLight> lights = floorLights(120, 0.4f, 3.5f, 3);
     for (const Scene& base : {topDownScene(), firstPersonScene()}) {
         Scene scene = base;
         scene.lights = lights;
@@ -507,7 +477,7 @@ TEST_CASE("tiled: transparent meshes are lit from their own lists and blended ba
     addSphere(scene, {-1.5f, 1.2f, 6.0f}, 0.8f, glass, 24);
     addSphere(scene, {1.0f, 1.0f, 4.0f}, 0.6f, glass, 24);
     addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, glass, 24);
-    scene.lights = scatteredLights(80, 0.5f, 3.0f, 5);
+    scene.lights = floorLights(80, 0.5f, 3.0f, 5);
     scene.lights.push_back(light({-1.0f, 1.5f, 7.5f}, 2.0f, {1.0f, 0.8f, 0.5f}));  // in front of the glass
     scene.lights.push_back(light({0.8f, 1.0f, 4.9f}, 1.0f, {0.5f, 1.0f, 0.5f}));
     for (bool bounds : {true, false}) {
@@ -545,7 +515,7 @@ TEST_CASE("tiled: MSAA with transparency equals the reference rendered the same 
     Scene scene = firstPersonScene();
     scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
     addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
-    scene.lights = scatteredLights(60, 0.5f, 3.0f, 8);
+    scene.lights = floorLights(60, 0.5f, 3.0f, 8);
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     const ImageRGBA8 single = [&] {
         TiledRenderer r(info, scene, TiledOptions{}, scene.width, scene.height);
@@ -587,8 +557,8 @@ TEST_CASE("tiled: a tile list longer than the loop bound grows the shader, a ful
 
 TEST_CASE("tiled: more lights than the scene had grows the light table", "[tiled][growth][every-gl]") {
     Scene scene = topDownScene();
-    scene.lights = scatteredLights(3, 1.0f, 3.0f, 9);
-    const std::vector<PointLight> more = scatteredLights(60, 0.5f, 2.5f, 10);
+    scene.lights = floorLights(3, 1.0f, 3.0f, 9);
+    const std::vector<PointLight> more = floorLights(60, 0.5f, 2.5f, 10);
     const TiledCheck c = renderTiled(scene, TiledOptions{}, &more);
     requireEqualsReference(c);
     CHECK(c.grid.assignedLights > 30);  // well past the 3 the table was made for
@@ -637,7 +607,7 @@ TEST_CASE("tiled: bad input is refused before drawing", "[tiled][bad-input][ever
     t = TiledOptions{};
     t.preZ = false;
     t.depthBounds = false;  // no pre-Z and no bounds is a valid mode: depth LESS in the shading pass
-    const TiledCheck c = renderTiled([&] { Scene s = scene; s.lights = scatteredLights(40, 0.5f, 3.0f, 2); return s; }(), t);
+    const TiledCheck c = renderTiled([&] { Scene s = scene; s.lights = floorLights(40, 0.5f, 3.0f, 2); return s; }(), t);
     requireEqualsReference(c);
     TiledRenderer r(testGl(), scene, TiledOptions{}, scene.width, scene.height);
     const std::vector<PointLight> tooMany(65536, light({0, 0, 0}, 1.0f));
@@ -673,7 +643,7 @@ TEST_CASE("tiled: a spot light goes on a tile only where its cone may reach the 
           "[tiled][lights][cones]") {
     // Lamps over the floor aimed down and sideways at random (outer cones 3 to 86 degrees), a 90-degree one and
     // one holding the camera; and the lamp street. Each against the same lights as points (their spheres).
-    std::vector<PointLight> spots = scatteredLights(120, 1.0f, 4.5f, 29);
+    std::vector<PointLight> spots = floorLights(120, 1.0f, 4.5f, 29);
     std::mt19937 rng(2029);
     std::uniform_real_distribution<float> tilt(-0.8f, 0.8f), angle(0.05f, 1.5f);
     for (PointLight& l : spots) {

@@ -44,7 +44,7 @@ echo "$err" | grep -q "refused: .*per-sample" || fail "--msaa-per-sample: no rea
 # The GL 2.1 / GLSL 1.20 override on llvmpipe, for the demo's reference images and the viewer alike.
 export GALLIUM_DRIVER=llvmpipe MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120
 size=(--width 480 --height 360 --time 2)
-for mode in lidr tiled forward-multipass; do
+for mode in lidr tiled clustered forward-multipass; do
   LIDR_CONTEXT=egl "$demo" --headless "${size[@]}" --frames 1 --mode "$mode" --out "$out/demo-$mode" >"$out/demo-$mode.log" 2>&1 ||
     fail "lidr-demo --mode $mode failed: $(cat "$out/demo-$mode.log")"
 done
@@ -87,7 +87,7 @@ grep -q "must-fail\|line 2 'expect-setting mode tiled' failed: mode is lidr" "$o
     done
   done
   echo "set msaa 0"; echo "set volume-test auto"; echo "set view marked"; echo "compute"; echo "expect-stat dropped == 0"
-  for mode in tiled forward-multipass forward-brute; do echo "set mode $mode"; echo "set msaa 4"; echo "wait 1"; echo "set msaa 0"; done
+  for mode in tiled clustered forward-multipass forward-brute; do echo "set mode $mode"; echo "set msaa 4"; echo "wait 1"; echo "set msaa 0"; done
   echo "press R"; echo "wait 1"; echo "expect-setting mode lidr"; echo "expect-setting scheme auto"; echo "expect-setting budget auto"; echo "expect-applied"
 } > "$out/sweep.script"
 "${x[@]}" "$viewer" --width 160 --height 120 --paused --out "$out" --script "$out/sweep.script" >"$out/sweep.log" 2>&1 ||
@@ -119,7 +119,7 @@ printf 'resize 320 240\nwait 3\nexpect-size 160 120\n' > "$out/fixed-size.script
 # OpenGL ES 2.0 (--context glfw-gles2: a GLFW window through EGL, MESA_GLES_VERSION_OVERRIDE=2.0 for a true
 # ES 2.0 with GLSL ES 1.00): the ES demo's images, the views, the UI, ES's refusals reverted, the sweep.
 es=(env -u MESA_GL_VERSION_OVERRIDE -u MESA_GLSL_VERSION_OVERRIDE MESA_GLES_VERSION_OVERRIDE=2.0)
-for mode in lidr tiled forward-multipass; do
+for mode in lidr tiled clustered forward-multipass; do
   bounds=(); [ "$mode" = tiled ] && bounds=(--no-depth-bounds)  # ES refuses tile depth bounds
   "${es[@]}" "$demo" --context egl-gles2 --headless "${size[@]}" --frames 1 --mode "$mode" "${bounds[@]}" \
     --out "$out/demo-gles2-$mode" >"$out/demo-gles2-$mode.log" 2>&1 ||

@@ -148,6 +148,9 @@ void Viewer::renderFrame() {
     }
     if (auto* tiled = dynamic_cast<const TiledRenderer*>(&drawingRenderer()); tiled && view_ == View::TileHeatMap)
         tileHeat_ = tiled->tileHeatMap(16);
+    if (auto* clustered = dynamic_cast<const ClusteredRenderer*>(&drawingRenderer());
+        clustered && view_ == View::TileHeatMap)
+        tileHeat_ = clustered->clusterHeatMap(16);
     if (view_ == View::ShadowAtlas) {
         const ShadowAtlas* atlas = drawingRenderer().shadowAtlas();
         shadowAtlasView_ = atlas ? atlas->image(1024) : ImageRGBA8{};

@@ -1,5 +1,6 @@
 // lidr-viewer's debug views and saved artefacts: the reference and difference images, the index lists, overlap
-// and marked-light views (LIDR), the tile heat map (tiled), screenshots (F12) and everything at once (F11).
+// and marked-light views (LIDR), the light-list heat map (tiled: per tile; clustered: per pixel's cluster),
+// screenshots (F12) and everything at once (F11).
 #include "lidr/base/gl.h"  // GLEW before anything that includes GL/gl.h (GLFW does)
 
 #include "viewer.h"
@@ -50,7 +51,9 @@ bool Viewer::viewAvailable(View v, std::string* why) const {
             if (rc_.msaaPerSample) return no("per-sample index targets are multisample textures: they cannot be read back");
             return true;
         case View::TileHeatMap:
-            if (!dynamic_cast<const TiledRenderer*>(&drawingRenderer())) return no("the tile heat map is the tiled mode's");
+            if (!dynamic_cast<const TiledRenderer*>(&drawingRenderer()) &&
+                !dynamic_cast<const ClusteredRenderer*>(&drawingRenderer()))
+                return no("the light-list heat map is the tiled and clustered modes'");
             return true;
         case View::ShadowAtlas: {
             const ShadowAtlas* atlas = drawingRenderer().shadowAtlas();
@@ -91,6 +94,8 @@ void Viewer::computeViews() {
     }
     if (const auto* tiled = dynamic_cast<const TiledRenderer*>(&drawingRenderer()))
         ev.images[View::TileHeatMap] = tiled->tileHeatMap(16);
+    if (const auto* clustered = dynamic_cast<const ClusteredRenderer*>(&drawingRenderer()))
+        ev.images[View::TileHeatMap] = clustered->clusterHeatMap(16);
     checkGl("viewer: computing the debug views");
     ev.valid = true;
     eval_ = std::move(ev);
@@ -156,7 +161,8 @@ void Viewer::saveAll(const std::string& dir) {
     const Camera c = camera_.camera();
     nlohmann::json j;
     for (const char* s : {"mode", "scheme", "budget", "index-bits", "volume-test", "msaa", "per-sample", "transparency",
-                          "tile-size", "depth-bounds", "half-z", "shadows", "shadow-filter", "shadow-lookup", "lights",
+                          "tile-size", "depth-bounds", "half-z", "cluster-tile-size", "cluster-slices",
+                          "cluster-slicing", "cluster-occupancy", "shadows", "shadow-filter", "shadow-lookup", "lights",
                           "view", "paused"})
         j["settings"][s] = setting(s);
     j["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},

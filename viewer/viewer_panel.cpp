@@ -81,6 +81,17 @@ void Viewer::uiSettings() {
     ImGui::SameLine();
     if (ImGui::Checkbox("half-Z", &halfZ)) changeSetting("half-z", halfZ ? "on" : "off");
     ImGui::EndDisabled();
+    ImGui::BeginDisabled(rc_.mode != "clustered" && rc_.mode != "auto");
+    combo("cluster tile size", setting("cluster-tile-size"), kClusterTileSizes, "cluster-tile-size", str, always);
+    combo("depth slices", setting("cluster-slices"), kClusterSlices, "cluster-slices", str, always);
+    combo("slicing", setting("cluster-slicing"), kClusterSlicings, "cluster-slicing", str, always);
+    bool occupied = setting("cluster-occupancy") == "on";
+    ImGui::BeginDisabled(!info.readDepthStencil);
+    if (ImGui::Checkbox("occupied clusters only", &occupied)) changeSetting("cluster-occupancy", occupied ? "on" : "off");
+    ImGui::EndDisabled();
+    if (!info.readDepthStencil && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("occupied clusters read the depth back, which this context cannot");
+    ImGui::EndDisabled();
     combo("MSAA", std::to_string(rc_.msaa.value_or(0)), kMsaa, "msaa", str, [&](int s, std::string* why) {
         if (s == 0) return true;
         if (!info.multisampleFbo) {
@@ -183,6 +194,7 @@ void Viewer::uiStats() {
     size_t table = 0;
     if (auto* l = dynamic_cast<const LidrRenderer*>(&drawingRenderer())) table = l->lightTable().bytes();
     if (auto* t = dynamic_cast<const TiledRenderer*>(&drawingRenderer())) table = t->lightTable().bytes();
+    if (auto* c = dynamic_cast<const ClusteredRenderer*>(&drawingRenderer())) table = c->lightTable().bytes();
     ImGui::Text("memory: targets %s (estimate), light data %s", bytesText(double(targets)).c_str(),
                 bytesText(double(renderer_->lightDataBytes())).c_str());
     if (table) ImGui::Text("light table %s", bytesText(double(table)).c_str());

@@ -214,7 +214,8 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
         // In the automatic mode the views follow the candidate that drew the frame.
         const Renderer& drawing = drawingRenderer();
         const bool lidrDrew = dynamic_cast<const LidrRenderer*>(&drawing) != nullptr;
-        const bool tiledDrew = dynamic_cast<const TiledRenderer*>(&drawing) != nullptr;
+        const bool tiledDrew = dynamic_cast<const TiledRenderer*>(&drawing) != nullptr ||
+                               dynamic_cast<const ClusteredRenderer*>(&drawing) != nullptr;
         std::cout << "lidr-viewer: " << a.text << ": " << renderer_->modeName() << " drew with " << drawing.modeName()
                   << std::endl;
         std::string why;
@@ -222,7 +223,7 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
             if (viewAvailable(view, &why) != (lidrDrew && !rc_.msaaPerSample))
                 fail(std::string("view ") + viewName(view) + (lidrDrew ? " not offered: " + why : " offered"));
         if (viewAvailable(View::TileHeatMap, &why) != tiledDrew)
-            fail(std::string("the tile heat map ") + (tiledDrew ? "not offered: " + why : "offered"));
+            fail(std::string("the light-list heat map ") + (tiledDrew ? "not offered: " + why : "offered"));
         if (!eval_.valid || dirty_) fail("no up-to-date figures: add 'compute' first");
         if (eval_.listsChecked != (lidrDrew && !rc_.msaaPerSample))
             fail(lidrDrew ? "the index lists of the LIDR frame were not checked" : "index lists checked without LIDR");

@@ -154,7 +154,12 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
         return true;
     }
     demo::RendererChoice next = rc_;
-    if (name == "mode") next.mode = value;
+    if (name == "mode") {
+        next.mode = value;
+        if (value != "clustered" && value != "auto")  // the grid is the clustered mode's: its defaults next time
+            next.clusterTileSize.reset(), next.clusterSlices.reset(), next.clusterSlicing.reset(),
+                next.clusterOccupancy.reset(), next.clusterLightNear.reset();
+    }
     else if (name == "scheme") {
         next.scheme = value;
         // The automatic scheme chooses budget and width itself; a named scheme other than bit-shift needs a fixed
@@ -173,14 +178,18 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
     else if (name == "tile-size") next.tileSize = toInt(value);
     else if (name == "depth-bounds") next.noDepthBounds = !toBool(value);
     else if (name == "half-z") next.halfZ = toBool(value);
+    else if (name == "cluster-tile-size") next.clusterTileSize = toInt(value);
+    else if (name == "cluster-slices") next.clusterSlices = toInt(value);
+    else if (name == "cluster-slicing") next.clusterSlicing = value;
+    else if (name == "cluster-occupancy") next.clusterOccupancy = toBool(value) ? "on" : "off";
     else if (name == "shadows") next.shadows = value;
     else if (name == "shadow-filter") next.shadowFilter = value;
     else if (name == "shadow-lookup") next.shadowLookup = value;
     else
         throw Error("unknown setting '" + name +
                     "' (mode, scheme, budget, index-bits, volume-test, msaa, per-sample, transparency, volume-detail, "
-                    "tile-size, depth-bounds, half-z, shadows, shadow-filter, shadow-lookup, lights, scatter, view, "
-                    "paused, speed)");
+                    "tile-size, depth-bounds, half-z, cluster-tile-size, cluster-slices, cluster-slicing, "
+                    "cluster-occupancy, shadows, shadow-filter, shadow-lookup, lights, scatter, view, paused, speed)");
     if (name.rfind("shadow", 0) == 0) {
         try {
             shadowChoice(next);  // the value checked as lidr-demo checks --shadows, --shadow-filter, --shadow-lookup
@@ -207,6 +216,11 @@ std::string Viewer::setting(const std::string& name) const {
     if (name == "tile-size") return std::to_string(rc_.tileSize);
     if (name == "depth-bounds") return rc_.noDepthBounds ? "off" : "on";
     if (name == "half-z") return rc_.halfZ ? "on" : "off";
+    const ClusteredOptions clustered;  // the library's defaults, where the choice leaves them
+    if (name == "cluster-tile-size") return std::to_string(rc_.clusterTileSize.value_or(clustered.tileSize));
+    if (name == "cluster-slices") return std::to_string(rc_.clusterSlices.value_or(clustered.slices));
+    if (name == "cluster-slicing") return rc_.clusterSlicing.value_or(clusterSlicingName(clustered.slicing));
+    if (name == "cluster-occupancy") return rc_.clusterOccupancy.value_or(clustered.occupiedClusters ? "on" : "off");
     if (name == "shadows") return rc_.shadows;
     if (name == "shadow-filter") return rc_.shadowFilter.value_or("nearest");
     if (name == "shadow-lookup") return rc_.shadowLookup.value_or("forward");

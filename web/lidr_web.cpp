@@ -42,7 +42,7 @@ constexpr int kWidth = 640, kHeight = 480;
 // What the HTML controls set. Budgets and widths are fixed numbers: the automatic budget measures the overlap
 // with occlusion queries, which WebGL 1 does not have (doc/web.md).
 struct Settings {
-    std::string mode = "lidr";  // lidr, tiled, forward-multipass, forward-brute
+    std::string mode = "lidr";  // lidr, tiled, clustered, forward-multipass, forward-brute
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;

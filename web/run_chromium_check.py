@@ -257,7 +257,7 @@ def run_model_check(args, url):
         return False
     ok = True
     env = dict(os.environ, MESA_GLES_VERSION_OVERRIDE="2.0")  # a true ES 2.0, as WebGL 1 is
-    for mode in ("lidr", "tiled", "forward-multipass", "forward-brute"):
+    for mode in ("lidr", "tiled", "clustered", "forward-multipass", "forward-brute"):
         if ("url", mode) not in Handler.frames or ("drop", mode) not in Handler.frames:
             print(f"FAIL {mode}: the page sent no frame by URL and by drop")
             ok = False

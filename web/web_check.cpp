@@ -13,6 +13,7 @@
 #include "lidr/base/error.h"
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
+#include "lidr/modes/clustered_renderer.h"
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/render/shadow_atlas.h"
 #include "lidr/render/shadow_casters.h"
@@ -137,6 +138,30 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
                 out << line;
             }
         }
+        // Clustered forward (issue 37) with its default grid (WebGL reads no depth back: the dense grid): the image
+        // against the reference, and every light of the CPU truth in the list of the cluster each pixel read (the
+        // GPU's slice, read back), as the native tests check it.
+        {
+            ClusteredOptions options;
+            options.transparency = false;
+            ClusteredRenderer renderer(info, scene, options, width, height);
+            renderer.render(camera, lights, shading);
+            const ImageError e = compareImages(renderer.targets().readColor(), referenceImage);
+            const ClusterGrid& g = renderer.grid();
+            const PixelListCheck lists =
+                checkPixelLists(truth, renderer.pixelClusters(), g.entries(), g.offsets(), g.counts());
+            const bool passed = e.maxAbsError <= 1 && lists.missingPairs == 0 && lists.surfaceWithoutList == 0 &&
+                                lists.truthPairs > 0;
+            allPassed = allPassed && passed;
+            char line[400];
+            std::snprintf(line, sizeof line,
+                          "%s clustered %d px tiles x %d slices (%d-bit lists): max error %d, PSNR %.1f dB, "
+                          "light-pixels missing from the clusters' lists %ld of %ld, extra %.2f per true pair\n",
+                          passed ? "ok  " : "FAIL", renderer.options().tileSize, renderer.frameInfo().slicing.count,
+                          renderer.frameInfo().indexBits, e.maxAbsError, e.psnr, lists.missingPairs, lists.truthPairs,
+                          lists.extraPerTruePair());
+            out << line;
+        }
         // Shadows (issue 30): the 8 brightest lights in view cast (48 cube-face maps in a 1024 atlas); LIDR, its
         // volume pass discarding shadowed points, against the reference reading the same maps, within the budget
         // as above; and the shadows must show (the frame darker than without them somewhere).
@@ -184,6 +209,17 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
                                                              ? "packed RGBA8" : "depth texture",
                           darker, within, e.maxAbsError, e.psnr);
             out << line;
+            // Clustered with the same shadows, against the same reference (the whole image: it drops nothing).
+            ClusteredOptions clusteredOptions;
+            clusteredOptions.transparency = false;
+            ClusteredRenderer clustered(info, scene, clusteredOptions, width, height);
+            clustered.render(camera, casting, shadowed);
+            const ImageError ce = compareImages(clustered.targets().readColor(), shadowedReference);
+            const bool clusteredPassed = ce.maxAbsError <= 1 && clustered.lastFrame().shadowCasters == 8;
+            allPassed = allPassed && clusteredPassed;
+            std::snprintf(line, sizeof line, "%s shadows: clustered against the shadowed reference: max error %d, PSNR %.1f dB\n",
+                          clusteredPassed ? "ok  " : "FAIL", ce.maxAbsError, ce.psnr);
+            out << line;
         }
         // Each budget's renderer was destroyed before the next was built, as the page's controls do: nothing of
         // theirs (a deleted buffer still named by an attribute, a deleted program) may leave a GL error behind.
@@ -196,7 +232,7 @@ CheckResult runPageCheck(const GlInfo& info, int width, int height) {
             out << line;
         }
         result.passed = allPassed;
-        out << (allPassed ? "PASS" : "FAIL") << ": LIDR in WebGL 1 against the CPU truth and the reference ("
+        out << (allPassed ? "PASS" : "FAIL") << ": LIDR and clustered in WebGL 1 against the CPU truth and the reference ("
             << info.renderer << ")";
     } catch (const std::exception& e) {
         result.passed = false;

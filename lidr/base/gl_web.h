@@ -22,6 +22,7 @@ inline constexpr void (*glGetQueryObjectui64v)(GLuint, GLenum, GLuint64*) = null
 #define GL_RGB16F_ARB 0x881B
 #define GL_RGBA16F_ARB 0x881A
 #define GL_TEXTURE_MAX_LOD 0x813B
+#define GL_LUMINANCE8 0x8040
 #define GL_LUMINANCE8_ALPHA8 0x8045
 #define GL_SAMPLES_PASSED 0x8914
 #define GL_DEPTH_CLAMP 0x864F

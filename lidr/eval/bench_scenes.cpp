@@ -12,6 +12,21 @@ namespace lidr {
 
 const char* manyLightViewName(ManyLightView view) { return view == ManyLightView::TopDown ? "top" : "fp"; }
 
+bool makeManyLightSceneByName(const std::string& name, Scene& scene, uint32_t seed) {
+    if (name.compare(0, 5, "many-") != 0) return false;
+    const size_t dash = name.find('-', 5);
+    const std::string digits = name.substr(5, dash == std::string::npos ? std::string::npos : dash - 5);
+    const std::string view = dash == std::string::npos ? "" : name.substr(dash + 1);
+    const bool numeric = !digits.empty() && digits.size() <= 5 &&
+                         std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const int n = numeric ? std::stoi(digits) : 0;
+    if (n < 4 || n > 65535 || (view != "top" && view != "fp"))
+        throw Error("bad scene name '" + name + "': use many-N-top or many-N-fp with N lights, 4..65535 (e.g. "
+                    "many-4096-top)");
+    scene = makeManyLightScene(n, view == "top" ? ManyLightView::TopDown : ManyLightView::FirstPerson, 1024, 768, seed);
+    return true;
+}
+
 Scene makeManyLightScene(int lightCount, ManyLightView view, int width, int height, uint32_t seed) {
     if (lightCount < 4 || lightCount > 65535)
         throw Error("many-light scene: light count must be in [4, 65535], got " + std::to_string(lightCount));

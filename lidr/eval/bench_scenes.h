@@ -13,6 +13,9 @@ enum class ManyLightView { TopDown, FirstPerson };
 // lightCount in [4, 65535].
 Scene makeManyLightScene(int lightCount, ManyLightView view, int width = 1024, int height = 768, uint32_t seed = 1);
 const char* manyLightViewName(ManyLightView view);  // "top", "fp"
+// By name, as lidr-bench and lidr-demo take it: "many-N-top" or "many-N-fp" (1024x768). False for other names; a
+// name with the prefix and a bad N or view throws lidr::Error naming the valid form.
+bool makeManyLightSceneByName(const std::string& name, Scene& scene, uint32_t seed = 1);
 
 // The default room (255 lights, its camera) with extra finely tessellated geometry, for frame time against
 // scene triangles: a fixed lattice of `heavyMeshCount` spheres (3 layers between the floor and 4 m, over the

@@ -193,4 +193,37 @@ ListCheck checkIndexLists(const CoverageTruth& truth, const PackingScheme& schem
     return c;
 }
 
+PixelListCheck checkPixelLists(const CoverageTruth& truth, const std::vector<int>& listOfPixel,
+                               const std::vector<uint32_t>& entries, const std::vector<uint32_t>& offsets,
+                               const std::vector<int>& counts) {
+    const size_t pixels = size_t(truth.width) * size_t(truth.height);
+    if (listOfPixel.size() != pixels)
+        throw Error("checkPixelLists: " + std::to_string(listOfPixel.size()) + " pixels' lists for " +
+                    std::to_string(pixels) + " pixels");
+    if (offsets.size() != counts.size()) throw Error("checkPixelLists: offsets and counts differ in length");
+    PixelListCheck c;
+    for (size_t p = 0; p < pixels; ++p) {
+        if (!truth.surface[p]) continue;
+        const int list = listOfPixel[p];
+        const long truePairs = long(truth.offsets[p + 1] - truth.offsets[p]);
+        c.truthPairs += truePairs;
+        if (list < 0 || size_t(list) >= offsets.size()) {
+            ++c.surfaceWithoutList;
+            c.missingPairs += truePairs;
+            if (truePairs > 0) ++c.pixelsWithMissing;
+            continue;
+        }
+        const uint32_t* first = entries.data() + offsets[size_t(list)];
+        const uint32_t* last = first + counts[size_t(list)];
+        c.listPairs += counts[size_t(list)];
+        long missing = 0;
+        for (uint32_t k = truth.offsets[p]; k < truth.offsets[p + 1]; ++k)
+            if (!std::binary_search(first, last, truth.lights[k])) ++missing;
+        c.missingPairs += missing;
+        if (missing > 0) ++c.pixelsWithMissing;
+    }
+    c.extraPairs = c.listPairs - (c.truthPairs - c.missingPairs);
+    return c;
+}
+
 }  // namespace lidr

@@ -38,6 +38,23 @@ std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& 
 std::vector<int> frontFaceCounts(const ImageFloat& depth, const CameraMatrices& camera,
                                  const std::vector<PointLight>& lights, const std::vector<float>& inflate);
 
+// A grid's per-pixel light lists (the tiled and clustered modes: one flat list of entries, each list at an offset
+// with a count, ascending) against the truth. listOfPixel: per pixel, rows top to bottom as the truth's, the
+// list it shaded with (< 0: none).
+struct PixelListCheck {
+    long truthPairs = 0;         // (pixel, light) pairs of the truth
+    long missingPairs = 0;       // ... whose light is missing from the pixel's list
+    long pixelsWithMissing = 0;
+    long listPairs = 0;          // entries of the surface pixels' lists, summed over the pixels
+    long extraPairs = 0;         // listed, not touching the pixel's surface: listPairs - (truthPairs - missingPairs)
+    long surfaceWithoutList = 0; // surface pixels with no list (listOfPixel < 0)
+    // The conservative test's overhead: lights a pixel loops over that do not light it, per light that does.
+    double extraPerTruePair() const { return truthPairs > 0 ? double(extraPairs) / double(truthPairs) : 0.0; }
+};
+PixelListCheck checkPixelLists(const CoverageTruth& truth, const std::vector<int>& listOfPixel,
+                               const std::vector<uint32_t>& entries, const std::vector<uint32_t>& offsets,
+                               const std::vector<int>& counts);
+
 struct ListCheck {
     long droppedLightPixels = 0;  // (pixel, light) pairs: light touches the surface, missing from the list
     long pixelsWithDrops = 0;

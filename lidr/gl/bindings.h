@@ -18,6 +18,9 @@ enum TextureUnit : int {
     // Tiled forward: the tile grid and the light list (lidr/modes/light_grid.h).
     kUnitTileGrid = 0,
     kUnitTileList = 1,
+    // Clustered forward: the cluster grid and the light list (lidr/modes/cluster_grid.h).
+    kUnitClusterGrid = 0,
+    kUnitClusterList = 1,
     // Tile depth bounds: the reduction input, then the min and max tile textures of the depth-bounds pass.
     kUnitReductionInput = 0,
     kUnitTileDepthMin = 1,

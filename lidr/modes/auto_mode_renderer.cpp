@@ -27,7 +27,7 @@ AutoModeRenderer::AutoModeRenderer(const GlInfo& info, const Scene& scene, const
         throw Error("auto mode: trial frames must be in [2, 100], got " + std::to_string(options_.trialFrames));
     if (options_.remeasureFrames < 1) throw Error("auto mode: remeasureFrames must be >= 1");
     if (!(options_.lightChange > 0.0)) throw Error("auto mode: lightChange must be > 0");
-    candidates_ = {"lidr", "tiled"};
+    candidates_ = {"lidr", "tiled", "clustered"};
     // Multi-pass forward draws no transparent layers: a candidate only where none is drawn.
     const bool transparentDrawn =
         options.transparency && std::any_of(scene.meshes.begin(), scene.meshes.end(), [&](const Mesh& m) {

@@ -1,7 +1,7 @@
 #pragma once
 // --mode auto: picks, by measuring, the fastest of the modes that draw this scene the same way (LIDR with its
-// automatic configuration, tiled forward, and multi-pass forward where nothing transparent is drawn), and
-// measures again when the frame changes enough to move the answer (doc/auto.md).
+// automatic configuration, tiled forward, clustered forward, and multi-pass forward where nothing transparent is
+// drawn), and measures again when the frame changes enough to move the answer (doc/auto.md).
 //
 // A cost model calibrated once would be wrong on the next machine (llvmpipe and a discrete GPU rank the modes
 // differently, doc/benchmarks.md), so the model is the machine itself: each candidate renders a few trial

@@ -15,13 +15,8 @@ namespace {
 // 2^-24 steps cover all of it, 1e-6 is about 17.
 constexpr float kWindowDepthSlack = 1e-6f;
 constexpr double kRelativeViewDepthSlack = 1e-5;
+}  // namespace
 
-// A spot light's cone in view space, for the tile test: apex, unit axis, range, and the cone's half angle widened
-// to spotBoundingConeAngle (sphere_bounds.h: covers the fixed-point light table's 16-bit cosines).
-struct ViewCone {
-    glm::vec3 apex, axis;
-    float range, cosAngle, sinAngle;
-};
 ViewCone viewCone(const CameraMatrices& camera, const PointLight& l, float range) {
     ViewCone c;
     c.apex = glm::vec3(camera.view * glm::vec4(l.position, 1.0f));
@@ -32,8 +27,7 @@ ViewCone viewCone(const CameraMatrices& camera, const PointLight& l, float range
     c.sinAngle = float(std::sin(angle));
     return c;
 }
-// Whether the cone may reach into the sphere (centre, radius): false only where the sphere lies wholly outside
-// the cone's side, beyond its range or behind its apex (the cone-sphere test of Wronski, "Cull that cone", 2016).
+
 bool coneMayReachSphere(const ViewCone& c, const glm::vec3& centre, float radius) {
     const glm::vec3 v = centre - c.apex;
     const float along = glm::dot(v, c.axis);
@@ -42,7 +36,6 @@ bool coneMayReachSphere(const ViewCone& c, const glm::vec3& centre, float radius
     if (along > c.range + radius) return false;
     return along >= -radius;
 }
-}  // namespace
 
 LightGrid::LightGrid(int width, int height, int tileSize) : width_(width), height_(height), tileSize_(tileSize) {
     if (width <= 0 || height <= 0)

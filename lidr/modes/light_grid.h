@@ -30,6 +30,17 @@ struct TileDepthRange {
     float farMinDepth = 0.0f;
 };
 
+// A spot light's cone in view space, for the tile and cluster tests: apex, unit axis, range, and the cone's half
+// angle widened to spotBoundingConeAngle (sphere_bounds.h: covers the fixed-point light table's 16-bit cosines).
+struct ViewCone {
+    glm::vec3 apex, axis;
+    float range, cosAngle, sinAngle;
+};
+ViewCone viewCone(const CameraMatrices& camera, const PointLight& light, float range);
+// Whether the cone may reach into the sphere (centre, radius): false only where the sphere lies wholly outside
+// the cone's side, beyond its range or behind its apex (the cone-sphere test of Wronski, "Cull that cone", 2016).
+bool coneMayReachSphere(const ViewCone& cone, const glm::vec3& centre, float radius);
+
 struct LightGridStats {
     int maxOpaqueLights = 0;       // longest opaque tile list
     int maxTransparentLights = 0;  // longest transparent tile list

@@ -27,6 +27,11 @@ std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInf
         to.transparency = o.transparency;
         return std::make_unique<TiledRenderer>(info, scene, to, width, height);
     }
+    if (o.mode == "clustered") {
+        ClusteredOptions co = shared(o.clustered);
+        co.transparency = o.transparency;
+        return std::make_unique<ClusteredRenderer>(info, scene, co, width, height);
+    }
     if (o.mode == "forward-multipass")  // draws no transparent meshes (additive passes cannot blend a layer)
         return std::make_unique<MultipassForwardRenderer>(info, scene, shared(o.multipass), width, height);
     if (o.mode == "forward-brute")

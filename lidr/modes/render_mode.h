@@ -1,12 +1,13 @@
 #pragma once
-// Choosing a render mode by name: "lidr", "tiled", "forward-multipass", "forward-brute", or "auto" (the fastest
-// of the first three, measured: lidr/modes/auto_mode_renderer.h). lidr-demo's --mode
+// Choosing a render mode by name: "lidr", "tiled", "clustered", "forward-multipass", "forward-brute", or "auto" (the
+// fastest of the first four, measured: lidr/modes/auto_mode_renderer.h). lidr-demo's --mode
 // and a scene file's "mode" key both come through here, so every mode is built the same way everywhere.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "lidr/gl/gl_info.h"
+#include "lidr/modes/clustered_renderer.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/multipass_forward_renderer.h"
 #include "lidr/render/renderer.h"
@@ -20,6 +21,7 @@ struct RenderModeOptions {
     std::string mode = "lidr";
     LidrOptions lidr;            // mode "lidr"
     TiledOptions tiled;          // mode "tiled"
+    ClusteredOptions clustered;  // mode "clustered"
     MultipassOptions multipass;  // mode "forward-multipass"
     // These apply to every mode and replace the per-mode fields of the same name.
     bool forceFixedLightTable = false;  // the RGBA8 fixed-point light table

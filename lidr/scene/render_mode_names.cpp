@@ -5,7 +5,7 @@
 namespace lidr {
 
 const std::vector<std::string>& renderModeNames() {
-    static const std::vector<std::string> names = {"lidr", "tiled", "forward-multipass", "forward-brute", "auto"};
+    static const std::vector<std::string> names = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto"};
     return names;
 }
 

@@ -6,10 +6,11 @@
 
 namespace lidr {
 
-// "lidr", "tiled", "forward-multipass", "forward-brute", "auto" (the fastest of the first three, measured).
+// "lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto" (the fastest of the first four,
+// measured).
 const std::vector<std::string>& renderModeNames();
 bool isRenderModeName(const std::string& name);
-// "lidr, tiled, forward-multipass, forward-brute, auto": for error messages and help texts.
+// "lidr, tiled, clustered, forward-multipass, forward-brute, auto": for error messages and help texts.
 std::string renderModeList();
 
 }  // namespace lidr

@@ -1,0 +1,253 @@
+#include "lidr/modes/clustered_renderer.h"
+#include "lidr/base/gl.h"
+
+#include <algorithm>
+
+#include "lidr/base/error.h"
+#include "lidr/base/visualize.h"
+#include "lidr/gl/gl_state.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/render/shading_pass.h"
+#include "lidr/scene/sphere_bounds.h"
+
+namespace lidr {
+
+namespace {
+const ClusteredOptions& checkedOptions(const ClusteredOptions& o) {
+    if (o.occupiedClusters && !o.preZ)
+        throw Error("clustered: occupied clusters come from the pre-Z depth (occupiedClusters without preZ)");
+    if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
+        throw Error("clustered: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
+    if (o.slicing == ClusterSlicing::NearSlice && !(o.lightNear > 0.0f && o.lightNear < 1e30f))
+        throw Error("clustered: the near slice's end (lightNear) must be a positive view depth, got " +
+                    std::to_string(o.lightNear));
+    return o;
+}
+
+// Before any GL object: the options (checkedOptions), then the context: the occupied clusters read the depth buffer
+// back.
+const GlInfo& checkContextFor(const GlInfo& info, const ClusteredOptions& o) {
+    checkedOptions(o);
+    if (o.occupiedClusters && !info.readDepthStencil)
+        throw UnsupportedError("clustered: occupied clusters read the pre-Z depth back, which this context cannot "
+                               "(no depth read-back: OpenGL ES 2.0 without NV_read_depth_stencil, WebGL); turn "
+                               "occupiedClusters off");
+    return info;
+}
+
+// Without highp fragment floats (GLSL ES 1.00's mediump: fp16 world positions) a fragment's view depth is off by
+// far more than any slice margin can hold: such contexts get one slice, the 2D tile lists.
+int slicesFor(const GlInfo& info, int slices) { return info.fragmentHighp ? slices : 1; }
+}  // namespace
+
+ClusteredRenderer::ClusteredRenderer(const GlInfo& info, const Scene& scene, const ClusteredOptions& options, int width,
+                                     int height)
+    : ForwardRendererBase(checkContextFor(info, options), scene,
+                          ForwardRendererSetup::of(options, scene, width, height)),
+      options_(options),
+      grid_(width, height, options.tileSize, slicesFor(info, options.slices)),
+      gridTextures_(info, grid_.tilesX(), grid_.tilesY(), grid_.sliceCount()),
+      slices_(grid_.sliceCount()) {
+    buildProgram(options_.initialLoopBound, lightTable_.capacity() <= 255 ? 8 : 16);
+}
+
+std::string ClusteredRenderer::programName() const {
+    return "clustered-forward-" + std::to_string(frameInfo_.loopBound) + "-" + std::to_string(frameInfo_.indexBits);
+}
+
+void ClusteredRenderer::buildProgram(int loopBound, int indexBits) {
+    ShaderDefines defines = lightTable_.defines();
+    defines.push_back({"LIDR_CLUSTER_TILE_SIZE", std::to_string(grid_.tileSize())});
+    defines.push_back({"LIDR_CLUSTER_TILES_X", std::to_string(grid_.tilesX())});
+    defines.push_back({"LIDR_CLUSTER_TILES_Y", std::to_string(grid_.tilesY())});
+    defines.push_back({"LIDR_CLUSTER_SLICES", std::to_string(grid_.sliceCount())});
+    defines.push_back({"LIDR_CLUSTER_SLICES_PER_ROW", std::to_string(gridTextures_.slicesPerRow())});
+    defines.push_back({"LIDR_CLUSTER_GRID_SIZE", "vec2(" + std::to_string(gridTextures_.gridWidth()) + ".0, " +
+                                                     std::to_string(gridTextures_.gridHeight()) + ".0)"});
+    defines.push_back({"LIDR_CLUSTER_INDEX_BITS", std::to_string(indexBits)});
+    defines.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(ClusterGridTextures::kListWidth)});
+    defines.push_back({"LIDR_MAX_CLUSTER_LIGHTS", std::to_string(loopBound)});
+    frameInfo_.loopBound = loopBound;
+    frameInfo_.indexBits = indexBits;
+    program_ = gl::Program::create(programName(), buildShaderSource("geometry.vert"),
+                                   buildShaderSource("clustered_forward.frag", defines), geometryAttributes());
+    programDefines_ = defines;
+    ++frameInfo_.shaderRebuilds;
+}
+
+const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
+                                            const ShadingParameters& shading) {
+    if (lights.size() > 65535)
+        throw Error("clustered: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
+    checkLightSpheres(lights, "clustered");
+    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    checkShadingParameters(shading);
+    const FrameScope frame(stats_, timer_, lights.size());
+    prepareEnvironment(shading);
+    const bool transparent = options_.transparency && scene_.hasTransparent();
+
+    growLightTable(lights.size());
+    updateLights(lights, shading);
+    if (options_.preZ) drawDepthPrepass(cam);
+
+    const bool occupancy = options_.occupiedClusters && targets_.samples() == 0;
+    ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
+    std::vector<uint64_t> occupied;
+    double occupancyMs = 0.0;
+    if (occupancy) {  // Olsson's occupied-cluster step, from the pre-Z depth
+        TimedPass occupancyTime(timer_, "cluster-occupancy");
+        const double start = nowMilliseconds();
+        const int w = targets_.width(), h = targets_.height();
+        packedDepth_.resize(size_t(w) * size_t(h));
+        targets_.bindColor();
+        // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read): the
+        // depth in the top 24 bits, compared in 24-bit steps without a conversion to float.
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packedDepth_.data());
+        checkGl("clustered: depth read-back");
+        uint32_t nearest = 0xFFFFFFu, farthest = 0u;  // of the surfaces (24-bit depths below the cleared 1.0)
+        for (const uint32_t word : packedDepth_) {
+            const uint32_t d = word >> 8;
+            if (d < 0xFFFFFFu) nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+        }
+        // The slices span the frame's surfaces (widened by a depth step each way): thinner where they are.
+        constexpr double kScale = 1.0 / 16777215.0;
+        if (nearest <= farthest && slices_ > 1)
+            slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear,
+                                    viewDepthFromWindowDepth(cam, float(double(nearest - std::min(nearest, 1u)) * kScale)),
+                                    viewDepthFromWindowDepth(cam, float(double(std::min(farthest + 1, 0xFFFFFEu)) * kScale)));
+        occupied = grid_.markOccupiedSlicesPacked(packedDepth_, cam, slicing, transparent);
+        occupancyMs = nowMilliseconds() - start;
+    }
+
+    TimedPass lightGridTime(timer_, "light-grid");
+    const double assignStart = nowMilliseconds();
+    grid_.build(cam, lights, slicing, occupancy ? &occupied : nullptr, lightTable_.reachError());
+    gridTextures_.upload(grid_);
+    const ClusterGridStats& gs = grid_.stats();
+    if (gs.maxLights > frameInfo_.loopBound || grid_.indexBits() != frameInfo_.indexBits) {
+        // A list outgrew the loop (recompile with room for it, the next power of two) or the index width changed.
+        int bound = frameInfo_.loopBound;
+        while (bound < gs.maxLights) bound *= 2;
+        buildProgram(std::min(bound, 65535), grid_.indexBits());
+    }
+    stats_.drawnLights = gs.assignedLights;
+    const double assignMs = nowMilliseconds() - assignStart;
+    lightGridTime.end();
+
+    TimedPass forwardTime(timer_, "clustered-forward");
+    beginOpaqueShading(targets_, shading, options_.preZ);
+    // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
+    const gl::Program& program =
+        shadows_.active()
+            ? shadows_.program(programName(), "geometry.vert", "clustered_forward.frag", programDefines_, shading.shadows)
+            : program_;
+    useShadingProgram(program, cam, shading, lightTable_, environment_);
+    shadows_.bind(program, shading.shadows);
+    gridTextures_.bind(program);
+    if (slices_ > 1) {
+        program.set("uClusterDepthAxis", glm::vec4(cam.forward, -glm::dot(cam.forward, cam.eye)));
+        program.set("uClusterSlicing", glm::vec2(slicing.scale, slicing.bias));
+    }
+    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, environment_));
+    forwardTime.end();
+
+    if (transparent) {  // each transparent fragment finds its own cluster by its own depth
+        TimedPass transparentTime(timer_, "clustered-transparent");
+        beginTransparentShading();  // back to front over the opaque depth, no depth writes
+        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, environment_));
+    }
+    StateCache& cache = StateCache::current();
+    cache.apply(RenderState{});  // no scissor or masks on the resolve blit
+    targets_.resolve(timer_);
+
+    for (int unit : {gl::kUnitClusterGrid, gl::kUnitClusterList}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    finishFrame("ClusteredRenderer::render");
+
+    lastCamera_ = cam;
+    frameInfo_.grid = gs;
+    frameInfo_.slicing = slicing;
+    frameInfo_.assignMilliseconds = assignMs;
+    frameInfo_.occupancyMilliseconds = occupancyMs;
+    frameInfo_.occupancyUsed = occupancy;
+    frameInfo_.listTextureRows = gridTextures_.listRows();
+    return stats_;
+}
+
+std::vector<int> ClusteredRenderer::pixelSlices() const {
+    if (targets_.samples() > 0) throw Error("clustered: pixelSlices() reads single-sample depth; this frame had MSAA");
+    const int w = targets_.width(), h = targets_.height();
+    if (frameInfo_.shaderRebuilds == 0 || lastCamera_.width != w) throw Error("clustered: pixelSlices() before a frame");
+    const SavedGlState callerState;
+    StateCache& cache = StateCache::current();
+    if (!sliceProgram_) {
+        ShaderDefines defines = programDefines_;
+        defines.push_back({"LIDR_CLUSTER_SLICE_OUTPUT", "1"});
+        sliceProgram_ = gl::Program::create("clustered-slices", buildShaderSource("geometry.vert"),
+                                            buildShaderSource("clustered_forward.frag", defines), geometryAttributes());
+        sliceTexture_ = gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE);
+        sliceFbo_ = gl::Framebuffer::create();
+        sliceFbo_.attachTexture(GL_COLOR_ATTACHMENT0, sliceTexture_);
+        sliceFbo_.attachDepthStencil(targets_.depthStencil(), targets_.separateStencil());
+        sliceFbo_.checkComplete("clustered slices");
+    }
+    ClearAction clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(1.0f);  // 255: no surface
+    cache.beginPass({sliceFbo_.id(), glm::ivec4(0, 0, w, h), {GL_COLOR_ATTACHMENT0}, clear});
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;  // the frame's opaque depth: the fragments the shading pass kept
+    s.depthWrite = false;
+    cache.apply(s);
+    const ShadingParameters shading;
+    sliceProgram_.use();
+    setShadingUniforms(sliceProgram_, lastCamera_, shading, environment_);
+    sliceProgram_.set("uViewProj", lastCamera_.viewProjection);
+    if (slices_ > 1) {
+        sliceProgram_.set("uClusterDepthAxis", glm::vec4(lastCamera_.forward, -glm::dot(lastCamera_.forward, lastCamera_.eye)));
+        sliceProgram_.set("uClusterSlicing", glm::vec2(frameInfo_.slicing.scale, frameInfo_.slicing.bias));
+    }
+    scene_.draw(sliceProgram_, DrawFilter::Opaque, true, &lastCamera_);
+    cache.apply(RenderState{});
+    const ImageRGBA8 image = readPixelsRGBA8(w, h);
+    cache.bindFramebuffer(0);
+    checkGl("ClusteredRenderer::pixelSlices");
+    std::vector<int> slices(size_t(w) * size_t(h), -1);
+    for (size_t p = 0; p < slices.size(); ++p) {
+        const int v = image.pixels[p * 4];
+        slices[p] = v == 255 ? -1 : v;
+    }
+    return slices;
+}
+
+std::vector<int> ClusteredRenderer::pixelClusters() const {
+    const int w = targets_.width(), h = targets_.height();
+    std::vector<int> clusters = pixelSlices();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            int& c = clusters[size_t(y) * size_t(w) + size_t(x)];
+            if (c >= 0) c = grid_.clusterOf(grid_.tileOf(x, h - 1 - y), c);
+        }
+    return clusters;
+}
+
+ImageRGBA8 ClusteredRenderer::clusterHeatMap(int budget) const {
+    const int w = targets_.width(), h = targets_.height();
+    std::vector<int> perPixel(size_t(w) * size_t(h), 0);
+    std::vector<int> clusters;
+    if (targets_.samples() == 0 && frameInfo_.shaderRebuilds > 0) clusters = pixelClusters();
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t p = size_t(y) * size_t(w) + size_t(x);
+            const int c = clusters.empty() || clusters[p] < 0 ? grid_.clusterOf(grid_.tileOf(x, h - 1 - y), 0) : clusters[p];
+            perPixel[p] = grid_.counts()[size_t(c)];
+        }
+    return overlapHeatMap(w, h, perPixel, budget);
+}
+
+}  // namespace lidr
