@@ -401,12 +401,12 @@ std::vector<SweepGroup> fullPreset() {
     spots.volumeTiles = {true};
     groups.push_back(spots);
     for (const std::string& sweep : sweepNames())
-        if (sweep != "clusters")  // the clustered grid's own sweep (doc/clustered.md): run it by name
+        if (sweep != "clusters" && sweep != "peers")  // the clustered grid's own sweep and the peers': by name
             for (const SweepGroup& g : sweepPreset(sweep)) groups.push_back(g);
     return groups;
 }
 
-std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows", "clusters"}; }
+std::vector<std::string> sweepNames() { return {"lights", "triangles", "hall", "shadows", "clusters", "peers"}; }
 
 std::vector<std::string> sweepVolumeTests() {
     std::vector<std::string> tests{"backface"};
@@ -515,6 +515,24 @@ std::vector<SweepGroup> sweepPreset(const std::string& name, bool quick) {
         occupied.clusterSlicings = {"exponential"};
         occupied.clusterOccupancy = {1};
         groups.push_back(occupied);
+        return groups;
+    }
+    if (name == "peers") {
+        // Issue 37's best-peer targets (bench_peer_targets.cpp): LIDR's default configuration against tiled forward
+        // (min/max), clustered forward (its default grid), multi-pass and --mode auto in the same interleaved rounds,
+        // opaque (every mode draws the same), on the deep scenes and the many-light ones at 1024x768, against the
+        // reference.
+        SweepGroup g = base;
+        g.name = "peers";
+        g.scenes = quick ? std::vector<std::string>{"hall-64"}
+                         : std::vector<std::string>{"hall-255", "city-255", "hall-1024", "many-4096-top", "many-4096-fp"};
+        g.resolutions = {quick ? std::make_pair(96, 72) : std::make_pair(1024, 768)};
+        for (const std::string& have : availableModes())
+            if (have == "auto") g.modes.push_back(have);
+        g.schemes = {"auto"};
+        g.volumeTests = {"sphere"};
+        g.indexBits = {16};
+        groups.push_back(g);
         return groups;
     }
     throw Error("unknown sweep '" + name + "' (valid: " + joinNames(sweepNames()) + ")");

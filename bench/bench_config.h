@@ -132,7 +132,9 @@ std::vector<SweepGroup> fullPreset();
 // "triangles" (frame time against scene triangles, the room and heavy-T up to 1 M), "hall" and "shadows", each over
 // LIDR (bitshift, budgets 4 and 8, volume tests backface and sphere where the library has it), tiled min/max,
 // clustered (the default grid) and forward-multipass; and "clusters", the clustered grid's own sweep of tile sizes,
-// slice counts, slicings and occupancy on the bench scenes (doc/clustered.md; not part of fullPreset). `quick`: a
+// slice counts, slicings and occupancy on the bench scenes (doc/clustered.md; not part of fullPreset); "peers",
+// issue 37's targets: LIDR's default, tiled, clustered, multi-pass and --mode auto on hall-255, city-255, hall-1024
+// and many-4096 at 1024x768 (doc/benchmarks.md; not part of fullPreset either). `quick`: a
 // seconds-long version (tiny resolution, fewer points) for tests.
 std::vector<std::string> sweepNames();
 // Throws lidr::Error naming the valid sweeps.

@@ -196,6 +196,7 @@ void writeTargets(std::ostream& o, const std::vector<Row>& rows) {
     roomTargets(o, rows);
     overlapTarget(o, rows);
     occludedTargets(o, rows);
+    writePeerTargets(o, rows);
 }
 
 }  // namespace lidr::bench

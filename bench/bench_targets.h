@@ -13,4 +13,8 @@ namespace lidr::bench {
 // overlap) and, where its configurations were measured, "## Targets (issue 25)" (deep, occluded scenes).
 void writeTargets(std::ostream& o, const std::vector<Row>& rows);
 
+// "## Targets (issue 37)" (bench_peer_targets.cpp), where LIDR's default was measured beside tiled or clustered:
+// LIDR over the faster of the two ("best peer") with both ratios, and --mode auto over the fastest lossless mode.
+void writePeerTargets(std::ostream& o, const std::vector<Row>& rows);
+
 }  // namespace lidr::bench

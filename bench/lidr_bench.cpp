@@ -451,8 +451,9 @@ int main(int argc, char** argv) {
     app.add_option("--sweep", sweeps,
                    "Scaling sweeps instead of the lists: " + joinNames(sweepNames()) +
                        " (frame time against light count / scene triangles / hall light count / shadow casters in the hall; the "
-                       "clustered grid's tile sizes, slices, slicings and occupancy on the bench scenes); with --quick, "
-                       "their seconds-long versions")
+                       "clustered grid's tile sizes, slices, slicings and occupancy on the bench scenes; LIDR's default "
+                       "against tiled, clustered, multi-pass and --mode auto on issue 37's scenes, the best-peer targets); "
+                       "with --quick, their seconds-long versions")
         ->excludes(fullFlag);
     app.add_flag("--no-progress", noProgress, "No progress bar (it is also off when stderr is not a terminal)");
     app.add_flag("--no-plots", noPlots, "Do not run gnuplot");
