@@ -24,19 +24,6 @@ struct PeerRows {
     }
 };
 
-// "0.71 (0.66-0.78)": a's frame over b's in the same rounds (median, and its range over the rounds); "-" where b
-// is missing. value: the median ratio, -1 where not measured.
-std::string ratioCell(const Row& a, const Row* b, double& value) {
-    value = -1.0;
-    if (!b) return "-";
-    bool inRounds = false;
-    Stat range;
-    value = pairRatio(a, *b, &inRounds, &range);
-    std::string s = num(value, 2);
-    if (inRounds && range.max > range.min) s += " (" + num(range.min, 2) + "-" + num(range.max, 2) + ")";
-    return s;
-}
-
 // The goal for LIDR over the best peer on this scene and size; 0 where none applies.
 double peerGoal(const Row& r) {
     if (r.run.width != 1024 || r.run.height != 768) return 0.0;

@@ -8,6 +8,17 @@
 
 namespace lidr::bench {
 
+std::string ratioCell(const Row& a, const Row* b, double& value) {
+    value = -1.0;
+    if (!b) return "-";
+    bool inRounds = false;
+    Stat range;
+    value = pairRatio(a, *b, &inRounds, &range);
+    std::string s = num(value, 2);
+    if (inRounds && range.max > range.min) s += " (" + num(range.min, 2) + "-" + num(range.max, 2) + ")";
+    return s;
+}
+
 namespace {
 
 std::string passBreakdown(const Row& r) {
@@ -129,16 +140,6 @@ void occludedTargets(std::ostream& o, const std::vector<Row>& rows) {
          "hall-1024 at 1024x768 <= 0.6x tiled; every scene 0 drops and `--mode auto` <= 1.05x the fastest.\n\n"
          "| scene | LIDR ms | LIDR / tiled | LIDR / multi-pass | fragments per pair | dropped | auto / fastest mode | targets |\n"
          "|---|---|---|---|---|---|---|---|\n";
-    const auto ratioCell = [](const Row& a, const Row* b, double& value) {
-        value = -1.0;
-        if (!b) return std::string("-");
-        bool inRounds = false;
-        Stat range;
-        value = pairRatio(a, *b, &inRounds, &range);
-        std::string s = num(value, 2);
-        if (inRounds && range.max > range.min) s += " (" + num(range.min, 2) + "-" + num(range.max, 2) + ")";
-        return s;
-    };
     for (const Row* l : lidrRows) {
         const Row* tiled = find(*l, "tiled min/max opaque");
         const Row* multipass = find(*l, "forward-multipass opaque");
