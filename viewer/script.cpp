@@ -28,7 +28,7 @@ const std::map<std::string, VerbSpec>& verbs() {
         {"save", {1, 1, "save DIR (screenshot, frame, debug views, raw artefacts)"}},
         {"mark", {0, 0, "mark (remember the camera for expect-moved)"}},
         {"expect-moved", {2, 2, "expect-moved forward|back|left|right|up|down MIN_DISTANCE"}},
-        {"expect-match", {3, 3, "expect-match FILE.png MAX_ERROR MIN_PSNR"}},
+        {"expect-match", {3, 3, "expect-match FILE.png MAX_ERROR MIN_PSNR ({drawn} in FILE: the mode that drew the frame)"}},
         {"expect-view-match", {2, 2, "expect-view-match FILE.png MAX_ERROR"}},
         {"expect-ui", {1, 1, "expect-ui SCREENSHOT.png"}},
         {"expect-stat", {3, 3, "expect-stat NAME ==|!=|<|<=|>|>= VALUE"}},

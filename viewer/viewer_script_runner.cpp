@@ -109,15 +109,19 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
         if (e.differingPixels < long(width_) * height_ / 100)
             fail("the frame hardly changed: " + std::to_string(e.differingPixels) + " pixels differ");
     } else if (v == "expect-match") {
-        const ImageRGBA8 want = readPng(a.args[0]);
+        // "{drawn}" in the file name: the mode that drew the frame (auto's choice), whose demo image it must equal
+        std::string file = a.args[0];
+        for (size_t at; (at = file.find("{drawn}")) != std::string::npos;)
+            file.replace(at, 7, drawingRenderer().modeName());
+        const ImageRGBA8 want = readPng(file);
         const ImageRGBA8 got = renderer_->targets().readColor();
         if (want.width != got.width || want.height != got.height)
             fail("size " + std::to_string(got.width) + "x" + std::to_string(got.height) + " against " +
                  std::to_string(want.width) + "x" + std::to_string(want.height));
         const ImageError e = compareImages(got, want);
         const double psnr = std::isinf(e.psnr) ? 999.0 : e.psnr;
-        std::cout << "lidr-viewer: " << a.text << ": max error " << e.maxAbsError << ", PSNR " << psnr << " dB, "
-                  << e.differingPixels << " pixels differ" << std::endl;
+        std::cout << "lidr-viewer: " << a.text << ": " << file << ": max error " << e.maxAbsError << ", PSNR " << psnr
+                  << " dB, " << e.differingPixels << " pixels differ" << std::endl;
         if (e.maxAbsError > scriptInt(a, 1) || psnr < scriptNumber(a, 2))
             fail("max error " + std::to_string(e.maxAbsError) + ", PSNR " + std::to_string(psnr) + " dB");
     } else if (v == "expect-view-match") {
