@@ -126,6 +126,18 @@ Scene firstPersonScene() {
     return s;
 }
 
+int addGlassMaterial(Scene& scene) {
+    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
+    return int(scene.materials.size()) - 1;
+}
+
+Scene firstPersonGlassScene() {
+    Scene scene = firstPersonScene();
+    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, addGlassMaterial(scene), 24);
+    scene.lights = floorLights(60, 0.5f, 3.0f, 8);
+    return scene;
+}
+
 Scene topDownScene() {
     Scene s = floorScene();
     s.camera = camera({0.0f, 22.0f, 1.0f}, {0.0f, 0.0f, 0.0f}, 1.0f, 60.0f);

@@ -22,6 +22,11 @@ Scene floorScene();
 // floorScene() seen first-person (eye 1.7 m over the floor, looking along it) and from 22 m above.
 Scene firstPersonScene();
 Scene topDownScene();
+// A glass material (light blue, translucent: alpha 0.4) added to the scene; returns its index.
+int addGlassMaterial(Scene& scene);
+// firstPersonScene() with a glass sphere 2 m in front of the eye and 60 floor lights (the MSAA-with-transparency
+// cases of the forward modes).
+Scene firstPersonGlassScene();
 // A camera at `position` looking at `target` (fovY in degrees).
 Camera camera(glm::vec3 position, glm::vec3 target, float nearPlane = 0.1f, float farPlane = 60.0f, float fov = 60.0f);
 // `count` random lights over floorScene()'s 24 x 24 m, 0.05..3 m high, radii in [rMin, rMax], colours 0.2..1.

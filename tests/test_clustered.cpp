@@ -561,8 +561,7 @@ TEST_CASE("clustered: lights crossing the near plane, containing the camera, beh
 TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy, the clusters in front of the "
           "opaque surface keep lists", "[clustered][transparency][every-gl]") {
     Scene scene = firstPersonScene();
-    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
-    const int glass = int(scene.materials.size()) - 1;
+    const int glass = addGlassMaterial(scene);
     addSphere(scene, {-1.5f, 1.2f, 6.0f}, 0.8f, glass, 24);
     addSphere(scene, {1.0f, 1.0f, 4.0f}, 0.6f, glass, 24);
     addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, glass, 24);
@@ -600,10 +599,7 @@ TEST_CASE("clustered: MSAA with transparency equals the reference rendered the s
         WARN("no multisample FBOs in this context; MSAA not tested");
         return;
     }
-    Scene scene = firstPersonScene();
-    scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
-    addSphere(scene, {0.2f, 1.3f, 2.0f}, 1.0f, int(scene.materials.size()) - 1, 24);
-    scene.lights = floorLights(60, 0.5f, 3.0f, 8);
+    const Scene scene = firstPersonGlassScene();
     const ShadingParameters shading{scene.ambient, scene.backgroundColor};
     const ImageRGBA8 single = [&] {
         ClusteredRenderer r(info, scene, ClusteredOptions{}, scene.width, scene.height);

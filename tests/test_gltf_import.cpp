@@ -189,7 +189,7 @@ TEST_CASE("glTF: every number of a light (and of nodes, materials, cameras) must
         DYNAMIC_SECTION(c.what) {
             GltfFile file = oneTriangle();
             file.doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
-            file.doc["extensions"]["KHR_lights_punctual"]["lights"] = {c.light};
+            file.doc["extensions"]["KHR_lights_punctual"]["lights"] = Json::array({c.light});  // not {c.light}: clang copies it
             file.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1.0, 1.0, 1.0};
             file.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 50}}}}};
             file.doc["materials"] = {{{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2}}}}}}};
@@ -795,7 +795,7 @@ TEST_CASE("glTF: KHR_texture_transform in lidr's texture space; required extensi
         {"/pbrMetallicRoughness/baseColorTexture", "base colour"},
         {"/pbrMetallicRoughness/metallicRoughnessTexture", "metallic-roughness"},
         {"/normalTexture", "normal"}, {"/occlusionTexture", "occlusion"}, {"/emissiveTexture", "emissive"}};
-    file.doc["materials"] = {Json::object()};
+    file.doc["materials"] = Json::array({Json::object()});  // {Json::object()} is the object itself with clang
     for (size_t k = 0; k < slots.size(); ++k) {
         const Json t = {{"offset", {0.25 * double(k), -0.5}}, {"rotation", 0.3 * double(k + 1)},
                         {"scale", {1.0 + double(k), 2.0}}, {"texCoord", int(k % 2)}};

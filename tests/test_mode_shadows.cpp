@@ -40,8 +40,7 @@ Scene pillarFloor(bool glass) {
     for (float x : {-6.0f, 6.0f})
         for (float z : {-5.0f, 5.0f}) addBox(scene, {x - 0.4f, 0.0f, z - 0.4f}, {x + 0.4f, 4.0f, z + 0.4f}, 1, 2);
     if (glass) {
-        scene.materials.push_back(Material{"glass", glm::vec3(0.6f, 0.8f, 0.9f), "", glm::vec3(0.9f), 64.0f, 0.4f});
-        addSphere(scene, {-3.0f, 2.0f, 4.0f}, 1.2f, int(scene.materials.size()) - 1, 24);
+        addSphere(scene, {-3.0f, 2.0f, 4.0f}, 1.2f, addGlassMaterial(scene), 24);
     }
     scene.lights.push_back(spotCaster({-1.0f, 7.0f, 1.0f}, {-0.1f, -1.0f, -0.2f}, 12.0f, 0.7f, {1.0f, 0.9f, 0.7f}));
     scene.lights.push_back(spotCaster({7.0f, 5.0f, 0.0f}, {-1.0f, -0.6f, 0.0f}, 14.0f, 0.6f, {0.6f, 0.7f, 1.0f}));

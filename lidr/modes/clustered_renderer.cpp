@@ -77,17 +77,11 @@ void ClusteredRenderer::buildProgram(int loopBound, int indexBits) {
 
 const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
-    if (lights.size() > 65535)
-        throw Error("clustered: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
-    checkLightSpheres(lights, "clustered");
-    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    checkShadingParameters(shading);
+    const CameraMatrices cam = checkFrame(camera, lights, shading, "clustered");
     const FrameScope frame(stats_, timer_, lights.size());
-    prepareEnvironment(shading);
+    prepareLights(lights, shading);
     const bool transparent = options_.transparency && scene_.hasTransparent();
 
-    growLightTable(lights.size());
-    updateLights(lights, shading);
     if (options_.preZ) drawDepthPrepass(cam);
 
     const bool occupancy = options_.occupiedClusters && targets_.samples() == 0;

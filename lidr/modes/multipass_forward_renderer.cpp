@@ -55,17 +55,11 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                                    const ShadingParameters& shading) {
-    if (lights.size() > 65535)
-        throw Error("forward-multipass: " + std::to_string(lights.size()) + " lights, the light table holds 65535");
-    checkLightSpheres(lights, "forward-multipass");
-    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    checkShadingParameters(shading);
+    const CameraMatrices cam = checkFrame(camera, lights, shading, "forward-multipass");
     const FrameScope frame(stats_, timer_, lights.size());
-    prepareEnvironment(shading);
+    prepareLights(lights, shading);
     meshDraws_ = 0;
 
-    growLightTable(lights.size());
-    updateLights(lights, shading);
     // Every pass draws into the half-float target where there is one, else into the 8-bit colour target; both
     // share the one depth-stencil.
     const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : targets_.colorPass();

@@ -73,17 +73,10 @@ void TiledRenderer::buildProgram(int loopBound) {
 
 const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
-    if (lights.size() > 65535)
-        throw Error("tiled: " + std::to_string(lights.size()) + " lights, 16-bit light indices hold 65535");
-    checkLightSpheres(lights, "tiled");
-    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    checkShadingParameters(shading);
+    const CameraMatrices cam = checkFrame(camera, lights, shading, "tiled");
     const FrameScope frame(stats_, timer_, lights.size());
-    prepareEnvironment(shading);
+    prepareLights(lights, shading);
     const bool transparent = options_.transparency && scene_.hasTransparent();
-
-    growLightTable(lights.size());
-    updateLights(lights, shading);
 
     TimedPass depthPrepassTime(timer_, "depth-prepass");
     if (depthBounds_) {

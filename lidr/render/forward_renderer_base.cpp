@@ -3,6 +3,7 @@
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/render/shading_pass.h"
+#include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
 
@@ -21,6 +22,22 @@ ForwardRendererBase::ForwardRendererBase(const GlInfo& info, const Scene& scene,
 void ForwardRendererBase::setTiming(bool on, bool waitForResults) {
     timer_.setEnabled(on);
     timer_.setWaitForResults(waitForResults);
+}
+
+CameraMatrices ForwardRendererBase::checkFrame(const Camera& camera, const std::vector<PointLight>& lights,
+                                               const ShadingParameters& shading, const char* mode) const {
+    if (lights.size() > 65535)
+        throw Error(std::string(mode) + ": " + std::to_string(lights.size()) +
+                    " lights, 16-bit light indices and the light table hold 65535");
+    checkLightSpheres(lights, mode);
+    checkShadingParameters(shading);
+    return cameraMatrices(camera, targets_.width(), targets_.height());
+}
+
+void ForwardRendererBase::prepareLights(const std::vector<PointLight>& lights, const ShadingParameters& shading) {
+    prepareEnvironment(shading);
+    growLightTable(lights.size());
+    updateLights(lights, shading);
 }
 
 void ForwardRendererBase::prepareEnvironment(const ShadingParameters& shading) {

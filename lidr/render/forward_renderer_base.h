@@ -4,7 +4,7 @@
 // light table, the depth pre-pass, the shadow maps, the environment light's maps and the pass timer; the Renderer overrides that only read
 // them; and the steps of a frame every such mode takes in the same way, in the order a frame takes them:
 //
-//   render():  checks -> FrameScope -> prepareEnvironment -> [growLightTable] -> updateLights (shadow-maps, light-table)
+//   render():  checkFrame -> FrameScope -> prepareLights (environment, growLightTable, shadow-maps, light-table)
 //              -> drawDepthPrepass (depth-prepass) -> the mode's own passes -> targets_.resolve -> finishFrame
 //
 // A mode adds its light lists and programs, and draws its shading passes between the pre-pass and the resolve.
@@ -67,6 +67,13 @@ protected:
     // Builds the shared objects in the order of the members below; `info` is copied (growLightTable uses it).
     ForwardRendererBase(const GlInfo& info, const Scene& scene, const ForwardRendererSetup& setup);
 
+    // Everything checked before any drawing (lidr::Error naming `mode`): at most 65,535 lights (16-bit
+    // indices, the light table's rows), finite light spheres, the shading parameters; returns the camera's
+    // matrices at the targets' size. A FrameScope follows it, then prepareLights.
+    CameraMatrices checkFrame(const Camera& camera, const std::vector<PointLight>& lights,
+                              const ShadingParameters& shading, const char* mode) const;
+    // The frame's lights on the GPU: prepareEnvironment, growLightTable, updateLights.
+    void prepareLights(const std::vector<PointLight>& lights, const ShadingParameters& shading);
     // The frame's environment light uploaded where it changed (EnvironmentMaps::prepare) and stats_.environment
     // saying how it is looked up; its shading passes then bind environment_ with their programs.
     void prepareEnvironment(const ShadingParameters& shading);
