@@ -25,7 +25,7 @@ step() {  # step NAME COMMAND...: runs COMMAND, recording its seconds under NAME
   return $rc
 }
 ctest_step() {  # ctest_step NAME BUILD_DIR CTEST_ARGS...: a step that runs CTest in BUILD_DIR, its entries kept
-  local name="$1" dir="$2" index=${#ctest_runs[@]} start=$SECONDS rc=0
+  local name="$1" dir="$2" index=$((${#ctest_runs[@]} / 2)) start=$SECONDS rc=0  # runs hold two entries each
   shift 2
   ctest --test-dir "$dir" --show-only=json-v1 >"$times_dir/ctest-$index.json" 2>/dev/null || true
   ctest --test-dir "$dir" "$@" 2>&1 | tee "$times_dir/ctest-$index.log" || rc=$?
