@@ -50,7 +50,7 @@ TEST_CASE("tile decision: the saving is the meshes' rectangles in every draw, le
         {"one draw per light", 3.0, 1, 100, 100, 2.0},
         {"two rank windows: every light twice", 3.0, 1, 200, 100, 5.0},
         {"quads over what the meshes cover: negative", 1.0, 2, 50, 50, -1.0},
-        {"no volume drawn", 4.0, 0, 0, 0, 0.0},
+        {"no volume drawn (the tiles culled every light): the meshes' rectangles once", 4.0, 0, 0, 0, 4.0},
     };
     for (const Case& c : cases) {
         INFO(c.name);

@@ -14,6 +14,7 @@
 #include "lidr/eval/light_coverage.h"
 #include "lidr/scene/camera.h"
 #include "lidr/scene/default_scene.h"
+#include "lidr/scene/primitives.h"
 #include "lidr/scene/sphere_bounds.h"
 #include "lidr/technique/volume_tiles.h"
 #include "render_helpers.h"
@@ -444,4 +445,38 @@ TEST_CASE("region-local indices: 8-bit lists of over 255 lights, the same lists 
                 CHECK(regional.indexTargets[t].pixels == global.indexTargets[t].pixels);
         }
     }
+}
+
+TEST_CASE("tile culling stays where its tiles culled every light (a frame with nothing to draw saved all the meshes)",
+          "[volume-tiles][lidr]") {
+    if (testGl().gles) return;  // OpenGL ES keeps the volume meshes (no depth read-back)
+    // A wall fills the view; the lights stand on the floor behind it, their spheres reaching the floor's bounds
+    // (so the plan keeps them) but no visible surface: the tiles cull all of them and the volume pass draws
+    // nothing. That saved every sphere rectangle the meshes would have drawn: the saving was once counted as 0
+    // (the summary said the tiles saved nothing, and where they did not also narrow the index width the volume
+    // meshes would have taken over for kTileCullingRecheckFrames frames); the next frames keep the tiles.
+    Scene scene = firstPersonScene();
+    addBox(scene, {-12.0f, 0.0f, 6.0f}, {12.0f, 8.0f, 6.5f}, 1, 4);
+    for (int i = 0; i < 48; ++i)
+        scene.lights.push_back(light({-9.0f + 0.4f * float(i), 0.5f, 0.0f - 0.1f * float(i % 5)}, 1.5f));
+    LidrOptions options;
+    options.transparency = false;
+    LidrRenderer renderer(testGl(), scene, options, scene.width, scene.height);
+    const ShadingParameters shading{scene.ambient, scene.backgroundColor};
+    const FrameStats first = renderer.render(scene.camera, scene.lights, shading);
+    const ImageRGBA8 firstImage = renderer.targets().readColor();
+    INFO("tile saving " << first.autoDecision.tileSavingScreens << " screens, " << first.drawnLights << " lights drawn");
+    REQUIRE(first.autoDecision.volumeAreaPerPixel >= 0.0);  // tiles: the lights' rectangles cover over a screen
+    REQUIRE(first.drawnLights == 0);                        // ... and they culled every light
+    CHECK(first.autoDecision.tileSavingScreens >= LidrRenderer::kTileCullingMinSaving);
+    for (int frame = 2; frame <= 4; ++frame) {
+        const FrameStats stats = renderer.render(scene.camera, scene.lights, shading);
+        INFO("frame " << frame);
+        CHECK(stats.autoDecision.volumeAreaPerPixel >= 0.0);
+        CHECK_FALSE(stats.autoDecision.tilesSkippedForSaving);
+        CHECK(compareImages(renderer.targets().readColor(), firstImage).differingPixels == 0);
+    }
+    const RenderResult checked = renderAndEvaluate(scene, options);  // the same frame against the reference
+    CHECK(compareImages(checked.lidr, firstImage).differingPixels == 0);
+    CHECK(compareImages(checked.lidr, checked.reference).maxAbsError == 0);
 }

@@ -20,7 +20,8 @@ TileDecision::Choice TileDecision::decide(double rectArea, double screenPixels) 
 }
 
 double TileDecision::savingScreens(const TileFrame& f, double screenPixels) {
-    const double drawsPerLight = f.volumes == 0 ? 0.0 : double(f.stepLights) / double(f.volumes);
+    // A frame whose tiles culled every light drew nothing: the meshes would have drawn each light once.
+    const double drawsPerLight = f.volumes == 0 ? 1.0 : double(f.stepLights) / double(f.volumes);
     return (f.meshRectArea * drawsPerLight - double(f.quadPixels)) / screenPixels;
 }
 
