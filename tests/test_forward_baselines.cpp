@@ -5,6 +5,8 @@
 // with OutputTransform::linear(); test_colour.cpp and the half-float test below check the encoded output. Verified on Mesa llvmpipe, softpipe, the GL 2.1 override and NVIDIA
 // 580.159.04 (H100, EGL).
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -320,6 +322,29 @@ TEST_CASE("multi-pass forward: bad lights are refused before drawing", "[forward
     const std::vector<PointLight> bad = {light({0, 1, 0}, 0.0f)};
     REQUIRE_THROWS_WITH(r.render(scene.camera, bad, {}), Catch::Contains("forward-multipass: light 1"));
     REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("every mode refuses a light with a non-finite position or a radius <= 0, before drawing",
+          "[forward][modes][bad-input][every-gl]") {
+    Scene scene = floorScene();
+    scene.lights = {light({0, 1, 0}, 3.0f), light({2, 1, 0}, 3.0f)};
+    const std::vector<std::vector<PointLight>> bad = {
+        {light({0, 1, 0}, 3.0f), light({2, 1, 0}, 0.0f)},
+        {light({0, 1, 0}, 3.0f), light({2, 1, 0}, -1.0f)},
+        {light({0, 1, 0}, 3.0f), light({std::nanf(""), 1, 0}, 3.0f)},
+        {light({0, 1, 0}, 3.0f), light({2, 1, 0}, std::numeric_limits<float>::infinity())},
+    };
+    for (const std::string& mode : renderModeNames()) {
+        INFO(mode);
+        RenderModeOptions o;
+        o.mode = mode;
+        std::unique_ptr<Renderer> r = createRenderer(o, testGl(), scene, scene.width, scene.height);
+        for (const std::vector<PointLight>& lights : bad)
+            REQUIRE_THROWS_WITH(r->render(scene.camera, lights, {}), Catch::Contains("light 2"));
+        REQUIRE(glGetError() == GL_NO_ERROR);
+        r->render(scene.camera, scene.lights, {});  // and it still renders good lights after
+        CHECK(r->lastFrame().drawnLights > 0);
+    }
 }
 
 TEST_CASE("multi-pass forward: many small lights seen from above stay within the bound", "[forward][slow]") {

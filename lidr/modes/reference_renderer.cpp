@@ -26,15 +26,13 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
 
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
-    if (static_cast<int>(lights.size()) > lightTable_.capacity())
+    if (static_cast<int>(lights.size()) > lightTable_.capacity())  // its loop bound is compiled in: no growing
         throw Error("the reference was built for " + std::to_string(lightTable_.capacity()) + " lights, got " +
                     std::to_string(lights.size()));
-    checkShadingParameters(shading);
+    const CameraMatrices cam = checkFrame(camera, lights, shading, "forward-brute");
     const FrameScope frame(stats_, timer_, lights.size());
     stats_.drawnLights = stats_.sceneLights;
-    prepareEnvironment(shading);
-    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
-    updateLights(lights, shading);
+    prepareLights(lights, shading);  // the table never grows here: it holds the capacity checked above
     drawDepthPrepass(cam);  // into the MSAA target when multisampled: the reference has no index pass to feed
 
     TimedPass bruteForceTime(timer_, "brute-force");

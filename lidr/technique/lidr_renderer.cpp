@@ -249,7 +249,7 @@ const IndexTargets& LidrRenderer::transparentIndexTargets() const {
 
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
-    checkLightCount(lights);
+    checkLights(lights);
     const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
     checkShadingParameters(shading);
     const FrameScope frame(stats_, timer_, lights.size());
@@ -289,7 +289,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     return stats_;
 }
 
-void LidrRenderer::checkLightCount(const std::vector<PointLight>& lights) const {
+void LidrRenderer::checkLights(const std::vector<PointLight>& lights) const {
+    checkLightSpheres(lights, "lidr");
     const PackingConfig& fixed = options_.packing;
     if (!fixed.autoIndexBits() && lights.size() > (1u << fixed.indexBits) - 1u)
         throw Error(std::to_string(lights.size()) + " lights exceed the " + std::to_string((1u << fixed.indexBits) - 1u) +

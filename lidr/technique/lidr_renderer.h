@@ -153,7 +153,8 @@ public:
 
 private:
     // The stages of a frame, in the order render() runs them (doc/architecture.md, "One frame of LIDR").
-    void checkLightCount(const std::vector<PointLight>& lights) const;  // a fixed width must hold them all
+    // Finite spheres of positive radius (checkLightSpheres, as every mode), and a fixed width must hold them all.
+    void checkLights(const std::vector<PointLight>& lights) const;
     // 0. After the shadow maps: whether the main sphere test discards what they shadow (the paper's first way,
     // ShadowLookup::VolumePass); sets the volume pass's shadows.
     bool useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading);
