@@ -110,9 +110,10 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
             fail("the frame hardly changed: " + std::to_string(e.differingPixels) + " pixels differ");
     } else if (v == "expect-match") {
         // "{drawn}" in the file name: the mode that drew the frame (auto's choice), whose demo image it must equal
+        static const std::string kDrawn = "{drawn}";
         std::string file = a.args[0];
-        for (size_t at; (at = file.find("{drawn}")) != std::string::npos;)
-            file.replace(at, 7, drawingRenderer().modeName());
+        for (size_t at; (at = file.find(kDrawn)) != std::string::npos;)
+            file.replace(at, kDrawn.size(), drawingRenderer().modeName());
         const ImageRGBA8 want = readPng(file);
         const ImageRGBA8 got = renderer_->targets().readColor();
         if (want.width != got.width || want.height != got.height)
