@@ -150,11 +150,7 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
     }
     frame_.resolve();
 
-    for (int unit : {gl::kUnitClusterGrid, gl::kUnitClusterList}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
+    StateCache::current().unbindTextures({gl::kUnitClusterGrid, gl::kUnitClusterList});
     frame_.finishFrame(stats_, "ClusteredRenderer::render");
 
     lastCamera_ = cam;

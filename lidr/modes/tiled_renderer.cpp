@@ -127,11 +127,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     }
     frame_.resolve();
 
-    for (int unit : {gl::kUnitTileGrid, gl::kUnitTileList}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
+    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
     frame_.finishFrame(stats_, "TiledRenderer::render");
 
     frameInfo_.grid = gs;
