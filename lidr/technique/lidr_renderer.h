@@ -2,8 +2,9 @@
 // Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
 // (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file, and
 // so is each CPU decision of a frame (the tile decision, tile_decision.h; the frame plan, frame_plan.h); this
-// class owns the frame: it runs the stages in order (render(), doc/architecture.md "One frame of LIDR"), and
-// owns the targets, the packing variants, timing and read-back.
+// class runs the frame: the stages in order (render(), doc/architecture.md "One frame of LIDR"), with the
+// FrameResources every mode holds (scene, targets, light table, pre-pass, shadows, environment, timer) and its own
+// index targets, packing variants and read-back.
 #include <array>
 #include <map>
 #include <memory>
