@@ -1,7 +1,8 @@
 # CTest docs.links: every relative link in README.md and doc/**/*.md ([text](target), ![alt](target),
 # <img src="target">, <a href="target">) names a file or folder that exists, and a "#anchor" names a heading of the
 # page it points to (GitHub's heading ids: lower case, punctuation dropped, spaces to hyphens). Links inside code
-# (fenced blocks, `spans`) and to other sites (http:, https:, mailto:) are not checked.
+# (fenced blocks, `spans`) and to other sites (http:, https:, mailto:) are not checked. And every page of doc/
+# (but lidr-bench's output in doc/results/) is reached from doc/README.md by following links: a newcomer finds it.
 # Run: cmake -DSOURCE_DIR=<repo> -P check_doc_links.cmake
 cmake_minimum_required(VERSION 3.20)
 
@@ -71,6 +72,7 @@ foreach(page IN LISTS pages)
     string(REGEX REPLACE " +\"[^\"]*\"$" "" target "${target}")     # [text](target "title")
     string(STRIP "${target}" target)
     string(REPLACE "<sc>" ";" shown "${target}")
+    string(MAKE_C_IDENTIFIER "${page}" key)
     string(REPLACE "<lb>" "[" shown "${shown}")
     string(REPLACE "<rb>" "]" shown "${shown}")
     if(target MATCHES "^(https?|mailto|ftp):" OR target STREQUAL "")
@@ -91,6 +93,10 @@ foreach(page IN LISTS pages)
       string(APPEND bad "\n  ${page}: (${shown}): no such file")
       continue()
     endif()
+    if(file MATCHES "\\.md$")
+      file(RELATIVE_PATH linked "${SOURCE_DIR}" "${file}")
+      list(APPEND links_${key} "${linked}")
+    endif()
     if(NOT anchor STREQUAL "" AND file MATCHES "\\.md$")
       heading_ids("${file}" ids)
       string(REGEX REPLACE "-[0-9]+$" "" base "${anchor}")  # the second heading of a name: name-1
@@ -100,8 +106,27 @@ foreach(page IN LISTS pages)
     endif()
   endforeach()
 endforeach()
+# Reachability: from doc/README.md along the links found above.
+set(reached doc/README.md)
+set(queue doc/README.md)
+while(queue)
+  list(POP_FRONT queue page)
+  string(MAKE_C_IDENTIFIER "${page}" key)
+  foreach(next IN LISTS links_${key})
+    if(NOT next IN_LIST reached)
+      list(APPEND reached "${next}")
+      list(APPEND queue "${next}")
+    endif()
+  endforeach()
+endwhile()
+foreach(page IN LISTS pages)
+  if(page MATCHES "^doc/" AND NOT page MATCHES "^doc/results/" AND NOT page IN_LIST reached)
+    string(APPEND bad "\n  ${page}: not reached from doc/README.md by its links")
+  endif()
+endforeach()
+
 list(LENGTH pages n)
 if(bad)
   message(FATAL_ERROR "broken links in README.md and doc/ (relative to the page that has them):${bad}")
 endif()
-message(STATUS "docs.links: ${checked} relative links in ${n} pages, all found")
+message(STATUS "docs.links: ${checked} relative links in ${n} pages, all found; every page of doc/ reached from doc/README.md")
