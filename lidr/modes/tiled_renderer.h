@@ -71,8 +71,16 @@ public:
     // blue -> yellow up to `budget`, red past it; `transparent` shows the transparent lists.
     ImageRGBA8 tileHeatMap(int budget = 16, bool transparent = false) const;
 
+    std::vector<FramePass> passes() const override;
+
 private:
     void buildProgram(int loopBound);
+    // The passes of render(), in its order (passes() says what each reads and writes).
+    void drawDepthPrepass(const CameraMatrices& cam);
+    void reduceTileDepth();
+    void buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool transparent);
+    const gl::Program& shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading);
+    void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading, const gl::Program& program);
 
     FrameResources frame_;  // first: the options and the context are checked before any GL object
     TiledOptions options_;
