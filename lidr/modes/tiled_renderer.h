@@ -6,7 +6,8 @@
 // GPU and read back -> lights assigned to tiles on the CPU (clipped projected sphere bounds, pruned in depth;
 // separate lists for transparent geometry, from the near plane to the opaque max) -> opaque geometry shaded
 // with its tile's lights (depth EQUAL) -> transparent geometry back to front, alpha blended, lit from the
-// transparent lists. doc/tiled.md describes the data layout and its memory.
+// transparent lists; passes() lists them by name (lidr-demo --list-passes tiled). doc/tiled.md describes the data
+// layout and its memory.
 #include <memory>
 #include <string>
 #include <vector>

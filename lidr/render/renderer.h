@@ -1,7 +1,7 @@
 #pragma once
-// What every render mode is: LIDR ("lidr"), tiled forward ("tiled"), multi-pass forward
-// ("forward-multipass") and the brute-force single-pass forward reference ("forward-brute"). All share the
-// scene, camera, light table layout and shading function, so their images and times compare like for like.
+// What every render mode is: LIDR ("lidr"), tiled ("tiled") and clustered ("clustered") forward, multi-pass forward
+// ("forward-multipass"), the brute-force reference ("forward-brute") and "auto". Each holds its FrameResources: the
+// same scene, camera, light table layout and shading function, so their images and times compare like for like.
 #include <string>
 #include <vector>
 
