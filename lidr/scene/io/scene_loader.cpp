@@ -5,6 +5,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/scene/camera.h"
+#include "lidr/scene/io/aff_importer.h"
 #include "lidr/scene/io/file_checks.h"
 
 namespace lidr {
@@ -14,7 +15,16 @@ Scene loadScene(const std::string& path, const ObjImportOptions& objDefaults) {
     const std::string format = unsupportedModelFormat(path);
     if (!format.empty())
         throw Error(path + ": format not supported (" + format + "); lidr reads .json scene files, glTF (.gltf, .glb) "
-                    "and OBJ (.obj) models");
+                    "and OBJ (.obj) models, and BART's AFF scenes (.aff, .nff)");
+    if (extension == ".aff" || extension == ".nff") {
+        Scene scene = loadAff(path);
+        try {
+            scene.validate();
+        } catch (const Error& error) {
+            throw Error(path + ": " + error.what());
+        }
+        return scene;
+    }
     if (extension != ".obj" && extension != ".gltf" && extension != ".glb") return loadSceneFile(path, objDefaults);
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
