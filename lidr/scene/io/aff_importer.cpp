@@ -293,12 +293,14 @@ private:
 
     void keyFrames(AffTokens& in) {
         const std::string name = in.word("the keyframes' name (k NAME)");
-        const std::string where = in.path() + ":" + std::to_string(in.line());
+        const int line = in.line();
+        const std::string where = in.path() + ":" + std::to_string(line);
         KeyFrames keys;
         keys.where = where;
         in.expect("{", "keyframes (k " + clipped(name, 40) + ") open a block");
         while (in.peek() != "}") {
             const std::string kind = in.word("keyframes (transl, rot, scale) or '}'");
+            const int kindLine = in.line();
             const long count = in.integer(kind + " key count", 0, long(maxAffKeys));
             if (kind == "transl" || kind == "scale") {
                 if ((kind == "transl" ? keys.translation : keys.scale)) in.fail(kind + " keys given twice for '" + name + "'");
@@ -310,11 +312,11 @@ private:
                     k.tension = in.number("tension"), k.continuity = in.number("continuity"), k.bias = in.number("bias");
                     list.push_back(k);
                 }
-                if (!keysInTimeOrder(list)) outOfOrder(in, name, kind);
+                if (!keysInTimeOrder(list)) outOfOrder(in, kindLine, name, kind);
                 try {
                     (kind == "transl" ? keys.translation : keys.scale) = kochanekBartelsTrack(list);
                 } catch (const Error& e) {
-                    in.fail("keyframes '" + clipped(name, 40) + "', " + kind + ": " + e.what());
+                    in.failAt(kindLine, "keyframes '" + clipped(name, 40) + "', " + kind + ": " + e.what());
                 }
             } else if (kind == "rot") {
                 if (keys.rotation) in.fail("rot keys given twice for '" + name + "'");
@@ -327,11 +329,11 @@ private:
                     k.tension = in.number("tension"), k.continuity = in.number("continuity"), k.bias = in.number("bias");
                     list.push_back(k);
                 }
-                if (!keysInTimeOrder(list)) outOfOrder(in, name, kind);
+                if (!keysInTimeOrder(list)) outOfOrder(in, kindLine, name, kind);
                 try {
                     keys.rotation = kochanekBartelsRotationTrack(list);
                 } catch (const Error& e) {
-                    in.fail("keyframes '" + clipped(name, 40) + "', rot: " + e.what());
+                    in.failAt(kindLine, "keyframes '" + clipped(name, 40) + "', rot: " + e.what());
                 }
             } else if (kind == "visibility") {
                 in.fail("visibility keyframes are not read: lidr draws every object at every time");
@@ -341,11 +343,11 @@ private:
         }
         in.expect("}", "the keyframes' block closes");
         const auto [found, added] = keys_.emplace(name, keys);
-        if (!added) in.fail("keyframes '" + clipped(name, 40) + "' given twice (first at " + found->second.where + ")");
+        if (!added) in.failAt(line, "keyframes '" + clipped(name, 40) + "' given twice (first at " + found->second.where + ")");
     }
 
-    void outOfOrder(AffTokens& in, const std::string& name, const std::string& kind) {
-        warnings_.push_back(in.path() + ":" + std::to_string(in.line()) + ": keyframes '" + name + "', " + kind +
+    void outOfOrder(AffTokens& in, int line, const std::string& name, const std::string& kind) {
+        warnings_.push_back(in.path() + ":" + std::to_string(line) + ": keyframes '" + name + "', " + kind +
                             ": times go back; read as BART reads them (at each time the first segment in key order "
                             "that ends after it)");
     }

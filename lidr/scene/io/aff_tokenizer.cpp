@@ -69,10 +69,9 @@ std::string AffTokens::peek() {
 }
 
 std::string AffTokens::word(const std::string& what) {
-    skip();
-    line_ = nextLine_;
     const std::string token = peek();
-    if (token.empty()) fail("expected " + what + ", the file ends");
+    if (token.empty()) fail("expected " + what + ", the file ends");  // at the last token's line
+    line_ = nextLine_;
     pos_ += token.size();
     return token;
 }

@@ -27,7 +27,7 @@ public:
     long integer(const std::string& what, long min, long max);  // a whole number in [min, max]
     [[noreturn]] void fail(const std::string& problem) const;   // at the line of the last token read
     [[noreturn]] void failAt(int line, const std::string& problem) const;
-    int line() const { return line_; }  // of the last token read (or peeked past the end: the last line)
+    int line() const { return line_; }  // of the last token read
     const std::string& path() const { return path_; }
 
 private:
