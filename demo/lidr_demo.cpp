@@ -266,7 +266,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                             {"list_texture_rows", tiled->frameInfo().listTextureRows},
                             {"grid_bytes", tiled->gridBytes()}, {"list_bytes", tiled->listBytes()},
                             {"depth_reduction_bytes", tiled->depthReductionBytes()},
-                            {"light_table_bytes", tiled->lightTable().bytes()},
+                            {"light_table_bytes", tiled->frame().lightTable.bytes()},
                             {"cpu_assign_ms_last_frame", tiled->frameInfo().assignMilliseconds}};
         writePng(path(outDir, "tile_heatmap.png"), tiled->tileHeatMap(16));
         outputs += ", tile_heatmap.png";
@@ -291,7 +291,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
                                 {"cell_tests", f.grid.cellTests}, {"index_bits", f.indexBits},
                                 {"loop_bound", f.loopBound}, {"list_texture_rows", f.listTextureRows},
                                 {"grid_bytes", clustered->gridBytes()}, {"list_bytes", clustered->listBytes()},
-                                {"light_table_bytes", clustered->lightTable().bytes()},
+                                {"light_table_bytes", clustered->frame().lightTable.bytes()},
                                 {"cpu_assign_ms_last_frame", f.assignMilliseconds},
                                 {"cpu_occupancy_ms_last_frame", f.occupancyMilliseconds}};
         if (clustered->targets().samples() == 0) {
@@ -412,7 +412,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     std::cout << "LIDR: "
               << (options.packing.autoBudget() || options.packing.autoIndexBits() ? "automatic, first frame " : "")
               << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
-              << ", light table " << (renderer.lightTable().format() == LightTableFormat::Float ? "float" : "fixed16")
+              << ", light table " << (renderer.frame().lightTable.format() == LightTableFormat::Float ? "float" : "fixed16")
               << "\n";
 
     MedianTimes lidrTimes;
@@ -437,7 +437,7 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
                        {"index_memory_bytes", renderer.indexTargets().bytes()},
                        {"stencil_use", renderer.scheme().stencilUse()},
                        {"volume_passes", renderer.scheme().geometryPasses()},
-                       {"light_table_bytes", renderer.lightTable().bytes()},
+                       {"light_table_bytes", renderer.frame().lightTable.bytes()},
                        {"drawn_lights", stats.drawnLights}, {"volume_draw_calls", stats.volumeDrawCalls},
                        {"transparent_volume_lights", stats.transparentVolumeLights}};
     summary["auto"] = {{"budget_automatic", decision.autoBudget}, {"index_bits_automatic", decision.autoIndexBits},

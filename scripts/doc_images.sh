@@ -1,12 +1,25 @@
 #!/usr/bin/env bash
 # Regenerates the images in doc/images/ with lidr-demo (llvmpipe): the default room at 640x480, and the material
-# and light model pictures of README.md and doc/scene-format.md at 512x384: the courtyard and the crate (default
+# and light model pictures of doc/demo.md and doc/scene-format.md at 512x384: the courtyard and the crate (default
 # rig), a generated textured glTF (tests/make_glb.py) under the default rig, with --lights 1024, and with its own
 # KHR_lights_punctual lights (candela, inverse square); models get the default environment light (issue 39), and the
-# metal showcase is drawn without and with it.
+# metal showcase is drawn without and with it; README's picture of the technique (technique.png: the default
+# room's LIDR frame, its decoded index lists and the lights touching each pixel, side by side).
 #   bash scripts/doc_images.sh [build-dir]
 set -euo pipefail
 source "$(dirname "$0")/doc_images_env.sh"  # build, demo, out (doc/images), tmp
+side_by_side() {  # OUT IN...: the PNGs (same height) next to each other, left to right
+    python3 - "$@" <<'PY'
+import sys
+sys.path.insert(0, "web")
+from run_chromium_check import read_png, write_png
+images = [read_png(p) for p in sys.argv[2:]]
+h = images[0][1]
+assert all(i[1] == h for i in images), "side_by_side: the images differ in height"
+rows = (b"".join(rgba[y * w * 4:(y + 1) * w * 4] for w, _, rgba in images) for y in range(h))
+write_png(sys.argv[1], sum(i[0] for i in images), h, b"".join(rows))
+PY
+}
 common=(--headless --width 640 --height 480 --frames 1)
 "$demo" "${common[@]}" --volume-test backface --transparency off --out "$tmp/back" >/dev/null
 "$demo" "${common[@]}" --volume-test frontface --out "$tmp/front" >/dev/null
@@ -50,12 +63,13 @@ cp "$tmp/pillars-off/tiled.png" "$out/pillar-hall-no-shadows.png"
 python3 tests/make_glb.py "$tmp/helmet.glb" --metal-showcase >/dev/null
 render environment-helmet-none --scene "$tmp/helmet.glb" --environment none
 render environment-helmet-default --scene "$tmp/helmet.glb"
-python3 - "$out/environment-helmet-none.png" "$out/environment-helmet-default.png" "$out/environment-helmet.png" <<'PY'
-import sys
-sys.path.insert(0, "web")
-from run_chromium_check import read_png, write_png
-(w, h, a), (_, _, b) = read_png(sys.argv[1]), read_png(sys.argv[2])
-write_png(sys.argv[3], 2 * w, h, b"".join(a[y * w * 4:(y + 1) * w * 4] + b[y * w * 4:(y + 1) * w * 4] for y in range(h)))
-PY
+side_by_side "$out/environment-helmet.png" "$out/environment-helmet-none.png" "$out/environment-helmet-default.png"
 rm "$out/environment-helmet-none.png" "$out/environment-helmet-default.png"
+# README's picture: the default room as lidr-demo's default run renders it (the automatic configuration), at
+# 480x360: the frame, the decoded index lists (one colour per light index) and the overlap heat map (lights whose
+# sphere holds each pixel's surface, CPU truth), checked equal to the reference.
+"$demo" --headless --width 480 --height 360 --frames 1 --out "$tmp/technique" >"$tmp/technique.log"
+grep -q "dropped light-pixels 0," "$tmp/technique.log" && grep -Eq "whole image: max 0," "$tmp/technique.log" ||
+    { echo "technique: not the reference's image: $(grep -E '^(lights|error) ' "$tmp/technique.log")" >&2; exit 1; }
+side_by_side "$out/technique.png" "$tmp/technique/lidr.png" "$tmp/technique/index_lists.png" "$tmp/technique/overlap.png"
 echo "wrote $(ls "$out" | wc -l) images to $out"

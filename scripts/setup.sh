@@ -4,7 +4,7 @@
 #   bash scripts/setup.sh test   run the whole test suite (llvmpipe, softpipe, GL 2.1 override, OpenGL ES 2.0, OSMesa,
 #                                demo, viewer, examples, package), then the AddressSanitizer + UBSan build's subset
 #                                and the fuzz smoke runs (clang), then the WebGL 1 page's test (as the web job)
-#   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/bench/, spliced into doc/benchmarks.md
+#   bash scripts/setup.sh bench  the full lidr-bench sweep into doc/results/full/ (summary.md, linked from doc/benchmarks.md)
 #   bash scripts/setup.sh web    the WebGL 1 page (emscripten) into build-web/web/, then its test in headless
 #                                Chromium (CTest web.chromium; doc/web.md)
 # Environment: BUILD_DIR (default build), JOBS (default: number of cores), OUT_DIR (default out),

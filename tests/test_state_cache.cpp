@@ -263,6 +263,35 @@ TEST_CASE("a frame's GL calls are counted in FrameStats, the same each frame, an
     }
 }
 
+TEST_CASE("texture binds go through the cache: counted, an upload binds on the active unit, unbinding empties units",
+          "[state][every-gl]") {
+    testContext();
+    StateCache& cache = StateCache::current();
+    const gl::Texture a = gl::Texture::create2D(GL_RGBA8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE);
+    const gl::Texture b = gl::Texture::create2D(GL_RGBA8, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE);
+    const long before = cache.counters().textureBinds;
+    a.bind(3);
+    b.bind(5);
+    CHECK(integer(GL_ACTIVE_TEXTURE) == GLint(GL_TEXTURE0 + 5));
+    CHECK(integer(GL_TEXTURE_BINDING_2D) == GLint(b.id()));
+    glActiveTexture(GL_TEXTURE0 + 1);
+    const std::vector<uint8_t> texels(4 * 4 * 4, 200);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    a.upload(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());  // on unit 1, left bound there
+    CHECK(integer(GL_TEXTURE_BINDING_2D) == GLint(a.id()));
+    CHECK(cache.counters().textureBinds == before + 3);
+    cache.unbindTextures({3, 5});
+    cache.unbindTextures(1, 1);
+    CHECK(cache.counters().textureBinds == before + 6);
+    CHECK(integer(GL_ACTIVE_TEXTURE) == GLint(GL_TEXTURE0));
+    for (GLenum unit : {1u, 3u, 5u}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        CHECK(integer(GL_TEXTURE_BINDING_2D) == 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    checkGl("texture binds test");
+}
+
 TEST_CASE("a uniform no shader declares is an error naming it; one the compiler removed is a harmless -1",
           "[state][resources][every-gl]") {
     testContext();

@@ -192,9 +192,9 @@ void Viewer::uiStats() {
         lidrRenderer ? indexBytesPerPixel(lidrRenderer->scheme().config().budget, lidrRenderer->scheme().config().indexBits) : 0,
         lidrRenderer && rc_.msaaPerSample);
     size_t table = 0;
-    if (auto* l = dynamic_cast<const LidrRenderer*>(&drawingRenderer())) table = l->lightTable().bytes();
-    if (auto* t = dynamic_cast<const TiledRenderer*>(&drawingRenderer())) table = t->lightTable().bytes();
-    if (auto* c = dynamic_cast<const ClusteredRenderer*>(&drawingRenderer())) table = c->lightTable().bytes();
+    if (auto* l = dynamic_cast<const LidrRenderer*>(&drawingRenderer())) table = l->frame().lightTable.bytes();
+    if (auto* t = dynamic_cast<const TiledRenderer*>(&drawingRenderer())) table = t->frame().lightTable.bytes();
+    if (auto* c = dynamic_cast<const ClusteredRenderer*>(&drawingRenderer())) table = c->frame().lightTable.bytes();
     ImGui::Text("memory: targets %s (estimate), light data %s", bytesText(double(targets)).c_str(),
                 bytesText(double(renderer_->lightDataBytes())).c_str());
     if (table) ImGui::Text("light table %s", bytesText(double(table)).c_str());

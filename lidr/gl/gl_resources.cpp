@@ -55,7 +55,7 @@ Texture Texture::create2D(GLint internalFormat, int width, int height, GLenum fo
     // OpenGL ES 2.0 has no sized internal formats: the internal format is the format (RGBA + UNSIGNED_BYTE is
     // RGBA8, RGBA + FLOAT is OES_texture_float's, DEPTH_COMPONENT + UNSIGNED_INT is OES_depth_texture's).
     if (currentContextIsGles()) internalFormat = GLint(format);
-    glBindTexture(GL_TEXTURE_2D, t.id_);
+    StateCache::current().bindTexture(GL_TEXTURE_2D, t.id_);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter == GL_LINEAR_MIPMAP_LINEAR ? GL_LINEAR : filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -67,7 +67,7 @@ Texture Texture::create2D(GLint internalFormat, int width, int height, GLenum fo
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
         glGenerateMipmap(GL_TEXTURE_2D);
     }
-    glBindTexture(GL_TEXTURE_2D, 0);
+    StateCache::current().bindTexture(GL_TEXTURE_2D, 0);
     checkGl("Texture::create2D");
     return t;
 }
@@ -78,9 +78,9 @@ Texture Texture::create2DMultisample(GLint internalFormat, int width, int height
     t.width_ = width;
     t.height_ = height;
     t.samples_ = samples;
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.id_);
+    StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.id_);
     glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internalFormat, width, height, GL_TRUE);
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     checkGl("Texture::create2DMultisample");
     return t;
 }
@@ -92,7 +92,7 @@ Texture Texture::createCube(GLint internalFormat, int size, int levels, GLenum f
     t.width_ = t.height_ = size;
     t.target_ = GL_TEXTURE_CUBE_MAP;
     if (currentContextIsGles()) internalFormat = GLint(format);  // no sized formats (create2D)
-    glBindTexture(GL_TEXTURE_CUBE_MAP, t.id_);
+    StateCache::current().bindTexture(GL_TEXTURE_CUBE_MAP, t.id_);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -103,15 +103,19 @@ Texture Texture::createCube(GLint internalFormat, int size, int levels, GLenum f
         for (int face = 0; face < 6; ++face)
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, internalFormat, std::max(1, size >> level),
                          std::max(1, size >> level), 0, format, type, data(level, face));
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    StateCache::current().bindTexture(GL_TEXTURE_CUBE_MAP, 0);
     checkGl("Texture::createCube");
     return t;
 }
 
 void Texture::bind(int unit) const {
-    StateCache::current().countTextureBind();
     glActiveTexture(GL_TEXTURE0 + unit);
-    glBindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : target_, id_);
+    StateCache::current().bindTexture(samples_ > 0 ? GL_TEXTURE_2D_MULTISAMPLE : target_, id_);
+}
+
+void Texture::upload(int width, int height, GLenum format, GLenum type, const void* pixels) const {
+    StateCache::current().bindTexture(GL_TEXTURE_2D, id_);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, format, type, pixels);
 }
 
 Renderbuffer Renderbuffer::create(GLenum internalFormat, int width, int height, int samples) {

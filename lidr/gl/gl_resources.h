@@ -65,6 +65,10 @@ public:
     int height() const { return height_; }
     int samples() const { return samples_; }
     void bind(int unit) const;
+    // Level 0's texels from (0, 0) to (width, height) replaced (glTexSubImage2D; GL_UNPACK_ALIGNMENT must suit the
+    // rows of `pixels`), the texture bound on the active unit (counted) and left there: the caller unbinds once
+    // after its uploads (StateCache::bindTexture(GL_TEXTURE_2D, 0)). 2D textures.
+    void upload(int width, int height, GLenum format, GLenum type, const void* pixels) const;
 
 private:
     int width_ = 0, height_ = 0, samples_ = 0;

@@ -133,6 +133,27 @@ void StateCache::bindFramebuffer(GLuint framebuffer) {
     framebufferValid_ = true;
 }
 
+void StateCache::bindTexture(GLenum target, GLuint texture) {
+    glBindTexture(target, texture);
+    ++counters_.textureBinds;
+}
+
+void StateCache::unbindTextures(std::initializer_list<int> units) {
+    for (int unit : units) {
+        glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+        bindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void StateCache::unbindTextures(int firstUnit, int count) {
+    for (int unit = firstUnit; unit < firstUnit + count; ++unit) {
+        glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+        bindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
 void StateCache::setViewport(const glm::ivec4& viewport) {
     update(viewportValid_, viewport_ == viewport, counters_,
            [&] { glViewport(viewport.x, viewport.y, viewport.z, viewport.w); });

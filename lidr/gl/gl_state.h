@@ -8,6 +8,7 @@
 // The embedding contract: lidr draws inside the caller's context and SavedGlState puts the caller's state
 // back after every frame, behind the cache's back. So the cache knows nothing at the start of every render()
 // (SavedGlState invalidates it on entry and on exit) and applies every field once, then only differences.
+#include <initializer_list>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -111,8 +112,14 @@ public:
     void drawElements(GLenum mode, GLsizei count, GLenum type, const void* offset);
     // Binds made by the GL object wrappers (gl_resources.h) are counted here.
     void countProgramBind() { ++counters_.programBinds; }
-    void countTextureBind() { ++counters_.textureBinds; }
     void countFramebufferBind() { ++counters_.framebufferBinds; }
+    // Every texture bind of lidr goes through here and is counted, never filtered (but SavedGlState's, which puts
+    // the caller's bindings back behind the cache's back): `texture` on the active unit (gl::Texture::bind makes its
+    // unit active first; an upload binds where it is and unbinds after).
+    void bindTexture(GLenum target, GLuint texture);
+    // A pass letting go of its inputs: each unit's 2D texture unbound (counted), then unit 0 active.
+    void unbindTextures(std::initializer_list<int> units);
+    void unbindTextures(int firstUnit, int count);
 
     const GlCallCounters& counters() const { return counters_; }
     // What the cache believes GL holds (valid() only); tests compare it with glGet*.

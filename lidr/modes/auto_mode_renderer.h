@@ -31,7 +31,7 @@ public:
     std::string modeName() const override { return "auto"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const RenderTargets& targets() const override { return renderers_[size_t(last_)]->targets(); }
+    const FrameResources& frame() const override { return lastRenderer().frame(); }
     size_t lightDataBytes() const override { return renderers_[size_t(last_)]->lightDataBytes(); }
     void setTiming(bool on, bool waitForResults = false) override {  // every candidate's pass times
         for (auto& r : renderers_) r->setTiming(on, waitForResults);
@@ -46,7 +46,6 @@ public:
     const Renderer& renderer(size_t candidate) const { return *renderers_[candidate]; }
     // The candidate that drew the last frame (its index lists, tiles and decisions are that frame's).
     const Renderer& lastRenderer() const { return *renderers_[size_t(last_)]; }
-    const ShadowAtlas* shadowAtlas() const override { return lastRenderer().shadowAtlas(); }
 
     std::vector<GpuScene*> gpuScenes() override;
     void checkObjectMaterial(const Material& material) const override;

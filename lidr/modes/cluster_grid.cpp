@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/modes/light_grid.h"
 #include "lidr/scene/sphere_bounds.h"
 
@@ -448,10 +449,10 @@ std::vector<uint32_t> ClusterGrid::list(int cluster) const {
 // --- GPU side ---------------------------------------------------------------------------------------
 
 ClusterGridTextures::ClusterGridTextures(const GlInfo& info, int tilesX, int tilesY, int slices)
-    : maxTextureSize_(info.maxTextureSize), tilesX_(tilesX), tilesY_(tilesY), slices_(slices) {
-    if (kListWidth > info.maxTextureSize)
-        throw UnsupportedError("this driver's textures are at most " + std::to_string(info.maxTextureSize) +
-                               " texels wide; the clustered light list needs " + std::to_string(kListWidth));
+    : tilesX_(tilesX),
+      tilesY_(tilesY),
+      slices_(slices),
+      list_(info, {"cluster grid", "clustered", "cluster", "larger tiles, fewer slices or fewer lights"}, 0) {
     slicesPerRow_ = std::clamp(info.maxTextureSize / std::max(tilesX, 1), 1, slices);
     sliceRows_ = (slices + slicesPerRow_ - 1) / slicesPerRow_;
     if (tilesX > info.maxTextureSize || long(tilesY) * sliceRows_ > info.maxTextureSize)
@@ -465,73 +466,31 @@ ClusterGridTextures::ClusterGridTextures(const GlInfo& info, int tilesX, int til
 void ClusterGridTextures::upload(const ClusterGrid& grid) {
     if (grid.tilesX() != tilesX_ || grid.tilesY() != tilesY_ || grid.sliceCount() != slices_)
         throw Error("cluster grid textures: grid size changed");
-    const size_t entries = grid.entries().size();
-    if (entries > (size_t(1) << 24))
-        throw Error("cluster grid: " + std::to_string(entries) +
-                    " list entries exceed the 2^24 that 24-bit cluster offsets address; use larger tiles, fewer "
-                    "slices or fewer lights");
-    const int bits = grid.indexBits();
-    const int rowsNeeded = int((entries + kListWidth - 1) / kListWidth);
-    if (rowsNeeded > listRows_ || bits != indexBits_) {  // grow (double until it fits) or change the index width
-        int rows = std::max(listRows_, 1);
-        while (rows < rowsNeeded) rows *= 2;
-        rows = std::min(rows, maxTextureSize_);
-        if (rows < rowsNeeded)
-            throw Error("cluster grid: " + std::to_string(entries) + " list entries exceed the driver's largest " +
-                        std::to_string(kListWidth) + "x" + std::to_string(maxTextureSize_) + " list texture");
-        list_ = bits == 8 ? gl::Texture::create2D(GL_LUMINANCE8, kListWidth, rows, GL_LUMINANCE, GL_UNSIGNED_BYTE)
-                          : gl::Texture::create2D(GL_LUMINANCE8_ALPHA8, kListWidth, rows, GL_LUMINANCE_ALPHA,
-                                                  GL_UNSIGNED_BYTE);
-        listRows_ = rows;
-        indexBits_ = bits;
-    }
-    const size_t bytesPerEntry = bits == 8 ? 1 : 2;
-    listBytes_.assign(size_t(rowsNeeded) * kListWidth * bytesPerEntry, 0);
-    const std::vector<uint32_t>& e = grid.entries();
-    if (bits == 8) {
-        for (size_t k = 0; k < entries; ++k) listBytes_[k] = uint8_t(e[k]);
-    } else {
-        for (size_t k = 0; k < entries; ++k) {
-            listBytes_[k * 2] = uint8_t(e[k] >> 8);
-            listBytes_[k * 2 + 1] = uint8_t(e[k] & 0xFF);
-        }
-    }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glBindTexture(GL_TEXTURE_2D, list_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kListWidth, rowsNeeded, bits == 8 ? GL_LUMINANCE : GL_LUMINANCE_ALPHA,
-                    GL_UNSIGNED_BYTE, listBytes_.data());
+    list_.upload(grid.entries(), grid.indexBits());
     // The grid: cluster (tile, slice k) at texel (tx + tilesX (k mod P), ty + tilesY floor(k / P)).
     const std::vector<uint32_t>& offsets = grid.offsets();
     const int tiles = tilesX_ * tilesY_, width = gridWidth();
     for (int k = 0; k < slices_; ++k) {
         const int x0 = tilesX_ * (k % slicesPerRow_), y0 = tilesY_ * (k / slicesPerRow_);
         for (int ty = 0; ty < tilesY_; ++ty)
-            for (int tx = 0; tx < tilesX_; ++tx) {
-                const uint32_t o = offsets[size_t(k) * size_t(tiles) + size_t(ty * tilesX_ + tx)];
-                uint8_t* texel = gridBytes_.data() + (size_t(y0 + ty) * size_t(width) + size_t(x0 + tx)) * 4;
-                texel[0] = uint8_t(o >> 16);
-                texel[1] = uint8_t(o >> 8);
-                texel[2] = uint8_t(o);
-            }
+            for (int tx = 0; tx < tilesX_; ++tx)
+                putListOffset(gridBytes_.data() + (size_t(y0 + ty) * size_t(width) + size_t(x0 + tx)) * 4,
+                              offsets[size_t(k) * size_t(tiles) + size_t(ty * tilesX_ + tx)]);
     }
-    glBindTexture(GL_TEXTURE_2D, grid_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, gridWidth(), gridHeight(), GL_RGBA, GL_UNSIGNED_BYTE, gridBytes_.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    grid_.upload(gridWidth(), gridHeight(), GL_RGBA, GL_UNSIGNED_BYTE, gridBytes_.data());
+    StateCache::current().bindTexture(GL_TEXTURE_2D, 0);
     checkGl("ClusterGridTextures::upload");
 }
 
 void ClusterGridTextures::bind(const gl::Program& program) const {
     grid_.bind(gl::kUnitClusterGrid);
-    list_.bind(gl::kUnitClusterList);
+    list_.texture().bind(gl::kUnitClusterList);
     glActiveTexture(GL_TEXTURE0);
     program.set("uClusterGrid", gl::kUnitClusterGrid);
     program.set("uClusterLights", gl::kUnitClusterList);
-    program.set("uClusterListRows", float(listRows_));
+    program.set("uClusterListRows", float(list_.rows()));
 }
 
 size_t ClusterGridTextures::gridBytes() const { return size_t(gridWidth()) * size_t(gridHeight()) * 4; }
-size_t ClusterGridTextures::listBytes() const {
-    return size_t(kListWidth) * size_t(listRows_) * size_t(indexBits_ == 8 ? 1 : 2);
-}
 
 }  // namespace lidr

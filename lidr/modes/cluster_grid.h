@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lidr/modes/light_list_texture.h"
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/scene/camera.h"
@@ -153,14 +154,14 @@ private:
 };
 
 // The grid on the GPU (all GL 2.1 / ES 2.0 / WebGL 1 formats). Grid: one RGBA8 texel per cluster holding its
-// list's offset as a 24-bit integer (R high byte, B low), tile (tx, ty) of slice k at texel
+// list's offset as a 24-bit integer (R high byte, B low: putListOffset), tile (tx, ty) of slice k at texel
 // (tx + tilesX * (k mod P), ty + tilesY * floor(k / P)), P = slicesPerRow() slices side by side, as many as fit
-// the driver's texture size. Index list: kListWidth entries a row, LUMINANCE8 (8-bit indices) or
-// LUMINANCE8_ALPHA8 (16-bit, L high), rows doubled when a frame needs more, so nothing is ever cut off; past
-// what the driver or 24-bit offsets can address, upload() throws lidr::Error.
+// the driver's texture size. Index list: a LightListTexture of 8-bit (LUMINANCE8) or 16-bit (LUMINANCE8_ALPHA8,
+// L high) indices, grown as the lists grow; past what the driver or 24-bit offsets can address, upload() throws
+// lidr::Error.
 class ClusterGridTextures {
 public:
-    static constexpr int kListWidth = 1024;
+    static constexpr int kListWidth = LightListTexture::kWidth;
 
     ClusterGridTextures() = default;
     // Throws lidr::Error where the grid cannot be laid out within the driver's texture size.
@@ -171,17 +172,17 @@ public:
     int slicesPerRow() const { return slicesPerRow_; }
     int gridWidth() const { return tilesX_ * slicesPerRow_; }
     int gridHeight() const { return tilesY_ * sliceRows_; }
-    int listRows() const { return listRows_; }
-    int indexBits() const { return indexBits_; }  // of the list texture as allocated (0: none yet)
+    int listRows() const { return list_.rows(); }
+    int indexBits() const { return list_.indexBits(); }  // of the list texture as allocated (0: none yet)
     size_t bytes() const { return gridBytes() + listBytes(); }
     size_t gridBytes() const;  // the grid texture
-    size_t listBytes() const;  // the whole list texture, as allocated
+    size_t listBytes() const { return list_.bytes(); }  // the whole list texture, as allocated
 
 private:
-    int maxTextureSize_ = 0, tilesX_ = 0, tilesY_ = 0, slices_ = 0, slicesPerRow_ = 1, sliceRows_ = 1;
-    int listRows_ = 0, indexBits_ = 0;
-    gl::Texture grid_, list_;
-    std::vector<uint8_t> gridBytes_, listBytes_;  // upload staging, kept between frames
+    int tilesX_ = 0, tilesY_ = 0, slices_ = 0, slicesPerRow_ = 1, sliceRows_ = 1;
+    gl::Texture grid_;
+    LightListTexture list_;
+    std::vector<uint8_t> gridBytes_;  // upload staging, kept between frames
 };
 
 }  // namespace lidr

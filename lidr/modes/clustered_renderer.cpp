@@ -42,13 +42,12 @@ int slicesFor(const GlInfo& info, int slices) { return info.fragmentHighp ? slic
 
 ClusteredRenderer::ClusteredRenderer(const GlInfo& info, const Scene& scene, const ClusteredOptions& options, int width,
                                      int height)
-    : ForwardRendererBase(checkContextFor(info, options), scene,
-                          ForwardRendererSetup::of(options, scene, width, height)),
+    : frame_(checkContextFor(info, options), scene, FrameSetup::of(options, scene, width, height)),
       options_(options),
       grid_(width, height, options.tileSize, slicesFor(info, options.slices)),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY(), grid_.sliceCount()),
       slices_(grid_.sliceCount()) {
-    buildProgram(options_.initialLoopBound, lightTable_.capacity() <= 255 ? 8 : 16);
+    buildProgram(options_.initialLoopBound, frame_.lightTable.capacity() <= 255 ? 8 : 16);
 }
 
 std::string ClusteredRenderer::programName() const {
@@ -56,7 +55,7 @@ std::string ClusteredRenderer::programName() const {
 }
 
 void ClusteredRenderer::buildProgram(int loopBound, int indexBits) {
-    ShaderDefines defines = lightTable_.defines();
+    ShaderDefines defines = frame_.lightTable.defines();
     defines.push_back({"LIDR_CLUSTER_TILE_SIZE", std::to_string(grid_.tileSize())});
     defines.push_back({"LIDR_CLUSTER_TILES_X", std::to_string(grid_.tilesX())});
     defines.push_back({"LIDR_CLUSTER_TILES_Y", std::to_string(grid_.tilesY())});
@@ -77,23 +76,23 @@ void ClusteredRenderer::buildProgram(int loopBound, int indexBits) {
 
 const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
-    const CameraMatrices cam = checkFrame(camera, lights, shading, "clustered");
-    const FrameScope frame(stats_, timer_, lights.size());
-    prepareLights(lights, shading);
-    const bool transparent = options_.transparency && scene_.hasTransparent();
+    const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "clustered");
+    const FrameScope scope(stats_, frame_.timer, lights.size());
+    frame_.prepareLights(lights, shading, stats_);
+    const bool transparent = options_.transparency && frame_.scene.hasTransparent();
 
-    if (options_.preZ) drawDepthPrepass(cam);
+    if (options_.preZ) frame_.drawDepthPrepass(cam);
 
-    const bool occupancy = options_.occupiedClusters && targets_.samples() == 0;
+    const bool occupancy = options_.occupiedClusters && frame_.targets.samples() == 0;
     ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
     std::vector<uint64_t> occupied;
     double occupancyMs = 0.0;
     if (occupancy) {  // Olsson's occupied-cluster step, from the pre-Z depth
-        TimedPass occupancyTime(timer_, "cluster-occupancy");
+        TimedPass occupancyTime(frame_.timer, "cluster-occupancy");
         const double start = nowMilliseconds();
-        const int w = targets_.width(), h = targets_.height();
+        const int w = frame_.targets.width(), h = frame_.targets.height();
         packedDepth_.resize(size_t(w) * size_t(h));
-        targets_.bindColor();
+        frame_.targets.bindColor();
         // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read): the
         // depth in the top 24 bits, compared in 24-bit steps without a conversion to float.
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -114,9 +113,9 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         occupancyMs = nowMilliseconds() - start;
     }
 
-    TimedPass lightGridTime(timer_, "light-grid");
+    TimedPass lightGridTime(frame_.timer, "light-grid");
     const double assignStart = nowMilliseconds();
-    grid_.build(cam, lights, slicing, occupancy ? &occupied : nullptr, lightTable_.reachError());
+    grid_.build(cam, lights, slicing, occupancy ? &occupied : nullptr, frame_.lightTable.reachError());
     gridTextures_.upload(grid_);
     const ClusterGridStats& gs = grid_.stats();
     if (gs.maxLights > frameInfo_.loopBound || grid_.indexBits() != frameInfo_.indexBits) {
@@ -129,38 +128,30 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
     const double assignMs = nowMilliseconds() - assignStart;
     lightGridTime.end();
 
-    TimedPass forwardTime(timer_, "clustered-forward");
-    beginOpaqueShading(targets_, shading, options_.preZ);
+    TimedPass forwardTime(frame_.timer, "clustered-forward");
+    beginOpaqueShading(frame_.targets, shading, options_.preZ);
     // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
     const gl::Program& program =
-        shadows_.active()
-            ? shadows_.program(programName(), "geometry.vert", "clustered_forward.frag", programDefines_, shading.shadows)
-            : program_;
-    useShadingProgram(program, cam, shading, lightTable_, environment_);
-    shadows_.bind(program, shading.shadows);
+        frame_.shadows.shadingProgram(program_, "clustered_forward.frag", programDefines_, shading.shadows);
+    useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
+    frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program);
     if (slices_ > 1) {
         program.set("uClusterDepthAxis", glm::vec4(cam.forward, -glm::dot(cam.forward, cam.eye)));
         program.set("uClusterSlicing", glm::vec2(slicing.scale, slicing.bias));
     }
-    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, environment_));
+    frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
     forwardTime.end();
 
     if (transparent) {  // each transparent fragment finds its own cluster by its own depth
-        TimedPass transparentTime(timer_, "clustered-transparent");
+        TimedPass transparentTime(frame_.timer, "clustered-transparent");
         beginTransparentShading();  // back to front over the opaque depth, no depth writes
-        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, environment_));
+        frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
     }
-    StateCache& cache = StateCache::current();
-    cache.apply(RenderState{});  // no scissor or masks on the resolve blit
-    targets_.resolve(timer_);
+    frame_.resolve();
 
-    for (int unit : {gl::kUnitClusterGrid, gl::kUnitClusterList}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    finishFrame("ClusteredRenderer::render");
+    StateCache::current().unbindTextures({gl::kUnitClusterGrid, gl::kUnitClusterList});
+    frame_.finishFrame(stats_, "ClusteredRenderer::render");
 
     lastCamera_ = cam;
     frameInfo_.grid = gs;
@@ -173,8 +164,8 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
 }
 
 std::vector<int> ClusteredRenderer::pixelSlices() const {
-    if (targets_.samples() > 0) throw Error("clustered: pixelSlices() reads single-sample depth; this frame had MSAA");
-    const int w = targets_.width(), h = targets_.height();
+    if (frame_.targets.samples() > 0) throw Error("clustered: pixelSlices() reads single-sample depth; this frame had MSAA");
+    const int w = frame_.targets.width(), h = frame_.targets.height();
     if (frameInfo_.shaderRebuilds == 0 || lastCamera_.width != w) throw Error("clustered: pixelSlices() before a frame");
     const SavedGlState callerState;
     StateCache& cache = StateCache::current();
@@ -186,7 +177,7 @@ std::vector<int> ClusteredRenderer::pixelSlices() const {
         sliceTexture_ = gl::Texture::create2D(GL_RGBA8, w, h, GL_RGBA, GL_UNSIGNED_BYTE);
         sliceFbo_ = gl::Framebuffer::create();
         sliceFbo_.attachTexture(GL_COLOR_ATTACHMENT0, sliceTexture_);
-        sliceFbo_.attachDepthStencil(targets_.depthStencil(), targets_.separateStencil());
+        sliceFbo_.attachDepthStencil(frame_.targets.depthStencil(), frame_.targets.separateStencil());
         sliceFbo_.checkComplete("clustered slices");
     }
     ClearAction clear;
@@ -200,13 +191,13 @@ std::vector<int> ClusteredRenderer::pixelSlices() const {
     cache.apply(s);
     const ShadingParameters shading;
     sliceProgram_.use();
-    setShadingUniforms(sliceProgram_, lastCamera_, shading, environment_);
+    setShadingUniforms(sliceProgram_, lastCamera_, shading, frame_.environment);
     sliceProgram_.set("uViewProj", lastCamera_.viewProjection);
     if (slices_ > 1) {
         sliceProgram_.set("uClusterDepthAxis", glm::vec4(lastCamera_.forward, -glm::dot(lastCamera_.forward, lastCamera_.eye)));
         sliceProgram_.set("uClusterSlicing", glm::vec2(frameInfo_.slicing.scale, frameInfo_.slicing.bias));
     }
-    scene_.draw(sliceProgram_, DrawFilter::Opaque, true, &lastCamera_);
+    frame_.scene.draw(sliceProgram_, DrawFilter::Opaque, true, &lastCamera_);
     cache.apply(RenderState{});
     const ImageRGBA8 image = readPixelsRGBA8(w, h);
     cache.bindFramebuffer(0);
@@ -220,7 +211,7 @@ std::vector<int> ClusteredRenderer::pixelSlices() const {
 }
 
 std::vector<int> ClusteredRenderer::pixelClusters() const {
-    const int w = targets_.width(), h = targets_.height();
+    const int w = frame_.targets.width(), h = frame_.targets.height();
     std::vector<int> clusters = pixelSlices();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -231,10 +222,10 @@ std::vector<int> ClusteredRenderer::pixelClusters() const {
 }
 
 ImageRGBA8 ClusteredRenderer::clusterHeatMap(int budget) const {
-    const int w = targets_.width(), h = targets_.height();
+    const int w = frame_.targets.width(), h = frame_.targets.height();
     std::vector<int> perPixel(size_t(w) * size_t(h), 0);
     std::vector<int> clusters;
-    if (targets_.samples() == 0 && frameInfo_.shaderRebuilds > 0) clusters = pixelClusters();
+    if (frame_.targets.samples() == 0 && frameInfo_.shaderRebuilds > 0) clusters = pixelClusters();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const size_t p = size_t(y) * size_t(w) + size_t(x);

@@ -14,7 +14,7 @@
 
 #include "lidr/base/image.h"
 #include "lidr/modes/cluster_grid.h"
-#include "lidr/render/forward_renderer_base.h"
+#include "lidr/render/frame_resources.h"
 
 namespace lidr {
 
@@ -53,9 +53,9 @@ struct ClusteredFrameInfo {
     double occupancyMilliseconds = 0.0;  // CPU: depth read-back and occupied slices (0 without)
 };
 
-// The scene, targets, light table, pre-Z, shadow maps and timer, and the frame steps every forward mode takes
-// alike, come from ForwardRendererBase.
-class ClusteredRenderer final : public ForwardRendererBase {
+// The scene, targets, light table, pre-Z, shadow maps, environment maps and timer, and the frame steps every mode
+// takes alike, are its FrameResources.
+class ClusteredRenderer final : public Renderer {
 public:
     // Checks everything before any drawing: FBOs, resolution, the grid (tile size, slices), occupancy where no
     // depth can be read back, occupancy without pre-Z (lidr::Error / UnsupportedError naming the cause).
@@ -66,6 +66,7 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     size_t lightDataBytes() const override { return gridTextures_.bytes(); }
+    const FrameResources& frame() const override { return frame_; }
 
     const ClusteredOptions& options() const { return options_; }
     const ClusterGrid& grid() const { return grid_; }  // the last frame's cluster lists
@@ -88,6 +89,7 @@ private:
     void buildProgram(int loopBound, int indexBits);
     std::string programName() const;
 
+    FrameResources frame_;  // first: the options and the context are checked before any GL object
     ClusteredOptions options_;
     ClusterGrid grid_;
     ClusterGridTextures gridTextures_;

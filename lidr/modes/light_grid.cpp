@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 #include "lidr/scene/sphere_bounds.h"
 
 namespace lidr {
@@ -210,75 +211,39 @@ std::vector<uint32_t> LightGrid::transparentList(int tile) const {
 
 // --- GPU side ---------------------------------------------------------------------------------------
 
-LightGridTextures::LightGridTextures(const GlInfo& info, int tilesX, int tilesY)
-    : maxTextureSize_(info.maxTextureSize), tilesX_(tilesX), tilesY_(tilesY) {
+LightGridTextures::LightGridTextures(const GlInfo& info, int tilesX, int tilesY) : tilesX_(tilesX), tilesY_(tilesY) {
     if (tilesX > info.maxTextureSize || tilesY > info.maxTextureSize)
         throw Error("light grid of " + std::to_string(tilesX) + "x" + std::to_string(tilesY) +
                     " tiles exceeds the driver's texture size " + std::to_string(info.maxTextureSize));
-    if (kListWidth > info.maxTextureSize)
-        throw UnsupportedError("this driver's textures are at most " + std::to_string(info.maxTextureSize) +
-                               " texels wide; the tiled light list needs " + std::to_string(kListWidth));
+    list_ = LightListTexture(info, {"light grid", "tiled", "tile", "larger tiles or fewer lights"}, 16);
     opaqueGrid_ = gl::Texture::create2D(GL_RGBA8, tilesX, tilesY, GL_RGBA, GL_UNSIGNED_BYTE);
     transparentGrid_ = gl::Texture::create2D(GL_RGBA8, tilesX, tilesY, GL_RGBA, GL_UNSIGNED_BYTE);
 }
 
 void LightGridTextures::upload(const LightGrid& grid) {
     if (grid.tilesX() != tilesX_ || grid.tilesY() != tilesY_) throw Error("light grid textures: grid size changed");
-    const size_t entries = grid.entries().size();
-    if (entries > (size_t(1) << 24))
-        throw Error("light grid: " + std::to_string(entries) +
-                    " list entries exceed the 2^24 that 24-bit tile offsets address; use larger tiles or fewer lights");
-    const int rowsNeeded = int((entries + kListWidth - 1) / kListWidth);
-    if (rowsNeeded > listRows_) {  // grow: double until it fits, so growth is rare
-        int rows = std::max(listRows_, 1);
-        while (rows < rowsNeeded) rows *= 2;
-        rows = std::min(rows, maxTextureSize_);
-        if (rows < rowsNeeded)
-            throw Error("light grid: " + std::to_string(entries) + " list entries exceed the driver's largest " +
-                        std::to_string(kListWidth) + "x" + std::to_string(maxTextureSize_) + " list texture");
-        list_ = gl::Texture::create2D(GL_LUMINANCE8_ALPHA8, kListWidth, rows, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE);
-        listRows_ = rows;
-    }
-    std::vector<uint8_t> listBytes(size_t(rowsNeeded) * kListWidth * 2, 0);
-    for (size_t k = 0; k < entries; ++k) {
-        const uint32_t v = grid.entries()[k];
-        listBytes[k * 2] = uint8_t(v >> 8);
-        listBytes[k * 2 + 1] = uint8_t(v & 0xFF);
-    }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glBindTexture(GL_TEXTURE_2D, list_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kListWidth, rowsNeeded, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE,
-                    listBytes.data());
+    list_.upload(grid.entries(), 16);
     auto gridBytes = [&](const std::vector<uint32_t>& offsets) {
         std::vector<uint8_t> b(offsets.size() * 4, 0);
-        for (size_t t = 0; t < offsets.size(); ++t) {
-            b[t * 4] = uint8_t(offsets[t] >> 16);
-            b[t * 4 + 1] = uint8_t(offsets[t] >> 8);
-            b[t * 4 + 2] = uint8_t(offsets[t]);
-        }
+        for (size_t t = 0; t < offsets.size(); ++t) putListOffset(&b[t * 4], offsets[t]);
         return b;
     };
-    const std::vector<uint8_t> opaque = gridBytes(grid.opaqueOffsets());
-    glBindTexture(GL_TEXTURE_2D, opaqueGrid_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, opaque.data());
-    const std::vector<uint8_t> transparent = gridBytes(grid.transparentOffsets());
-    glBindTexture(GL_TEXTURE_2D, transparentGrid_.id());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, transparent.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
+    opaqueGrid_.upload(tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, gridBytes(grid.opaqueOffsets()).data());
+    transparentGrid_.upload(tilesX_, tilesY_, GL_RGBA, GL_UNSIGNED_BYTE, gridBytes(grid.transparentOffsets()).data());
+    StateCache::current().bindTexture(GL_TEXTURE_2D, 0);
     checkGl("LightGridTextures::upload");
 }
 
 void LightGridTextures::bind(const gl::Program& program, bool transparent) const {
     (transparent ? transparentGrid_ : opaqueGrid_).bind(gl::kUnitTileGrid);
-    list_.bind(gl::kUnitTileList);
+    list_.texture().bind(gl::kUnitTileList);
     glActiveTexture(GL_TEXTURE0);
     program.set("uTileGrid", gl::kUnitTileGrid);
     program.set("uLightList", gl::kUnitTileList);
     program.set("uTileGridSize", glm::vec2(float(tilesX_), float(tilesY_)));
-    program.set("uLightListRows", float(listRows_));
+    program.set("uLightListRows", float(list_.rows()));
 }
 
 size_t LightGridTextures::gridBytes() const { return size_t(tilesX_) * tilesY_ * 4 * 2; }
-size_t LightGridTextures::listBytes() const { return size_t(kListWidth) * listRows_ * 2; }
 
 }  // namespace lidr

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lidr/modes/light_list_texture.h"
 #include "lidr/scene/camera.h"
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
@@ -88,27 +89,27 @@ private:
 };
 
 // The grid on the GPU. Tile grids: one RGBA8 texel per tile holding its list offset as a 24-bit integer
-// (R high byte, B low byte), one texture for opaque and one for transparent lists. Index list: a
-// LUMINANCE8_ALPHA8 texture, kListWidth entries per row, a 16-bit light index per texel (L high, A low).
-// The list texture grows (rows doubled) when a frame needs more entries, so nothing is ever cut off; past
-// what the driver or 24-bit offsets can address, upload() throws lidr::Error.
+// (R high byte, B low byte: putListOffset), one texture for opaque and one for transparent lists. Index list: a
+// LightListTexture of 16-bit light indices (LUMINANCE8_ALPHA8, L high, A low), grown as the lists grow; past what
+// the driver or 24-bit offsets can address, upload() throws lidr::Error.
 class LightGridTextures {
 public:
-    static constexpr int kListWidth = 1024;
+    static constexpr int kListWidth = LightListTexture::kWidth;
 
     LightGridTextures() = default;
     LightGridTextures(const GlInfo& info, int tilesX, int tilesY);
     void upload(const LightGrid& grid);
     // Binds the grid textures and sets tiled_grid.glsl's uniforms; `transparent` picks that grid.
     void bind(const gl::Program& program, bool transparent) const;
-    int listRows() const { return listRows_; }
+    int listRows() const { return list_.rows(); }
     size_t bytes() const { return gridBytes() + listBytes(); }
     size_t gridBytes() const;  // the two tile grids
-    size_t listBytes() const;  // the whole list texture, as allocated
+    size_t listBytes() const { return list_.bytes(); }  // the whole list texture, as allocated
 
 private:
-    int maxTextureSize_ = 0, tilesX_ = 0, tilesY_ = 0, listRows_ = 0;
-    gl::Texture opaqueGrid_, transparentGrid_, list_;
+    int tilesX_ = 0, tilesY_ = 0;
+    gl::Texture opaqueGrid_, transparentGrid_;
+    LightListTexture list_;
 };
 
 }  // namespace lidr

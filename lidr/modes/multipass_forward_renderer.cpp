@@ -29,9 +29,9 @@ RenderState onceAtPrepassDepth(GLint stamp) {
 MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Scene& scene,
                                                    const MultipassOptions& options, int width, int height)
     // The scene drawn in reverse: the stamps keep the first fragment (see render()).
-    : ForwardRendererBase(info, scene, ForwardRendererSetup::of(options, scene, width, height, DrawOrder::Reversed)),
+    : frame_(info, scene, FrameSetup::of(options, scene, width, height, DrawOrder::Reversed)),
       options_(options) {
-    const ShaderDefines defines = lightTable_.defines();
+    const ShaderDefines defines = frame_.lightTable.defines();
     ambient_ = gl::Program::create("forward-ambient", buildShaderSource("geometry.vert"),
                                    buildShaderSource("forward_ambient.frag", defines), geometryAttributes());
     light_ = gl::Program::create("forward-light", buildShaderSource("geometry.vert"),
@@ -41,11 +41,11 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
         accumulationNote_ = "forced (MultipassOptions::halfFloatAccumulation false)";
     } else {
         try {
-            halfFloat_ = HalfFloatTarget(info, targets_);
+            halfFloat_ = HalfFloatTarget(info, frame_.targets);
         } catch (const UnsupportedError& e) {
             accumulationNote_ = e.what();
         }
-        if (halfFloat_ && targets_.samples() > 0)
+        if (halfFloat_ && frame_.targets.samples() > 0)
             accumulationNote_ = halfFloat_.multisampleTexture()
                                     ? "MSAA samples encoded one by one, then averaged"
                                     : "MSAA samples averaged in linear light, then encoded (no multisample textures "
@@ -55,17 +55,17 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
 
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                                    const ShadingParameters& shading) {
-    const CameraMatrices cam = checkFrame(camera, lights, shading, "forward-multipass");
-    const FrameScope frame(stats_, timer_, lights.size());
-    prepareLights(lights, shading);
+    const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "forward-multipass");
+    const FrameScope scope(stats_, frame_.timer, lights.size());
+    frame_.prepareLights(lights, shading, stats_);
     meshDraws_ = 0;
 
     // Every pass draws into the half-float target where there is one, else into the 8-bit colour target; both
     // share the one depth-stencil.
-    const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : targets_.colorPass();
-    drawDepthPrepass(cam, &sumPass);
+    const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : frame_.targets.colorPass();
+    frame_.drawDepthPrepass(cam, &sumPass);
 
-    TimedPass ambientTime(timer_, "ambient");
+    TimedPass ambientTime(frame_.timer, "ambient");
     // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
     ShadingParameters linearShading = shading;
     linearShading.output = OutputTransform::linear();
@@ -79,28 +79,26 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     GLint stamp = 1;
     cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
     ambient_.use();
-    setShadingUniforms(ambient_, cam, linearShading, environment_);
-    scene_.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading, environment_));
+    setShadingUniforms(ambient_, cam, linearShading, frame_.environment);
+    frame_.scene.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading, frame_.environment));
     ambientTime.end();
 
-    TimedPass lightPassesTime(timer_, "light-passes");
+    TimedPass lightPassesTime(frame_.timer, "light-passes");
     RenderState s = onceAtPrepassDepth(stamp);
     s.blend = true;
     s.blendSrcRgb = s.blendDstRgb = GL_ONE;  // add this light's term
     s.blendSrcAlpha = GL_ZERO, s.blendDstAlpha = GL_ONE;
     s.scissor = options_.scissor;
-    s.scissorBox = glm::ivec4(0, 0, targets_.width(), targets_.height());
+    s.scissorBox = glm::ivec4(0, 0, frame_.targets.width(), frame_.targets.height());
     cache.apply(s);  // per light only the scissor box and the stamp change below (the cache sets only those)
     // Shadows: each light's term with its lookup compiled in (shadow_lookup.glsl), as the reference does.
-    const gl::Program& lightProgram = shadows_.active() ? shadows_.program("forward-light", "geometry.vert",
-                                                                           "forward_light.frag", lightDefines_,
-                                                                           shading.shadows)
-                                                        : light_;
+    const gl::Program& lightProgram =
+        frame_.shadows.shadingProgram(light_, "forward_light.frag", lightDefines_, shading.shadows);
     lightProgram.use();
-    setShadingUniforms(lightProgram, cam, linearShading, environment_);
-    lightTable_.bind(lightProgram);
-    shadows_.bind(lightProgram, shading.shadows);
-    const float reach = lightTable_.reachError();
+    setShadingUniforms(lightProgram, cam, linearShading, frame_.environment);
+    frame_.lightTable.bind(lightProgram);
+    frame_.shadows.bind(lightProgram, shading.shadows);
+    const float reach = frame_.lightTable.reachError();
     // Culling a mesh whose bounds the sphere misses is exact only where every shaded point lies on its
     // triangle. Under MSAA a fragment that covers samples but not the pixel centre is shaded at the centre,
     // extrapolated along the triangle's plane, possibly outside the mesh's bounds and inside a light's sphere
@@ -108,13 +106,13 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     // screen rectangle misses the light's: that point still lies on the pixel's centre ray. It costs: 3.3x
     // the frame on the room at 320x240 with 4x MSAA on llvmpipe (doc/tiled.md); exactMsaaCulling = false
     // keeps the mesh bounds test.
-    const bool screenCull = targets_.samples() > 0 && options_.exactMsaaCulling;
+    const bool screenCull = frame_.targets.samples() > 0 && options_.exactMsaaCulling;
     std::vector<glm::ivec4> meshRects;  // per batch, this frame: (0, 0, -1, -1) when off screen
     if (screenCull) {
-        meshRects.assign(scene_.batchCount(), glm::ivec4(0, 0, -1, -1));
+        meshRects.assign(frame_.scene.batchCount(), glm::ivec4(0, 0, -1, -1));
         for (size_t i = 0; i < meshRects.size(); ++i) {
             glm::vec3 bmin, bmax;
-            scene_.batchBounds(i, bmin, bmax);
+            frame_.scene.batchBounds(i, bmin, bmax);
             if (!boxPixelRect(cam, bmin, bmax, meshRects[i])) meshRects[i] = glm::ivec4(0, 0, -1, -1);
         }
     }
@@ -135,7 +133,7 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
         s.stencil.ref = stamp;
         cache.apply(s);
         lightProgram.set("uLightIndex", float(i + 1));
-        const int drawn = scene_.drawSelected(lightProgram, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
+        const int drawn = frame_.scene.drawSelected(lightProgram, DrawFilter::Opaque, [&](size_t i, const glm::vec3& bmin, const glm::vec3& bmax) {
             if (!options_.cullMeshes) return true;
             if (!screenCull)
                 return sphereTouchesBox(l.position, radius, bmin, bmax) &&
@@ -153,28 +151,28 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     const OutputTransform& output = shading.output;
     if (halfFloat_ && halfFloat_.multisampleTexture()) {
         // Each sample encoded, then the encoded samples averaged, as the single-pass modes resolve.
-        TimedPass encodeTime(timer_, "output-encode");
-        outputEncode_.run(targets_, output, halfFloat_.multisampleTexture());
+        TimedPass encodeTime(frame_.timer, "output-encode");
+        outputEncode_.run(frame_.targets, output, halfFloat_.multisampleTexture());
         encodeTime.end();
-        targets_.resolve(timer_);
+        frame_.targets.resolve(frame_.timer);
     } else if (halfFloat_) {
-        if (targets_.samples() > 0) {  // averaged in linear light, then encoded (doc/colour.md)
-            TimedPass msaaResolveTime(timer_, "msaa-resolve");
+        if (frame_.targets.samples() > 0) {  // averaged in linear light, then encoded (doc/colour.md)
+            TimedPass msaaResolveTime(frame_.timer, "msaa-resolve");
             halfFloat_.resolve();
         }
-        TimedPass encodeTime(timer_, "output-encode");  // always: it also writes the 8-bit colour target
-        outputEncode_.run(targets_, output, halfFloat_.texture());
+        TimedPass encodeTime(frame_.timer, "output-encode");  // always: it also writes the 8-bit colour target
+        outputEncode_.run(frame_.targets, output, halfFloat_.texture());
         encodeTime.end();
     } else {
-        targets_.resolve(timer_);
+        frame_.targets.resolve(frame_.timer);
         if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
-            TimedPass encodeTime(timer_, "output-encode");
-            outputEncode_.run(targets_, output);
+            TimedPass encodeTime(frame_.timer, "output-encode");
+            outputEncode_.run(frame_.targets, output);
             encodeTime.end();
         }
     }
 
-    finishFrame("MultipassForwardRenderer::render");
+    frame_.finishFrame(stats_, "MultipassForwardRenderer::render");
     return stats_;
 }
 

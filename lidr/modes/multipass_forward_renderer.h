@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "lidr/render/forward_renderer_base.h"
+#include "lidr/render/frame_resources.h"
 #include "lidr/render/present.h"
 #include "lidr/gl/half_float_target.h"
 
@@ -38,13 +38,14 @@ struct MultipassOptions {
     TimingMethod timingMethod = TimingMethod::Auto;
 };
 
-class MultipassForwardRenderer final : public ForwardRendererBase {
+class MultipassForwardRenderer final : public Renderer {
 public:
     MultipassForwardRenderer(const GlInfo& info, const Scene& scene, const MultipassOptions& options, int width,
                              int height);
     std::string modeName() const override { return "forward-multipass"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
+    const FrameResources& frame() const override { return frame_; }
     long meshDrawCalls() const { return meshDraws_; }  // light-pass mesh draws of the last frame
     // Where the passes sum their light: "half-float" or "8-bit", chosen when the renderer was made.
     const char* accumulation() const { return halfFloat_ ? "half-float" : "8-bit"; }
@@ -53,6 +54,7 @@ public:
     const std::string& accumulationNote() const { return accumulationNote_; }
 
 private:
+    FrameResources frame_;
     MultipassOptions options_;
     HalfFloatTarget halfFloat_;  // empty: the passes blend into targets_' 8-bit colour
     std::string accumulationNote_;

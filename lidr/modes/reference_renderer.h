@@ -2,12 +2,12 @@
 // The brute-force reference: every light evaluated at every pixel with lidr's one shading function, after
 // the same depth pre-pass. It is the accuracy reference for every other mode, and the "forward-brute"
 // baseline.
-#include "lidr/render/forward_renderer_base.h"
+#include "lidr/render/frame_resources.h"
 #include "lidr/render/shading_pass.h"
 
 namespace lidr {
 
-class ReferenceRenderer final : public ForwardRendererBase {
+class ReferenceRenderer final : public Renderer {
 public:
     // `lightCapacity`: the most lights a frame may have (the loop bound compiled into the shader).
     // MSAA and transparency as in LidrOptions: the reference is rendered the way the mode it judges is.
@@ -17,9 +17,11 @@ public:
     std::string modeName() const override { return "forward-brute"; }
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
-    const char* timingMethod() const { return timer_.method(); }
+    const char* timingMethod() const { return frame_.timer.method(); }
+    const FrameResources& frame() const override { return frame_; }
 
 private:
+    FrameResources frame_;
     gl::Program program_;
     ShaderDefines defines_;
     bool transparency_ = false;  // transparent meshes drawn where the scene has them (objects come and go)

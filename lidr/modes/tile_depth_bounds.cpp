@@ -197,10 +197,7 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     }
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    for (int unit : {gl::kUnitTileDepthMax, gl::kUnitTileDepthMin, gl::kUnitReductionInput}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
+    StateCache::current().unbindTextures({gl::kUnitTileDepthMax, gl::kUnitTileDepthMin, gl::kUnitReductionInput});
 
     // Read back with GL's bottom-up rows: tile (x, y) lands at y * tilesX + x, as LightGrid counts tiles.
     const bool packed = format_ == DepthReductionFormat::PackedRGBA8;

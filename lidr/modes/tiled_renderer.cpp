@@ -38,14 +38,13 @@ const GlInfo& checkedContext(const GlInfo& info, const TiledOptions& o) {
 
 TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const TiledOptions& options, int width,
                              int height)
-    : ForwardRendererBase(checkedContext(info, options), scene,
-                          ForwardRendererSetup::of(options, scene, width, height)),
+    : frame_(checkedContext(info, options), scene, FrameSetup::of(options, scene, width, height)),
       options_(options),
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()) {
     if (options_.depthBounds && options_.msaaSamples == 0)
         depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
-                                                         targets_.depthStencil(), options_.forcePackedDepth,
+                                                         frame_.targets.depthStencil(), options_.forcePackedDepth,
                                                          options_.halfZ);
     buildProgram(options_.initialLoopBound);
     frameInfo_.shaderRebuilds = 0;
@@ -60,7 +59,7 @@ size_t TiledRenderer::lightDataBytes() const {
 }
 
 void TiledRenderer::buildProgram(int loopBound) {
-    ShaderDefines defines = lightTable_.defines();
+    ShaderDefines defines = frame_.lightTable.defines();
     defines.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
     defines.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
     defines.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
@@ -73,29 +72,29 @@ void TiledRenderer::buildProgram(int loopBound) {
 
 const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
-    const CameraMatrices cam = checkFrame(camera, lights, shading, "tiled");
-    const FrameScope frame(stats_, timer_, lights.size());
-    prepareLights(lights, shading);
-    const bool transparent = options_.transparency && scene_.hasTransparent();
+    const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "tiled");
+    const FrameScope scope(stats_, frame_.timer, lights.size());
+    frame_.prepareLights(lights, shading, stats_);
+    const bool transparent = options_.transparency && frame_.scene.hasTransparent();
 
-    TimedPass depthPrepassTime(timer_, "depth-prepass");
+    TimedPass depthPrepassTime(frame_.timer, "depth-prepass");
     if (depthBounds_) {
-        depthBounds_->prepass(scene_, cam);
+        depthBounds_->prepass(frame_.scene, cam);
     } else if (options_.preZ) {
-        targets_.bindColor();
-        depthPrepass_.run(scene_, cam);
+        frame_.targets.bindColor();
+        frame_.depthPrepass.run(frame_.scene, cam);
     }
     depthPrepassTime.end();
 
     tileDepth_.clear();
     if (depthBounds_) {
-        TimedPass tileDepthReduceTime(timer_, "tile-depth-reduce");
+        TimedPass tileDepthReduceTime(frame_.timer, "tile-depth-reduce");
         tileDepth_ = depthBounds_->reduce();
     }
 
-    TimedPass lightGridTime(timer_, "light-grid");
+    TimedPass lightGridTime(frame_.timer, "light-grid");
     const double assignStart = nowMilliseconds();
-    const float reach = lightTable_.reachError();
+    const float reach = frame_.lightTable.reachError();
     grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
     gridTextures_.upload(grid_);
     const LightGridStats& gs = grid_.stats();
@@ -109,35 +108,27 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     const double assignMs = nowMilliseconds() - assignStart;
     lightGridTime.end();
 
-    TimedPass tiledForwardTime(timer_, "tiled-forward");
-    beginOpaqueShading(targets_, shading, options_.preZ);
+    TimedPass tiledForwardTime(frame_.timer, "tiled-forward");
+    beginOpaqueShading(frame_.targets, shading, options_.preZ);
     // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
     const gl::Program& program =
-        shadows_.active() ? shadows_.program("tiled-forward-" + std::to_string(frameInfo_.loopBound), "geometry.vert",
-                                             "tiled_forward.frag", programDefines_, shading.shadows)
-                          : program_;
-    useShadingProgram(program, cam, shading, lightTable_, environment_);
-    shadows_.bind(program, shading.shadows);
+        frame_.shadows.shadingProgram(program_, "tiled_forward.frag", programDefines_, shading.shadows);
+    useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
+    frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
-    scene_.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, environment_));
+    frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
     tiledForwardTime.end();
 
     if (transparent) {
-        TimedPass tiledTransparentTime(timer_, "tiled-transparent");
+        TimedPass tiledTransparentTime(frame_.timer, "tiled-transparent");
         beginTransparentShading();  // back to front over the opaque depth, no depth writes
         gridTextures_.bind(program, true);
-        scene_.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, environment_));
+        frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
     }
-    StateCache& cache = StateCache::current();
-    cache.apply(RenderState{});  // no scissor or masks on the resolve blit
-    targets_.resolve(timer_);
+    frame_.resolve();
 
-    for (int unit : {gl::kUnitTileGrid, gl::kUnitTileList}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    finishFrame("TiledRenderer::render");
+    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
+    frame_.finishFrame(stats_, "TiledRenderer::render");
 
     frameInfo_.grid = gs;
     frameInfo_.assignMilliseconds = assignMs;
@@ -147,7 +138,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
 }
 
 ImageRGBA8 TiledRenderer::tileHeatMap(int budget, bool transparent) const {
-    const int w = targets_.width(), h = targets_.height();
+    const int w = frame_.targets.width(), h = frame_.targets.height();
     const std::vector<int>& counts = transparent ? grid_.transparentCounts() : grid_.opaqueCounts();
     std::vector<int> perPixel(size_t(w) * h, 0);
     if (!counts.empty())

@@ -14,7 +14,7 @@
 #include "lidr/base/image.h"
 #include "lidr/modes/light_grid.h"
 #include "lidr/modes/tile_depth_bounds.h"
-#include "lidr/render/forward_renderer_base.h"
+#include "lidr/render/frame_resources.h"
 
 namespace lidr {
 
@@ -45,7 +45,7 @@ struct TiledFrameInfo {
                                       // do not see CPU work)
 };
 
-class TiledRenderer final : public ForwardRendererBase {
+class TiledRenderer final : public Renderer {
 public:
     // Checks everything before any drawing: FBOs, resolution, tile size (lidr::Error for < 1 or larger than
     // the screen), depthBounds without preZ (lidr::Error).
@@ -56,6 +56,7 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     size_t lightDataBytes() const override;
+    const FrameResources& frame() const override { return frame_; }
 
     const TiledOptions& options() const { return options_; }
     const LightGrid& grid() const { return grid_; }               // the last frame's tile lists
@@ -73,6 +74,7 @@ public:
 private:
     void buildProgram(int loopBound);
 
+    FrameResources frame_;  // first: the options and the context are checked before any GL object
     TiledOptions options_;
     LightGrid grid_;
     LightGridTextures gridTextures_;

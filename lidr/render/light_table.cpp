@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/gl_state.h"
 
 namespace lidr {
 
@@ -101,10 +102,8 @@ void LightTable::update(const std::vector<PointLight>& lights, const std::vector
         if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
             throw Error("light table: the region map would overwrite lights");
         for (size_t t = 0; t < regionMap_.size(); ++t) pos[(size_t(regionMapFirstRow_) * kWidth + t) * 4] = regionMap_[t];
-        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
-        glBindTexture(GL_TEXTURE_2D, set.color.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, col.data());
+        set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
+        set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, col.data());
     } else {
         glm::vec3 lo(0.0f), hi(1.0f);
         float maxRadius = 1.0f, maxColor = 1.0f;
@@ -164,14 +163,11 @@ void LightTable::update(const std::vector<PointLight>& lights, const std::vector
             col[cone + 0] = static_cast<uint8_t>(inner >> 8);
             col[cone + 1] = static_cast<uint8_t>(inner & 0xFF);
         }
-        glBindTexture(GL_TEXTURE_2D, set.posRadius.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
-        glBindTexture(GL_TEXTURE_2D, set.posRadiusLow.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
-        glBindTexture(GL_TEXTURE_2D, set.color.id());
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
+        set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
+        set.posRadiusLow.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
+        set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
     }
-    glBindTexture(GL_TEXTURE_2D, 0);
+    StateCache::current().bindTexture(GL_TEXTURE_2D, 0);
     checkGl("LightTable::update");
 }
 

@@ -1,6 +1,7 @@
 #include "lidr/render/renderer.h"
 
 #include "lidr/base/error.h"
+#include "lidr/render/frame_resources.h"
 
 namespace lidr {
 
@@ -21,6 +22,14 @@ double FrameStats::frameMilliseconds() const {
     for (const PassTime& p : passes) sum += p.milliseconds;
     return sum;
 }
+
+const RenderTargets& Renderer::targets() const { return frame().targets; }
+
+const ShadowAtlas* Renderer::shadowAtlas() const { return frame().shadows.atlas(); }
+
+void Renderer::setTiming(bool on, bool waitForResults) { mutableFrame().setTiming(on, waitForResults); }
+
+std::vector<GpuScene*> Renderer::gpuScenes() { return {&mutableFrame().scene}; }
 
 void Renderer::setObjectTransform(ObjectId id, const glm::mat4& objectToWorld) {
     // Every scene holds the same objects: the first one's checks stand for all, so a refusal changes nothing.

@@ -17,6 +17,7 @@
 
 namespace lidr {
 
+class FrameResources;
 class ShadowAtlas;
 
 // The frame's image-based environment light (issue 39): every mode adds it once per pixel with the ambient
@@ -123,16 +124,20 @@ public:
     // Renders one frame (light i has index i + 1); the result stays in targets() until the next call.
     virtual const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                                      const ShadingParameters& shading) = 0;
-    virtual const RenderTargets& targets() const = 0;
+    // What the frames are drawn with (lidr/render/frame_resources.h): the scene on the GPU, the targets, the light
+    // table, the shadow maps, the environment light's maps and the timer; every mode holds one (the automatic mode
+    // answers with the candidate that drew its last frame).
+    virtual const FrameResources& frame() const = 0;
+    const RenderTargets& targets() const;  // the last frame's image until the next render()
     // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
     virtual size_t lightDataBytes() const { return 0; }
     // The shadow maps the last frame used (null: no frame with shadows yet): debug views read it.
-    virtual const ShadowAtlas* shadowAtlas() const { return nullptr; }
+    const ShadowAtlas* shadowAtlas() const;
     const FrameStats& lastFrame() const { return stats_; }
     // Per-pass timing, off by default (a mode's options may turn it on too). On: GPU timer queries read a
     // frame or more later without stalling (FrameStats::timingLag), or, with waitForResults, this frame's
     // (stalls; lidr-demo and lidr-bench); on software rasterisers glFinish around each pass (gl/frame_timer.h).
-    virtual void setTiming(bool on, bool waitForResults = false) = 0;
+    virtual void setTiming(bool on, bool waitForResults = false);
 
     // Dynamic scenes (doc/embedding.md, "Moving, adding and removing objects"): without rebuilding the renderer.
     // Objects are the Scene's meshes by index (at identity: their positions are world space) and those
@@ -144,11 +149,14 @@ public:
     void removeObject(ObjectId id);
     // The GPU scenes this renderer draws, changed together by the three calls above (the automatic mode: every
     // candidate's). For inspection; change objects through the calls above.
-    virtual std::vector<GpuScene*> gpuScenes() = 0;
+    virtual std::vector<GpuScene*> gpuScenes();
     // Throws lidr::Error where this renderer cannot draw an object of that material (addObject asks first).
     virtual void checkObjectMaterial(const Material&) const {}
 
 protected:
+    // frame(), to change (setTiming, gpuScenes).
+    FrameResources& mutableFrame() { return const_cast<FrameResources&>(frame()); }
+
     FrameStats stats_;
 };
 

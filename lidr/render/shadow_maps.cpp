@@ -71,6 +71,11 @@ const gl::Program& ShadowMaps::program(const std::string& name, const std::strin
     return programs_.emplace(key, std::move(p)).first->second;
 }
 
+const gl::Program& ShadowMaps::shadingProgram(const gl::Program& plain, const std::string& fragmentFile,
+                                             const ShaderDefines& defines, const ShadowSettings& settings) {
+    return active() ? program(plain.name(), "geometry.vert", fragmentFile, defines, settings) : plain;
+}
+
 void ShadowMaps::bind(const gl::Program& program, const ShadowSettings& settings) const {
     if (!atlas_ || !program.declares("uShadowAtlas")) return;
     atlas_->texture().bind(unit());

@@ -44,6 +44,10 @@ public:
     // defines(settings) (with geometryAttributes()), made on first use and kept per name and shadow defines.
     const gl::Program& program(const std::string& name, const std::string& vertexFile, const std::string& fragmentFile,
                                const ShaderDefines& defines, const ShadowSettings& settings);
+    // The program a shading pass draws with this frame: `plain` (built from geometry.vert and `fragmentFile` with
+    // `defines`) where no light casts, else its shadowed twin (program(), under plain's name).
+    const gl::Program& shadingProgram(const gl::Program& plain, const std::string& fragmentFile,
+                                      const ShaderDefines& defines, const ShadowSettings& settings);
     std::vector<int> tilesFor(const std::vector<uint32_t>& sourceIndex) const;
 
 private:

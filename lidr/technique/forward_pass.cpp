@@ -103,12 +103,9 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
 }
 
 void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
-    StateCache::current().apply(RenderState{});
-    for (int i = 0; lights && i < indices.count(); ++i) {
-        glActiveTexture(GL_TEXTURE0 + gl::kUnitIndexTarget0 + i);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
+    StateCache& cache = StateCache::current();
+    cache.apply(RenderState{});
+    cache.unbindTextures(gl::kUnitIndexTarget0, lights ? indices.count() : 0);
 }
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,

@@ -128,6 +128,21 @@ int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingCo
     return std::max<int>(255, lights);
 }
 
+// The frame's resources as LIDR sets them up: its depth precision, a light table sized for the index width.
+FrameSetup frameSetup(const Scene& scene, const LidrOptions& o, const PackingConfig& first, int width, int height) {
+    FrameSetup setup;
+    setup.width = width;
+    setup.height = height;
+    setup.msaaSamples = o.msaaSamples;
+    setup.depthBits = o.depthBits;
+    setup.prepassDepth = DepthEmulation{o.emulatedDepthBits};
+    setup.lightCapacity = lightTableCapacity(scene, o, first, width, height);
+    setup.forceFixedLightTable = o.forceFixedLightTable;
+    setup.timingMethod = o.timingMethod;
+    setup.timing = o.timing;
+    return setup;
+}
+
 // The probe's thresholds a volume pass asks about this frame (bit i: OverlapProbe::kThreshold[i]). Steady frames
 // ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may narrow); only an
 // overflowing frame asks how far over (measuredNeed), and a renderer's first frame asks everything at once.
@@ -141,18 +156,11 @@ unsigned thresholdsToAsk(const AutoConfiguration& a, int budget, bool& narrowing
 
 LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOptions& requested, int width, int height)
     : options_(withContextFallbacks(info, requested)),
-      info_(info),
       firstPacking_(checkedPacking(info, scene, options_)),
-      scene_(scene),
-      targets_(info, width, height, options_.msaaSamples, options_.depthBits),
-      shadows_(info),
-      environment_(info, !options_.forceFixedLightTable),
-      depthPrepass_(DepthEmulation{options_.emulatedDepthBits}),
-      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}),
-      timer_(info, options_.timingMethod) {
+      frame_(info, scene, frameSetup(scene, options_, firstPacking_, width, height)),
+      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}) {
     requestedAutoBudget_ = requested.packing.autoBudget();
     const PackingConfig& first = firstPacking_;
-    lightTable_ = LightTable(info, lightTableCapacity(scene, options_, first, width, height), options_.forceFixedLightTable);
     if (options_.packing.autoBudget()) {
         const int widest = options_.packing.autoIndexBits()
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
@@ -164,8 +172,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     } else {
         auto_ = autoTransparent_ = AutoConfiguration(16, options_.autoHoldFrames, options_.autoNarrowingInterval);
     }
-    timer_.setEnabled(options_.timing);
-    drawTransparent_ = options_.transparency && scene_.hasTransparent();
+    drawTransparent_ = options_.transparency && frame_.scene.hasTransparent();
     bool needsDepthTexture = isShaderVolumeTest(options_.volumeTest);
     if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest)) {
         // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
@@ -204,8 +211,8 @@ LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
         if (c.autoScheme()) c.scheme = PackingSchemeKind::BitShift;
         c.budget = budget;
         c.indexBits = indexBits;
-        v.scheme = createPackingScheme(c, info_);
-        v.forward = std::make_unique<ForwardPass>(*v.scheme, lightTable_, options_.perSampleIndices,
+        v.scheme = createPackingScheme(c, frame_.info);
+        v.forward = std::make_unique<ForwardPass>(*v.scheme, frame_.lightTable, options_.perSampleIndices,
                                                   options_.materialShader, DepthEmulation{options_.emulatedDepthBits});
     }
     return v;
@@ -215,11 +222,11 @@ IndexTargets& LidrRenderer::indexTargetsFor(std::map<int, IndexTargets>& cache, 
     auto it = cache.find(count);
     if (it == cache.end()) {
         const bool perSample = options_.perSampleIndices;
-        it = cache.emplace(count, IndexTargets(count, targets_.width(), targets_.height(),
-                                               perSample ? targets_.multisampleDepthStencil() : targets_.depthStencil(),
+        it = cache.emplace(count, IndexTargets(count, frame_.targets.width(), frame_.targets.height(),
+                                               perSample ? frame_.targets.multisampleDepthStencil() : frame_.targets.depthStencil(),
                                                perSample ? options_.msaaSamples : 0,
-                                               perSample ? targets_.multisampleSeparateStencil()
-                                                         : targets_.separateStencil())).first;
+                                               perSample ? frame_.targets.multisampleSeparateStencil()
+                                                         : frame_.targets.separateStencil())).first;
     }
     return it->second;
 }
@@ -250,21 +257,21 @@ const IndexTargets& LidrRenderer::transparentIndexTargets() const {
 const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                        const ShadingParameters& shading) {
     checkLights(lights);
-    const CameraMatrices cam = cameraMatrices(camera, targets_.width(), targets_.height());
+    const CameraMatrices cam = cameraMatrices(camera, frame_.targets.width(), frame_.targets.height());
     checkShadingParameters(shading);
-    const FrameScope frame(stats_, timer_, lights.size());
+    const FrameScope scope(stats_, frame_.timer, lights.size());
     volumeQuadPixels_ = volumeStepLights_ = 0;  // this frame's, summed over its volume passes
 
     // 0. Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
     const std::vector<int>& shadowTiles =
-        drawShadowMaps(shadows_, timer_, stats_, scene_, lights, shading, lightTable_.format());
+        frame_.drawShadowMaps(lights, shading, stats_);
     const bool volumeShadows = useVolumeShadows(shadowTiles, shading);
     // 1. The depth pre-pass, and the tile decision: whether the light volumes are culled by its depth per tile.
     depthPrepass(cam);
     const TileDecision::Choice tiles = cullByTiles(cam, lights);
     // 2. The frame plan: which lights get an index, their numbers, regions and index width; the light table and
     //    the packing follow it.
-    TimedPass lightTableTime(timer_, "light-table");
+    TimedPass lightTableTime(frame_.timer, "light-table");
     plan_ = plan(cam, lights, tiles.tiles, volumeShadows ? &shadowTiles : nullptr);
     loadPlan(lights, shadowTiles);
     selectPacking();
@@ -281,11 +288,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     }
     // 6. The record: what the tiles saved (the next tile decision's measure) and the frame's statistics.
     recordFrame(tiles);
-    targets_.resolve(timer_);
-    stats_.passes = timer_.collect();
-    stats_.timingLag = timer_.lag();
-    StateCache::current().bindFramebuffer(0);
-    checkGl("LidrRenderer::render");
+    frame_.targets.resolve(frame_.timer);  // the forward passes left the default state (ForwardPass::unbindInputs)
+    frame_.finishFrame(stats_, "LidrRenderer::render");
     return stats_;
 }
 
@@ -300,35 +304,35 @@ void LidrRenderer::checkLights(const std::vector<PointLight>& lights) const {
 bool LidrRenderer::useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading) {
     const bool on = !shadowTiles.empty() && shading.shadows.lidrLookup == ShadowLookup::VolumePass &&
                     options_.volumeTest == VolumeTest::Sphere;
-    volumePass_.setShadows(on ? &shadows_ : nullptr, shading.shadows);
+    volumePass_.setShadows(on ? &frame_.shadows : nullptr, shading.shadows);
     return on;
 }
 
 void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
-        targets_.bindColor();
+        frame_.targets.bindColor();
     else
-        targets_.bindSingleSample();
+        frame_.targets.bindSingleSample();
     if (!options_.depthPrepass) {
         ClearAction clear;
         clear.depth = true;
         StateCache::current().clear(clear);
         return;
     }
-    TimedPass depthPrepassTime(timer_, "depth-prepass");
-    depthPrepass_.run(scene_, cam);
+    TimedPass depthPrepassTime(frame_.timer, "depth-prepass");
+    frame_.depthPrepass.run(frame_.scene, cam);
     if (!depthTexture_) return;
     // The shader volume tests read the pre-pass depth from a texture that is not attached to the framebuffer
     // they draw into (reading an attached one is a feedback loop).
     if (depthTextureFbo_) {
         depthTextureFbo_.bind();
-        depthPrepass_.run(scene_, cam);
-        targets_.bindSingleSample();
+        frame_.depthPrepass.run(frame_.scene, cam);
+        frame_.targets.bindSingleSample();
         checkGl("pre-pass depth texture for the volume tests (OpenGL ES)");
     } else {
         depthTexture_.bind(gl::kUnitDepthCopy);
-        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, targets_.width(), targets_.height());
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, frame_.targets.width(), frame_.targets.height());
         checkGl("depth copy for the volume tests");
     }
 }
@@ -338,8 +342,8 @@ TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const 
     const TileDecision::Choice choice =
         volumeTiles_ ? tileDecision_.decide(lightRectArea(cam, lights), screenPixels()) : TileDecision::Choice{};
     if (choice.tiles) {
-        TimedPass volumeTilesTime(timer_, "volume-tiles");
-        volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, targets_.depthBits() == 24);  // the single-sample pre-pass depth
+        TimedPass volumeTilesTime(frame_.timer, "volume-tiles");
+        volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, frame_.targets.depthBits() == 24);  // the single-sample pre-pass depth
         volumePass_.setTiles(volumeTiles_.get(), cam);
     } else {
         volumePass_.setTiles(nullptr, cam);
@@ -357,15 +361,15 @@ FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointL
     s.fixedIndexBits = options_.packing.indexBits;
     // Regions need an opaque, single-sampled frame (one list per pixel, read at its own tile) and exact small
     // integers in the light table (its tile map).
-    s.regionalIndices = options_.regionalIndices && !drawTransparent_ && targets_.samples() == 0 &&
-                        !options_.perSampleIndices && lightTable_.format() == LightTableFormat::Float;
+    s.regionalIndices = options_.regionalIndices && !drawTransparent_ && frame_.targets.samples() == 0 &&
+                        !options_.perSampleIndices && frame_.lightTable.format() == LightTableFormat::Float;
     s.maxRegions = kMaxIndexRegions;
     if (volumeTiles_) {
         s.tilesX = volumeTiles_->tilesX();
         s.tilesY = volumeTiles_->tilesY();
         s.tileSize = volumeTiles_->tileSize();
     }
-    s.tableCapacity = lightTable_.capacity();
+    s.tableCapacity = frame_.lightTable.capacity();
     s.shadowTiles = volumeShadowTiles;
     FramePlanQueries q;
     q.touchesScene = [this](const glm::vec4& sphere) { return touchesScene(sphere); };
@@ -382,15 +386,15 @@ void LidrRenderer::loadPlan(const std::vector<PointLight>& lights, const std::ve
     if (plan_.regions.on()) {
         // The tile -> row map sits in the light table's rows after the regions' (the forward pass reads it).
         std::vector<float> map(plan_.regions.regionOfTiles.begin(), plan_.regions.regionOfTiles.end());
-        lightTable_.setRegionMap(std::move(map), plan_.regions.count, plan_.regions.tileSize, plan_.regions.tilesX);
+        frame_.lightTable.setRegionMap(std::move(map), plan_.regions.count, plan_.regions.tileSize, plan_.regions.tilesX);
     } else {
-        lightTable_.setRegionMap({}, 0, 1, 1);
+        frame_.lightTable.setRegionMap({}, 0, 1, 1);
     }
     // The table's lights are a selection (automatic width, regions): their tiles follow them (tilesFor).
     if (plan_.compactNumbering)
-        lightTable_.update(plan_.tableLights, shadows_.tilesFor(plan_.frameLights));
+        frame_.lightTable.update(plan_.tableLights, frame_.shadows.tilesFor(plan_.frameLights));
     else
-        lightTable_.update(lights, shadowTiles);
+        frame_.lightTable.update(lights, shadowTiles);
 }
 
 void LidrRenderer::selectPacking() {
@@ -454,27 +458,26 @@ void LidrRenderer::recordFrame(const TileDecision::Choice& tiles) {
 }
 
 void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {
-    const bool multisampled = targets_.samples() > 0;
+    const bool multisampled = frame_.targets.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
-        TimedPass msaaDepthPrepassTime(timer_, "msaa-depth-prepass");
-        targets_.bindColor();
-        depthPrepass_.run(scene_, cam);
+        TimedPass msaaDepthPrepassTime(frame_.timer, "msaa-depth-prepass");
+        frame_.targets.bindColor();
+        frame_.depthPrepass.run(frame_.scene, cam);
     }
 
-    TimedPass forwardTime(timer_, "forward");
-    const ShadowMaps* shadows = lights && shadows_.active() ? &shadows_ : nullptr;
-    environment_.prepare(shading.environment, lights ? indexTargets_->count() : 0);
-    stats_.environment = environment_.describe();
-    current_->forward->run(targets_, *indexTargets_, scene_, lightTable_, cam, shading, environment_,
+    TimedPass forwardTime(frame_.timer, "forward");
+    const ShadowMaps* shadows = lights && frame_.shadows.active() ? &frame_.shadows : nullptr;
+    frame_.prepareEnvironment(shading, stats_, lights ? indexTargets_->count() : 0);
+    current_->forward->run(frame_.targets, *indexTargets_, frame_.scene, frame_.lightTable, cam, shading, frame_.environment,
                            options_.depthPrepass, lights, shadows);
     forwardTime.end();
 
     if (drawTransparent_) {
-        TimedPass forwardTransparentTime(timer_, "forward-transparent");
+        TimedPass forwardTransparentTime(frame_.timer, "forward-transparent");
         const IndexTargets& transparentTargets = transparentIndexTargets();
-        environment_.prepare(shading.environment, lights ? transparentTargets.count() : 0);
-        currentTransparent_->forward->runTransparent(targets_, transparentTargets, scene_, lightTable_, cam, shading,
-                                                     environment_, lights, shadows);
+        frame_.environment.prepare(shading.environment, lights ? transparentTargets.count() : 0);
+        currentTransparent_->forward->runTransparent(frame_.targets, transparentTargets, frame_.scene, frame_.lightTable, cam, shading,
+                                                     frame_.environment, lights, shadows);
     }
 }
 
@@ -499,7 +502,7 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
     // stencil: the transparent pass's thresholds are read at once, the main pass's after the forward passes
     // (measuredNeed()).
     const int needTransparent = transparentIndexTargets_ ? drawTransparentVolumes(cam, volumes) : -1;
-    TimedPass lightVolumesTime(timer_, "light-volumes");
+    TimedPass lightVolumesTime(frame_.timer, "light-volumes");
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumeQuadPixels_ += volumePass_.tileQuadPixels();
@@ -507,7 +510,7 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
     volumePass_.end();
     lightVolumesTime.end();
     if (options_.packing.autoBudget()) {
-        TimedPass probeTime(timer_, "overlap-probe");  // apart: full-screen draws, not volume fragments
+        TimedPass probeTime(frame_.timer, "overlap-probe");  // apart: full-screen draws, not volume fragments
         probe_.issue(thresholdsToAsk(auto_, current_->scheme->config().budget, narrowingAsked_), probeAreas());
     }
     return needTransparent;
@@ -523,7 +526,7 @@ int LidrRenderer::drawTransparentVolumes(const CameraMatrices& cam, const std::v
             if (reachesTransparentMesh(v.posRadius)) reaching.push_back(v);
     stats_.transparentVolumeLights = static_cast<int>(reaching.size());
     stats_.transparentVolumePassSkipped = reaching.empty();
-    TimedPass lightVolumesTransparentTime(timer_, "light-volumes-transparent");
+    TimedPass lightVolumesTransparentTime(frame_.timer, "light-volumes-transparent");
     transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
     if (reaching.empty()) {
         transparentVolumePass_.end();
@@ -540,7 +543,7 @@ int LidrRenderer::drawTransparentVolumes(const CameraMatrices& cam, const std::v
 int LidrRenderer::measureTransparentNeed(const CameraMatrices& cam, const glm::ivec4& box) {
     // Over the transparent meshes' pixels only: there alone are these lists read.
     auto probe = [&](unsigned which) {
-        probe_.issueOverMeshes(scene_, DrawFilter::Transparent, cam, which, &box);
+        probe_.issueOverMeshes(frame_.scene, DrawFilter::Transparent, cam, which, &box);
         return probe_.pixelsAbove();
     };
     const int budget = currentTransparent_->scheme->config().budget;
@@ -561,10 +564,10 @@ OverlapProbe::Areas LidrRenderer::probeAreas() const {
 
 bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
     bool any = false;
-    for (size_t b = 0; b < scene_.batchCount(); ++b) {
-        if (!scene_.batchTransparent(b)) continue;
+    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
+        if (!frame_.scene.batchTransparent(b)) continue;
         glm::vec3 lo, hi;
-        scene_.batchBounds(b, lo, hi);
+        frame_.scene.batchBounds(b, lo, hi);
         glm::ivec4 r;
         if (!boxPixelRect(cam, lo, hi, r)) continue;
         area = any ? glm::ivec4(glm::min(glm::ivec2(area), glm::ivec2(r)), glm::max(glm::ivec2(area.z, area.w), glm::ivec2(r.z, r.w)))
@@ -575,19 +578,19 @@ bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& 
 }
 
 bool LidrRenderer::touchesScene(const glm::vec4& posRadius) const {
-    for (size_t b = 0; b < scene_.batchCount(); ++b) {
+    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
         glm::vec3 lo, hi;
-        scene_.batchBounds(b, lo, hi);
+        frame_.scene.batchBounds(b, lo, hi);
         if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
     }
     return false;
 }
 
 bool LidrRenderer::reachesTransparentMesh(const glm::vec4& posRadius) const {
-    for (size_t b = 0; b < scene_.batchCount(); ++b) {
-        if (!scene_.batchTransparent(b)) continue;
+    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
+        if (!frame_.scene.batchTransparent(b)) continue;
         glm::vec3 lo, hi;
-        scene_.batchBounds(b, lo, hi);
+        frame_.scene.batchBounds(b, lo, hi);
         if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
     }
     return false;
@@ -601,7 +604,7 @@ std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
     }
     indexTargets_->framebuffer().bind();
     for (int i = 0; i < indexTargets_->count(); ++i) {
-        if (info_.gles) {
+        if (frame_.info.gles) {
             // OpenGL ES 2.0 reads COLOR_ATTACHMENT0 only (no glReadBuffer): each target in turn is attached
             // there to a framebuffer of its own.
             gl::Framebuffer single = gl::Framebuffer::create();
@@ -629,8 +632,8 @@ std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight
 std::vector<uint8_t> LidrRenderer::readLightCounts() const {
     const int bits = volumePass_.stencilCountBits();
     if (bits == 0) return {};
-    if (lightlessFrame_) return std::vector<uint8_t>(size_t(targets_.width()) * size_t(targets_.height()), 0);
-    std::vector<uint8_t> s = targets_.readStencil();
+    if (lightlessFrame_) return std::vector<uint8_t>(size_t(frame_.targets.width()) * size_t(frame_.targets.height()), 0);
+    std::vector<uint8_t> s = frame_.targets.readStencil();
     const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
     for (uint8_t& v : s) v &= mask;
     StateCache::current().bindFramebuffer(0);

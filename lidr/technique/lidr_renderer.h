@@ -2,8 +2,9 @@
 // Light Indexed Deferred Rendering, end to end: depth pre-pass, light volumes into RGBA8 index targets
 // (packed by a PackingScheme), forward pass that unpacks and shades. Each pass is its own class and file, and
 // so is each CPU decision of a frame (the tile decision, tile_decision.h; the frame plan, frame_plan.h); this
-// class owns the frame: it runs the stages in order (render(), doc/architecture.md "One frame of LIDR"), and
-// owns the targets, the packing variants, timing and read-back.
+// class runs the frame: the stages in order (render(), doc/architecture.md "One frame of LIDR"), with the
+// FrameResources every mode holds (scene, targets, light table, pre-pass, shadows, environment, timer) and its own
+// index targets, packing variants and read-back.
 #include <array>
 #include <map>
 #include <memory>
@@ -11,20 +12,13 @@
 #include <utility>
 #include <vector>
 
-#include "lidr/render/depth_prepass.h"
 #include "lidr/technique/auto_configuration.h"
 #include "lidr/technique/overlap_probe.h"
 #include "lidr/technique/forward_pass.h"
 #include "lidr/technique/frame_plan.h"
-#include "lidr/gl/frame_timer.h"
-#include "lidr/render/gpu_scene.h"
-#include "lidr/render/light_table.h"
 #include "lidr/technique/light_volume_pass.h"
 #include "lidr/technique/packing_scheme.h"
-#include "lidr/gl/render_targets.h"
-#include "lidr/render/renderer.h"
-#include "lidr/render/environment_maps.h"
-#include "lidr/render/shadow_maps.h"
+#include "lidr/render/frame_resources.h"
 #include "lidr/technique/tile_decision.h"
 #include "lidr/technique/volume_tiles.h"
 
@@ -116,11 +110,7 @@ public:
     // of a surface meets more lights than the surface does); scheme() where they read the main lists.
     const PackingScheme& transparentScheme() const { return *currentTransparent_->scheme; }
     const LidrOptions& options() const { return options_; }
-    const RenderTargets& targets() const override { return targets_; }
-    void setTiming(bool on, bool waitForResults = false) override {
-        timer_.setEnabled(on);
-        timer_.setWaitForResults(waitForResults);
-    }
+    const FrameResources& frame() const override { return frame_; }
     const IndexTargets& indexTargets() const { return *indexTargets_; }
     // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
     // index (1-based) of index k. Empty: indices are the scene's own.
@@ -136,9 +126,6 @@ public:
     // Per light of the last frame (light i has index i + 1): the relative vertex distance of the volume it
     // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
     std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
-    const LightTable& lightTable() const { return lightTable_; }
-    const ShadowMaps& shadowMaps() const { return shadows_; }
-    const ShadowAtlas* shadowAtlas() const override { return shadows_.atlas(); }
     std::vector<ImageRGBA8> readIndexTargets() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
@@ -148,7 +135,6 @@ public:
     // Lights in the order the volume pass draws them: priority high to low, then index low to high (lidr::drawOrder).
     static std::vector<uint32_t> drawOrder(const std::vector<PointLight>& lights) { return lidr::drawOrder(lights); }
 
-    std::vector<GpuScene*> gpuScenes() override { return {&scene_}; }
     void checkObjectMaterial(const Material& material) const override;
 
 private:
@@ -184,7 +170,7 @@ private:
     // 6. The frame's record: what the tiles saved (for the next tile decision) and the frame's statistics.
     void recordFrame(const TileDecision::Choice& tiles);
 
-    double screenPixels() const { return double(targets_.width()) * targets_.height(); }
+    double screenPixels() const { return double(frame_.targets.width()) * frame_.targets.height(); }
     // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
     // seen; false when none can.
     bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
@@ -206,8 +192,13 @@ private:
 
     LidrOptions options_;  // as asked, with the context's fallbacks (withContextFallbacks)
     bool requestedAutoBudget_ = false;
-    GlInfo info_;
     PackingConfig firstPacking_;  // checked options, resolved for the first frame: before any GL object exists
+    // The scene on the GPU, the targets (LidrOptions::depthBits), the light table (sized for the index width: it never
+    // grows), the pre-pass (LidrOptions::emulatedDepthBits), the shadow maps, the environment maps and the timer.
+    // Shadows (ShadingParameters::shadows): the maps, drawn first each frame. ShadowLookup::VolumePass: the main
+    // sphere test discards what they shadow (its lights carry their tiles); every forward pass looks the listed
+    // lights up by index.
+    FrameResources frame_;
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;
     Variant* currentTransparent_ = nullptr;
@@ -222,24 +213,14 @@ private:
     long volumeQuadPixels_ = 0;  // this frame's tile quads, every draw of the main volume pass
     long volumeStepLights_ = 0;  // lights asked for by those draws, once per draw
     TileDecision tileDecision_;
-    GpuScene scene_;
-    RenderTargets targets_;
     std::map<int, IndexTargets> indexTargetCache_, transparentTargetCache_;  // by target count
     IndexTargets* indexTargets_ = nullptr;
     IndexTargets* transparentIndexTargets_ = nullptr;  // when transparent layers need their own front-face lists
     gl::Texture depthTexture_;              // copy of the pre-pass depth, for the shader volume tests
     gl::Framebuffer depthTextureFbo_;       // OpenGL ES: the pre-pass drawn again into depthTexture_
     std::unique_ptr<VolumeTiles> volumeTiles_;  // LidrOptions::tileCulledVolumes: the frame's depth per tile
-    LightTable lightTable_;
-    // Shadows (ShadingParameters::shadows): the maps, drawn first each frame. ShadowLookup::VolumePass: the main
-    // sphere test discards what they shadow (its lights carry their tiles); every forward pass looks the listed
-    // lights up by index.
-    ShadowMaps shadows_;
-    EnvironmentMaps environment_;
-    DepthPrepass depthPrepass_;
     LightVolumePass volumePass_;
     LightVolumePass transparentVolumePass_;
-    FrameTimer timer_;
     bool drawTransparent_ = false;
 };
 
