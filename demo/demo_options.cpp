@@ -18,6 +18,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/bart_scene.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/render/shadow_atlas.h"
@@ -38,10 +39,16 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 }
 }  // namespace
 
+std::string defaultBartFolder() { return std::string(LIDR_SOURCE_DIR) + "/../shared/bart-robots"; }
+
 void SceneChoice::addOptions(CLI::App& app) {
-    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, or a "
-                   "built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), spots-N / spots-N-points, "
-                   "many-N-top / many-N-fp (the room's geometry with N lights); default: the built-in room");
+    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, "
+                   "a BART scene (.aff), or a built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), "
+                   "spots-N / spots-N-points, many-N-top / many-N-fp (the room's geometry with N lights), "
+                   "bart-robots-many / bart-robots-few (BART's Robots with the Tiled Shading paper's 924 static or one "
+                   "light per robot, doc/bart.md); default: the built-in room");
+    app.add_option("--bart", bart, "Where bart-robots-many / -few are read from: a folder with aff/Robot.aff, or an AFF file")
+        ->capture_default_str();
     app.add_flag("--smooth-normals", smoothNormals,
                  "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
                  "model may say otherwise with \"smooth_normals\")");
@@ -162,6 +169,9 @@ Scene SceneChoice::load() const {
         o.seed = seed;
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
+    } else if (std::string bartLights; makeBartSceneByName(sceneFile, scene, seed, bart, &bartLights)) {
+        std::cout << "lights     " << bartLights << "\n";
+        if (time) poseScene(scene, float(*time));
     } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed) ||
                makeManyLightSceneByName(sceneFile, scene, seed)) {
         if (time) scene.time = float(*time);
