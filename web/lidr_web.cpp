@@ -276,6 +276,7 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
         return;
     }
     ReferenceRenderer& ref = reference();
+    placeAnimatedObjects(ref, page->scene, page->time);  // the frame's meshes where the animation has them
     ref.render(camera, lights, shading);
     if (view == "reference") {
         page->presenter->present(ref.targets(), 0);

@@ -21,7 +21,7 @@ Scene loadAff(const std::string& path, const AffImportOptions& options = {});
 
 // Limits a file is checked against while it is read, so a small file cannot ask for unbounded work.
 constexpr int maxAffIncludeDepth = 32;
-constexpr size_t maxAffIncludes = 100000;   // files included in all (BART's Robots: 251)
+constexpr size_t maxAffIncludes = 100000;   // files included in all (BART's Robots: 835)
 constexpr size_t maxAffNodes = 1000000;     // transforms (xs, x) in all
 constexpr size_t maxAffKeys = 1000000;      // keyframes in one track
 
