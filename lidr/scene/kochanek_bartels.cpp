@@ -22,6 +22,22 @@ void checkKeys(const std::vector<Key>& keys, const char* what) {
             throw Error(std::string("Kochanek-Bartels ") + what + " key " + std::to_string(i) + ": time is not finite");
 }
 
+// The Hermite tangents' weights of the segment from k1 to k2 (kochanek_bartels.h): Tout = out0 (P1 - P0) + out1
+// (P2 - P1), Tin = in0 (P2 - P1) + in1 (P3 - P2), in the relative rotations' logarithms for rotations.
+struct TangentWeights {
+    float out0, out1, in0, in1;
+};
+
+template <typename Key>
+TangentWeights tangentWeights(const Key& k0, const Key& k1, const Key& k2, const Key& k3) {
+    const float a = spacing(k2.time - k1.time, k2.time - k0.time);
+    const float b = spacing(k2.time - k1.time, k3.time - k1.time);
+    return {0.5f * a * (1.0f - k1.tension) * (1.0f + k1.continuity) * (1.0f + k1.bias),
+            0.5f * a * (1.0f - k1.tension) * (1.0f - k1.continuity) * (1.0f - k1.bias),
+            0.5f * b * (1.0f - k2.tension) * (1.0f - k2.continuity) * (1.0f + k2.bias),
+            0.5f * b * (1.0f - k2.tension) * (1.0f + k2.continuity) * (1.0f - k2.bias)};
+}
+
 // BART's choice of segment at t (kbsplpos's ComputeIAndU): before segment 0's start, segment 0 at u = 0; from the
 // last segment's end on, the last at u = 1; else the first segment in key order whose end is after t. With keys
 // in time order that is the segment around t; with keys out of order a segment may be cut short or never used.
@@ -76,14 +92,9 @@ Vec3Track kochanekBartelsTrack(const std::vector<KochanekBartelsKey>& keys) {
     for (size_t i = 1; i + 2 < keys.size(); ++i) {
         const KochanekBartelsKey &k0 = keys[i - 1], &k1 = keys[i], &k2 = keys[i + 1], &k3 = keys[i + 2];
         const glm::vec3 d = k2.value - k1.value;
-        const float a = spacing(k2.time - k1.time, k2.time - k0.time);
-        const float out0 = 0.5f * a * (1.0f - k1.tension) * (1.0f + k1.continuity) * (1.0f + k1.bias);
-        const float out1 = 0.5f * a * (1.0f - k1.tension) * (1.0f - k1.continuity) * (1.0f - k1.bias);
-        const glm::vec3 tangentOut = out0 * (k1.value - k0.value) + out1 * d;
-        const float b = spacing(k2.time - k1.time, k3.time - k1.time);
-        const float in0 = 0.5f * b * (1.0f - k2.tension) * (1.0f - k2.continuity) * (1.0f + k2.bias);
-        const float in1 = 0.5f * b * (1.0f - k2.tension) * (1.0f + k2.continuity) * (1.0f - k2.bias);
-        const glm::vec3 tangentIn = in0 * d + in1 * (k3.value - k2.value);
+        const TangentWeights w = tangentWeights(k0, k1, k2, k3);
+        const glm::vec3 tangentOut = w.out0 * (k1.value - k0.value) + w.out1 * d;
+        const glm::vec3 tangentIn = w.in0 * d + w.in1 * (k3.value - k2.value);
         cubic.insert(cubic.end(), {k1.value, tangentOut, 3.0f * d - 2.0f * tangentOut - tangentIn, -2.0f * d + tangentOut + tangentIn});
     }
     Vec3Track track;
@@ -119,16 +130,10 @@ RotationTrack kochanekBartelsRotationTrack(const std::vector<KochanekBartelsRota
     }
     std::vector<glm::quat> squad;  // p, a, b, q per segment
     for (size_t i = 1; i + 2 < keys.size(); ++i) {
-        const KochanekBartelsRotationKey &k0 = keys[i - 1], &k1 = keys[i], &k2 = keys[i + 1], &k3 = keys[i + 2];
         const glm::quat logD = quatLog(glm::inverse(q[i]) * q[i + 1]);
-        const float a = spacing(k2.time - k1.time, k2.time - k0.time);
-        const float out0 = 0.5f * a * (1.0f - k1.tension) * (1.0f + k1.continuity) * (1.0f + k1.bias);
-        const float out1 = 0.5f * a * (1.0f - k1.tension) * (1.0f - k1.continuity) * (1.0f - k1.bias);
-        const glm::quat tangentOut = logD * out1 + quatLog(glm::inverse(q[i - 1]) * q[i]) * out0;
-        const float b = spacing(k2.time - k1.time, k3.time - k1.time);
-        const float in0 = 0.5f * b * (1.0f - k2.tension) * (1.0f - k2.continuity) * (1.0f + k2.bias);
-        const float in1 = 0.5f * b * (1.0f - k2.tension) * (1.0f + k2.continuity) * (1.0f - k2.bias);
-        const glm::quat tangentIn = logD * in0 + quatLog(glm::inverse(q[i + 1]) * q[i + 2]) * in1;
+        const TangentWeights w = tangentWeights(keys[i - 1], keys[i], keys[i + 1], keys[i + 2]);
+        const glm::quat tangentOut = logD * w.out1 + quatLog(glm::inverse(q[i - 1]) * q[i]) * w.out0;
+        const glm::quat tangentIn = logD * w.in0 + quatLog(glm::inverse(q[i + 1]) * q[i + 2]) * w.in1;
         squad.insert(squad.end(), {q[i], q[i] * quatExp((tangentOut - logD) * 0.5f),
                                    q[i + 1] * quatExp((logD - tangentIn) * 0.5f), q[i + 1]});
     }

@@ -17,20 +17,7 @@ bool isBrace(char c) { return c == '{' || c == '}'; }
 }  // namespace
 
 std::shared_ptr<const std::string> AffTokens::readFile(const std::string& path) {
-    const std::string problem = fileProblem(path);
-    if (!problem.empty()) throw Error(path + ": AFF file " + problem);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open the AFF file");
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < 0 || size > std::streamoff(maxAffFileBytes))
-        throw Error(path + ": AFF file of " + std::to_string(size) + " bytes; lidr reads AFF files up to " +
-                    std::to_string(maxAffFileBytes >> 20) + " MiB");
-    in.seekg(0);
-    auto text = std::make_shared<std::string>(static_cast<size_t>(size), '\0');
-    in.read(text->data(), size);
-    if (!in) throw Error(path + ": cannot read the AFF file");
-    return text;
+    return std::make_shared<const std::string>(readWholeFile(path, maxAffFileBytes, "AFF file"));
 }
 
 AffTokens::AffTokens(std::string path, std::shared_ptr<const std::string> text)

@@ -16,7 +16,7 @@ std::string bartSceneFile(const std::string& bart) {
         if (!problem.empty()) throw Error("--bart: the AFF file '" + bart + "' " + problem);
         return bart;
     }
-    for (const fs::path candidate : {fs::path(bart) / "aff" / "Robot.aff", fs::path(bart) / "Robot.aff"})
+    for (const fs::path& candidate : {fs::path(bart) / "aff" / "Robot.aff", fs::path(bart) / "Robot.aff"})
         if (fileProblem(candidate.string()).empty()) return candidate.lexically_normal().string();
     throw Error("--bart: no BART Robots scene in '" + bart + "' (looked for aff/Robot.aff and Robot.aff; the scene is "
                 "../shared/bart-robots beside lidr's source tree, or give an .aff file)");

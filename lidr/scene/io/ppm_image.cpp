@@ -108,21 +108,6 @@ ImageRGBA8 decodePpm(const std::string& bytes, const std::string& name) {
     return image;
 }
 
-ImageRGBA8 readPpm(const std::string& path) {
-    const std::string problem = fileProblem(path);
-    if (!problem.empty()) throw Error(path + ": texture " + problem);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open the texture");
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < 0 || size > std::streamoff(maxPpmFileBytes))
-        throw Error(path + ": texture file of " + std::to_string(size) + " bytes; lidr reads PPM files up to " +
-                    std::to_string(maxPpmFileBytes >> 20) + " MiB");
-    in.seekg(0);
-    std::string bytes(static_cast<size_t>(size), '\0');
-    in.read(bytes.data(), size);
-    if (!in) throw Error(path + ": cannot read the texture");
-    return decodePpm(bytes, path);
-}
+ImageRGBA8 readPpm(const std::string& path) { return decodePpm(readWholeFile(path, maxPpmFileBytes, "texture"), path); }
 
 }  // namespace lidr
