@@ -54,6 +54,30 @@ void pieces(const std::vector<Key>& keys, const Add& add) {
     }
 }
 
+// The track from the segments' four values each, in pieces by BART's rule; where no segment has a length (every key
+// at one time), a STEP track holding `first`. `last`: the value from the last segment's end on.
+template <typename Track, typename Key, typename Value>
+Track assemble(const std::vector<Key>& keys, const std::vector<Value>& perSegment, const Value& first, const Value& last) {
+    Track track;
+    track.interpolation = Interpolation::KochanekBartels;
+    pieces(keys, [&](size_t segment, float from, float to) {
+        if (track.times.empty()) track.times.push_back(from);
+        track.times.push_back(to);
+        track.segments.insert(track.segments.end(), perSegment.begin() + long(4 * segment),
+                              perSegment.begin() + long(4 * segment + 4));
+        track.spans.start.push_back(keys[segment + 1].time);
+        track.spans.length.push_back(keys[segment + 2].time - keys[segment + 1].time);
+    });
+    if (track.times.empty()) {
+        track.interpolation = Interpolation::Step;
+        track.times = {keys[1].time};
+        track.values = {first};
+        return track;
+    }
+    track.values = {first, last};
+    return track;
+}
+
 }  // namespace
 
 glm::quat quatLog(const glm::quat& q) {
@@ -97,25 +121,9 @@ Vec3Track kochanekBartelsTrack(const std::vector<KochanekBartelsKey>& keys) {
         const glm::vec3 tangentIn = w.in0 * d + w.in1 * (k3.value - k2.value);
         cubic.insert(cubic.end(), {k1.value, tangentOut, 3.0f * d - 2.0f * tangentOut - tangentIn, -2.0f * d + tangentOut + tangentIn});
     }
-    Vec3Track track;
-    track.interpolation = Interpolation::KochanekBartels;
-    pieces(keys, [&](size_t segment, float from, float to) {
-        if (track.times.empty()) track.times.push_back(from);
-        track.times.push_back(to);
-        track.segments.insert(track.segments.end(), cubic.begin() + long(4 * segment), cubic.begin() + long(4 * segment + 4));
-        track.spans.start.push_back(keys[segment + 1].time);
-        track.spans.length.push_back(keys[segment + 2].time - keys[segment + 1].time);
-    });
     const size_t last = cubic.size() / 4 - 1;
     const glm::vec3 end = cubic[4 * last] + cubic[4 * last + 1] + cubic[4 * last + 2] + cubic[4 * last + 3];
-    if (track.times.empty()) {  // every key at one time: the value holds
-        track.interpolation = Interpolation::Step;
-        track.times = {keys[1].time};
-        track.values = {keys[1].value};
-        return track;
-    }
-    track.values = {keys[1].value, end};
-    return track;
+    return assemble<Vec3Track>(keys, cubic, keys[1].value, end);
 }
 
 RotationTrack kochanekBartelsRotationTrack(const std::vector<KochanekBartelsRotationKey>& keys) {
@@ -137,23 +145,7 @@ RotationTrack kochanekBartelsRotationTrack(const std::vector<KochanekBartelsRota
         squad.insert(squad.end(), {q[i], q[i] * quatExp((tangentOut - logD) * 0.5f),
                                    q[i + 1] * quatExp((logD - tangentIn) * 0.5f), q[i + 1]});
     }
-    RotationTrack track;
-    track.interpolation = Interpolation::KochanekBartels;
-    pieces(keys, [&](size_t segment, float from, float to) {
-        if (track.times.empty()) track.times.push_back(from);
-        track.times.push_back(to);
-        track.segments.insert(track.segments.end(), squad.begin() + long(4 * segment), squad.begin() + long(4 * segment + 4));
-        track.spans.start.push_back(keys[segment + 1].time);
-        track.spans.length.push_back(keys[segment + 2].time - keys[segment + 1].time);
-    });
-    if (track.times.empty()) {
-        track.interpolation = Interpolation::Step;
-        track.times = {keys[1].time};
-        track.values = {q[1]};
-        return track;
-    }
-    track.values = {q[1], squad.back()};
-    return track;
+    return assemble<RotationTrack>(keys, squad, q[1], squad.back());
 }
 
 }  // namespace lidr
