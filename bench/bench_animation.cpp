@@ -295,9 +295,11 @@ private:
     // Figure 2's frame times and Figure 3's lighting computations (the judged frames' shaded light-pixels), as
     // gnuplot scripts and, where gnuplot is installed, PNGs.
     Json plot(const std::string& name, const std::vector<ModeRun>& modes, const std::vector<FrameRecord>& records) {
-        const std::string base = (fs::path(o_.outDir) / ("animation-" + fileSafe(name))).string();
-        std::ofstream data(base + ".dat");
-        std::ofstream lists(base + "-lists.dat");
+        // File names relative to --out, where gnuplot runs: the folder can be moved (doc/results/bart-robots/).
+        const std::string base = "animation-" + fileSafe(name);
+        const fs::path dir(o_.outDir);
+        std::ofstream data((dir / (base + ".dat")).string());
+        std::ofstream lists((dir / (base + "-lists.dat")).string());
         data << "# frame time";
         lists << "# frame truth";
         for (const ModeRun& m : modes) data << " '" << m.label << "'", lists << " '" << m.label << "'";
@@ -318,6 +320,8 @@ private:
                 lists << " " << (of[m.label]->accuracy.hasLists ? std::to_string(double(of[m.label]->accuracy.shadedLightPixels) * 1e-6) : "NaN");
             lists << "\n";
         }
+        data.close();  // written out before gnuplot reads them
+        lists.close();
         std::ostringstream g;
         g << "set terminal pngcairo size 900,420 font 'sans,9' noenhanced\nset grid lc rgb '#dddddd'\nset key outside right top\n"
           << "set output '" << base << "-frame-times.png'\nset title 'Frame times over the animation: " << name << ", "
@@ -325,19 +329,28 @@ private:
           << "set xlabel 'frame'\nset ylabel 'frame time, ms'\nset yrange [0:*]\nplot ";
         for (size_t i = 0; i < modes.size(); ++i)
             g << (i ? ", " : "") << "'" << base << ".dat' using 1:" << i + 3 << " with lines lw 1.5 title '" << modes[i].label << "'";
-        g << "\nset output '" << base << "-lighting.png'\nset title 'Lighting computations on the judged frames: " << name
-          << " (light-pixel pairs each mode shades; truth: those that light a pixel)'\nset ylabel 'millions'\nplot '"
-          << base << "-lists.dat' using 1:2 with linespoints lw 2 dt 2 title 'truth'";
+        // The lighting computations of the modes whose lists were checked (a mode without lists has no column values).
+        std::vector<size_t> listed;
         for (size_t i = 0; i < modes.size(); ++i)
-            g << ", '" << base << "-lists.dat' using 1:" << i + 3 << " with linespoints title '" << modes[i].label << "'";
+            if (std::any_of(records.begin(), records.end(), [&](const FrameRecord& r) {
+                    return r.mode == modes[i].label && r.judged && r.accuracy.hasLists;
+                }))
+                listed.push_back(i);
+        if (!listed.empty()) {
+            g << "\nset output '" << base << "-lighting.png'\nset title 'Lighting computations on the judged frames: " << name
+              << " (light-pixel pairs each mode shades; truth: those that light a pixel)'\nset ylabel 'millions'\nplot '"
+              << base << "-lists.dat' using 1:2 with linespoints lw 2 dt 2 title 'truth'";
+            for (size_t i : listed)
+                g << ", '" << base << "-lists.dat' using 1:" << i + 3 << " with linespoints title '" << modes[i].label << "'";
+        }
         g << "\n";
-        std::ofstream(base + ".gp") << g.str();
+        std::ofstream((dir / (base + ".gp")).string()) << g.str();
         Json out = {{"script", base + ".gp"}};
         if (std::system("gnuplot --version >/dev/null 2>&1") != 0) {
             out["note"] = "gnuplot not installed: the script is written, no PNG";
-        } else if (std::system(("gnuplot '" + base + ".gp' 2>/dev/null").c_str()) == 0) {
+        } else if (std::system(("cd '" + o_.outDir + "' && gnuplot '" + base + ".gp' 2>/dev/null").c_str()) == 0) {
             out["frame_times"] = base + "-frame-times.png";
-            out["lighting"] = base + "-lighting.png";
+            if (!listed.empty()) out["lighting"] = base + "-lighting.png";
         }
         return out;
     }
@@ -388,9 +401,9 @@ void writeMarkdown(const std::string& file, const Json& run) {
         }
         for (const Json& s : scene["skipped_modes"]) md << "\nSkipped: " << s.get<std::string>() << "\n";
         if (scene.contains("plots") && scene["plots"].contains("frame_times"))
-            md << "\n![frame times](" << fs::path(scene["plots"]["frame_times"].get<std::string>()).filename().string()
-               << ")\n![lighting computations](" << fs::path(scene["plots"]["lighting"].get<std::string>()).filename().string()
-               << ")\n";
+            md << "\n![frame times](" << scene["plots"]["frame_times"].get<std::string>() << ")\n";
+        if (scene.contains("plots") && scene["plots"].contains("lighting"))
+            md << "![lighting computations](" << scene["plots"]["lighting"].get<std::string>() << ")\n";
         md << "\n";
     }
     md << "Frame times are each frame's passes as lidr-bench times them (timer queries, or glFinish around each pass on "
