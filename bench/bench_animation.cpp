@@ -85,6 +85,7 @@ struct FrameRecord {
     double frameMs = 0.0, wallMs = 0.0;
     int drawnLights = 0;
     long lightingComputations = -1;
+    std::string passes;  // "pass=ms;pass=ms", the frame's own (FrameStats::passes)
     bool judged = false;
     FrameAccuracy accuracy;
 };
@@ -201,6 +202,12 @@ private:
         r.frameMs = stats.frameMilliseconds();
         r.drawnLights = stats.drawnLights;
         r.lightingComputations = countedLightingComputations(stats);
+        for (const PassTime& p : stats.passes) r.passes += (r.passes.empty() ? "" : ";") + p.pass + "=" + fixed(p.milliseconds, 2);
+        const AutoDecision& d = stats.autoDecision;  // LIDR's automatic configuration of the frame (zeros elsewhere)
+        if (d.budget > 0)
+            r.passes += ";budget=" + std::to_string(d.budget) + ";index-bits=" + std::to_string(d.indexBits) +
+                        ";repacks=" + std::to_string(d.repacks) + ";volume-area-per-pixel=" + fixed(d.volumeAreaPerPixel, 1) +
+                        ";tiles-skipped=" + std::to_string(int(d.tilesSkippedForSaving));
         return r;
     }
 
@@ -235,7 +242,7 @@ private:
         } else {
             csv << ",,,,,";
         }
-        csv << "\n";
+        csv << "," << r.passes << "\n";
     }
 
     Json summarise(const std::string& name, const Scene& scene, const std::string& lights, const std::vector<ModeRun>& modes,
@@ -337,8 +344,8 @@ private:
                 }))
                 listed.push_back(i);
         if (!listed.empty()) {
-            g << "\nset output '" << base << "-lighting.png'\nset title 'Lighting computations on the judged frames: " << name
-              << " (light-pixel pairs each mode shades; truth: those that light a pixel)'\nset ylabel 'millions'\nplot '"
+            g << "\nset output '" << base << "-lighting.png'\nset title 'Lighting computations, judged frames: " << name
+              << "'\nset ylabel 'light-pixel pairs shaded, millions (truth: pairs that light a pixel)'\nplot '"
               << base << "-lists.dat' using 1:2 with linespoints lw 2 dt 2 title 'truth'";
             for (size_t i : listed)
                 g << ", '" << base << "-lists.dat' using 1:" << i + 3 << " with linespoints title '" << modes[i].label << "'";
@@ -436,7 +443,7 @@ int runAnimationBench(const AnimationBenchOptions& o) {
     run["scenes"] = Json::array();
     std::ofstream csv((fs::path(o.outDir) / "animation.csv").string());
     csv << "scene,frame,time,mode,frame_ms,wall_ms,drawn_lights,lighting_computations,psnr_db,max_error,"
-           "pixels_over_budget,dropped_light_pixels,shaded_light_pixels,true_light_pixels\n";
+           "pixels_over_budget,dropped_light_pixels,shaded_light_pixels,true_light_pixels,passes\n";
     AnimationBench bench(o, *context);
     for (const std::string& scene : o.scenes) {
         run["scenes"].push_back(bench.runScene(scene, csv));
