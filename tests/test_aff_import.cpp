@@ -297,6 +297,17 @@ TEST_CASE("AFF: what the suite has and lidr does not read is refused by name, wi
     }
 }
 
+TEST_CASE("AFF: without `a`, the animation spans its keyframes and has no frame count", "[aff][animation][cpu]") {
+    TempDir dir;
+    std::string keys = "k mover\n{\ntransl 5\n";
+    for (int i = 0; i < 5; ++i) keys += std::to_string(2 * i - 1) + " " + std::to_string(i) + " 0 0 0 0 0\n";
+    const lidr::Scene scene = lidr::loadScene(dir.write("no-range.aff", "x mover\n{\np 3\n0 0 0\n1 0 0\n0 1 0\n}\n" + keys + "}\n"));
+    CHECK(scene.animation.start == 1.0f);  // key 1 .. key n - 2: t = 1 .. 5
+    CHECK(scene.animation.end == 5.0f);
+    CHECK(scene.animation.frames == 0);
+    CHECK(scene.time == 0.0f);
+}
+
 TEST_CASE("AFF: transforms without keyframes and keyframes without a transform are warnings", "[aff][cpu]") {
     TempDir dir;
     std::string keys = "k orphan\n{\ntransl 4\n";

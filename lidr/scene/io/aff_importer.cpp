@@ -576,7 +576,8 @@ private:
         a.start = rangeGiven_ ? start_ : 0.0f;
         a.end = rangeGiven_ ? end_ : 0.0f;
         a.frames = rangeGiven_ ? frames_ : 0;
-        scene.time = a.start;
+        if (!rangeGiven_) keyRange(a);  // without `a`: the keyframes' own range, no frame count
+        scene.time = rangeGiven_ ? a.start : 0.0f;
         world_ = a.worldAt(a.start);
         a.posedWorld = world_;
         const std::vector<bool> moving = a.movingNodes();
@@ -618,6 +619,22 @@ private:
             scene.warnings.push_back(root_ + ": " + std::to_string(transmissive_) +
                                      " materials transmit light (fm T > 0): drawn transparent with opacity 1 - T; "
                                      "their refraction (index of refraction) is not drawn");
+    }
+
+    // From the earliest to the latest key of every track (0 .. 0 without any).
+    static void keyRange(SceneAnimation& a) {
+        bool any = false;
+        const auto cover = [&](const std::vector<float>& times) {
+            if (times.empty()) return;
+            a.start = any ? std::min(a.start, times.front()) : times.front();
+            a.end = any ? std::max(a.end, times.back()) : times.back();
+            any = true;
+        };
+        for (const AnimationNode& n : a.nodes) {
+            if (n.translationTrack) cover(n.translationTrack->times);
+            if (n.rotationTrack) cover(n.rotationTrack->times);
+            if (n.scaleTrack) cover(n.scaleTrack->times);
+        }
     }
 
     static void bake(Mesh& mesh, const glm::mat4& w) {
