@@ -13,6 +13,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/primitives.h"
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/scene/io/bart_scene.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/eval/controlled_scenes.h"
 
@@ -50,13 +51,20 @@ std::string joinNames(const std::vector<std::string>& names) {
 
 // ---- scenes ---------------------------------------------------------------------------------------------
 
+std::string& benchBartFolder() {
+    static std::string folder;
+    return folder;
+}
+
 std::string sceneNameHelp() {
     return "room (default room, 255 lights), overlap-K (every lit pixel covered by exactly K lights, K >= 1), "
            "many-N-top / many-N-fp (N lights, 4..65535, top-down / first-person), heavy-T (the room with about T "
            "triangles, e.g. heavy-250k, heavy-1m), hall-N / city-N (deep, occluded scenes: a pillared hall and a city "
            "block grid with N lights of 1-4 m, e.g. hall-255), spots-N / spots-N-points (many-N-top with the particles "
            "as spot lights aimed down, or the same lights as points), file:PATH or a path ending in .json, .gltf, .glb "
-           "or .obj; any of them with -shadows-K (its K brightest lights that can touch the view cast shadows, e.g. "
+           "or .obj, a BART scene (.aff: its own lights), bart-robots-many / bart-robots-few (BART's Robots with the "
+           "Tiled Shading paper's 924 static lights or one light on each robot, from --bart; doc/bart.md); any of them "
+           "with -shadows-K (its K brightest lights that can touch the view cast shadows, e.g. "
            "hall-255-shadows-32; doc/shadows.md), and then with +environment (lit by the built-in studio "
            "environment too, e.g. hall-255+environment; --environment none,default runs each scene both ways)";
 }
@@ -95,7 +103,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
     if (startsWith(name, "file:"))
         path = name.substr(5);
     else
-        for (const char* extension : {".json", ".gltf", ".glb", ".obj"})
+        for (const char* extension : {".json", ".gltf", ".glb", ".obj", ".aff", ".nff"})
             if (name.size() > std::strlen(extension) && name.compare(name.size() - std::strlen(extension), std::string::npos, extension) == 0)
                 path = name;
     if (camera >= 0 && path.empty())
@@ -120,6 +128,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
     }
     Scene many;
     if (makeManyLightSceneByName(name, many, seed)) return many;
+    if (makeBartSceneByName(name, many, seed, benchBartFolder())) return many;
     if (startsWith(name, "heavy-")) {
         std::string t = name.substr(6);
         long scale = 1;

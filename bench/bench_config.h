@@ -21,6 +21,8 @@ namespace lidr::bench {
 // triangles, T a number with an optional k or m suffix: heavy-250k, heavy-1m), or a scene file ("file:PATH",
 // or a path ending in .json).
 std::string sceneNameHelp();
+// Where bart-robots-many / bart-robots-few are read from (lidr-bench --bart; lidr/scene/io/bart_scene.h).
+std::string& benchBartFolder();
 // Throws lidr::Error naming the valid forms for an unknown name or a file that does not load.
 // `camera` >= 0 (lidr-bench --camera N): a glTF file's camera N (chooseView), before the -shadows-K casters are
 // chosen from the view; an error for a scene that is not a glTF file with that camera.

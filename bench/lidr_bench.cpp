@@ -21,6 +21,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_animation.h"
 #include "bench_config.h"
 #include "bench_report.h"
 #include "lidr/base/error.h"
@@ -457,6 +458,17 @@ int main(int argc, char** argv) {
         ->excludes(fullFlag);
     app.add_flag("--no-progress", noProgress, "No progress bar (it is also off when stderr is not a terminal)");
     app.add_flag("--no-plots", noPlots, "Do not run gnuplot");
+    int animationFrames = 0, referenceFrames = 8;
+    std::string bart = std::string(LIDR_SOURCE_DIR) + "/../shared/bart-robots";
+    app.add_option("--animation", animationFrames,
+                   "Time every mode over the scene's animation: N frames sampled evenly over its time range, each mode "
+                   "drawing each frame in turn (default resolution 1920x1080; doc/bart.md); writes animation.csv, "
+                   ".json, .md and plots");
+    app.add_option("--reference-frames", referenceFrames,
+                   "With --animation: frames judged against forward-brute (PSNR, dropped light-pixels), spread evenly")
+        ->capture_default_str();
+    app.add_option("--bart", bart, "Where bart-robots-many / -few are read from: a folder with aff/Robot.aff, or an AFF file")
+        ->capture_default_str();
     app.add_flag("--dry-run", dryRun, "Check everything, print the configurations that would run and the skipped ones, measure nothing");
     app.add_flag("--list", list, "Print the valid mode, scheme, volume-test and scene names and exit");
     app.add_option("--interrupt-after", settings.interruptAfter, "Testing aid: act as if interrupted after this many rows")
@@ -476,6 +488,27 @@ int main(int argc, char** argv) {
 
     std::string commandLine;
     for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + shellWord(argv[i]);
+    benchBartFolder() = bart;
+    if (app.count("--animation")) {
+        try {
+            AnimationBenchOptions animation;
+            animation.scenes = splitList(scenes);
+            animation.frames = animationFrames;
+            if (app.count("--resolution")) animation.resolution = parseResolution(splitList(resolutions).at(0));
+            animation.modes = splitList(modes);
+            animation.referenceFrames = referenceFrames;
+            animation.seed = seed;
+            animation.bart = bart;
+            animation.outDir = outDir;
+            animation.context = context;
+            animation.commandLine = commandLine;
+            animation.plots = !noPlots;
+            return runAnimationBench(animation);
+        } catch (const std::exception& e) {
+            std::cerr << "lidr-bench: error: " << e.what() << "\n";
+            return 1;
+        }
+    }
 
     try {
         // CLI::Range lets NaN through (every comparison with it is false): numbers are checked here.

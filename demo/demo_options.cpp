@@ -18,6 +18,7 @@
 #include "lidr/technique/packing_scheme.h"
 #include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/bart_scene.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/render/shadow_atlas.h"
@@ -38,16 +39,27 @@ int parseAutoOrNumber(const std::string& text, const char* option, std::initiali
 }
 }  // namespace
 
+std::string defaultBartFolder() { return std::string(LIDR_SOURCE_DIR) + "/../shared/bart-robots"; }
+
 void SceneChoice::addOptions(CLI::App& app) {
-    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, or a "
-                   "built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), spots-N / spots-N-points, "
-                   "many-N-top / many-N-fp (the room's geometry with N lights); default: the built-in room");
+    app.add_option("--scene", sceneFile, "Scene file: a lidr scene (.json, see doc/scene-format.md), a glTF (.gltf, .glb) or OBJ (.obj) model, "
+                   "a BART scene (.aff), or a built-in bench scene: hall-N / city-N (occluded, N lights, e.g. hall-255), "
+                   "spots-N / spots-N-points, many-N-top / many-N-fp (the room's geometry with N lights), "
+                   "bart-robots-many / bart-robots-few (BART's Robots with the Tiled Shading paper's 924 static or one "
+                   "light per robot, doc/bart.md); default: the built-in room");
+    app.add_option("--bart", bart, "Where bart-robots-many / -few are read from: a folder with aff/Robot.aff, or an AFF file")
+        ->capture_default_str();
     app.add_flag("--smooth-normals", smoothNormals,
                  "OBJ models: smooth normals for faces without vn, whatever their smoothing group (a scene file's "
                  "model may say otherwise with \"smooth_normals\")");
     app.add_option("--width", width, "Override the scene's width in pixels");
     app.add_option("--height", height, "Override the scene's height in pixels");
-    app.add_option("--time", time, "Animation time in seconds, a finite number >= 0 (default: the scene's)");
+    app.add_option("--time", time,
+                   "Animation time in seconds, a finite number >= 0 (default: the scene's): lights on paths, keyframed "
+                   "meshes, lights and camera (glTF animations, AFF keyframes) are shown there");
+    app.add_option("--frame", frame,
+                   "Show frame N (from 0) of the scene's animation: the time start + N (end - start) / (frames - 1) of its "
+                   "range (an AFF file's `a START END FRAMES`); instead of --time");
     app.add_option("--seed", seed, "Seed of the built-in room's lights, and of --lights");
     app.add_option("--lights", lights,
                    "Add N seeded point lights scattered over the scene's surfaces (1 .. 65535 with the scene's own)");
@@ -124,6 +136,19 @@ void exportEnvironmentPanorama(const Scene& scene, const std::string& file) {
 }
 }  // namespace
 
+float frameTimeOf(const Scene& scene, int frame) {
+    const SceneAnimation& a = scene.animation;
+    if (a.frames <= 0)
+        throw Error("--frame " + std::to_string(frame) + ": the scene gives no frame count (" +
+                    (a.moves() ? "a glTF animation is timed in seconds" : "it has no keyframe animation") +
+                    "); use --time SECONDS");
+    if (frame < 0 || frame >= a.frames)
+        throw Error("--frame must be 0 .. " + std::to_string(a.frames - 1) + " (the scene's " + std::to_string(a.frames) +
+                    " frames over " + std::to_string(a.start) + " .. " + std::to_string(a.end) + " s), got " +
+                    std::to_string(frame));
+    return a.frameTime(frame);
+}
+
 Scene SceneChoice::load() const {
     // Checked first, before the scene is built; float(time) must also stay finite.
     if (time && !(std::isfinite(*time) && *time >= 0.0 && *time <= double(std::numeric_limits<float>::max()))) {
@@ -132,6 +157,7 @@ Scene SceneChoice::load() const {
         throw Error("--time must be a finite number of seconds >= 0 (leave it out for the scene's own time), got " +
                     value.str());
     }
+    if (time && frame) throw Error("--time and --frame both say when to show the scene: give one");
     const auto cameraOption = [&] { return "--camera " + std::to_string(*camera) + ": "; };
     Scene scene;
     if (camera && sceneFile.empty())
@@ -143,6 +169,9 @@ Scene SceneChoice::load() const {
         o.seed = seed;
         if (time) o.time = float(*time);
         scene = makeDefaultScene(o);
+    } else if (std::string bartLights; makeBartSceneByName(sceneFile, scene, seed, bart, &bartLights)) {
+        std::cout << "lights     " << bartLights << "\n";
+        if (time) poseScene(scene, float(*time));
     } else if (makeOccludedSceneByName(sceneFile, scene, seed) || makeSpotSceneByName(sceneFile, scene, seed) ||
                makeManyLightSceneByName(sceneFile, scene, seed)) {
         if (time) scene.time = float(*time);
@@ -150,10 +179,11 @@ Scene SceneChoice::load() const {
         ObjImportOptions objOptions;
         objOptions.smoothNormals = smoothNormals;
         scene = loadScene(sceneFile, objOptions);
-        if (time) scene.time = float(*time);
+        if (time) poseScene(scene, float(*time));
         const std::string ext = lowerCaseExtension(sceneFile);
         model = ext == ".gltf" || ext == ".glb" || ext == ".obj";
     }
+    if (frame) poseScene(scene, frameTimeOf(scene, *frame));
     // Before the lights: the default rig puts its key light at the eye.
     if (camera) {
         try {

@@ -13,10 +13,15 @@
 
 namespace lidr::demo {
 
+// ../shared/bart-robots beside lidr's source tree (the scene of the paper's evaluation, BART's Robots).
+std::string defaultBartFolder();
+
 struct SceneChoice {
     std::string sceneFile;  // empty: the built-in default room
     std::optional<int> width, height;  // unset: the scene's (an explicit 0 is an error, not "unset")
     std::optional<double> time;  // unset: the scene's; set: a finite number of seconds >= 0
+    std::optional<int> frame;    // --frame N: the time of frame N of the scene's animation range (AFF's `a`)
+    std::string bart = defaultBartFolder();  // --bart: where bart-robots-many / -few are read from
     unsigned seed = 1;
     bool smoothNormals = false;  // OBJ faces without normals get smooth ones (ObjImportOptions)
     std::optional<int> lights;          // --lights N: N seeded lights scattered over the surfaces (light_scatter.h)
@@ -35,6 +40,10 @@ struct SceneChoice {
     // applied by the viewer when it opens a file. Prints progress on stderr where reading takes over a second.
     void applyEnvironment(Scene& scene, bool model) const;
 };
+
+// The time of frame `frame` of the scene's animation range; throws lidr::Error for a scene without a frame count
+// or a frame outside it.
+float frameTimeOf(const Scene& scene, int frame);
 
 // --shadows and its settings, checked (RendererChoice::shadowChoice), applied to each frame's lights and shading.
 struct ShadowChoice {

@@ -74,7 +74,8 @@ int runSoak(const SceneChoice& sceneChoice, const RendererChoice& rc, const std:
             createRenderer(modeOptions, context->info(), scene, scene.width, scene.height);
         for (int k = 0; k < frames; ++k) {
             const double t = scene.time + double(k) * timeStep;
-            renderer->render(scene.camera, scene.lightsAt(float(t)), shading);
+            placeAnimatedObjects(*renderer, scene, float(t));  // keyframed meshes move too (no-op without any)
+            renderer->render(cameraAt(scene, float(t)), scene.lightsAt(float(t)), shading);
             const ImageRGBA8 image = renderer->targets().readColor();
             rss.push_back(residentKiB());
             csv << k << "," << std::setprecision(9) << t << "," << hex(fnv1a(image.pixels)) << "," << rss.back() << ","

@@ -631,10 +631,17 @@ int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
     int framesSinceReport = 0;
     while (!context->shouldClose()) {
         const double now = glfwGetTime();
-        std::vector<PointLight> lights = scene.lightsAt(scene.time + float(now - start));
+        // A keyframed scene plays its range over and over: moving meshes re-placed, lights and camera at the time.
+        const SceneAnimation& animation = scene.animation;
+        float t = scene.time + float(now - start);
+        if (animation.end > animation.start && t > animation.end)
+            t = animation.start + std::fmod(t - animation.start, animation.end - animation.start);
+        placeAnimatedObjects(*renderer, scene, t);
+        std::vector<PointLight> lights = scene.lightsAt(t);
         ShadingParameters shading = sceneShadingParameters;
-        shadowChoice.apply(scene, lights, shading);  // K brightest: chosen again as the lights move
-        const FrameStats& st = renderer->render(scene.camera, lights, shading);
+        const Camera camera = cameraAt(scene, t);
+        shadowChoice.apply(cameraMatrices(camera, scene.width, scene.height), lights, shading);  // K brightest: again
+        const FrameStats& st = renderer->render(camera, lights, shading);
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
         if (presenter) {

@@ -221,6 +221,26 @@ if(NOT lights EQUAL 5 OR NOT name STREQUAL "courtyard" OR NOT warnings EQUAL 0 O
   message(FATAL_ERROR "lidr-demo --scene courtyard.gltf: ${lights} lights, name '${name}', ${warnings} warnings, "
                       "whole-image PSNR ${whole_psnr}, dropped ${dropped}")
 endif()
+# BART's Robots (issue 46, ../shared/bart-robots beside the source tree): frame 400 of the AFF scene's animation, its
+# camera and light, identical to the reference; --frame's refusals before any context.
+set(robots ${SOURCE_DIR}/../shared/bart-robots/aff/Robot.aff)
+if(NOT EXISTS ${robots})
+  message(FATAL_ERROR "BART's Robots are not at ${robots} (../shared/bart-robots beside the source tree)")
+endif()
+run_demo(robots "--scene Robot.aff --frame 400" --scene ${robots} --frame 400 --width 240 --height 180 --frames 1)
+string(JSON triangles GET "${summary}" scene triangles)
+string(JSON time GET "${summary}" scene time)
+string(JSON whole_max GET "${summary}" error whole_image max_abs_error)
+string(JSON dropped GET "${summary}" lights dropped_light_pixels)
+if(NOT triangles EQUAL 71708 OR time LESS 25.03 OR time GREATER 25.04 OR whole_max GREATER 1 OR NOT dropped EQUAL 0)
+  message(FATAL_ERROR "lidr-demo --scene Robot.aff --frame 400: ${triangles} triangles at t = ${time}, max error "
+                      "${whole_max}, dropped ${dropped}")
+endif()
+expect_refused("--scene|${robots}|--frame|800" "--frame must be 0 .. 799" NO_CONTEXT)
+expect_refused("--scene|${robots}|--frame|2|--time|1" "--time and --frame both say when" NO_CONTEXT)
+expect_refused("--scene|${SOURCE_DIR}/media/scenes/courtyard.gltf|--frame|2" "gives no frame count" NO_CONTEXT)
+expect_refused("--scene|bart-robots-few|--bart|${OUT}/nowhere" "no BART Robots scene in" NO_CONTEXT)
+
 # Spot and directional lights (issue 29): media/scenes/lamp-street.json, 16 spot lamps, 3 point lights and a sun,
 # identical to the reference with nothing dropped.
 run_demo(lamps "--scene lamp-street.json" --scene ${SOURCE_DIR}/media/scenes/lamp-street.json --width 240 --height 180

@@ -111,6 +111,30 @@ grep -q "open $out/broken.glb refused: .*broken.glb: GLB header: the file has 4 
   fail "the broken file's refusal names no cause: $(grep refused "$out/files.log")"
 echo "viewer.script: a dropped .glb renders as with --scene in 3 modes; reload and refusals checked"
 
+# A keyframed scene (BART's Robots, ../shared/bart-robots): at --frame 400 the viewer's frame is the demo's; the
+# reference of its debug views is taken at the animation's time too, after a step (N) as before it.
+robots="$here/../../shared/bart-robots/aff/Robot.aff"
+[ -f "$robots" ] || fail "BART's Robots are not at $robots (../shared/bart-robots beside the source tree)"
+robot_size=(--width 320 --height 240 --frame 400)
+"$demo" --headless "${robot_size[@]}" --frames 1 --scene "$robots" --out "$out/demo-robots" >"$out/demo-robots.log" 2>&1 ||
+  fail "lidr-demo --scene Robot.aff --frame 400 failed: $(tail -3 "$out/demo-robots.log")"
+printf 'wait 1
+expect-stat time > 25.03
+expect-stat time < 25.04
+expect-match %s 1 50
+compute
+expect-stat psnr >= 60
+press N
+wait 1
+compute
+expect-stat time > 25.06
+expect-stat psnr >= 60
+' \
+  "$out/demo-robots/lidr.png" > "$out/robots.script"
+"${x[@]}" "$viewer" "${robot_size[@]}" --paused --scene "$robots" --out "$out" --script "$out/robots.script" \
+  >"$out/robots.log" 2>&1 || fail "the Robots at frame 400: $(tail -5 "$out/robots.log")"
+echo "viewer.script: BART's Robots at frame 400 as lidr-demo renders them; a step later equal to the reference"
+
 # --fixed-size: the frame keeps its size when the window changes (it is scaled instead).
 printf 'resize 320 240\nwait 3\nexpect-size 160 120\n' > "$out/fixed-size.script"
 "${x[@]}" "$viewer" --width 160 --height 120 --paused --fixed-size --out "$out" --script "$out/fixed-size.script" \

@@ -71,6 +71,7 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     initialChoice_ = rc_;
     shading_ = sceneShading(scene_);
     camera_.reset(scene_.camera);
+    followSceneCamera_ = scene_.animation.cameraNode >= 0;
     moveSpeed_ = std::max(0.5f, 0.15f * glm::length(scene_.boundsMax() - scene_.boundsMin()));
     animTime_ = scene_.time;
     paused_ = options_.startPaused;
@@ -124,6 +125,10 @@ Viewer::~Viewer() {
 
 void Viewer::renderFrame() {
     try {
+        // The scene's animation at the clock's time: its moving meshes re-placed (no geometry uploaded again), the
+        // camera on its node while following it; currentLights takes the lights at the same time.
+        placeAnimatedObjects(*renderer_, scene_, animTime_);
+        if (followSceneCamera_) camera_.reset(cameraAt(scene_, animTime_));
         ShadingParameters shading;
         const std::vector<PointLight> lights = currentLights(&shading);
         const FrameStats& st = renderer_->render(camera_.camera(), lights, shading);

@@ -143,6 +143,10 @@ private:
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     bool cursorKnown_ = false;
     float animTime_ = 0.0f, animSpeed_ = 1.0f;
+    // The camera rides on the scene's animated camera (an AFF `k camera`, a glTF camera on an animated node) until
+    // the user flies it; the panel's checkbox puts it back.
+    bool followSceneCamera_ = false;
+    float loopedTime(float t) const;
     bool paused_ = false;
     int lightCount_ = 0;
     long frameNumber_ = 0;

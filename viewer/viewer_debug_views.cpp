@@ -73,6 +73,7 @@ void Viewer::computeViews() {
     ev.frame = frameNumber_;
     const ImageRGBA8 frame = renderer_->targets().readColor();
     auto reference = demo::makeReference(context_->info(), scene_, modeOptions_, width_, height_, int(lights.size()));
+    placeAnimatedObjects(*reference, scene_, animTime_);  // the frame's meshes where the animation has them
     reference->render(cam, lights, shading);
     ev.reference = reference->targets().readColor();
     reference.reset();

@@ -32,7 +32,7 @@ void Viewer::onDrop(const std::vector<std::string>& paths) {
     auto isScene = [](const std::string& p) {
         std::string ext = std::filesystem::path(p).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        return ext == ".gltf" || ext == ".glb" || ext == ".obj" || ext == ".json";
+        return ext == ".gltf" || ext == ".glb" || ext == ".obj" || ext == ".json" || ext == ".aff";
     };
     const auto it = std::find_if(paths.begin(), paths.end(), isScene);
     pendingOpen_ = it != paths.end() ? *it : paths.front();
@@ -81,6 +81,7 @@ bool Viewer::openScene(const std::string& path, const std::string& what, bool ke
     const int oldScattered = scatteredLights_, oldCount = lightCount_;
     const FlyCamera oldCamera = camera_;
     const float oldTime = animTime_, oldSpeed = moveSpeed_;
+    const bool oldFollow = followSceneCamera_;
     const ShadingParameters oldShading = shading_;
 
     fileScene_ = std::move(loaded);
@@ -97,6 +98,7 @@ bool Viewer::openScene(const std::string& path, const std::string& what, bool ke
     shading_ = sceneShading(scene_);
     if (!keepCamera) {
         camera_.reset(scene_.camera);
+        followSceneCamera_ = scene_.animation.cameraNode >= 0;
         animTime_ = scene_.time;
         moveSpeed_ = std::max(0.5f, 0.15f * glm::length(scene_.boundsMax() - scene_.boundsMin()));
     }
@@ -113,6 +115,7 @@ bool Viewer::openScene(const std::string& path, const std::string& what, bool ke
     lightCount_ = oldCount;
     camera_ = oldCamera;
     animTime_ = oldTime;
+    followSceneCamera_ = oldFollow;
     moveSpeed_ = oldSpeed;
     shading_ = oldShading;
     apply(rc_, "the previous scene");  // was rendering a frame ago
@@ -131,7 +134,7 @@ void Viewer::reloadScene() {
 }
 
 void Viewer::uiFile() {
-    ImGui::TextWrapped("%s", scenePath_.empty() ? "built-in room: drop a .glb, .gltf, .obj or scene .json here"
+    ImGui::TextWrapped("%s", scenePath_.empty() ? "built-in room: drop a .glb, .gltf, .obj, .aff or scene .json here"
                                                 : scenePath_.c_str());
     if (ImGui::Button("reload (F5)")) reloadScene();
     ImGui::SameLine();

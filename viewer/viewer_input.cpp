@@ -3,6 +3,8 @@
 
 #include "viewer.h"
 
+#include <cmath>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -25,7 +27,7 @@ void Viewer::onKeyPress(int key, int mods) {
         case GLFW_KEY_PERIOD:
         case GLFW_KEY_N:
             paused_ = true;
-            animTime_ += kStepSeconds;
+            animTime_ = loopedTime(animTime_ + kStepSeconds);
             markDirty();
             break;
         case GLFW_KEY_R: resetAll(); break;
@@ -56,6 +58,7 @@ void Viewer::onKeyPress(int key, int mods) {
 
 void Viewer::resetAll() {
     camera_.reset(scene_.camera);
+    followSceneCamera_ = scene_.animation.cameraNode >= 0;
     animTime_ = scene_.time;
     animSpeed_ = 1.0f;
     view_ = View::Frame;
@@ -78,6 +81,7 @@ void Viewer::processInput(float dt) {
     if (down(GLFW_KEY_Q)) local.y -= 1.0f;
     const float speed = moveSpeed_ * (down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT) ? 4.0f : 1.0f);
     if (local != glm::vec3(0.0f)) {
+        followSceneCamera_ = false;  // flying leaves the scene's animated camera where it was
         camera_.move(local, speed * dt);
         markDirty();
     }
@@ -87,6 +91,7 @@ void Viewer::processInput(float dt) {
     const bool look = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                       (!io.WantCaptureMouse && glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS);
     if (look && cursorKnown_ && (x != lastCursorX_ || y != lastCursorY_)) {
+        followSceneCamera_ = false;
         camera_.turn(float(x - lastCursorX_) * 0.004f, -float(y - lastCursorY_) * 0.004f);
         markDirty();
     }
@@ -94,9 +99,16 @@ void Viewer::processInput(float dt) {
     lastCursorY_ = y;
     cursorKnown_ = true;
     if (!paused_ && dt > 0.0f) {
-        animTime_ += dt * animSpeed_;
+        animTime_ = loopedTime(animTime_ + dt * animSpeed_);
         markDirty();
     }
+}
+
+// A keyframed scene plays its range over and over (an AFF file's `a`, a glTF's clips); others run on.
+float Viewer::loopedTime(float t) const {
+    const SceneAnimation& a = scene_.animation;
+    if (!(a.end > a.start) || t <= a.end) return t;
+    return a.start + std::fmod(t - a.start, a.end - a.start);
 }
 
 }  // namespace lidr::viewer

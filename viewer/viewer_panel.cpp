@@ -244,6 +244,14 @@ void Viewer::buildUi(int fbw, int fbh) {
         if (ImGui::Button("step (N)")) onKeyPress(GLFW_KEY_N, 0);
         ImGui::SameLine();
         ImGui::Text("t = %.2f s", double(animTime_));
+        const SceneAnimation& a = scene_.animation;
+        if (a.end > a.start) {  // a keyframed scene: its time range as a slider
+            if (ImGui::SliderFloat("time", &animTime_, a.start, a.end, "%.2f s")) markDirty();
+            if (a.frames > 1)
+                ImGui::Text("frame %d of %d", int(std::lround((animTime_ - a.start) / (a.end - a.start) * float(a.frames - 1))),
+                            a.frames);
+        }
+        if (a.cameraNode >= 0 && ImGui::Checkbox("follow the scene's camera", &followSceneCamera_)) markDirty();
         ImGui::SliderFloat("speed", &animSpeed_, 0.0f, 4.0f, "%.2fx");
         int lights = lightCount_;
         const int maxL = maxLightsFor(rc_);

@@ -10,6 +10,7 @@
 #include <emscripten/html5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <set>
@@ -78,6 +79,9 @@ struct Page {
     viewer::FlyCamera camera;
     float moveSpeed = 3.0f;
     float time = 2.0f;
+    // A keyframed scene's camera (an AFF `k camera`, a glTF camera on an animated node) is followed until the user
+    // flies or turns the camera.
+    bool followSceneCamera = false;
     double lastFrameMs = 0.0, frameMsAverage = 0.0, renderMsAverage = 0.0, renderMsLast = 0.0;
     std::set<std::string> keysDown;
     bool dragging = false;
@@ -272,6 +276,7 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
         return;
     }
     ReferenceRenderer& ref = reference();
+    placeAnimatedObjects(ref, page->scene, page->time);  // the frame's meshes where the animation has them
     ref.render(camera, lights, shading);
     if (view == "reference") {
         page->presenter->present(ref.targets(), 0);
@@ -320,7 +325,15 @@ void moveCamera(float dt) {
     if (down("KeyE")) local.y += 1.0f;
     if (down("KeyQ")) local.y -= 1.0f;
     const float speed = page->moveSpeed * (down("ShiftLeft") || down("ShiftRight") ? 4.0f : 1.0f);
+    if (local != glm::vec3(0.0f)) page->followSceneCamera = false;
     page->camera.move(local, speed * dt);
+}
+
+// A keyframed scene plays its time range over and over; others run on.
+float loopedTime(float t) {
+    const SceneAnimation& a = page->scene.animation;
+    if (!(a.end > a.start) || t <= a.end) return t;
+    return a.start + std::fmod(t - a.start, a.end - a.start);
 }
 
 void frame() {
@@ -328,9 +341,13 @@ void frame() {
     const float dt = page->lastFrameMs > 0.0 ? float(std::min(0.1, (now - page->lastFrameMs) / 1000.0)) : 0.0f;
     if (page->lastFrameMs > 0.0) page->frameMsAverage = 0.9 * page->frameMsAverage + 0.1 * (now - page->lastFrameMs);
     page->lastFrameMs = now;
-    if (!page->settings.paused) page->time += dt;
+    if (!page->settings.paused) page->time = loopedTime(page->time + dt);
     moveCamera(dt);
     try {
+        // The scene's animation at the page's time: moving meshes re-placed (nothing uploaded again), the camera on
+        // its node while followed; currentLights takes the lights at the same time.
+        placeAnimatedObjects(*page->renderer, page->scene, page->time);
+        if (page->followSceneCamera) page->camera.reset(cameraAt(page->scene, page->time));
         const Camera camera = page->camera.camera();
         ShadingParameters shading;
         const std::vector<PointLight> lights = currentLights(camera, shading);
@@ -362,8 +379,10 @@ EM_BOOL onKey(int type, const EmscriptenKeyboardEvent* e, void*) {
 EM_BOOL onMouse(int type, const EmscriptenMouseEvent* e, void*) {
     if (type == EMSCRIPTEN_EVENT_MOUSEDOWN) page->dragging = true;
     if (type == EMSCRIPTEN_EVENT_MOUSEUP) page->dragging = false;
-    if (type == EMSCRIPTEN_EVENT_MOUSEMOVE && page->dragging)
+    if (type == EMSCRIPTEN_EVENT_MOUSEMOVE && page->dragging) {
+        page->followSceneCamera = false;
         page->camera.turn(float(e->movementX) * 0.004f, -float(e->movementY) * 0.004f);
+    }
     return EM_TRUE;
 }
 
@@ -386,12 +405,20 @@ extern "C" {
 
 // Sets one setting by name ("mode", "scheme", "budget", "index-bits", "view", "lights", "paused", "shadows":
 // off, scene or K, "shadow-filter": nearest or pcf, "environment": auto, default, none or the path of a .hdr
-// the page wrote, "environment-intensity": a number >= 0), returns 1 when
-// applied, 0 when refused (lidr_web_status() then carries the reason).
+// the page wrote, "environment-intensity": a number >= 0, "time": the animation's time in seconds, "follow-camera":
+// 1 to ride on the scene's animated camera again), returns 1 when applied, 0 when refused (lidr_web_status() then
+// carries the reason).
 EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
     Settings s = page->settings;
     const std::string n = name, v = value;
     try {
+        if (n == "time" || n == "follow-camera") {  // the clock and the camera: no renderer to rebuild
+            const float number = std::stof(v);
+            if (!std::isfinite(number)) throw Error(n + " must be a finite number, got '" + v + "'");
+            if (n == "time") page->time = number;
+            else page->followSceneCamera = number != 0.0f && page->scene.animation.cameraNode >= 0;
+            return 1;
+        }
         if (n == "mode") s.mode = v;
         else if (n == "scheme") s.scheme = v;
         else if (n == "budget") s.budget = std::stoi(v);
@@ -405,7 +432,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
         else if (n == "environment-intensity") s.environmentIntensity = std::stof(v);
         else throw Error("unknown setting '" + n +
                          "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter, "
-                         "environment, environment-intensity)");
+                         "environment, environment-intensity, time, follow-camera)");
     } catch (const std::logic_error&) {
         page->message = "setting " + n + ": a number, got '" + v + "'";
         return 0;
@@ -450,6 +477,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_load(const char* path, int lights) {
     }
     page->camera.reset(page->scene.camera);
     page->time = page->scene.time;
+    page->followSceneCamera = page->scene.animation.cameraNode >= 0;
     page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
     if (page->message.empty() && !page->fileScene.warnings.empty())
         page->message = std::to_string(page->fileScene.warnings.size()) + " warning(s) reading " + path;
@@ -464,6 +492,7 @@ EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     try {
         page->camera.reset(page->scene.camera);
         page->time = page->scene.time;
+        placeAnimatedObjects(*page->renderer, page->scene, page->time);
         ShadingParameters shading;
         const std::vector<PointLight> lights = currentLights(page->scene.camera, shading);
         page->renderer->render(page->scene.camera, lights, shading);  // as lidr-web-native-frame
@@ -494,6 +523,7 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
     applySettings(wanted, true);
     page->camera.reset(page->scene.camera);
     page->time = 2.0f;
+    page->followSceneCamera = false;
     page->moveSpeed = std::max(0.5f, 0.15f * glm::length(page->scene.boundsMax() - page->scene.boundsMin()));
 }
 
@@ -514,19 +544,23 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_reset_camera() { page->camera.reset(page->sce
 EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
     static std::string json;
     const Settings& s = page->settings;
-    char figures[512];
+    char figures[768];
     size_t triangles = 0;
     for (const Mesh& m : page->scene.meshes) triangles += m.indices.size() / 3;
     std::snprintf(figures, sizeof figures,
                   "\"frameMs\":%.2f,\"renderMs\":%.2f,\"renderMsLast\":%.2f,\"time\":%.2f,\"budget\":%d,"
                   "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
                   "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d,"
-                  "\"environmentIntensity\":%g",
+                  "\"environmentIntensity\":%g,\"timeStart\":%g,\"timeEnd\":%g,\"frames\":%d,"
+                  "\"animated\":%s,\"sceneCamera\":%s,\"followCamera\":%s",
                   page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
                   s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
                   page->model ? "true" : "false", s.paused ? "true" : "false",
                   page->renderer ? page->renderer->lastFrame().shadowCasters : 0,
-                  page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0, double(s.environmentIntensity));
+                  page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0, double(s.environmentIntensity),
+                  double(page->scene.animation.start), double(page->scene.animation.end), page->scene.animation.frames,
+                  page->scene.animation.end > page->scene.animation.start ? "true" : "false",
+                  page->scene.animation.cameraNode >= 0 ? "true" : "false", page->followSceneCamera ? "true" : "false");
     std::string warnings;
     for (const std::string& w : page->fileScene.warnings)
         warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";

@@ -55,4 +55,12 @@ void Renderer::removeObject(ObjectId id) {
     for (GpuScene* scene : gpuScenes()) scene->remove(id);
 }
 
+size_t placeAnimatedObjects(Renderer& renderer, const Scene& scene, float t) {
+    const std::vector<size_t> moving = movingMeshes(scene);
+    if (moving.empty()) return 0;
+    const std::vector<glm::mat4> transforms = meshTransformsAt(scene, t);
+    for (size_t mesh : moving) renderer.setObjectTransform(ObjectId(mesh), transforms[mesh]);
+    return moving.size();
+}
+
 }  // namespace lidr

@@ -165,4 +165,11 @@ protected:
     FrameStats stats_;
 };
 
+// Places the scene's moving meshes (lidr/scene/animation.h, movingMeshes) where its animation puts them at time t,
+// through Renderer::setObjectTransform: no geometry is uploaded again, and the static meshes are not touched (passes
+// that keep what they drew, the shadow maps, redraw only near what moved). Returns how many objects were placed. The
+// frame at t is then render(cameraAt(scene, t), scene.lightsAt(t), ...). The renderer must have been built from
+// `scene` (its objects are the scene's meshes by index).
+size_t placeAnimatedObjects(Renderer& renderer, const Scene& scene, float t);
+
 }  // namespace lidr

@@ -248,11 +248,27 @@ glm::vec3 Scene::boundsMax() const {
 
 std::vector<PointLight> Scene::lightsAt(float t) const {
     std::vector<PointLight> result = lights;
-    if (lightPaths.empty()) return result;
-    if (lightPaths.size() != lights.size())
-        throw Error("Scene::lightsAt: " + std::to_string(lightPaths.size()) + " light paths for " +
-                    std::to_string(lights.size()) + " lights");
-    for (size_t i = 0; i < result.size(); ++i) result[i].position = evaluatePath(lightPaths[i], lights[i].position, t);
+    if (!lightPaths.empty()) {
+        if (lightPaths.size() != lights.size())
+            throw Error("Scene::lightsAt: " + std::to_string(lightPaths.size()) + " light paths for " +
+                        std::to_string(lights.size()) + " lights");
+        for (size_t i = 0; i < result.size(); ++i) result[i].position = evaluatePath(lightPaths[i], lights[i].position, t);
+    }
+    // Lights carried by animation nodes: placed, turned and scaled by the node's transform at t.
+    const SceneAnimation& a = animation;
+    if (std::none_of(a.lightBindings.begin(), a.lightBindings.end(), [](const LightBinding& b) { return b.node >= 0; }))
+        return result;
+    const std::vector<glm::mat4> world = a.worldAt(t);
+    for (size_t i = 0; i < a.lightBindings.size() && i < result.size(); ++i) {
+        const LightBinding& b = a.lightBindings[i];
+        if (b.node < 0) continue;
+        const glm::mat4& w = world[size_t(b.node)];
+        result[i].position = glm::vec3(w * glm::vec4(b.position, 1.0f));
+        const glm::vec3 direction = glm::mat3(w) * b.direction;
+        if (isUsableDirection(direction)) result[i].direction = glm::normalize(direction);
+        const float scale = std::max({glm::length(glm::vec3(w[0])), glm::length(glm::vec3(w[1])), glm::length(glm::vec3(w[2]))});
+        result[i].radius = std::min(maxLightRadius, b.radius * scale);
+    }
     return result;
 }
 
@@ -296,6 +312,7 @@ void Scene::validate(int maxResolution) const {
     for (size_t i = 0; i < lightPaths.size(); ++i) validatePath(lightPaths[i], i);
     validateDirectionalLights(directionalLights);
     validateEnvironmentIntensity(environmentIntensity, "environment: intensity");
+    validateAnimation(animation, meshes.size(), lights.size(), views.size());
 }
 
 glm::vec4 spotCone(const PointLight& light) {

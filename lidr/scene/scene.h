@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "lidr/base/image.h"
+#include "lidr/scene/animation.h"
 #include "lidr/scene/environment.h"
 
 namespace lidr {
@@ -204,7 +205,11 @@ struct Scene {
     std::vector<SceneView> views;
     int view = -1;
     int width = 1024, height = 768;
-    float time = 0.0f;                   // the time this scene is shown at: lightsAt(time)
+    float time = 0.0f;                   // the time this scene is shown at: lightsAt(time); its geometry is posed there
+    // Keyframe animation (lidr/scene/animation.h): nodes moving meshes, lights and the camera over time. Empty for a
+    // scene without one. poseScene(scene, t) moves the scene to t; meshTransformsAt / lightsAt / cameraAt give a
+    // frame at t without changing it.
+    SceneAnimation animation;
     std::string renderMode = "lidr";     // the mode tools render it with (lidr/modes/render_mode.h names them)
     glm::vec3 ambient{0.04f};
     glm::vec3 backgroundColor{0.0f};
@@ -223,7 +228,7 @@ struct Scene {
     size_t triangleCount() const;
     glm::vec3 boundsMin() const;  // of the geometry
     glm::vec3 boundsMax() const;
-    // The lights at time t (paths applied). Same t, same result.
+    // The lights at time t (paths applied, lights carried by animation nodes placed). Same t, same result.
     std::vector<PointLight> lightsAt(float t) const;
     // Throws lidr::Error describing the first problem: non-finite or negative values, bad indices,
     // zero or oversized resolution, bad camera (including a position or target so far out that the view

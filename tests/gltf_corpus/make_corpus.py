@@ -94,6 +94,24 @@ def full():
     return doc
 
 
+def animated(times=(0.0, 1.0), values=((0, 0, 0), (1, 0, 0)), path="translation", interpolation="LINEAR",
+             value_type="VEC3", component_type=5126):
+    """The triangle's node moved by one channel: key times and values in a second buffer (floats)."""
+    doc = triangle()
+    data = struct.pack("<%df" % len(times), *times)
+    flat = [x for v in values for x in v]
+    data += struct.pack("<%df" % len(flat), *flat)
+    doc["buffers"].append({"byteLength": len(data), "uri": data_uri("application/octet-stream", data)})
+    doc["bufferViews"] += [{"buffer": 1, "byteOffset": 0, "byteLength": 4 * len(times)},
+                           {"buffer": 1, "byteOffset": 4 * len(times), "byteLength": 4 * len(flat)}]
+    doc["accessors"] += [{"bufferView": 2, "componentType": 5126, "count": len(times), "type": "SCALAR",
+                          "min": [min(times)], "max": [max(times)]},
+                         {"bufferView": 3, "componentType": component_type, "count": len(values), "type": value_type}]
+    doc["animations"] = [{"samplers": [{"input": 2, "output": 3, "interpolation": interpolation}],
+                          "channels": [{"sampler": 0, "target": {"node": 0, "path": path}}]}]
+    return doc
+
+
 def instanced(primitives, corners, nodes):
     """One triangle strip of `corners` u8 indices, `primitives` times in one mesh, instanced by `nodes` nodes:
     a small file declaring nodes x primitives x (corners - 2) triangles."""
@@ -204,11 +222,16 @@ def build():
     # ---- warnings: allowed by the specification, not drawn by lidr --------------------------------------------
     c.add("warn-extension-used", mutate(triangle, lambda d: set_at(d, "/extensionsUsed", ["EXT_unknown_feature"])),
           "warning", "extension EXT_unknown_feature")
-    c.add("warn-skin", mutate(triangle, lambda d: (set_at(d, "/skins", [{"joints": [0]}]), set_at(d, "/nodes/0/skin", 0))),
-          "warning", "skins are not applied")
-    c.add("warn-animation", mutate(triangle, lambda d: set_at(d, "/animations", [
-        {"samplers": [{"input": 1, "output": 0}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}])),
-          "warning", "animations are not played")
+    c.add("warn-skin", mutate(triangle, lambda d: (set_at(d, "/skins", [{"joints": [0], "name": "rig"}]),
+                                                   set_at(d, "/nodes/0/skin", 0))),
+          "warning", "skin 0 'rig' (1 joints) is not applied: its meshes are drawn in their bind pose")
+    c.add("warn-animation-weights", animated(values=((0, 0, 0), (1, 0, 0)), path="weights"),
+          "warning", "animation 0: 1 morph target weight channel not played (the base shape is drawn)")
+    ok("valid-animation-translation", animated())
+    ok("valid-animation-rotation-step", animated(values=((0, 0, 0, 1), (0, 0, 1, 0)), path="rotation",
+                                                 interpolation="STEP", value_type="VEC4"))
+    ok("valid-animation-cubic", animated(values=((0, 0, 0), (0, 0, 0), (1, 0, 0), (1, 0, 0), (2, 0, 0), (0, 0, 0)),
+                                         interpolation="CUBICSPLINE"))
     c.add("warn-morph", mutate(triangle, lambda d: set_at(d, "/meshes/0/primitives/0/targets", [{"POSITION": 0}])),
           "warning", "morph targets are not applied")
     ok("valid-alpha-mask", mutate(textured, lambda d: (set_at(d, "/materials/0/alphaMode", "MASK"),
@@ -320,9 +343,7 @@ def build():
         ("skin-joint", lambda: mutate(triangle, lambda d: set_at(d, "/skins", [{"joints": [0]}])), "/skins/0/joints/0", "nodes"),
         ("skin-matrices", lambda: mutate(triangle, lambda d: set_at(d, "/skins", [{"joints": [0], "inverseBindMatrices": 0}])),
          "/skins/0/inverseBindMatrices", "accessors"),
-        ("animation-target", lambda: mutate(triangle, lambda d: set_at(d, "/animations", [
-            {"samplers": [{"input": 1, "output": 0}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}}]}])),
-         "/animations/0/channels/0/target/node", "nodes"),
+        ("animation-target", animated, "/animations/0/channels/0/target/node", "nodes"),
         ("image-bufferview", lambda: mutate(textured, lambda d: set_at(d, "/images/0", {"bufferView": 0, "mimeType": "image/png"})),
          "/images/0/bufferView", "bufferViews"),
     ]
@@ -736,6 +757,29 @@ def build():
     c.error("animation-sampler-out-of-range", mutate(triangle, lambda d: set_at(d, "/animations", [
         {"samplers": [], "channels": [{"sampler": 0, "target": {"node": 0, "path": "scale"}}]}])),
             "/animations/0/channels/0/sampler: index 0 is out of range (0 samplers)")
+    c.error("animation-input-not-float", mutate(animated, lambda d: set_at(d, "/animations/0/samplers/0/input", 1)),
+            "/animations/0/samplers/0/input: accessor 1 must be SCALAR of float (the key times)")
+    c.error("animation-interpolation", animated(interpolation="SMOOTH"),
+            "/animations/0/samplers/0/interpolation: must be LINEAR, STEP or CUBICSPLINE, got 'SMOOTH'")
+    c.error("animation-path", animated(path="colour"),
+            "/animations/0/channels/0/target/path: must be translation, rotation, scale or weights, got 'colour'")
+    c.error("animation-path-missing", mutate(animated, lambda d: remove_at(d, "/animations/0/channels/0/target/path")),
+            "/animations/0/channels/0/target/path: required property missing")
+    c.error("animation-times-decrease", animated(times=(1.0, 0.5)),
+            "animation 0 channel 0: key 1's time 0.500000 does not follow the previous key's 1.000000")
+    c.error("animation-output-count", animated(values=((0, 0, 0),)),
+            "animation 0 channel 0: output accessor 3 has 1 elements; 2 are needed for the input's keys")
+    c.error("animation-cubic-count", animated(interpolation="CUBICSPLINE"),
+            "animation 0 channel 0: output accessor 3 has 2 elements; 6 are needed")
+    c.error("animation-output-type", animated(path="rotation"),
+            "animation 0 channel 0 output accessor 3: type 3 is not the type")
+    c.error("animation-rotation-zero", animated(values=((0, 0, 0, 0), (0, 0, 0, 1)), path="rotation", value_type="VEC4"),
+            "animation 0 channel 0: output rotation 0 is zero (not a rotation)")
+    c.error("animation-matrix-node", mutate(animated, lambda d: set_at(d, "/nodes/0/matrix",
+                                                                   [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1])),
+            "animation 0 channel 0: node 0 has a matrix; an animated node must give translation, rotation and scale")
+    c.error("animation-value-nan", animated(values=((0, 0, 0), (float("nan"), 0, 0))),
+            "animation 0 channel 0: output value 1 is not finite")
 
     # ---- limits -----------------------------------------------------------------------------------------------
     c.error("limit-nodes-200001", None, "/nodes: 200001 entries; lidr reads at most 200000",

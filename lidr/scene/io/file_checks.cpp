@@ -1,5 +1,7 @@
 #include "lidr/scene/io/file_checks.h"
 
+#include "lidr/base/error.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cctype>
@@ -15,6 +17,23 @@
 #include <sys/stat.h>
 
 namespace lidr {
+
+std::string readWholeFile(const std::string& path, size_t maxBytes, const std::string& what) {
+    const std::string problem = fileProblem(path);
+    if (!problem.empty()) throw Error(path + ": " + what + " " + problem);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open the " + what);
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0 || uint64_t(size) > uint64_t(maxBytes))
+        throw Error(path + ": " + what + " of " + std::to_string(size) + " bytes; lidr reads up to " +
+                    std::to_string(maxBytes >> 20) + " MiB");
+    in.seekg(0);
+    std::string bytes(static_cast<size_t>(size), '\0');
+    in.read(bytes.data(), size);
+    if (!in) throw Error(path + ": cannot read the " + what);
+    return bytes;
+}
 
 std::string str(double value) {
     std::ostringstream out;

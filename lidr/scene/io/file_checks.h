@@ -29,6 +29,10 @@ struct ImageHeader {
 ImageHeader pngOrJpegHeader(const std::string& firstBytes);
 constexpr size_t imageHeaderBytes = size_t(1) << 20;  // bytes to read for it (a JPEG's frame header follows its metadata)
 
+// The whole of a regular file of at most `maxBytes`; throws lidr::Error "<path>: <what> <problem>" where it is
+// missing, not a regular file, larger, or unreadable (`what`: "AFF file", "texture").
+std::string readWholeFile(const std::string& path, size_t maxBytes, const std::string& what);
+
 // Up to `count` bytes of a file from `offset` (fewer at its end).
 std::string readFileBytes(const std::string& path, uint64_t offset, size_t count);
 

@@ -25,6 +25,8 @@
 #include "lidr/base/colour.h"
 #include "lidr/base/error.h"
 #include "lidr/scene/io/file_checks.h"
+#include "lidr/scene/io/gltf_accessors.h"
+#include "lidr/scene/io/gltf_animation.h"
 #include "lidr/scene/io/gltf_validator.h"
 #include "lidr/scene/io/mesh_split.h"
 
@@ -123,8 +125,10 @@ public:
         checkInstancedTriangles(roots);
         listCameras();
         const size_t trianglesBefore = scene_.triangleCount();
-        for (int root : roots) visit(root, transform_, 0);
+        const int root = startAnimation();
+        for (int r : roots) visit(r, transform_, 0, root);
         if (scene_.triangleCount() == trianglesBefore && contents_.lights == 0) fail("no triangles and no lights");
+        finishAnimation();
         return contents_;
     }
 
@@ -205,7 +209,89 @@ private:
         }
     }
 
-    void visit(int nodeIndex, const glm::mat4& parent, int depth) {
+    // ---- animation (gltf_animation.h): the node tree as AnimationNodes, what each node carries -------------------
+
+    // Where the file has animations: its nodes join the scene's animation (after any it has), under a static root
+    // holding `transform` where that is not the identity. Returns the root's node, -1: none.
+    int startAnimation() {
+        animated_ = !model_.animations.empty();
+        if (!animated_) return -1;
+        SceneAnimation& a = scene_.animation;
+        nodeBase_ = a.nodes.size();
+        nodeOf_.assign(model_.nodes.size(), -1);
+        contents_.viewNodes.assign(contents_.views.size(), -1);
+        if (transform_ == glm::mat4(1.0f)) return -1;
+        AnimationNode root;
+        root.name = stem_ + " (placed by the scene file)";
+        root.rest = transform_;
+        a.nodes.push_back(root);
+        return int(a.nodes.size() - 1);
+    }
+
+    int addAnimationNode(int nodeIndex, const tinygltf::Node& node, const std::string& name, int parentNode) {
+        AnimationNode n;
+        n.name = name;
+        n.parent = parentNode;
+        n.rest = localMatrix(node);
+        if (node.translation.size() == 3) n.translation = glm::vec3(node.translation[0], node.translation[1], node.translation[2]);
+        if (node.rotation.size() == 4)
+            n.rotation = glm::normalize(
+                glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2])));
+        if (node.scale.size() == 3) n.scale = glm::vec3(node.scale[0], node.scale[1], node.scale[2]);
+        scene_.animation.nodes.push_back(std::move(n));
+        nodeOf_[size_t(nodeIndex)] = int(scene_.animation.nodes.size() - 1);
+        return nodeOf_[size_t(nodeIndex)];
+    }
+
+    // The meshes and lights a node just added ride on it (a light at its origin, shining down its -z, its radius
+    // scaled with the node as readLight scales it).
+    void carry(int animationNode, size_t meshesBefore, size_t lightsBefore, const glm::mat4& world) {
+        SceneAnimation& a = scene_.animation;
+        if (scene_.meshes.size() > meshesBefore) {
+            a.meshNodes.resize(meshesBefore, -1);
+            a.meshNodes.resize(scene_.meshes.size(), animationNode);
+        }
+        if (scene_.lights.size() > lightsBefore) {
+            const glm::mat3 linear(world);
+            const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+            a.lightBindings.resize(lightsBefore);
+            for (size_t i = lightsBefore; i < scene_.lights.size(); ++i) {
+                LightBinding b;
+                b.node = animationNode;
+                b.radius = scene_.lights[i].radius / std::max(scale, 1e-30f);
+                a.lightBindings.push_back(b);
+            }
+        }
+    }
+
+    // The channels onto the nodes; the posed transforms of the new nodes (their rest pose, which the geometry was
+    // built in); a file whose channels move nothing adds no nodes.
+    void finishAnimation() {
+        if (!animated_) return;
+        SceneAnimation& a = scene_.animation;
+        readGltfAnimations(model_, path_, nodeOf_, a, scene_.warnings);
+        bool moves = false;
+        for (size_t i = nodeBase_; i < a.nodes.size(); ++i) moves = moves || a.nodes[i].animated;
+        if (!moves) {
+            a.nodes.resize(nodeBase_);
+            for (int& n : a.meshNodes) n = n >= int(nodeBase_) ? -1 : n;
+            for (LightBinding& b : a.lightBindings) b.node = b.node >= int(nodeBase_) ? -1 : b.node;
+            contents_.viewNodes.clear();
+            if (a.nodes.empty()) a = SceneAnimation{};
+            return;
+        }
+        a.posedWorld.resize(a.nodes.size());
+        for (size_t i = nodeBase_; i < a.nodes.size(); ++i) {
+            const AnimationNode& n = a.nodes[i];
+            a.posedWorld[i] = n.parent >= 0 ? a.posedWorld[size_t(n.parent)] * n.rest : n.rest;
+        }
+        for (size_t i = 0; i < directionalNodes_.size(); ++i)
+            if (a.movingNodes()[size_t(directionalNodes_[i])])
+                warn("a directional light on an animated node (" + a.nodes[size_t(directionalNodes_[i])].name +
+                     ") keeps its rest direction: directional lights are not moved");
+    }
+
+    void visit(int nodeIndex, const glm::mat4& parent, int depth, int parentNode) {
         if (nodeIndex < 0 || size_t(nodeIndex) >= model_.nodes.size())
             fail("node " + std::to_string(nodeIndex) + " out of range (" + std::to_string(model_.nodes.size()) + " nodes)");
         if (depth > maxNodeDepth)
@@ -215,106 +301,38 @@ private:
         const glm::mat4 world = parent * localMatrix(node);
         for (int i = 0; i < 16; ++i)
             if (!std::isfinite(glm::value_ptr(world)[i])) fail(name + ": transform is not finite");
+        const int animationNode = animated_ ? addAnimationNode(nodeIndex, node, name, parentNode) : -1;
+        const size_t meshesBefore = scene_.meshes.size(), lightsBefore = scene_.lights.size();
+        const size_t directionalBefore = scene_.directionalLights.size();
         if (node.mesh >= 0) {
             if (size_t(node.mesh) >= model_.meshes.size())
                 fail(name + ": mesh " + std::to_string(node.mesh) + " out of range");
             const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
             for (size_t p = 0; p < mesh.primitives.size(); ++p) addPrimitive(mesh, node.mesh, p, world);
         }
-        if (node.camera >= 0) readCamera(node, name, world);
+        if (node.camera >= 0) readCamera(node, name, world, animationNode);
         const auto light = node.extensions.find("KHR_lights_punctual");
         if (light != node.extensions.end() && light->second.Has("light"))
             readLight(light->second.Get("light"), name, world, node.extras);
-        for (int child : node.children) visit(child, world, depth + 1);
+        if (animated_) {
+            carry(animationNode, meshesBefore, lightsBefore, world);
+            if (scene_.directionalLights.size() > directionalBefore) directionalNodes_.push_back(animationNode);
+        }
+        for (int child : node.children) visit(child, world, depth + 1, animationNode);
     }
 
     // ---- geometry ----------------------------------------------------------------------------------------
 
-    // The bytes of element i of an accessor, checked against its buffer view and buffer.
-    struct AccessorView {
-        const unsigned char* data = nullptr;  // null: the accessor has no buffer view (all zeros)
-        size_t stride = 0, count = 0;
-        int componentType = 0, components = 0;
-        bool normalized = false;
-    };
+    // The bytes of element i of an accessor, checked against its buffer view and buffer (gltf_accessors.h).
+    using AccessorView = GltfAccessorView;
 
     AccessorView view(int accessorIndex, const std::string& what, std::initializer_list<int> types,
                       std::initializer_list<int> componentTypes) const {
-        const std::string name = what + " accessor " + std::to_string(accessorIndex);
-        if (accessorIndex < 0 || size_t(accessorIndex) >= model_.accessors.size())
-            fail(what + " accessor " + std::to_string(accessorIndex) + " out of range (" +
-                 std::to_string(model_.accessors.size()) + " accessors)");
-        const tinygltf::Accessor& accessor = model_.accessors[size_t(accessorIndex)];
-        if (std::find(types.begin(), types.end(), accessor.type) == types.end())
-            fail(name + ": type " + std::to_string(accessor.type) + " is not the type " + what + " needs");
-        if (std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) == componentTypes.end())
-            fail(name + ": component type " + std::to_string(accessor.componentType) + " is not allowed for " + what);
-        if (accessor.sparse.isSparse) fail(name + ": sparse accessors are not supported");
-        AccessorView v;
-        v.count = accessor.count;
-        v.componentType = accessor.componentType;
-        v.components = tinygltf::GetNumComponentsInType(uint32_t(accessor.type));
-        v.normalized = accessor.normalized;
-        if (accessor.bufferView < 0) return v;
-        if (size_t(accessor.bufferView) >= model_.bufferViews.size())
-            fail(name + ": buffer view " + std::to_string(accessor.bufferView) + " out of range (" +
-                 std::to_string(model_.bufferViews.size()) + " buffer views)");
-        const tinygltf::BufferView& bufferView = model_.bufferViews[size_t(accessor.bufferView)];
-        if (bufferView.buffer < 0 || size_t(bufferView.buffer) >= model_.buffers.size())
-            fail(name + ": buffer " + std::to_string(bufferView.buffer) + " out of range (" +
-                 std::to_string(model_.buffers.size()) + " buffers)");
-        const tinygltf::Buffer& buffer = model_.buffers[size_t(bufferView.buffer)];
-        const size_t elementSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(accessor.componentType))) * size_t(v.components);
-        v.stride = bufferView.byteStride ? bufferView.byteStride : elementSize;
-        if (bufferView.byteOffset > buffer.data.size() || bufferView.byteLength > buffer.data.size() - bufferView.byteOffset)
-            fail(name + ": buffer view " + std::to_string(accessor.bufferView) + " (bytes " +
-                 std::to_string(bufferView.byteOffset) + " + " + std::to_string(bufferView.byteLength) +
-                 ") lies outside buffer " + std::to_string(bufferView.buffer) + " (" + std::to_string(buffer.data.size()) +
-                 " bytes)");
-        // Overflow-safe: count and stride come from the file.
-        const size_t needed = v.count == 0 ? 0 : accessor.byteOffset + elementSize;
-        const bool fits = v.count == 0 ||
-                          (needed <= bufferView.byteLength && (v.count - 1) <= (bufferView.byteLength - needed) / v.stride);
-        if (!fits)
-            fail(name + ": " + std::to_string(v.count) + " elements from byte " + std::to_string(accessor.byteOffset) +
-                 " do not fit buffer view " + std::to_string(accessor.bufferView) + " (" +
-                 std::to_string(bufferView.byteLength) + " bytes)");
-        v.data = buffer.data.data() + bufferView.byteOffset + accessor.byteOffset;
-        return v;
+        return gltfAccessorView(model_, path_, accessorIndex, what, types, componentTypes);
     }
 
-    static float component(const AccessorView& v, size_t element, int c) {
-        if (!v.data) return 0.0f;
-        const unsigned char* p = v.data + element * v.stride;
-        switch (v.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float f;
-            std::memcpy(&f, p + 4 * c, 4);
-            return f;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(p[c]) / (v.normalized ? 255.0f : 1.0f);
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t s;
-            std::memcpy(&s, p + 2 * c, 2);
-            return float(s) / (v.normalized ? 65535.0f : 1.0f);
-        }
-        default: return 0.0f;
-        }
-    }
-
-    static uint32_t index(const AccessorView& v, size_t element) {
-        if (!v.data) return 0;
-        const unsigned char* p = v.data + element * v.stride;
-        if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return p[0];
-        if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
-            uint16_t s;
-            std::memcpy(&s, p, 2);
-            return s;
-        }
-        uint32_t i;
-        std::memcpy(&i, p, 4);
-        return i;
-    }
+    static float component(const AccessorView& v, size_t element, int c) { return gltfComponent(v, element, c); }
+    static uint32_t index(const AccessorView& v, size_t element) { return gltfIndex(v, element); }
 
     // Before the corner list is allocated: a strip or fan of n corners has n - 2 triangles, a list n / 3.
     void checkTriangleLimit(const std::string& what, size_t corners, int mode) const {
@@ -798,7 +816,7 @@ private:
 
     // The node's world transform places the camera (the validator checked its numbers as floats); the first node
     // in node order that places a camera gives its view.
-    void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world) {
+    void readCamera(const tinygltf::Node& node, const std::string& nodeName, const glm::mat4& world, int animationNode) {
         if (size_t(node.camera) >= model_.cameras.size())
             fail(nodeName + ": camera " + std::to_string(node.camera) + " out of range");
         const tinygltf::Camera& source = model_.cameras[size_t(node.camera)];
@@ -814,6 +832,7 @@ private:
         camera.nearPlane = float(source.perspective.znear);
         camera.farPlane = float(source.perspective.zfar);  // 0: infinite, replaced from the bounds by the caller
         view.unusable.clear();
+        if (animated_) contents_.viewNodes[size_t(node.camera)] = animationNode;
         if (contents_.firstView < 0) contents_.firstView = node.camera;  // the first camera met is the default view
     }
 
@@ -827,6 +846,10 @@ private:
     std::map<int, std::shared_ptr<const ImageRGBA8>> decodedImages_;  // by glTF image index
     ImageFailures imageFailures_;
     GltfContents contents_;
+    bool animated_ = false;          // the file has animations: its nodes join Scene::animation
+    size_t nodeBase_ = 0;            // the first of this file's nodes in Scene::animation
+    std::vector<int> nodeOf_;        // per glTF node, its AnimationNode (-1: not in the default scene)
+    std::vector<int> directionalNodes_;  // the nodes of the directional lights read
 };
 
 }  // namespace

@@ -17,10 +17,13 @@ struct GltfContents {
     std::vector<SceneView> views;
     int firstView = -1;      // the first usable camera met in node order (the default view); -1: none
     size_t lights = 0;       // point lights appended
+    // Per view, the node of Scene::animation that places it (-1: none); empty where the file moves nothing.
+    std::vector<int> viewNodes;
 };
 
 // Appends the glTF file's triangles (node transforms, then `transform`, baked into world space), its materials
-// and its KHR_lights_punctual point lights to `scene`. `overrideMaterial` >= 0 replaces the file's materials
+// and its KHR_lights_punctual point lights to `scene`. A file with animations adds its nodes to Scene::animation
+// (gltf_animation.h), posed at rest: the caller poses the scene at its time (poseScene) once everything is loaded. `overrideMaterial` >= 0 replaces the file's materials
 // with that scene material.
 GltfContents appendGltf(Scene& scene, const std::string& path, const glm::mat4& transform, int overrideMaterial = -1);
 

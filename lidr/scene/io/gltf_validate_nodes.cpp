@@ -146,14 +146,17 @@ void Validator::checkMeshes() {
 }
 
 void Validator::checkSkins() {
-    forEach("skins", [&](const Json& skin, const std::string& at, size_t) {
+    forEach("skins", [&](const Json& skin, const std::string& at, size_t s) {
         index(skin, at, "inverseBindMatrices", "accessors");
         index(skin, at, "skeleton", "nodes");
         const Json* joints = member(skin, at, "joints", Kind::Array, true);
         for (size_t j = 0; j < joints->size(); ++j)
             indexAt((*joints)[j], at + "/joints/" + std::to_string(j), count("nodes"), "nodes");
+        const Json* name = member(skin, at, "name", Kind::String);
+        warn("skin " + std::to_string(s) + (name ? " '" + name->get<std::string>() + "'" : std::string()) + " (" +
+             std::to_string(joints->size()) + " joints) is not applied: its meshes are drawn in their bind pose, moved "
+             "only by their own node");
     });
-    if (count("skins")) warn("skins are not applied (the bind pose is drawn)");
 }
 
 void Validator::checkNodes() {
@@ -245,15 +248,26 @@ void Validator::checkAnimations() {
     forEach("animations", [&](const Json& animation, const std::string& at, size_t) {
         const Json* samplers = member(animation, at, "samplers", Kind::Array, true);
         forEachIn(animation, at, "samplers", [&](const Json& sampler, const std::string& where, size_t) {
-            index(sampler, where, "input", "accessors", true);
+            const int64_t input = index(sampler, where, "input", "accessors", true);
+            const AccessorInfo& info = accessors_[size_t(input)];
+            if (info.type != "SCALAR" || info.componentType != 5126)
+                fail(where + "/input", "accessor " + std::to_string(input) + " must be SCALAR of float (the key times)");
             index(sampler, where, "output", "accessors", true);
+            if (const Json* interpolation = member(sampler, where, "interpolation", Kind::String)) {
+                const std::string name = interpolation->get<std::string>();
+                if (name != "LINEAR" && name != "STEP" && name != "CUBICSPLINE")
+                    fail(where + "/interpolation", "must be LINEAR, STEP or CUBICSPLINE, got '" + name + "'");
+            }
         });
         forEachIn(animation, at, "channels", [&](const Json& channel, const std::string& where, size_t) {
             indexAt(*member(channel, where, "sampler", Kind::Integer, true), where + "/sampler", samplers->size(), "samplers");
-            index(*member(channel, where, "target", Kind::Object, true), where + "/target", "node", "nodes");
+            const Json& target = *member(channel, where, "target", Kind::Object, true);
+            index(target, where + "/target", "node", "nodes");
+            const std::string path = member(target, where + "/target", "path", Kind::String, true)->get<std::string>();
+            if (path != "translation" && path != "rotation" && path != "scale" && path != "weights" && path != "pointer")
+                fail(where + "/target/path", "must be translation, rotation, scale or weights, got '" + path + "'");
         }, true);
     });
-    if (count("animations")) warn("animations are not played (the file's static pose is drawn)");
 }
 
 }  // namespace lidr::gltf_validation

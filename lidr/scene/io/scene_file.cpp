@@ -89,7 +89,10 @@ public:
         if (!root.has("camera") && firstModelView_ >= 0) {
             scene_.view = firstModelView_;
             scene_.camera = scene_.views[size_t(firstModelView_)].camera;
+            if (size_t(firstModelView_) < scene_.animation.viewNodes.size())
+                scene_.animation.cameraNode = scene_.animation.viewNodes[size_t(firstModelView_)];
         }
+        if (!scene_.animation.empty()) poseScene(scene_, scene_.time);  // the models were built in their rest pose
 
         try {
             scene_.validate(maxResolution);
@@ -206,6 +209,11 @@ private:
                 const GltfContents contents = appendGltf(scene_, path, transform, material);
                 if (firstModelView_ < 0 && contents.firstView >= 0)
                     firstModelView_ = int(scene_.views.size()) + contents.firstView;
+                if (!contents.viewNodes.empty()) {  // its cameras on animated nodes ride on them
+                    scene_.animation.viewNodes.resize(scene_.views.size(), -1);
+                    scene_.animation.viewNodes.insert(scene_.animation.viewNodes.end(), contents.viewNodes.begin(),
+                                                      contents.viewNodes.end());
+                }
                 for (SceneView view : contents.views) {
                     view.name = file.text() + " " + view.name;
                     scene_.views.push_back(view);

@@ -12,7 +12,8 @@ namespace lidr {
 
 // .gltf / .glb: the glTF model with its lights, seen by its first camera in node order that lidr can draw (a
 // perspective one), else by the default view that frames its bounds (cameraFramingBounds); Scene::views lists
-// every camera of the file. .obj: the model alone, no lights, seen by that default view.
+// every camera of the file. .obj: the model alone, no lights, seen by that default view. .aff / .nff: a BART scene
+// (aff_importer.h) with its camera, lights and keyframe animation, posed at its start.
 // Other model formats (.ply, .fbx, ...) are errors naming the format; anything else is read as a lidr JSON scene
 // file (doc/scene-format.md; usually .json). Extensions are matched without regard to case. The result is
 // validated (Scene::validate).

@@ -1,0 +1,29 @@
+#pragma once
+// One frame of a mode judged against the brute-force reference of the same frame: the image error, and where the
+// mode keeps per-pixel light lists (LIDR's index lists, tiled's tile lists, clustered's cluster lists) those lists
+// against the CPU truth of which lights touch each pixel's surface: light-pixels dropped, shaded, and the truth.
+#include <vector>
+
+#include "lidr/eval/image_compare.h"
+#include "lidr/render/renderer.h"
+
+namespace lidr::bench {
+
+struct FrameAccuracy {
+    ImageError error;
+    bool hasLists = false;         // the lists below were checked (LIDR, tiled, clustered; not with MSAA)
+    long droppedLightPixels = 0;   // (pixel, light) pairs whose light touches the pixel and is not in its list
+    long pixelsWithDrops = 0;
+    long trueLightPixels = 0;      // (pixel, light) pairs of the truth: the fewest lighting computations that are exact
+    long shadedLightPixels = 0;    // entries of the surface pixels' lists: the lighting computations the mode makes
+    // LIDR: surface pixels where more lights mark the pixel than its budget holds (its lists drop some by design,
+    // the lowest priority first), and the image error over the other pixels alone. 0 and `error` elsewhere.
+    long pixelsOverBudget = 0;
+    ImageError errorWithinBudget;
+};
+
+// The frame `renderer` drew last (its colour `image`) against `reference`. `camera` and `lights` are the frame's.
+FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights,
+                         const ImageRGBA8& image, const ImageRGBA8& reference);
+
+}  // namespace lidr::bench
