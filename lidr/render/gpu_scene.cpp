@@ -380,11 +380,15 @@ namespace {
 bool drawsBatch(DrawFilter filter, bool transparent) {
     return !((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent));
 }
+// The same, asking the batch's material only where the filter needs it (the frame plan asks All per light).
+bool drawsBatch(const GpuScene& scene, DrawFilter filter, size_t batch) {
+    return filter == DrawFilter::All || drawsBatch(filter, scene.batchTransparent(batch));
+}
 }  // namespace
 
 bool GpuScene::batchesTouchSphere(const glm::vec4& posRadius, DrawFilter filter) const {
     for (size_t b = 0; b < batchCount(); ++b) {
-        if (!drawsBatch(filter, batchTransparent(b))) continue;
+        if (!drawsBatch(*this, filter, b)) continue;
         glm::vec3 lo, hi;
         batchBounds(b, lo, hi);
         if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
@@ -395,7 +399,7 @@ bool GpuScene::batchesTouchSphere(const glm::vec4& posRadius, DrawFilter filter)
 bool GpuScene::batchesPixelRect(const CameraMatrices& camera, DrawFilter filter, glm::ivec4& rect) const {
     bool any = false;
     for (size_t b = 0; b < batchCount(); ++b) {
-        if (!drawsBatch(filter, batchTransparent(b))) continue;
+        if (!drawsBatch(*this, filter, b)) continue;
         glm::vec3 lo, hi;
         batchBounds(b, lo, hi);
         glm::ivec4 r;
