@@ -569,6 +569,39 @@ int runHeadless(const demo::SceneChoice& sceneChoice, const demo::RendererChoice
     return 0;
 }
 
+// --list-passes MODE|all: each mode's frame as its passes in order (Renderer::passes(): what each reads and writes,
+// and when it runs where not every frame), as the other options build the mode for this scene on this context; the
+// automatic mode lists each candidate's. Nothing is drawn.
+int listPasses(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc, const std::string& which) {
+    if (which != "all" && !isRenderModeName(which))
+        throw Error("--list-passes takes a render mode (" + renderModeList() + ") or all; got '" + which + "'");
+    const Scene scene = sceneChoice.load();
+    std::vector<RenderModeOptions> modes;
+    for (const std::string& name : which == "all" ? renderModeNames() : std::vector<std::string>{which}) {
+        rc.mode = name;
+        modes.push_back(rc.renderModeOptions(scene));  // checked before the context
+    }
+    const std::unique_ptr<GlContext> context = GlContext::create(rc.contextOptions());
+    std::cout << "GL: " << context->info().summary() << "\n";
+    auto print = [&](const std::string& mode, const std::vector<FramePass>& passes) {
+        std::cout << "\n" << mode << " (" << scene.width << "x" << scene.height << "): " << passes.size()
+                  << " passes in frame order: what each reads -> what it writes ([x]: where the frame has x)\n"
+                  << describePasses(passes);
+    };
+    for (const RenderModeOptions& mo : modes) {
+        const std::unique_ptr<Renderer> renderer = createRenderer(mo, context->info(), scene, scene.width, scene.height);
+        const auto* automatic = dynamic_cast<const AutoModeRenderer*>(renderer.get());
+        if (!automatic) {
+            print(mo.mode, renderer->passes());
+            continue;
+        }
+        std::cout << "\nauto: its frames are those of the candidate it picks by time, one of these:\n";
+        for (size_t i = 0; i < automatic->candidates().size(); ++i)
+            print("auto: " + automatic->candidates()[i], automatic->renderer(i).passes());
+    }
+    return 0;
+}
+
 int runWindow(const demo::SceneChoice& sceneChoice, demo::RendererChoice rc) {
 #if LIDR_HAVE_GLFW
     ContextOptions co = rc.contextOptions();
@@ -663,6 +696,11 @@ int main(int argc, char** argv) {
                    "Soak run: frame k shows time + k * S seconds; writes soak.csv (image hash, memory, GL objects "
                    "per frame) and soak.json instead of the usual images");
     app.add_flag("--no-reference", noReference, "Skip the brute-force reference and the error figures");
+    std::string listPassesMode;
+    app.add_option("--list-passes", listPassesMode,
+                   "Print the passes of MODE's frame (" + renderModeList() + ", or all) in order, with what each reads "
+                   "and writes and when it runs, as the other options build it for the scene on this context; then "
+                   "exit without drawing");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -670,6 +708,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (window && headless) throw Error("--window and --headless exclude each other");
+        if (!listPassesMode.empty()) return listPasses(sceneChoice, rc, listPassesMode);
         if (window) return runWindow(sceneChoice, rc);
         if (timeStep) {
             if (!std::isfinite(*timeStep) || *timeStep < 0.0)

@@ -9,15 +9,7 @@
 # Inputs: BENCH (executable), OUT (scratch folder), BART (../shared/bart-robots beside the source tree).
 file(REMOVE_RECURSE ${OUT})
 
-function(run_bench expect_rc expect_text)
-  execute_process(COMMAND ${BENCH} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "lidr-bench ${ARGN}: exit ${rc}, expected ${expect_rc}\n${out}\n${err}")
-  endif()
-  if(NOT "${expect_text}" STREQUAL "" AND NOT "${out}${err}" MATCHES "${expect_text}")
-    message(FATAL_ERROR "lidr-bench ${ARGN}: output lacks '${expect_text}':\n${out}\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/bench_test_helpers.cmake)  # run_bench
 
 if(NOT EXISTS ${BART}/aff/Robot.aff)
   message(FATAL_ERROR "BART's Robots are not at ${BART} (../shared/bart-robots beside the source tree)")

@@ -9,15 +9,7 @@
 file(REMOVE_RECURSE ${OUT})
 find_program(GNUPLOT gnuplot)
 
-function(run_bench expect_rc expect_text)
-  execute_process(COMMAND ${BENCH} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL expect_rc)
-    message(FATAL_ERROR "lidr-bench ${ARGN}: exit ${rc}, expected ${expect_rc}\n${out}\n${err}")
-  endif()
-  if(NOT "${expect_text}" STREQUAL "" AND NOT "${out}${err}" MATCHES "${expect_text}")
-    message(FATAL_ERROR "lidr-bench ${ARGN}: output lacks '${expect_text}':\n${out}\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/bench_test_helpers.cmake)  # run_bench
 
 function(check_output dir)
   execute_process(COMMAND ${CHECK} ${dir} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

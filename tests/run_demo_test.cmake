@@ -403,3 +403,13 @@ string(JSON max_error GET "${summary}" error whole_image max_abs_error)
 if(NOT casters EQUAL 25 OR NOT first EQUAL 135 OR NOT last EQUAL 0 OR max_error GREATER 1)
   message(FATAL_ERROR "lidr-demo --shadows scene on pillar-hall-shadows.json: ${casters} casters, ${first} maps on the first frame, ${last} on the last, max error ${max_error}")
 endif()
+
+# --list-passes: a mode's passes in frame order with what each reads and writes, as the options build it; nothing
+# drawn. Tiled without depth bounds has no depth reduction; a bad mode is refused before any context.
+execute_process(COMMAND ${DEMO} --list-passes tiled --no-depth-bounds --width 64 --height 48
+                RESULT_VARIABLE r OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT r EQUAL 0 OR NOT out MATCHES "tiled \\(64x48\\): 6 passes" OR NOT out MATCHES "1  shadow-maps"
+   OR NOT out MATCHES "5  tiled-forward +scene, depth, light grid, light table" OR out MATCHES "tile-depth-reduce")
+  message(FATAL_ERROR "lidr-demo --list-passes tiled --no-depth-bounds (${r}):\n${out}${err}")
+endif()
+expect_refused("--list-passes|bogus" "--list-passes takes a render mode" NO_CONTEXT)

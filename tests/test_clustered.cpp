@@ -385,6 +385,20 @@ TEST_CASE("cluster grid: occupied slices hold every slice a pixel's depth can be
 
 // --- GPU ----------------------------------------------------------------------------------------------------
 
+namespace {
+// The rows of the occupancy tables: the dense grid, then occupied clusters where the context reads depth back.
+std::vector<bool> occupancyRows() {
+    return testGl().readDepthStencil ? std::vector<bool>{false, true} : std::vector<bool>{false};
+}
+// A row's options: 16 px tiles, occupied clusters as it asks.
+ClusteredOptions occupancyRowOptions(bool occupancy) {
+    ClusteredOptions c;
+    c.tileSize = 16;
+    c.occupiedClusters = occupancy;
+    return c;
+}
+}  // namespace
+
 TEST_CASE("clustered equals the reference on the default room, dense and with occupied clusters", "[clustered][every-gl]") {
     DefaultSceneOptions o;
     o.width = testWidth();
@@ -393,11 +407,8 @@ TEST_CASE("clustered equals the reference on the default room, dense and with oc
     const Scene scene = makeDefaultScene(o);
     const ImageRGBA8 reference = referenceImage(scene, scene.lightsAt(scene.time), false);
     long denseClusters = -1;
-    for (bool occupancy : {false, true}) {
-        if (occupancy && !testGl().readDepthStencil) continue;
-        ClusteredOptions c;
-        c.tileSize = 16;
-        c.occupiedClusters = occupancy;
+    for (bool occupancy : occupancyRows()) {
+        const ClusteredOptions c = occupancyRowOptions(occupancy);
         const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
         INFO("occupancy " << occupancy);
         requireEqualsReference(check);
@@ -570,11 +581,8 @@ TEST_CASE("clustered: transparent meshes find their own clusters; with occupancy
     scene.lights.push_back(light({0.8f, 1.0f, 4.9f}, 1.0f, {0.5f, 1.0f, 0.5f}));
     scene.lights.push_back(light({0.2f, 1.3f, 3.4f}, 0.5f, {1.0f, 0.3f, 0.3f}));   // lights only the glass
     const ImageRGBA8 reference = referenceImage(scene, scene.lights, false);
-    for (bool occupancy : {false, true}) {
-        if (occupancy && !testGl().readDepthStencil) continue;
-        ClusteredOptions c;
-        c.tileSize = 16;
-        c.occupiedClusters = occupancy;
+    for (bool occupancy : occupancyRows()) {
+        const ClusteredOptions c = occupancyRowOptions(occupancy);
         const ClusteredCheck check = renderClustered(scene, c, nullptr, &reference);
         INFO("occupancy " << occupancy);
         requireEqualsReference(check);

@@ -24,17 +24,10 @@ static bool hasExtension(const char* name) {
     return false;
 }
 
-// OpenGL ES 2.0 (and later ES, taken through the same ES 2.0 path): every capability from an ES 2.0 extension.
 // GLEW parsed "OpenGL ES 2.0 Mesa ..." as GL 2.0 (the digits around the first '.') and, with glewExperimental,
 // loaded every entry point by name through glvnd, whose dispatch serves ES contexts too; the ones lidr calls on
 // ES are checked here, so a missing one is refused now rather than called as a null pointer later.
-static GlInfo esContextGlInfo(GlInfo info) {
-    std::sscanf(info.version.c_str(), "OpenGL ES %d.%d", &info.major, &info.minor);
-    int glslMajor = 0, glslMinor = 0;
-    if (std::sscanf(info.glslVersion.c_str(), "OpenGL ES GLSL ES %d.%d", &glslMajor, &glslMinor) == 2)
-        info.glsl = glslMajor * 100 + (glslMinor >= 10 ? glslMinor : glslMinor * 10);
-    if (info.major < 2)
-        throw UnsupportedError(info.backend + ": " + info.version + " is below the OpenGL ES 2.0 lidr needs");
+static void checkEsEntryPoints(const GlInfo& info) {
     const std::pair<const char*, const void*> entryPoints[] = {
         {"glCreateShader", reinterpret_cast<const void*>(glCreateShader)},
         {"glShaderSource", reinterpret_cast<const void*>(glShaderSource)},
@@ -91,7 +84,17 @@ static GlInfo esContextGlInfo(GlInfo info) {
     };
     for (const auto& [name, fn] : entryPoints)
         if (!fn) throw UnsupportedError(info.backend + ": " + info.version + ": no entry point for " + name);
+}
 
+// OpenGL ES 2.0 (and later ES, taken through the same ES 2.0 path): every capability from an ES 2.0 extension.
+static GlInfo esContextGlInfo(GlInfo info) {
+    std::sscanf(info.version.c_str(), "OpenGL ES %d.%d", &info.major, &info.minor);
+    int glslMajor = 0, glslMinor = 0;
+    if (std::sscanf(info.glslVersion.c_str(), "OpenGL ES GLSL ES %d.%d", &glslMajor, &glslMinor) == 2)
+        info.glsl = glslMajor * 100 + (glslMinor >= 10 ? glslMinor : glslMinor * 10);
+    if (info.major < 2)
+        throw UnsupportedError(info.backend + ": " + info.version + " is below the OpenGL ES 2.0 lidr needs");
+    checkEsEntryPoints(info);
     info.framebufferObject = hasExtension("GL_OES_packed_depth_stencil");  // lidr shares one depth-stencil
     info.textureFloat = hasExtension("GL_OES_texture_float");
     info.halfFloatColorBuffer =

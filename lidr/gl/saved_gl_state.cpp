@@ -73,6 +73,14 @@ SavedGlState::~SavedGlState() {
 }
 
 void SavedGlState::save() {
+    saveBindings();
+    savePixelStore();
+    saveFixedFunction();
+    saveBuffers();
+    setDefaultsLidrAssumes();
+}
+
+void SavedGlState::saveBindings() {
     // The caller's vertex array object stays bound: lidr's vertex setup changes its attributes 0..7 and
     // element buffer, which are saved here and put back. (Switching to VAO 0 instead crashed softpipe,
     // Mesa 22.3, in a later draw.)
@@ -89,6 +97,9 @@ void SavedGlState::save() {
         if (multisampleTex_) glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &texture2DMs_[i]);
     }
     glActiveTexture(activeTexture_);
+}
+
+void SavedGlState::savePixelStore() {
     glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
     glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment_);
     if (!gles_) {
@@ -103,6 +114,9 @@ void SavedGlState::save() {
         glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pixelPackBuffer_);  // GL 2.1 core; ES 2.0 has none
         glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &pixelUnpackBuffer_);
     }
+}
+
+void SavedGlState::saveFixedFunction() {
     alphaToCoverage_ = glIsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glGetIntegerv(GL_VIEWPORT, viewport_);
     glGetIntegerv(GL_SCISSOR_BOX, scissorBox_);
@@ -146,6 +160,9 @@ void SavedGlState::save() {
     glGetBooleanv(GL_COLOR_WRITEMASK, colorMask_);
     glGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode_);
     glGetIntegerv(GL_FRONT_FACE, &frontFace_);
+}
+
+void SavedGlState::saveBuffers() {
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &drawFramebuffer_);
     if (readFramebuffer_) glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebufferBinding_);
     glGetIntegerv(GL_RENDERBUFFER_BINDING, &renderbuffer_);
@@ -164,6 +181,9 @@ void SavedGlState::save() {
         glGetVertexAttribiv(i, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &a.buffer);
         glGetVertexAttribPointerv(i, GL_VERTEX_ATTRIB_ARRAY_POINTER, &a.pointer);
     }
+}
+
+void SavedGlState::setDefaultsLidrAssumes() {
     // lidr's passes set every RenderState field and assume GL's defaults for the rest: pixel store (read-backs
     // into tight buffers), polygon offset and mode, front face, logic op, alpha to coverage.
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

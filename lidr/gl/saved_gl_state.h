@@ -30,6 +30,14 @@ private:
         void* pointer = nullptr;
     };
     void save();
+    // save()'s parts: the program, VAO and texture units; the pixel store (with the desktop-only polygon mode, logic
+    // op and pixel buffers); the fixed-function state; framebuffers, buffers and attributes; then the GL defaults
+    // lidr's passes assume.
+    void saveBindings();
+    void savePixelStore();
+    void saveFixedFunction();
+    void saveBuffers();
+    void setDefaultsLidrAssumes();
     void restore() const;
 
     // gles_: OpenGL ES 2.0 has no row length / skip pixel store, polygon mode or logic op to save.

@@ -32,6 +32,8 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     const FrameResources& frame() const override { return lastRenderer().frame(); }
+    // Its frames are its candidates': the passes of the candidate that drew the last frame (lidr's before any).
+    std::vector<FramePass> passes() const override { return lastRenderer().passes(); }
     size_t lightDataBytes() const override { return renderers_[size_t(last_)]->lightDataBytes(); }
     void setTiming(bool on, bool waitForResults = false) override {  // every candidate's pass times
         for (auto& r : renderers_) r->setTiming(on, waitForResults);

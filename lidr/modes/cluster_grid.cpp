@@ -198,6 +198,18 @@ ClusterCell ClusterGrid::cell(const CameraMatrices& camera, const ClusterSlices&
             float(slices.boundary(k + 1))};
 }
 
+// A light's sphere in view space as build() tests it against the cells.
+struct ClusterGrid::ViewSphere {
+    glm::vec3 c{0.0f};         // the centre in view space
+    double depth = 0.0;        // its view depth
+    double reach = 0.0;        // the radius grown for rounding, squared
+    double reachDistance = 0.0;
+    bool spot = false;
+    ViewCone cone{};
+    uint32_t index = 0;        // the light's index (light i: i + 1)
+    int tx0 = 0, tx1 = 0;      // the tile columns its pixel rectangle spans
+};
+
 void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLight>& lights, const ClusterSlices& slices,
                         const std::vector<uint64_t>* occupied, float radiusMargin) {
     if (camera.width != width_ || camera.height != height_)
@@ -212,6 +224,16 @@ void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLig
         throw Error("cluster grid: " + std::to_string(occupied->size()) + " occupancy masks for " +
                     std::to_string(tileCount()) + " tiles");
     indexBits_ = lights.size() <= 255 ? 8 : 16;
+    prepareCells(camera, slices);
+    stats_ = ClusterGridStats{};
+    pairCluster_.clear();
+    pairLight_.clear();
+    for (size_t i = 0; i < lights.size(); ++i)
+        assignLight(camera, lights[i], uint32_t(i + 1), slices, occupied, radiusMargin);
+    layOutLists(occupied);
+}
+
+void ClusterGrid::prepareCells(const CameraMatrices& camera, const ClusterSlices& slices) {
     slopeX_ = boundarySlopes(tilesX_, tileSize_, width_, camera.projection[0][0], camera.projection[2][0]);
     slopeY_ = boundarySlopes(tilesY_, tileSize_, height_, camera.projection[1][1], camera.projection[2][1]);
     // A side plane x + s z = 0 has the unit normal (1, 0, s) / sqrt(1 + s^2).
@@ -222,86 +244,94 @@ void ClusterGrid::build(const CameraMatrices& camera, const std::vector<PointLig
     columnOutside_.resize(size_t(tilesX_));
     rowOutside_.resize(size_t(tilesY_));
     const double absolute = absoluteSliceMargin(camera);
-    double sliceNear[kMaxSlices], sliceFar[kMaxSlices];
-    for (int k = 0; k < slices_; ++k) widenedSlice(slices, k, absolute, sliceNear[k], sliceFar[k]);
+    for (int k = 0; k < slices_; ++k) widenedSlice(slices, k, absolute, sliceNear_[k], sliceFar_[k]);
+}
 
-    stats_ = ClusterGridStats{};
-    pairCluster_.clear();
-    pairLight_.clear();
-    const int tiles = tileCount();
-    for (size_t i = 0; i < lights.size(); ++i) {
-        const PointLight& l = lights[i];
-        const float radius = l.radius + radiusMargin;
-        glm::ivec4 rect;
-        if (!spherePixelRect(camera, l.position, radius, rect)) continue;
-        const glm::vec3 c = glm::vec3(camera.view * glm::vec4(l.position, 1.0f));
-        const double depth = -double(c.z);
-        const double dmin = std::max(double(camera.nearPlane), depth - radius);
-        const double dmax = std::min(double(camera.farPlane), depth + radius);
-        if (dmin > dmax) continue;
-        int k0 = slices.sliceOf(dmin), k1 = slices.sliceOf(dmax);
-        while (k0 > 0 && sliceFar[k0 - 1] >= dmin) --k0;
-        while (k1 < slices_ - 1 && sliceNear[k1 + 1] <= dmax) ++k1;
-        // The sphere grown for the float rounding of its view-space centre (and the shader's of the distance).
-        const double slack = 1e-5 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + radius);
-        const double reach = (double(radius) + slack) * (double(radius) + slack);
-        const bool spot = l.isSpot();
-        const ViewCone cone = spot ? viewCone(camera, l, radius) : ViewCone{};
-        const int tx0 = rect.x / tileSize_, tx1 = rect.z / tileSize_, ty0 = rect.y / tileSize_, ty1 = rect.w / tileSize_;
-        // How far the centre lies outside each tile column's and row's side planes (planes through the eye) and
-        // each slice's depth planes: the largest of a cell's is a lower bound of its distance (the cell lies in
-        // every half-space), so above the radius the cell is out without the exact test, and at or below 0 the
-        // centre is inside it.
-        for (int tx = tx0; tx <= tx1; ++tx)
-            columnOutside_[size_t(tx)] = std::max(-(c.x + slopeX_[size_t(tx)] * double(c.z)) * planeScaleX_[size_t(tx)],
-                                                  (c.x + slopeX_[size_t(tx) + 1] * double(c.z)) * planeScaleX_[size_t(tx) + 1]);
-        for (int ty = ty0; ty <= ty1; ++ty)
-            rowOutside_[size_t(ty)] = std::max(-(c.y + slopeY_[size_t(ty)] * double(c.z)) * planeScaleY_[size_t(ty)],
-                                               (c.y + slopeY_[size_t(ty) + 1] * double(c.z)) * planeScaleY_[size_t(ty) + 1]);
-        const double reachDistance = std::sqrt(reach);
-        const size_t pairsBefore = pairCluster_.size();
-        // The sphere's part within a slice and a tile row is convex, and x / d is continuous on it, so the columns
-        // whose cells it meets are one run: found from both ends, the cells between need no test.
-        for (int k = k0; k <= k1; ++k) {
-            const double sliceOutside = std::max(sliceNear[k] - depth, depth - sliceFar[k]);
-            if (sliceOutside > reachDistance) continue;
-            for (int ty = ty0; ty <= ty1; ++ty) {
-                const double rowOutside = std::max(sliceOutside, rowOutside_[size_t(ty)]);
-                if (rowOutside > reachDistance) continue;
-                const auto cellOf = [&](int tx) {
-                    return ClusterCell{slopeX_[size_t(tx)], slopeX_[size_t(tx) + 1], slopeY_[size_t(ty)],
-                                       slopeY_[size_t(ty) + 1], float(sliceNear[k]), float(sliceFar[k])};
-                };
-                const auto meets = [&](int tx) {
-                    const double outside = std::max(rowOutside, columnOutside_[size_t(tx)]);
-                    if (outside > reachDistance) return false;
-                    if (outside <= 0.0) return true;  // the centre is inside the cell
-                    // A point of the cell near the centre (its depth clamped to the slice, then x and y to the
-                    // cross-section there): within reach, the cell is too.
-                    const double d = std::clamp(depth, sliceNear[k], sliceFar[k]);
-                    const double qx = std::clamp(double(c.x), double(slopeX_[size_t(tx)]) * d, double(slopeX_[size_t(tx) + 1]) * d);
-                    const double qy = std::clamp(double(c.y), double(slopeY_[size_t(ty)]) * d, double(slopeY_[size_t(ty) + 1]) * d);
-                    if ((qx - c.x) * (qx - c.x) + (qy - c.y) * (qy - c.y) + (d - depth) * (d - depth) <= reach) return true;
-                    ++stats_.cellTests;
-                    return cellDistanceSquared(cellOf(tx), c) <= reach;
-                };
-                int first = tx0;
-                while (first <= tx1 && !meets(first)) ++first;
-                if (first > tx1) continue;
-                int last = tx1;
-                while (last > first && !meets(last)) --last;
-                for (int tx = first; tx <= last; ++tx) {
-                    const int tile = ty * tilesX_ + tx;
-                    if (occupied && !(((*occupied)[size_t(tile)] >> k) & 1u)) continue;
-                    if (spot && !coneMayReachCell(cone, cellOf(tx), radiusMargin)) continue;
-                    pairCluster_.push_back(uint32_t(k * tiles + tile));
-                    pairLight_.push_back(uint32_t(i + 1));
-                }
-            }
+void ClusterGrid::assignLight(const CameraMatrices& camera, const PointLight& l, uint32_t index,
+                              const ClusterSlices& slices, const std::vector<uint64_t>* occupied, float radiusMargin) {
+    const float radius = l.radius + radiusMargin;
+    glm::ivec4 rect;
+    if (!spherePixelRect(camera, l.position, radius, rect)) return;
+    ViewSphere s;
+    s.c = glm::vec3(camera.view * glm::vec4(l.position, 1.0f));
+    const glm::vec3& c = s.c;
+    s.depth = -double(c.z);
+    const double dmin = std::max(double(camera.nearPlane), s.depth - radius);
+    const double dmax = std::min(double(camera.farPlane), s.depth + radius);
+    if (dmin > dmax) return;
+    int k0 = slices.sliceOf(dmin), k1 = slices.sliceOf(dmax);
+    while (k0 > 0 && sliceFar_[k0 - 1] >= dmin) --k0;
+    while (k1 < slices_ - 1 && sliceNear_[k1 + 1] <= dmax) ++k1;
+    // The sphere grown for the float rounding of its view-space centre (and the shader's of the distance).
+    const double slack = 1e-5 * (std::abs(c.x) + std::abs(c.y) + std::abs(c.z) + radius);
+    s.reach = (double(radius) + slack) * (double(radius) + slack);
+    s.spot = l.isSpot();
+    s.cone = s.spot ? viewCone(camera, l, radius) : ViewCone{};
+    s.index = index;
+    s.tx0 = rect.x / tileSize_, s.tx1 = rect.z / tileSize_;
+    const int ty0 = rect.y / tileSize_, ty1 = rect.w / tileSize_;
+    // How far the centre lies outside each tile column's and row's side planes (planes through the eye) and
+    // each slice's depth planes: the largest of a cell's is a lower bound of its distance (the cell lies in
+    // every half-space), so above the radius the cell is out without the exact test, and at or below 0 the
+    // centre is inside it.
+    for (int tx = s.tx0; tx <= s.tx1; ++tx)
+        columnOutside_[size_t(tx)] = std::max(-(c.x + slopeX_[size_t(tx)] * double(c.z)) * planeScaleX_[size_t(tx)],
+                                              (c.x + slopeX_[size_t(tx) + 1] * double(c.z)) * planeScaleX_[size_t(tx) + 1]);
+    for (int ty = ty0; ty <= ty1; ++ty)
+        rowOutside_[size_t(ty)] = std::max(-(c.y + slopeY_[size_t(ty)] * double(c.z)) * planeScaleY_[size_t(ty)],
+                                           (c.y + slopeY_[size_t(ty) + 1] * double(c.z)) * planeScaleY_[size_t(ty) + 1]);
+    s.reachDistance = std::sqrt(s.reach);
+    const size_t pairsBefore = pairCluster_.size();
+    for (int k = k0; k <= k1; ++k) {
+        const double sliceOutside = std::max(sliceNear_[k] - s.depth, s.depth - sliceFar_[k]);
+        if (sliceOutside > s.reachDistance) continue;
+        for (int ty = ty0; ty <= ty1; ++ty) {
+            const double rowOutside = std::max(sliceOutside, rowOutside_[size_t(ty)]);
+            if (rowOutside > s.reachDistance) continue;
+            assignRow(s, k, ty, rowOutside, occupied, radiusMargin);
         }
-        if (pairCluster_.size() > pairsBefore) ++stats_.assignedLights;
     }
+    if (pairCluster_.size() > pairsBefore) ++stats_.assignedLights;
+}
 
+void ClusterGrid::assignRow(const ViewSphere& s, int k, int ty, double rowOutside, const std::vector<uint64_t>* occupied,
+                            float radiusMargin) {
+    const glm::vec3& c = s.c;
+    const auto cellOf = [&](int tx) {
+        return ClusterCell{slopeX_[size_t(tx)], slopeX_[size_t(tx) + 1], slopeY_[size_t(ty)],
+                           slopeY_[size_t(ty) + 1], float(sliceNear_[k]), float(sliceFar_[k])};
+    };
+    const auto meets = [&](int tx) {
+        const double outside = std::max(rowOutside, columnOutside_[size_t(tx)]);
+        if (outside > s.reachDistance) return false;
+        if (outside <= 0.0) return true;  // the centre is inside the cell
+        // A point of the cell near the centre (its depth clamped to the slice, then x and y to the
+        // cross-section there): within reach, the cell is too.
+        const double d = std::clamp(s.depth, sliceNear_[k], sliceFar_[k]);
+        const double qx = std::clamp(double(c.x), double(slopeX_[size_t(tx)]) * d, double(slopeX_[size_t(tx) + 1]) * d);
+        const double qy = std::clamp(double(c.y), double(slopeY_[size_t(ty)]) * d, double(slopeY_[size_t(ty) + 1]) * d);
+        if ((qx - c.x) * (qx - c.x) + (qy - c.y) * (qy - c.y) + (d - s.depth) * (d - s.depth) <= s.reach) return true;
+        ++stats_.cellTests;
+        return cellDistanceSquared(cellOf(tx), c) <= s.reach;
+    };
+    // The sphere's part within a slice and a tile row is convex, and x / d is continuous on it, so the columns
+    // whose cells it meets are one run: found from both ends, the cells between need no test.
+    int first = s.tx0;
+    while (first <= s.tx1 && !meets(first)) ++first;
+    if (first > s.tx1) return;
+    int last = s.tx1;
+    while (last > first && !meets(last)) --last;
+    const int tiles = tileCount();
+    for (int tx = first; tx <= last; ++tx) {
+        const int tile = ty * tilesX_ + tx;
+        if (occupied && !(((*occupied)[size_t(tile)] >> k) & 1u)) continue;
+        if (s.spot && !coneMayReachCell(s.cone, cellOf(tx), radiusMargin)) continue;
+        pairCluster_.push_back(uint32_t(k * tiles + tile));
+        pairLight_.push_back(s.index);
+    }
+}
+
+void ClusterGrid::layOutLists(const std::vector<uint64_t>* occupied) {
     // Lists by counting sort: lights were visited in ascending order, so every list comes out ascending.
     const size_t clusters = size_t(clusterCount());
     counts_.assign(clusters, 0);

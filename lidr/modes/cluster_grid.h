@@ -141,12 +141,22 @@ public:
 private:
     std::vector<uint64_t> markOccupied(const float* windowDepth, const uint32_t* packed, const CameraMatrices& camera,
                                        const ClusterSlices& slices, bool transparentReach, float depthMargin) const;
+    // build()'s steps: the frame's tile side planes and widened slices; each light's cells (a row of a slice at a
+    // time) as light-cluster pairs; the pairs into lists.
+    struct ViewSphere;
+    void prepareCells(const CameraMatrices& camera, const ClusterSlices& slices);
+    void assignLight(const CameraMatrices& camera, const PointLight& light, uint32_t index, const ClusterSlices& slices,
+                     const std::vector<uint64_t>* occupied, float radiusMargin);
+    void assignRow(const ViewSphere& sphere, int slice, int tileRow, double rowOutside,
+                   const std::vector<uint64_t>* occupied, float radiusMargin);
+    void layOutLists(const std::vector<uint64_t>* occupied);
 
     int width_, height_, tileSize_, tilesX_, tilesY_, slices_;
     int indexBits_ = 8;
     std::vector<float> slopeX_, slopeY_;  // tile boundaries: tilesX + 1 and tilesY + 1 view-space slopes
     std::vector<double> planeScaleX_, planeScaleY_;     // 1 / |normal| of each boundary's side plane
     std::vector<double> columnOutside_, rowOutside_;    // per light: its centre's distance outside a column, a row
+    double sliceNear_[kMaxSlices] = {}, sliceFar_[kMaxSlices] = {};  // the frame's slices, widened (widenedSlice)
     std::vector<uint32_t> entries_, offsets_;
     std::vector<int> counts_;
     std::vector<uint32_t> pairCluster_, pairLight_;  // the frame's light-cluster pairs, lights in ascending order

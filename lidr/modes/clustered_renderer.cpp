@@ -74,48 +74,100 @@ void ClusteredRenderer::buildProgram(int loopBound, int indexBits) {
     ++frameInfo_.shaderRebuilds;
 }
 
+namespace {
+// Clustered forward's own passes, between FrameResources' (passes(), render()).
+constexpr FramePass kClusterOccupancy{"cluster-occupancy", "depth (read back)",
+                                      "slices fitted to the surfaces, occupied clusters"};
+constexpr FramePass kLightGrid{"light-grid", "lights, occupied clusters", "cluster grid (CPU, uploaded)"};
+constexpr FramePass kLightGridDense{"light-grid", "lights", "cluster grid (CPU, uploaded)"};
+constexpr FramePass kClusteredForward{"clustered-forward",
+                                      "scene, depth, cluster grid, light table, [shadow atlas], [environment]", "colour"};
+constexpr FramePass kClusteredTransparent{"clustered-transparent",
+                                          "transparent meshes, depth, cluster grid, light table, [shadow atlas], "
+                                          "[environment]",
+                                          "colour", "transparent meshes in the scene"};
+}  // namespace
+
+std::vector<FramePass> ClusteredRenderer::passes() const {
+    std::vector<FramePass> p{pass::kShadowMaps, pass::kLightTable};
+    if (options_.preZ) p.push_back(pass::kDepthPrepass);
+    const bool occupancy = usesOccupancy();
+    if (occupancy) p.push_back(kClusterOccupancy);
+    p.push_back(occupancy ? kLightGrid : kLightGridDense);
+    p.push_back(kClusteredForward);
+    if (options_.transparency) p.push_back(kClusteredTransparent);
+    if (frame_.targets.samples() > 0) p.push_back(pass::kMsaaResolve);
+    return p;
+}
+
 const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
     const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "clustered");
     const FrameScope scope(stats_, frame_.timer, lights.size());
-    frame_.prepareLights(lights, shading, stats_);
+    frame_.prepareLights(lights, shading, stats_);  // shadow-maps, light-table
     const bool transparent = options_.transparency && frame_.scene.hasTransparent();
-
     if (options_.preZ) frame_.drawDepthPrepass(cam);
-
-    const bool occupancy = options_.occupiedClusters && frame_.targets.samples() == 0;
     ClusterSlices slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear);
-    std::vector<uint64_t> occupied;
-    double occupancyMs = 0.0;
-    if (occupancy) {  // Olsson's occupied-cluster step, from the pre-Z depth
-        TimedPass occupancyTime(frame_.timer, "cluster-occupancy");
-        const double start = nowMilliseconds();
-        const int w = frame_.targets.width(), h = frame_.targets.height();
-        packedDepth_.resize(size_t(w) * size_t(h));
-        frame_.targets.bindColor();
-        // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read): the
-        // depth in the top 24 bits, compared in 24-bit steps without a conversion to float.
-        glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        glReadPixels(0, 0, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packedDepth_.data());
-        checkGl("clustered: depth read-back");
-        uint32_t nearest = 0xFFFFFFu, farthest = 0u;  // of the surfaces (24-bit depths below the cleared 1.0)
-        for (const uint32_t word : packedDepth_) {
-            const uint32_t d = word >> 8;
-            if (d < 0xFFFFFFu) nearest = std::min(nearest, d), farthest = std::max(farthest, d);
-        }
-        // The slices span the frame's surfaces (widened by a depth step each way): thinner where they are.
-        constexpr double kScale = 1.0 / 16777215.0;
-        if (nearest <= farthest && slices_ > 1)
-            slicing = clusterSlices(cam, slices_, options_.slicing, options_.lightNear,
-                                    viewDepthFromWindowDepth(cam, float(double(nearest - std::min(nearest, 1u)) * kScale)),
-                                    viewDepthFromWindowDepth(cam, float(double(std::min(farthest + 1, 0xFFFFFEu)) * kScale)));
-        occupied = grid_.markOccupiedSlicesPacked(packedDepth_, cam, slicing, transparent);
-        occupancyMs = nowMilliseconds() - start;
-    }
+    const std::vector<uint64_t> occupied = markOccupiedClusters(cam, transparent, slicing);
+    buildLightGrid(cam, lights, slicing, occupied);
+    const gl::Program& program = shadeOpaque(cam, shading, slicing);
+    if (transparent) shadeTransparent(cam, shading, program);
+    frame_.resolve();  // msaa-resolve
+    StateCache::current().unbindTextures({gl::kUnitClusterGrid, gl::kUnitClusterList});
+    frame_.finishFrame(stats_, "ClusteredRenderer::render");
+    lastCamera_ = cam;
+    frameInfo_.slicing = slicing;
+    return stats_;
+}
 
-    TimedPass lightGridTime(frame_.timer, "light-grid");
+bool ClusteredRenderer::usesOccupancy() const { return options_.occupiedClusters && frame_.targets.samples() == 0; }
+
+std::vector<uint64_t> ClusteredRenderer::markOccupiedClusters(const CameraMatrices& cam, bool transparent,
+                                                              ClusterSlices& slicing) {
+    frameInfo_.occupancyUsed = usesOccupancy();
+    frameInfo_.occupancyMilliseconds = 0.0;
+    if (!frameInfo_.occupancyUsed) return {};
+    // Olsson's occupied-cluster step, from the pre-Z depth: the slices fitted to the frame's surfaces, then the
+    // clusters that hold one.
+    TimedPass occupancyTime(frame_.timer, kClusterOccupancy.name);
+    const double start = nowMilliseconds();
+    readPackedDepth();
+    slicing = slicesOverSurfaces(cam, slicing);
+    std::vector<uint64_t> occupied = grid_.markOccupiedSlicesPacked(packedDepth_, cam, slicing, transparent);
+    frameInfo_.occupancyMilliseconds = nowMilliseconds() - start;
+    return occupied;
+}
+
+void ClusteredRenderer::readPackedDepth() {
+    const int w = frame_.targets.width(), h = frame_.targets.height();
+    packedDepth_.resize(size_t(w) * size_t(h));
+    frame_.targets.bindColor();
+    // The packed depth-stencil as it is stored (GL_UNSIGNED_INT_24_8; what LIDR's volume tiles read): the
+    // depth in the top 24 bits, compared in 24-bit steps without a conversion to float.
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packedDepth_.data());
+    checkGl("clustered: depth read-back");
+}
+
+ClusterSlices ClusteredRenderer::slicesOverSurfaces(const CameraMatrices& cam, const ClusterSlices& camera) const {
+    uint32_t nearest = 0xFFFFFFu, farthest = 0u;  // of the surfaces (24-bit depths below the cleared 1.0)
+    for (const uint32_t word : packedDepth_) {
+        const uint32_t d = word >> 8;
+        if (d < 0xFFFFFFu) nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+    }
+    if (!(nearest <= farthest && slices_ > 1)) return camera;  // no surface, or one slice: the camera's range
+    // The slices span the frame's surfaces (widened by a depth step each way): thinner where they are.
+    constexpr double kScale = 1.0 / 16777215.0;
+    return clusterSlices(cam, slices_, options_.slicing, options_.lightNear,
+                         viewDepthFromWindowDepth(cam, float(double(nearest - std::min(nearest, 1u)) * kScale)),
+                         viewDepthFromWindowDepth(cam, float(double(std::min(farthest + 1, 0xFFFFFEu)) * kScale)));
+}
+
+void ClusteredRenderer::buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                                       const ClusterSlices& slicing, const std::vector<uint64_t>& occupied) {
+    TimedPass lightGridTime(frame_.timer, kLightGrid.name);
     const double assignStart = nowMilliseconds();
-    grid_.build(cam, lights, slicing, occupancy ? &occupied : nullptr, frame_.lightTable.reachError());
+    grid_.build(cam, lights, slicing, frameInfo_.occupancyUsed ? &occupied : nullptr, frame_.lightTable.reachError());
     gridTextures_.upload(grid_);
     const ClusterGridStats& gs = grid_.stats();
     if (gs.maxLights > frameInfo_.loopBound || grid_.indexBits() != frameInfo_.indexBits) {
@@ -125,10 +177,14 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         buildProgram(std::min(bound, 65535), grid_.indexBits());
     }
     stats_.drawnLights = gs.assignedLights;
-    const double assignMs = nowMilliseconds() - assignStart;
-    lightGridTime.end();
+    frameInfo_.grid = gs;
+    frameInfo_.assignMilliseconds = nowMilliseconds() - assignStart;
+    frameInfo_.listTextureRows = gridTextures_.listRows();
+}
 
-    TimedPass forwardTime(frame_.timer, "clustered-forward");
+const gl::Program& ClusteredRenderer::shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading,
+                                                  const ClusterSlices& slicing) {
+    TimedPass forwardTime(frame_.timer, kClusteredForward.name);
     beginOpaqueShading(frame_.targets, shading, options_.preZ);
     // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
     const gl::Program& program =
@@ -141,26 +197,15 @@ const FrameStats& ClusteredRenderer::render(const Camera& camera, const std::vec
         program.set("uClusterSlicing", glm::vec2(slicing.scale, slicing.bias));
     }
     frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
-    forwardTime.end();
+    return program;
+}
 
-    if (transparent) {  // each transparent fragment finds its own cluster by its own depth
-        TimedPass transparentTime(frame_.timer, "clustered-transparent");
-        beginTransparentShading();  // back to front over the opaque depth, no depth writes
-        frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
-    }
-    frame_.resolve();
-
-    StateCache::current().unbindTextures({gl::kUnitClusterGrid, gl::kUnitClusterList});
-    frame_.finishFrame(stats_, "ClusteredRenderer::render");
-
-    lastCamera_ = cam;
-    frameInfo_.grid = gs;
-    frameInfo_.slicing = slicing;
-    frameInfo_.assignMilliseconds = assignMs;
-    frameInfo_.occupancyMilliseconds = occupancyMs;
-    frameInfo_.occupancyUsed = occupancy;
-    frameInfo_.listTextureRows = gridTextures_.listRows();
-    return stats_;
+void ClusteredRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading,
+                                         const gl::Program& program) {
+    // Each transparent fragment finds its own cluster by its own depth.
+    TimedPass transparentTime(frame_.timer, kClusteredTransparent.name);
+    beginTransparentShading();  // back to front over the opaque depth, no depth writes
+    frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
 }
 
 std::vector<int> ClusteredRenderer::pixelSlices() const {

@@ -85,9 +85,22 @@ public:
     // overlapHeatMap: blue -> yellow up to `budget`, red past it; background pixels show slice 0's count.
     ImageRGBA8 clusterHeatMap(int budget = 16) const;
 
+    std::vector<FramePass> passes() const override;
+
 private:
     void buildProgram(int loopBound, int indexBits);
     std::string programName() const;
+    bool usesOccupancy() const;  // asked for, and no MSAA (one depth per pixel to read back)
+    // The passes of render(), in its order (passes() says what each reads and writes). markOccupiedClusters: the
+    // occupied clusters (empty without the step), `slicing` fitted to the frame's surfaces.
+    std::vector<uint64_t> markOccupiedClusters(const CameraMatrices& cam, bool transparent, ClusterSlices& slicing);
+    void readPackedDepth();  // packedDepth_: the pre-Z depth-stencil as stored
+    ClusterSlices slicesOverSurfaces(const CameraMatrices& cam, const ClusterSlices& camera) const;
+    void buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, const ClusterSlices& slicing,
+                        const std::vector<uint64_t>& occupied);
+    const gl::Program& shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading,
+                                   const ClusterSlices& slicing);
+    void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading, const gl::Program& program);
 
     FrameResources frame_;  // first: the options and the context are checked before any GL object
     ClusteredOptions options_;

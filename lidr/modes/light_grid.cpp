@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -50,6 +51,101 @@ LightGrid::LightGrid(int width, int height, int tileSize) : width_(width), heigh
     tilesY_ = (height + tileSize - 1) / tileSize;
 }
 
+namespace {
+// Per tile, the view-space depth interval its geometry can have (opaque: [min, max], transparent: [near, max]);
+// widened by the slack so that pruning never drops a light that touches a pixel. With half-Z, the gap
+// (gapStart, gapEnd) between the two halves holds no geometry. Without depth ranges: the camera's.
+struct TileDepthIntervals {
+    std::vector<float> near, far, gapStart, gapEnd;
+    TileDepthIntervals(const CameraMatrices& camera, const std::vector<TileDepthRange>* depth, int tiles)
+        : near(size_t(tiles), camera.nearPlane), far(size_t(tiles), camera.farPlane), gapStart(size_t(tiles), 0.0f),
+          gapEnd(size_t(tiles), 0.0f) {
+        if (!depth) return;
+        auto nearer = [&](float d) {  // view distance of window depth d, moved towards the eye by the slack
+            return float(viewDepthFromWindowDepth(camera, std::clamp(d - kWindowDepthSlack, 0.0f, 1.0f)) *
+                         (1.0 - kRelativeViewDepthSlack));
+        };
+        auto farther = [&](float d) {
+            return float(viewDepthFromWindowDepth(camera, std::clamp(d + kWindowDepthSlack, 0.0f, 1.0f)) *
+                         (1.0 + kRelativeViewDepthSlack));
+        };
+        for (int t = 0; t < tiles; ++t) {
+            const TileDepthRange& r = (*depth)[size_t(t)];
+            near[size_t(t)] = nearer(r.minDepth);
+            far[size_t(t)] = farther(r.maxDepth);
+            if (r.split) {
+                gapStart[size_t(t)] = farther(std::max(r.nearMaxDepth, r.minDepth));
+                gapEnd[size_t(t)] = nearer(std::min(r.farMinDepth, r.maxDepth));
+            }
+        }
+    }
+};
+
+// Spot lights: a tile's cell (its pixels' rays between two view depths) is bounded by a sphere, and the cone
+// tested against it. The tile's corner rays in view space, as the points where they cross view depth 1 and 2
+// (a point at view depth d is then lerp(at1, at2, d - 1): exact for perspective and orthographic alike).
+class TileCells {
+public:
+    TileCells(const CameraMatrices& camera, int tilesX, int tilesY, int tileSize, float radiusMargin)
+        : radiusMargin_(radiusMargin) {
+        const glm::mat4 inverseProjection = glm::inverse(camera.projection);
+        const auto viewPointAtDepth = [&](float ndcX, float ndcY, float depth) {
+            const glm::vec4 a = inverseProjection * glm::vec4(ndcX, ndcY, -1.0f, 1.0f), b = inverseProjection * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+            const glm::vec3 pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
+            return pa + (pb - pa) * ((depth + pa.z) / (pa.z - pb.z));
+        };
+        cornerAt1_.resize(size_t(tilesX * tilesY) * 4);
+        cornerAt2_.resize(size_t(tilesX * tilesY) * 4);
+        for (int ty = 0; ty < tilesY; ++ty)
+            for (int tx = 0; tx < tilesX; ++tx)
+                for (int k = 0; k < 4; ++k) {
+                    const float px = float(std::min((tx + (k & 1)) * tileSize, camera.width));
+                    const float py = float(std::min((ty + (k >> 1)) * tileSize, camera.height));
+                    const float ndcX = px / float(camera.width) * 2.0f - 1.0f, ndcY = py / float(camera.height) * 2.0f - 1.0f;
+                    const size_t at = size_t(ty * tilesX + tx) * 4 + size_t(k);
+                    cornerAt1_[at] = viewPointAtDepth(ndcX, ndcY, 1.0f);
+                    cornerAt2_[at] = viewPointAtDepth(ndcX, ndcY, 2.0f);
+                }
+    }
+
+    // A deep cell's sphere is far wider than the cell: where the whole cell's passes, its 4 slices (equal depth
+    // ratios) are tried, and the cone must reach one of them.
+    bool cellMayHoldCone(const ViewCone& cone, int t, float nearDepth, float farDepth) const {
+        if (!sliceMayHoldCone(cone, t, nearDepth, farDepth)) return false;
+        if (!(farDepth > nearDepth * 1.25f) || !(nearDepth > 0.0f)) return true;
+        const float ratio = std::pow(farDepth / nearDepth, 0.25f);
+        float sliceNear = nearDepth;
+        for (int k = 0; k < 4; ++k) {
+            const float sliceFar = k == 3 ? farDepth : sliceNear * ratio;
+            if (sliceMayHoldCone(cone, t, sliceNear, sliceFar)) return true;
+            sliceNear = sliceFar;
+        }
+        return false;
+    }
+
+private:
+    // The bounding sphere of tile t's cell between view depths near and far (centre: the corners' mean).
+    bool sliceMayHoldCone(const ViewCone& cone, int t, float nearDepth, float farDepth) const {
+        glm::vec3 corners[8];
+        glm::vec3 centre(0.0f);
+        for (int k = 0; k < 4; ++k) {
+            const glm::vec3 a = cornerAt1_[size_t(t) * 4 + size_t(k)], step = cornerAt2_[size_t(t) * 4 + size_t(k)] - a;
+            corners[k] = a + step * (nearDepth - 1.0f);
+            corners[k + 4] = a + step * (farDepth - 1.0f);
+            centre += corners[k] + corners[k + 4];
+        }
+        centre *= 0.125f;
+        float radius = 0.0f;
+        for (const glm::vec3& corner : corners) radius = std::max(radius, glm::length(corner - centre));
+        // Grown by the margin that covers a quantised light table (a moved apex) and a hair of rounding.
+        return coneMayReachSphere(cone, centre, radius * (1.0f + 1e-5f) + 1e-6f * farDepth + radiusMargin_);
+    }
+
+    float radiusMargin_;
+    std::vector<glm::vec3> cornerAt1_, cornerAt2_;
+};
+}  // namespace
+
 void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight>& lights,
                       const std::vector<TileDepthRange>* depth, bool transparentLists, float radiusMargin) {
     if (camera.width != width_ || camera.height != height_)
@@ -62,90 +158,13 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
                     std::to_string(tileCount()) + " tiles");
     const int tiles = tileCount();
     const bool separate = depth && transparentLists;
-
-    // Per tile, the view-space depth interval its geometry can have (opaque: [min, max], transparent:
-    // [near, max]); widened by the slack so that pruning never drops a light that touches a pixel.
-    // With half-Z, the gap (gapStart, gapEnd) between the two halves holds no geometry.
-    std::vector<float> tileNear(tiles, camera.nearPlane), tileFar(tiles, camera.farPlane);
-    std::vector<float> gapStart(tiles, 0.0f), gapEnd(tiles, 0.0f);
-    auto nearer = [&](float d) {  // view distance of window depth d, moved towards the eye by the slack
-        return float(viewDepthFromWindowDepth(camera, std::clamp(d - kWindowDepthSlack, 0.0f, 1.0f)) *
-                     (1.0 - kRelativeViewDepthSlack));
-    };
-    auto farther = [&](float d) {
-        return float(viewDepthFromWindowDepth(camera, std::clamp(d + kWindowDepthSlack, 0.0f, 1.0f)) *
-                     (1.0 + kRelativeViewDepthSlack));
-    };
-    if (depth) {
-        for (int t = 0; t < tiles; ++t) {
-            const TileDepthRange& r = (*depth)[t];
-            tileNear[t] = nearer(r.minDepth);
-            tileFar[t] = farther(r.maxDepth);
-            if (r.split) {
-                gapStart[t] = farther(std::max(r.nearMaxDepth, r.minDepth));
-                gapEnd[t] = nearer(std::min(r.farMinDepth, r.maxDepth));
-            }
-        }
-    }
-
-    // Spot lights: a tile's cell (its pixels' rays between two view depths) is bounded by a sphere, and the cone
-    // tested against it. The tile's corner rays in view space, as the points where they cross view depth 1 and 2
-    // (a point at view depth d is then lerp(at1, at2, d - 1): exact for perspective and orthographic alike).
+    const TileDepthIntervals interval(camera, depth, tiles);
     bool anySpot = false;
     for (const PointLight& l : lights) anySpot = anySpot || l.isSpot();
-    std::vector<glm::vec3> cornerAt1, cornerAt2;
-    if (anySpot) {
-        const glm::mat4 inverseProjection = glm::inverse(camera.projection);
-        const auto viewPointAtDepth = [&](float ndcX, float ndcY, float depth) {
-            const glm::vec4 a = inverseProjection * glm::vec4(ndcX, ndcY, -1.0f, 1.0f), b = inverseProjection * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
-            const glm::vec3 pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
-            return pa + (pb - pa) * ((depth + pa.z) / (pa.z - pb.z));
-        };
-        cornerAt1.resize(size_t(tiles) * 4);
-        cornerAt2.resize(size_t(tiles) * 4);
-        for (int ty = 0; ty < tilesY_; ++ty)
-            for (int tx = 0; tx < tilesX_; ++tx)
-                for (int k = 0; k < 4; ++k) {
-                    const float px = float(std::min((tx + (k & 1)) * tileSize_, width_));
-                    const float py = float(std::min((ty + (k >> 1)) * tileSize_, height_));
-                    const float ndcX = px / float(width_) * 2.0f - 1.0f, ndcY = py / float(height_) * 2.0f - 1.0f;
-                    const size_t at = size_t(ty * tilesX_ + tx) * 4 + size_t(k);
-                    cornerAt1[at] = viewPointAtDepth(ndcX, ndcY, 1.0f);
-                    cornerAt2[at] = viewPointAtDepth(ndcX, ndcY, 2.0f);
-                }
-    }
-    // The bounding sphere of tile t's cell between view depths near and far (centre: the corners' mean).
-    const auto sliceMayHoldCone = [&](const ViewCone& cone, int t, float nearDepth, float farDepth) {
-        glm::vec3 corners[8];
-        glm::vec3 centre(0.0f);
-        for (int k = 0; k < 4; ++k) {
-            const glm::vec3 a = cornerAt1[size_t(t) * 4 + size_t(k)], step = cornerAt2[size_t(t) * 4 + size_t(k)] - a;
-            corners[k] = a + step * (nearDepth - 1.0f);
-            corners[k + 4] = a + step * (farDepth - 1.0f);
-            centre += corners[k] + corners[k + 4];
-        }
-        centre *= 0.125f;
-        float radius = 0.0f;
-        for (const glm::vec3& corner : corners) radius = std::max(radius, glm::length(corner - centre));
-        // Grown by the margin that covers a quantised light table (a moved apex) and a hair of rounding.
-        return coneMayReachSphere(cone, centre, radius * (1.0f + 1e-5f) + 1e-6f * farDepth + radiusMargin);
-    };
-    // A deep cell's sphere is far wider than the cell: where the whole cell's passes, its 4 slices (equal depth
-    // ratios) are tried, and the cone must reach one of them.
-    const auto cellMayHoldCone = [&](const ViewCone& cone, int t, float nearDepth, float farDepth) {
-        if (!sliceMayHoldCone(cone, t, nearDepth, farDepth)) return false;
-        if (!(farDepth > nearDepth * 1.25f) || !(nearDepth > 0.0f)) return true;
-        const float ratio = std::pow(farDepth / nearDepth, 0.25f);
-        float sliceNear = nearDepth;
-        for (int k = 0; k < 4; ++k) {
-            const float sliceFar = k == 3 ? farDepth : sliceNear * ratio;
-            if (sliceMayHoldCone(cone, t, sliceNear, sliceFar)) return true;
-            sliceNear = sliceFar;
-        }
-        return false;
-    };
+    const std::unique_ptr<TileCells> cells =
+        anySpot ? std::make_unique<TileCells>(camera, tilesX_, tilesY_, tileSize_, radiusMargin) : nullptr;
 
-    std::vector<std::vector<uint32_t>> opaque(tiles), transparent(separate ? tiles : 0);
+    std::vector<std::vector<uint32_t>> opaque(static_cast<size_t>(tiles)), transparent(separate ? size_t(tiles) : 0);
     stats_ = LightGridStats{};
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
@@ -159,38 +178,44 @@ void LightGrid::build(const CameraMatrices& camera, const std::vector<PointLight
         for (int ty = rect.y / tileSize_; ty <= rect.w / tileSize_; ++ty)
             for (int tx = rect.x / tileSize_; tx <= rect.z / tileSize_; ++tx) {
                 const int t = ty * tilesX_ + tx;
-                if (depth && b.viewDepthMin > tileFar[t]) continue;  // hidden behind the tile's opaque max
+                const size_t u = size_t(t);
+                if (depth && b.viewDepthMin > interval.far[u]) continue;  // hidden behind the tile's opaque max
                 // A spot light whose cone misses the tile's cell (from the near plane: the transparent lists').
-                if (spot && !cellMayHoldCone(cone, t, camera.nearPlane, tileFar[t])) continue;
-                if (separate) transparent[t].push_back(uint32_t(i + 1)), used = true;
-                if (depth && b.viewDepthMax < tileNear[t]) continue;  // wholly in front of the opaque min
-                if (b.viewDepthMin > gapStart[t] && b.viewDepthMax < gapEnd[t]) continue;  // in the half-Z gap
-                if (spot && depth && !cellMayHoldCone(cone, t, tileNear[t], tileFar[t])) continue;
-                opaque[t].push_back(uint32_t(i + 1));
+                if (spot && !cells->cellMayHoldCone(cone, t, camera.nearPlane, interval.far[u])) continue;
+                if (separate) transparent[u].push_back(uint32_t(i + 1)), used = true;
+                if (depth && b.viewDepthMax < interval.near[u]) continue;  // wholly in front of the opaque min
+                if (b.viewDepthMin > interval.gapStart[u] && b.viewDepthMax < interval.gapEnd[u]) continue;  // half-Z gap
+                if (spot && depth && !cells->cellMayHoldCone(cone, t, interval.near[u], interval.far[u])) continue;
+                opaque[u].push_back(uint32_t(i + 1));
                 used = true;
             }
         if (used) ++stats_.assignedLights;
     }
+    layOut(opaque, separate ? &transparent : nullptr);
+}
 
+void LightGrid::layOut(const std::vector<std::vector<uint32_t>>& opaque,
+                       const std::vector<std::vector<uint32_t>>* transparent) {
+    const int tiles = tileCount();
     entries_.assign(1, 0u);  // entry 0: the shared empty list
-    auto lay = [&](std::vector<std::vector<uint32_t>>& lists, std::vector<uint32_t>& offsets, std::vector<int>& counts,
-                   int& maxCount, long& total) {
-        offsets.assign(tiles, 0u);
-        counts.assign(tiles, 0);
+    auto lay = [&](const std::vector<std::vector<uint32_t>>& lists, std::vector<uint32_t>& offsets,
+                   std::vector<int>& counts, int& maxCount, long& total) {
+        offsets.assign(size_t(tiles), 0u);
+        counts.assign(size_t(tiles), 0);
         for (int t = 0; t < tiles; ++t) {
-            const std::vector<uint32_t>& list = lists[t];
-            counts[t] = int(list.size());
-            maxCount = std::max(maxCount, counts[t]);
+            const std::vector<uint32_t>& list = lists[size_t(t)];
+            counts[size_t(t)] = int(list.size());
+            maxCount = std::max(maxCount, counts[size_t(t)]);
             total += long(list.size());
             if (list.empty()) continue;
-            offsets[t] = uint32_t(entries_.size());
+            offsets[size_t(t)] = uint32_t(entries_.size());
             entries_.insert(entries_.end(), list.begin(), list.end());  // ascending: lights were visited in order
             entries_.push_back(0u);
         }
     };
     lay(opaque, opaqueOffset_, opaqueCount_, stats_.maxOpaqueLights, stats_.opaqueEntries);
-    if (separate) {
-        lay(transparent, transparentOffset_, transparentCount_, stats_.maxTransparentLights, stats_.transparentEntries);
+    if (transparent) {
+        lay(*transparent, transparentOffset_, transparentCount_, stats_.maxTransparentLights, stats_.transparentEntries);
     } else {
         transparentOffset_ = opaqueOffset_;
         transparentCount_ = opaqueCount_;

@@ -82,6 +82,10 @@ public:
     const LightGridStats& stats() const { return stats_; }
 
 private:
+    // The per-tile lists laid end to end in entries_ (each ended by 0), offsets and counts per tile; without
+    // `transparent` the transparent lists are the opaque ones.
+    void layOut(const std::vector<std::vector<uint32_t>>& opaque, const std::vector<std::vector<uint32_t>>* transparent);
+
     int width_, height_, tileSize_, tilesX_, tilesY_;
     std::vector<uint32_t> entries_, opaqueOffset_, transparentOffset_;
     std::vector<int> opaqueCount_, transparentCount_;

@@ -53,38 +53,75 @@ MultipassForwardRenderer::MultipassForwardRenderer(const GlInfo& info, const Sce
     }
 }
 
+namespace {
+// Multi-pass forward's own passes, between FrameResources' (passes(), render()). The sum is the half-float target
+// where there is one, else the 8-bit colour target; the stencil stamps let one fragment a pixel through each pass.
+constexpr GLint kAmbientStamp = 1;  // the ambient pass's; the light passes count on from it
+constexpr FramePass kAmbient{"ambient", "scene, depth, [environment]", "sum (linear light), stencil stamps"};
+constexpr FramePass kLightPasses{"light-passes", "scene, depth, lights, light table, [shadow atlas]",
+                                 "sum (linear light), stencil stamps"};
+constexpr FramePass kEncodeSamples{"output-encode", "sum (MSAA, each sample)", "colour (MSAA)"};
+constexpr FramePass kResolveSum{"msaa-resolve", "sum (MSAA)", "sum", "MSAA"};
+constexpr FramePass kEncodeSum{"output-encode", "sum", "colour"};
+constexpr FramePass kEncodeColour{"output-encode", "colour", "colour", "a tone map, exposure or sRGB encoding"};
+}  // namespace
+
+std::vector<FramePass> MultipassForwardRenderer::passes() const {
+    std::vector<FramePass> p{pass::kShadowMaps, pass::kLightTable, pass::kDepthPrepass, kAmbient, kLightPasses};
+    const bool msaa = frame_.targets.samples() > 0;
+    if (halfFloat_ && halfFloat_.multisampleTexture()) {
+        p.insert(p.end(), {kEncodeSamples, pass::kMsaaResolve});
+    } else if (halfFloat_) {
+        if (msaa) p.push_back(kResolveSum);
+        p.push_back(kEncodeSum);
+    } else {
+        if (msaa) p.push_back(pass::kMsaaResolve);
+        p.push_back(kEncodeColour);
+    }
+    return p;
+}
+
 const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                                    const ShadingParameters& shading) {
     const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "forward-multipass");
     const FrameScope scope(stats_, frame_.timer, lights.size());
-    frame_.prepareLights(lights, shading, stats_);
+    frame_.prepareLights(lights, shading, stats_);  // shadow-maps, light-table
     meshDraws_ = 0;
-
     // Every pass draws into the half-float target where there is one, else into the 8-bit colour target; both
     // share the one depth-stencil.
     const PassDescription sumPass = halfFloat_ ? halfFloat_.pass() : frame_.targets.colorPass();
     frame_.drawDepthPrepass(cam, &sumPass);
-
-    TimedPass ambientTime(frame_.timer, "ambient");
     // The passes write linear light, the background too; outputEncode_ transforms the finished sum.
     ShadingParameters linearShading = shading;
     linearShading.output = OutputTransform::linear();
+    drawAmbient(cam, sumPass, linearShading);
+    drawLightPasses(cam, lights, linearShading);
+    encodeOutput(shading.output);  // output-encode and msaa-resolve, in the order the sum's target takes them
+    frame_.finishFrame(stats_, "MultipassForwardRenderer::render");
+    return stats_;
+}
+
+void MultipassForwardRenderer::drawAmbient(const CameraMatrices& cam, const PassDescription& sumPass,
+                                           const ShadingParameters& linearShading) {
+    TimedPass ambientTime(frame_.timer, kAmbient.name);
     beginOpaqueShading(sumPass, linearShading, true);
-    StateCache& cache = StateCache::current();
     // Depth EQUAL passes every fragment at the pre-pass depth, and where fragments tie (a back face meeting
     // the front face at a silhouette) additive passes would add each one's term. A stencil stamp per pass
     // (1 for the ambient pass, then 2, 3, ... per light; cleared when they run out) lets one fragment per
     // pixel through: the first drawn. The scene is drawn in reverse order, so that is the fragment the
     // single-pass modes keep, the last drawn in scene order (lidr/render/gpu_scene.h).
-    GLint stamp = 1;
-    cache.apply(onceAtPrepassDepth(stamp));  // the pre-pass left stencil 0
+    StateCache::current().apply(onceAtPrepassDepth(kAmbientStamp));  // the pre-pass left stencil 0
     ambient_.use();
     setShadingUniforms(ambient_, cam, linearShading, frame_.environment);
-    frame_.scene.draw(ambient_, DrawFilter::Opaque, true, &cam, shadingVariantKey(ambient_, linearShading, frame_.environment));
-    ambientTime.end();
+    frame_.scene.draw(ambient_, DrawFilter::Opaque, true, &cam,
+                      shadingVariantKey(ambient_, linearShading, frame_.environment));
+}
 
-    TimedPass lightPassesTime(frame_.timer, "light-passes");
-    RenderState s = onceAtPrepassDepth(stamp);
+void MultipassForwardRenderer::drawLightPasses(const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                                               const ShadingParameters& linearShading) {
+    TimedPass lightPassesTime(frame_.timer, kLightPasses.name);
+    StateCache& cache = StateCache::current();
+    RenderState s = onceAtPrepassDepth(kAmbientStamp);
     s.blend = true;
     s.blendSrcRgb = s.blendDstRgb = GL_ONE;  // add this light's term
     s.blendSrcAlpha = GL_ZERO, s.blendDstAlpha = GL_ONE;
@@ -93,11 +130,11 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     cache.apply(s);  // per light only the scissor box and the stamp change below (the cache sets only those)
     // Shadows: each light's term with its lookup compiled in (shadow_lookup.glsl), as the reference does.
     const gl::Program& lightProgram =
-        frame_.shadows.shadingProgram(light_, "forward_light.frag", lightDefines_, shading.shadows);
+        frame_.shadows.shadingProgram(light_, "forward_light.frag", lightDefines_, linearShading.shadows);
     lightProgram.use();
     setShadingUniforms(lightProgram, cam, linearShading, frame_.environment);
     frame_.lightTable.bind(lightProgram);
-    frame_.shadows.bind(lightProgram, shading.shadows);
+    frame_.shadows.bind(lightProgram, linearShading.shadows);
     const float reach = frame_.lightTable.reachError();
     // Culling a mesh whose bounds the sphere misses is exact only where every shaded point lies on its
     // triangle. Under MSAA a fragment that covers samples but not the pixel centre is shaded at the centre,
@@ -107,15 +144,8 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     // the frame on the room at 320x240 with 4x MSAA on llvmpipe (doc/tiled.md); exactMsaaCulling = false
     // keeps the mesh bounds test.
     const bool screenCull = frame_.targets.samples() > 0 && options_.exactMsaaCulling;
-    std::vector<glm::ivec4> meshRects;  // per batch, this frame: (0, 0, -1, -1) when off screen
-    if (screenCull) {
-        meshRects.assign(frame_.scene.batchCount(), glm::ivec4(0, 0, -1, -1));
-        for (size_t i = 0; i < meshRects.size(); ++i) {
-            glm::vec3 bmin, bmax;
-            frame_.scene.batchBounds(i, bmin, bmax);
-            if (!boxPixelRect(cam, bmin, bmax, meshRects[i])) meshRects[i] = glm::ivec4(0, 0, -1, -1);
-        }
-    }
+    const std::vector<glm::ivec4> meshRects = screenCull ? meshScreenRects(cam) : std::vector<glm::ivec4>{};
+    GLint stamp = kAmbientStamp;
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
         const float radius = l.radius + reach;
@@ -147,33 +177,40 @@ const FrameStats& MultipassForwardRenderer::render(const Camera& camera, const s
     }
     stats_.volumeDrawCalls = meshDraws_;
     cache.apply(RenderState{});
-    lightPassesTime.end();
-    const OutputTransform& output = shading.output;
+}
+
+std::vector<glm::ivec4> MultipassForwardRenderer::meshScreenRects(const CameraMatrices& cam) const {
+    // Per batch, this frame: (0, 0, -1, -1) when off screen.
+    std::vector<glm::ivec4> rects(frame_.scene.batchCount(), glm::ivec4(0, 0, -1, -1));
+    for (size_t i = 0; i < rects.size(); ++i) {
+        glm::vec3 bmin, bmax;
+        frame_.scene.batchBounds(i, bmin, bmax);
+        if (!boxPixelRect(cam, bmin, bmax, rects[i])) rects[i] = glm::ivec4(0, 0, -1, -1);
+    }
+    return rects;
+}
+
+void MultipassForwardRenderer::encodeOutput(const OutputTransform& output) {
     if (halfFloat_ && halfFloat_.multisampleTexture()) {
         // Each sample encoded, then the encoded samples averaged, as the single-pass modes resolve.
-        TimedPass encodeTime(frame_.timer, "output-encode");
+        TimedPass encodeTime(frame_.timer, kEncodeSamples.name);
         outputEncode_.run(frame_.targets, output, halfFloat_.multisampleTexture());
         encodeTime.end();
         frame_.targets.resolve(frame_.timer);
     } else if (halfFloat_) {
         if (frame_.targets.samples() > 0) {  // averaged in linear light, then encoded (doc/colour.md)
-            TimedPass msaaResolveTime(frame_.timer, "msaa-resolve");
+            TimedPass msaaResolveTime(frame_.timer, kResolveSum.name);
             halfFloat_.resolve();
         }
-        TimedPass encodeTime(frame_.timer, "output-encode");  // always: it also writes the 8-bit colour target
+        TimedPass encodeTime(frame_.timer, kEncodeSum.name);  // always: it also writes the 8-bit colour target
         outputEncode_.run(frame_.targets, output, halfFloat_.texture());
-        encodeTime.end();
     } else {
         frame_.targets.resolve(frame_.timer);
         if (output.srgb || output.toneMap != ToneMap::None || output.exposureStops != 0.0f) {
-            TimedPass encodeTime(frame_.timer, "output-encode");
+            TimedPass encodeTime(frame_.timer, kEncodeColour.name);
             outputEncode_.run(frame_.targets, output);
-            encodeTime.end();
         }
     }
-
-    frame_.finishFrame(stats_, "MultipassForwardRenderer::render");
-    return stats_;
 }
 
 }  // namespace lidr

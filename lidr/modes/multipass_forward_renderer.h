@@ -53,10 +53,19 @@ public:
     // resolved; else empty.
     const std::string& accumulationNote() const { return accumulationNote_; }
 
+    std::vector<FramePass> passes() const override;
+
 private:
+    // The passes of render() after the pre-pass, in its order (passes() says what each reads and writes).
+    void drawAmbient(const CameraMatrices& cam, const PassDescription& sumPass, const ShadingParameters& linearShading);
+    void drawLightPasses(const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                         const ShadingParameters& linearShading);
+    std::vector<glm::ivec4> meshScreenRects(const CameraMatrices& cam) const;  // per batch; exactMsaaCulling
+    void encodeOutput(const OutputTransform& output);
+
     FrameResources frame_;
     MultipassOptions options_;
-    HalfFloatTarget halfFloat_;  // empty: the passes blend into targets_' 8-bit colour
+    HalfFloatTarget halfFloat_;  // empty: the passes blend into frame_.targets' 8-bit colour
     std::string accumulationNote_;
     gl::Program ambient_, light_;
     ShaderDefines lightDefines_;  // light_'s, for its shadowed twin (ShadowMaps::program)

@@ -24,6 +24,21 @@ ReferenceRenderer::ReferenceRenderer(const GlInfo& info, const Scene& scene, int
     defines_ = defines;
 }
 
+namespace {
+// The reference's own passes, between FrameResources' (passes(), render()).
+constexpr FramePass kBruteForce{"brute-force", "scene, depth, light table, [shadow atlas], [environment]", "colour"};
+constexpr FramePass kBruteForceTransparent{"brute-force-transparent",
+                                           "transparent meshes, depth, light table, [shadow atlas], [environment]",
+                                           "colour", "transparent meshes in the scene"};
+}  // namespace
+
+std::vector<FramePass> ReferenceRenderer::passes() const {
+    std::vector<FramePass> p{pass::kShadowMaps, pass::kLightTable, pass::kDepthPrepass, kBruteForce};
+    if (transparency_) p.push_back(kBruteForceTransparent);
+    if (frame_.targets.samples() > 0) p.push_back(pass::kMsaaResolve);
+    return p;
+}
+
 const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                             const ShadingParameters& shading) {
     if (static_cast<int>(lights.size()) > frame_.lightTable.capacity())  // its loop bound is compiled in: no growing
@@ -32,10 +47,19 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "forward-brute");
     const FrameScope scope(stats_, frame_.timer, lights.size());
     stats_.drawnLights = stats_.sceneLights;
-    frame_.prepareLights(lights, shading, stats_);  // the table never grows here: it holds the capacity checked above
+    // shadow-maps, light-table: the table never grows here, it holds the capacity checked above.
+    frame_.prepareLights(lights, shading, stats_);
     frame_.drawDepthPrepass(cam);  // into the MSAA target when multisampled: the reference has no index pass to feed
+    const gl::Program& program = shade(cam, lights, shading);
+    if (transparency_ && frame_.scene.hasTransparent()) shadeTransparent(cam, shading, program);
+    frame_.resolve();  // msaa-resolve
+    frame_.finishFrame(stats_, "reference render");
+    return stats_;
+}
 
-    TimedPass bruteForceTime(frame_.timer, "brute-force");
+const gl::Program& ReferenceRenderer::shade(const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                                            const ShadingParameters& shading) {
+    TimedPass bruteForceTime(frame_.timer, kBruteForce.name);
     beginOpaqueShading(frame_.targets, shading, true, sampleShading_);
     // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), reading the maps drawn above.
     const gl::Program& program =
@@ -44,15 +68,14 @@ const FrameStats& ReferenceRenderer::render(const Camera& camera, const std::vec
     frame_.shadows.bind(program, shading.shadows);
     program.set("uLightCount", float(lights.size()));
     frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
-    bruteForceTime.end();
-    if (transparency_ && frame_.scene.hasTransparent()) {
-        TimedPass bruteForceTransparentTime(frame_.timer, "brute-force-transparent");
-        beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
-        frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
-    }
-    frame_.resolve();
-    frame_.finishFrame(stats_, "reference render");
-    return stats_;
+    return program;
+}
+
+void ReferenceRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading,
+                                         const gl::Program& program) {
+    TimedPass bruteForceTransparentTime(frame_.timer, kBruteForceTransparent.name);
+    beginTransparentShading(sampleShading_);  // the state every mode draws its layers with
+    frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
 }
 
 }  // namespace lidr

@@ -20,7 +20,14 @@ public:
     const char* timingMethod() const { return frame_.timer.method(); }
     const FrameResources& frame() const override { return frame_; }
 
+    std::vector<FramePass> passes() const override;
+
 private:
+    // The passes of render() after the pre-pass (passes() says what each reads and writes).
+    const gl::Program& shade(const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                             const ShadingParameters& shading);
+    void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading, const gl::Program& program);
+
     FrameResources frame_;
     gl::Program program_;
     ShaderDefines defines_;

@@ -70,29 +70,70 @@ void TiledRenderer::buildProgram(int loopBound) {
     ++frameInfo_.shaderRebuilds;
 }
 
+namespace {
+// Tiled forward's own passes, between FrameResources' (passes(), render()).
+constexpr FramePass kDepthPrepassWithCopy{"depth-prepass", "scene", "depth, packed depth copy"};
+constexpr FramePass kNoDepthPrepass{"depth-prepass", "-", "nothing (TiledOptions::preZ false)"};
+constexpr FramePass kTileDepthReduce{"tile-depth-reduce", "packed depth copy", "tile depth ranges (read back)"};
+constexpr FramePass kLightGrid{"light-grid", "lights, tile depth ranges", "light grid (CPU, uploaded)"};
+constexpr FramePass kLightGrid2D{"light-grid", "lights", "light grid (CPU, uploaded)"};
+constexpr FramePass kTiledForward{"tiled-forward",
+                                  "scene, depth, light grid, light table, [shadow atlas], [environment]", "colour"};
+constexpr FramePass kTiledTransparent{"tiled-transparent",
+                                      "transparent meshes, depth, transparent lists, light table, [shadow atlas], "
+                                      "[environment]",
+                                      "colour", "transparent meshes in the scene"};
+
+}  // namespace
+
+std::vector<FramePass> TiledRenderer::passes() const {
+    std::vector<FramePass> p{pass::kShadowMaps, pass::kLightTable};
+    p.push_back(depthBounds_ ? kDepthPrepassWithCopy : options_.preZ ? pass::kDepthPrepass : kNoDepthPrepass);
+    if (depthBounds_) p.push_back(kTileDepthReduce);
+    p.push_back(depthBounds_ ? kLightGrid : kLightGrid2D);
+    p.push_back(kTiledForward);
+    if (options_.transparency) p.push_back(kTiledTransparent);
+    if (frame_.targets.samples() > 0) p.push_back(pass::kMsaaResolve);
+    return p;
+}
+
 const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
     const CameraMatrices cam = frame_.checkFrame(camera, lights, shading, "tiled");
     const FrameScope scope(stats_, frame_.timer, lights.size());
-    frame_.prepareLights(lights, shading, stats_);
+    frame_.prepareLights(lights, shading, stats_);  // shadow-maps, light-table
     const bool transparent = options_.transparency && frame_.scene.hasTransparent();
+    drawDepthPrepass(cam);
+    reduceTileDepth();
+    buildLightGrid(cam, lights, transparent);
+    const gl::Program& program = shadeOpaque(cam, shading);
+    if (transparent) shadeTransparent(cam, shading, program);
+    frame_.resolve();  // msaa-resolve
+    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
+    frame_.finishFrame(stats_, "TiledRenderer::render");
+    return stats_;
+}
 
-    TimedPass depthPrepassTime(frame_.timer, "depth-prepass");
+void TiledRenderer::drawDepthPrepass(const CameraMatrices& cam) {
+    // With depth bounds the pre-pass also writes the packed depth copy the reduction reads.
+    TimedPass depthPrepassTime(frame_.timer, pass::kDepthPrepass.name);
     if (depthBounds_) {
         depthBounds_->prepass(frame_.scene, cam);
     } else if (options_.preZ) {
         frame_.targets.bindColor();
         frame_.depthPrepass.run(frame_.scene, cam);
     }
-    depthPrepassTime.end();
+}
 
+void TiledRenderer::reduceTileDepth() {
     tileDepth_.clear();
-    if (depthBounds_) {
-        TimedPass tileDepthReduceTime(frame_.timer, "tile-depth-reduce");
-        tileDepth_ = depthBounds_->reduce();
-    }
+    if (!depthBounds_) return;
+    TimedPass tileDepthReduceTime(frame_.timer, kTileDepthReduce.name);
+    tileDepth_ = depthBounds_->reduce();
+}
 
-    TimedPass lightGridTime(frame_.timer, "light-grid");
+void TiledRenderer::buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool transparent) {
+    TimedPass lightGridTime(frame_.timer, kLightGrid.name);
     const double assignStart = nowMilliseconds();
     const float reach = frame_.lightTable.reachError();
     grid_.build(cam, lights, depthBounds_ ? &tileDepth_ : nullptr, transparent, reach);
@@ -105,10 +146,14 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
         buildProgram(std::min(bound, 65535));
     }
     stats_.drawnLights = gs.assignedLights;
-    const double assignMs = nowMilliseconds() - assignStart;
-    lightGridTime.end();
+    frameInfo_.grid = gs;
+    frameInfo_.assignMilliseconds = nowMilliseconds() - assignStart;
+    frameInfo_.listTextureRows = gridTextures_.listRows();
+    frameInfo_.depthBoundsUsed = depthBounds_ != nullptr;
+}
 
-    TimedPass tiledForwardTime(frame_.timer, "tiled-forward");
+const gl::Program& TiledRenderer::shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading) {
+    TimedPass tiledForwardTime(frame_.timer, kTiledForward.name);
     beginOpaqueShading(frame_.targets, shading, options_.preZ);
     // Shadows: the same shading with the lookups compiled in (shadow_lookup.glsl), as the reference does.
     const gl::Program& program =
@@ -117,24 +162,15 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
     frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
-    tiledForwardTime.end();
+    return program;
+}
 
-    if (transparent) {
-        TimedPass tiledTransparentTime(frame_.timer, "tiled-transparent");
-        beginTransparentShading();  // back to front over the opaque depth, no depth writes
-        gridTextures_.bind(program, true);
-        frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
-    }
-    frame_.resolve();
-
-    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
-    frame_.finishFrame(stats_, "TiledRenderer::render");
-
-    frameInfo_.grid = gs;
-    frameInfo_.assignMilliseconds = assignMs;
-    frameInfo_.listTextureRows = gridTextures_.listRows();
-    frameInfo_.depthBoundsUsed = depthBounds_ != nullptr;
-    return stats_;
+void TiledRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading,
+                                     const gl::Program& program) {
+    TimedPass tiledTransparentTime(frame_.timer, kTiledTransparent.name);
+    beginTransparentShading();  // back to front over the opaque depth, no depth writes
+    gridTextures_.bind(program, true);
+    frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
 }
 
 ImageRGBA8 TiledRenderer::tileHeatMap(int budget, bool transparent) const {

@@ -6,7 +6,8 @@
 // GPU and read back -> lights assigned to tiles on the CPU (clipped projected sphere bounds, pruned in depth;
 // separate lists for transparent geometry, from the near plane to the opaque max) -> opaque geometry shaded
 // with its tile's lights (depth EQUAL) -> transparent geometry back to front, alpha blended, lit from the
-// transparent lists. doc/tiled.md describes the data layout and its memory.
+// transparent lists; passes() lists them by name (lidr-demo --list-passes tiled). doc/tiled.md describes the data
+// layout and its memory.
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,8 +72,16 @@ public:
     // blue -> yellow up to `budget`, red past it; `transparent` shows the transparent lists.
     ImageRGBA8 tileHeatMap(int budget = 16, bool transparent = false) const;
 
+    std::vector<FramePass> passes() const override;
+
 private:
     void buildProgram(int loopBound);
+    // The passes of render(), in its order (passes() says what each reads and writes).
+    void drawDepthPrepass(const CameraMatrices& cam);
+    void reduceTileDepth();
+    void buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool transparent);
+    const gl::Program& shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading);
+    void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading, const gl::Program& program);
 
     FrameResources frame_;  // first: the options and the context are checked before any GL object
     TiledOptions options_;

@@ -1,5 +1,5 @@
 #pragma once
-// Pass 1 of LIDR (and of the reference): opaque depth only. Clears depth and stencil of the bound target.
+// Every mode's depth pre-pass (FrameResources::drawDepthPrepass): opaque depth only; clears the bound depth-stencil.
 #include "lidr/scene/camera.h"
 #include "lidr/gl/shader_source.h"
 #include "lidr/render/gpu_scene.h"

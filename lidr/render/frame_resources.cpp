@@ -60,13 +60,13 @@ const std::vector<int>& FrameResources::drawShadowMaps(const std::vector<PointLi
 void FrameResources::updateLights(const std::vector<PointLight>& lights, const ShadingParameters& shading,
                                   FrameStats& stats) {
     const std::vector<int>& shadowTiles = drawShadowMaps(lights, shading, stats);
-    TimedPass lightTableTime(timer, "light-table");
+    TimedPass lightTableTime(timer, pass::kLightTable.name);
     lightTable.update(lights, shadowTiles);
     lightTableTime.end();
 }
 
 void FrameResources::drawDepthPrepass(const CameraMatrices& camera, const PassDescription* pass) {
-    TimedPass depthPrepassTime(timer, "depth-prepass");
+    TimedPass depthPrepassTime(timer, pass::kDepthPrepass.name);
     if (pass)
         StateCache::current().beginPass(*pass);
     else

@@ -12,6 +12,7 @@
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/render/shading_variants.h"
+#include "lidr/scene/sphere_bounds.h"
 #include "lidr/scene/tangents.h"
 
 namespace lidr {
@@ -375,6 +376,41 @@ bool sphereTouchesBox(const glm::vec3& center, float radius, const glm::vec3& bo
     return glm::dot(nearest - center, nearest - center) <= radius * radius;
 }
 
+namespace {
+bool drawsBatch(DrawFilter filter, bool transparent) {
+    return !((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent));
+}
+// The same, asking the batch's material only where the filter needs it (the frame plan asks All per light).
+bool drawsBatch(const GpuScene& scene, DrawFilter filter, size_t batch) {
+    return filter == DrawFilter::All || drawsBatch(filter, scene.batchTransparent(batch));
+}
+}  // namespace
+
+bool GpuScene::batchesTouchSphere(const glm::vec4& posRadius, DrawFilter filter) const {
+    for (size_t b = 0; b < batchCount(); ++b) {
+        if (!drawsBatch(*this, filter, b)) continue;
+        glm::vec3 lo, hi;
+        batchBounds(b, lo, hi);
+        if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
+    }
+    return false;
+}
+
+bool GpuScene::batchesPixelRect(const CameraMatrices& camera, DrawFilter filter, glm::ivec4& rect) const {
+    bool any = false;
+    for (size_t b = 0; b < batchCount(); ++b) {
+        if (!drawsBatch(*this, filter, b)) continue;
+        glm::vec3 lo, hi;
+        batchBounds(b, lo, hi);
+        glm::ivec4 r;
+        if (!boxPixelRect(camera, lo, hi, r)) continue;
+        rect = any ? glm::ivec4(glm::min(glm::ivec2(rect), glm::ivec2(r)), glm::max(glm::ivec2(rect.z, rect.w), glm::ivec2(r.z, r.w)))
+                   : r;
+        any = true;
+    }
+    return any;
+}
+
 int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
                            const std::function<bool(size_t, const glm::vec3&, const glm::vec3&)>& select,
                            bool setMaterials, const CameraMatrices* camera, uint32_t shadingKey) const {
@@ -390,7 +426,7 @@ int GpuScene::drawSelected(const gl::Program& program, DrawFilter filter,
     for (size_t i = 0; i < batches_.size(); ++i) {
         const Batch& b = batches_[i];
         const bool transparent = materials_[b.material].opacity < 1.0f;
-        if ((filter == DrawFilter::Opaque && transparent) || (filter == DrawFilter::Transparent && !transparent))
+        if (!drawsBatch(filter, transparent))
             continue;
         if (!select(i, b.boundsMin, b.boundsMax)) continue;
         if (mayCull) {

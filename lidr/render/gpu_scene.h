@@ -63,6 +63,11 @@ public:
     }
     bool hasTransparent() const;
     bool batchTransparent(size_t batch) const { return materials_[size_t(batches_.at(batch).material)].opacity < 1.0f; }
+    // Whether the bounds of a batch `filter` draws touch the sphere (centre, radius).
+    bool batchesTouchSphere(const glm::vec4& posRadius, DrawFilter filter) const;
+    // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) covering the on-screen bounds of the
+    // batches `filter` draws; false where none is on screen.
+    bool batchesPixelRect(const CameraMatrices& camera, DrawFilter filter, glm::ivec4& rect) const;
     size_t triangleCount() const { return triangles_; }
     // The shader-variant key each material is drawn with (material_variants.h), by material index.
     uint32_t materialFeatures(size_t material) const { return features_.at(material); }

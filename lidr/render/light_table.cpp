@@ -69,6 +69,13 @@ void LightTable::setRegionMap(std::vector<float> tileRows, int firstRow, int til
                                            : glm::vec4(1.0f / float(tileSize), float(tilesX), float(firstRow), 1.0f);
 }
 
+namespace {
+// Light i's shadow tile + 1 as the table stores it (lidrFetchShadowTile; 0: none).
+int shadowTileCode(const std::vector<int>& shadowTiles, size_t i) {
+    return shadowTiles.empty() ? 0 : std::clamp(shadowTiles[i] + 1, 0, 65535);
+}
+}  // namespace
+
 void LightTable::update(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles) {
     if (static_cast<int>(lights.size()) > capacity_)
         throw Error("light table holds " + std::to_string(capacity_) + " lights, scene has " +
@@ -76,99 +83,112 @@ void LightTable::update(const std::vector<PointLight>& lights, const std::vector
     if (!shadowTiles.empty() && shadowTiles.size() != lights.size())
         throw Error("light table: " + std::to_string(shadowTiles.size()) + " shadow tiles for " +
                     std::to_string(lights.size()) + " lights");
-    auto tileCode = [&](size_t i) { return shadowTiles.empty() ? 0 : std::clamp(shadowTiles[i] + 1, 0, 65535); };
     count_ = static_cast<int>(lights.size());
     current_ ^= 1;
-    const TextureSet& set = sets_[current_];
-    const size_t texels = size_t(kWidth) * rows_;
-    if (format_ == LightTableFormat::Float) {
-        // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing. Rows
-        // [rows, 2 rows) of the position texture hold the spot cone (spotCone(): (0, 0, 0, 1) for a point light);
-        // every texture has both blocks, so one texture coordinate addresses all (the colour's second is unused).
-        std::vector<float> pos(texels * 8, 0.0f), col(texels * 8, 0.0f);
-        for (size_t i = 0; i < 2 * texels; ++i) pos[i * 4 + 3] = 1.0f;
-        for (size_t i = 0; i < lights.size(); ++i) {
-            const PointLight& l = lights[i];
-            float* p = &pos[(i + 1) * 4];
-            p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z;
-            p[3] = l.falloff == LightFalloff::InverseSquare ? -l.radius : l.radius;  // the sign lidrShadeLight reads
-            const glm::vec4 cone = spotCone(l);
-            float* q = &pos[(texels + i + 1) * 4];
-            q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
-            float* c = &col[(i + 1) * 4];
-            c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = l.isSpot() ? 0.0f : 1.0f;  // 0: read the cone
-            col[(texels + i + 1) * 4 + 2] = float(tileCode(i));  // the shadow tile + 1 (lidrFetchShadowTile)
-        }
-        if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
-            throw Error("light table: the region map would overwrite lights");
-        for (size_t t = 0; t < regionMap_.size(); ++t) pos[(size_t(regionMapFirstRow_) * kWidth + t) * 4] = regionMap_[t];
-        set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
-        set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, col.data());
-    } else {
-        glm::vec3 lo(0.0f), hi(1.0f);
-        float maxRadius = 1.0f, maxColor = 1.0f;
-        if (!lights.empty()) {
-            lo = hi = lights[0].position;
-            maxRadius = maxColor = 0.0f;
-            for (const PointLight& l : lights) {
-                lo = glm::min(lo, l.position);
-                hi = glm::max(hi, l.position);
-                maxRadius = std::max(maxRadius, l.radius);
-                if (l.falloff == LightFalloff::Smooth) maxColor = std::max({maxColor, l.color.r, l.color.g, l.color.b});
-            }
-        }
-        boundsMin_ = lo;
-        boundsExtent_ = glm::max(hi - lo, glm::vec3(1e-6f));
-        radiusScale_ = std::max(maxRadius, 1e-6f);
-        colorScale_ = std::max(maxColor, 1e-6f);
-        // Rows [rows, 2 rows): the spot cone, 16-bit fractions: high/low bytes of the axis as (d + 1) / 2 and
-        // cos(outer cone angle) in the position textures, cos(inner) in the colour texture's red and green; the
-        // colour's alpha is 0 for a spot light (255: a point light, whose cone is not read: its term is 1).
-        std::vector<uint8_t> high(texels * 8, 0), low(texels * 8, 0), col(texels * 8, 0);
-        auto put16 = [&](size_t at, float unit) {
-            const int v = static_cast<int>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
-            high[at] = static_cast<uint8_t>(v >> 8);
-            low[at] = static_cast<uint8_t>(v & 0xFF);
-        };
-        put16(3, 1.0f);  // null light: radius = the scale, black, a point light
-        col[3] = 255;
-        for (size_t i = 0; i < lights.size(); ++i) {
-            const PointLight& l = lights[i];
-            const glm::vec3 unit = (l.position - boundsMin_) / boundsExtent_;
-            const size_t t = (i + 1) * 4;
-            put16(t + 0, unit.x);
-            put16(t + 1, unit.y);
-            put16(t + 2, unit.z);
-            // Round the radius up so the fixed-point light never reaches less far than the real one.
-            const int r = static_cast<int>(std::ceil(l.radius / radiusScale_ * 65535.0f));
-            high[t + 3] = static_cast<uint8_t>(std::min(r, 65535) >> 8);
-            low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
-            if (l.falloff == LightFalloff::InverseSquare) {
-                const FixedColor fixed = fixedInverseSquareColor(l.color, l.isSpot());
-                for (int c = 0; c < 4; ++c) col[t + size_t(c)] = fixed.bytes[c];
-            } else {
-                for (int c = 0; c < 3; ++c)
-                    col[t + c] =
-                        static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
-                col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
-            }
-            const size_t cone = (texels + i + 1) * 4;
-            col[cone + 2] = static_cast<uint8_t>(tileCode(i) & 0xFF);  // the shadow tile + 1 (lidrFetchShadowTile)
-            col[cone + 3] = static_cast<uint8_t>(tileCode(i) >> 8);
-            if (!l.isSpot()) continue;
-            const glm::vec3 axis = glm::normalize(l.direction);
-            for (int c = 0; c < 3; ++c) put16(cone + size_t(c), (axis[c] + 1.0f) * 0.5f);
-            put16(cone + 3, std::cos(l.outerConeAngle));
-            const int inner = static_cast<int>(std::lround(std::clamp(std::cos(l.innerConeAngle), 0.0f, 1.0f) * 65535.0f));
-            col[cone + 0] = static_cast<uint8_t>(inner >> 8);
-            col[cone + 1] = static_cast<uint8_t>(inner & 0xFF);
-        }
-        set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
-        set.posRadiusLow.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
-        set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
-    }
+    if (format_ == LightTableFormat::Float)
+        uploadFloat(lights, shadowTiles);
+    else
+        uploadFixed(lights, shadowTiles);
     StateCache::current().bindTexture(GL_TEXTURE_2D, 0);
     checkGl("LightTable::update");
+}
+
+void LightTable::uploadFloat(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles) {
+    const TextureSet& set = sets_[current_];
+    const size_t texels = size_t(kWidth) * rows_;
+    // The null light (index 0) and unused entries: black, radius 1, so they add exactly nothing. Rows
+    // [rows, 2 rows) of the position texture hold the spot cone (spotCone(): (0, 0, 0, 1) for a point light);
+    // every texture has both blocks, so one texture coordinate addresses all (the colour's second is unused).
+    std::vector<float> pos(texels * 8, 0.0f), col(texels * 8, 0.0f);
+    for (size_t i = 0; i < 2 * texels; ++i) pos[i * 4 + 3] = 1.0f;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        float* p = &pos[(i + 1) * 4];
+        p[0] = l.position.x, p[1] = l.position.y, p[2] = l.position.z;
+        p[3] = l.falloff == LightFalloff::InverseSquare ? -l.radius : l.radius;  // the sign lidrShadeLight reads
+        const glm::vec4 cone = spotCone(l);
+        float* q = &pos[(texels + i + 1) * 4];
+        q[0] = cone.x, q[1] = cone.y, q[2] = cone.z, q[3] = cone.w;
+        float* c = &col[(i + 1) * 4];
+        c[0] = l.color.r, c[1] = l.color.g, c[2] = l.color.b, c[3] = l.isSpot() ? 0.0f : 1.0f;  // 0: read the cone
+        col[(texels + i + 1) * 4 + 2] = float(shadowTileCode(shadowTiles, i));
+    }
+    if (!regionMap_.empty() && size_t(regionMapFirstRow_) * kWidth < lights.size() + 1)
+        throw Error("light table: the region map would overwrite lights");
+    for (size_t t = 0; t < regionMap_.size(); ++t) pos[(size_t(regionMapFirstRow_) * kWidth + t) * 4] = regionMap_[t];
+    set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, pos.data());
+    set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_FLOAT, col.data());
+}
+
+void LightTable::setFixedScales(const std::vector<PointLight>& lights) {
+    glm::vec3 lo(0.0f), hi(1.0f);
+    float maxRadius = 1.0f, maxColor = 1.0f;
+    if (!lights.empty()) {
+        lo = hi = lights[0].position;
+        maxRadius = maxColor = 0.0f;
+        for (const PointLight& l : lights) {
+            lo = glm::min(lo, l.position);
+            hi = glm::max(hi, l.position);
+            maxRadius = std::max(maxRadius, l.radius);
+            if (l.falloff == LightFalloff::Smooth) maxColor = std::max({maxColor, l.color.r, l.color.g, l.color.b});
+        }
+    }
+    boundsMin_ = lo;
+    boundsExtent_ = glm::max(hi - lo, glm::vec3(1e-6f));
+    radiusScale_ = std::max(maxRadius, 1e-6f);
+    colorScale_ = std::max(maxColor, 1e-6f);
+}
+
+void LightTable::uploadFixed(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles) {
+    setFixedScales(lights);
+    const TextureSet& set = sets_[current_];
+    const size_t texels = size_t(kWidth) * rows_;
+    // Rows [rows, 2 rows): the spot cone, 16-bit fractions: high/low bytes of the axis as (d + 1) / 2 and
+    // cos(outer cone angle) in the position textures, cos(inner) in the colour texture's red and green; the
+    // colour's alpha is 0 for a spot light (255: a point light, whose cone is not read: its term is 1).
+    std::vector<uint8_t> high(texels * 8, 0), low(texels * 8, 0), col(texels * 8, 0);
+    auto put16 = [&](size_t at, float unit) {
+        const int v = static_cast<int>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
+        high[at] = static_cast<uint8_t>(v >> 8);
+        low[at] = static_cast<uint8_t>(v & 0xFF);
+    };
+    put16(3, 1.0f);  // null light: radius = the scale, black, a point light
+    col[3] = 255;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        const glm::vec3 unit = (l.position - boundsMin_) / boundsExtent_;
+        const size_t t = (i + 1) * 4;
+        put16(t + 0, unit.x);
+        put16(t + 1, unit.y);
+        put16(t + 2, unit.z);
+        // Round the radius up so the fixed-point light never reaches less far than the real one.
+        const int r = static_cast<int>(std::ceil(l.radius / radiusScale_ * 65535.0f));
+        high[t + 3] = static_cast<uint8_t>(std::min(r, 65535) >> 8);
+        low[t + 3] = static_cast<uint8_t>(std::min(r, 65535) & 0xFF);
+        if (l.falloff == LightFalloff::InverseSquare) {
+            const FixedColor fixed = fixedInverseSquareColor(l.color, l.isSpot());
+            for (int c = 0; c < 4; ++c) col[t + size_t(c)] = fixed.bytes[c];
+        } else {
+            for (int c = 0; c < 3; ++c)
+                col[t + c] =
+                    static_cast<uint8_t>(std::lround(std::clamp(l.color[c] / colorScale_, 0.0f, 1.0f) * 255.0f));
+            col[t + 3] = l.isSpot() ? 0 : 255;  // 0: read the cone
+        }
+        const size_t cone = (texels + i + 1) * 4;
+        const int tile = shadowTileCode(shadowTiles, i);
+        col[cone + 2] = static_cast<uint8_t>(tile & 0xFF);
+        col[cone + 3] = static_cast<uint8_t>(tile >> 8);
+        if (!l.isSpot()) continue;
+        const glm::vec3 axis = glm::normalize(l.direction);
+        for (int c = 0; c < 3; ++c) put16(cone + size_t(c), (axis[c] + 1.0f) * 0.5f);
+        put16(cone + 3, std::cos(l.outerConeAngle));
+        const int inner = static_cast<int>(std::lround(std::clamp(std::cos(l.innerConeAngle), 0.0f, 1.0f) * 65535.0f));
+        col[cone + 0] = static_cast<uint8_t>(inner >> 8);
+        col[cone + 1] = static_cast<uint8_t>(inner & 0xFF);
+    }
+    set.posRadius.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, high.data());
+    set.posRadiusLow.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, low.data());
+    set.color.upload(kWidth, 2 * rows_, GL_RGBA, GL_UNSIGNED_BYTE, col.data());
 }
 
 void LightTable::bind(const gl::Program& program) const {

@@ -56,6 +56,11 @@ public:
     glm::vec4 regionMapUniform() const { return regionMapUniform_; }
 
 private:
+    // update()'s two formats: the float textures, or the fixed-point ones (their scales first, from the lights).
+    void uploadFloat(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles);
+    void uploadFixed(const std::vector<PointLight>& lights, const std::vector<int>& shadowTiles);
+    void setFixedScales(const std::vector<PointLight>& lights);
+
     std::vector<float> regionMap_;
     int regionMapFirstRow_ = 0;
     glm::vec4 regionMapUniform_{0.0f};

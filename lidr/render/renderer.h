@@ -1,7 +1,7 @@
 #pragma once
-// What every render mode is: LIDR ("lidr"), tiled forward ("tiled"), multi-pass forward
-// ("forward-multipass") and the brute-force single-pass forward reference ("forward-brute"). All share the
-// scene, camera, light table layout and shading function, so their images and times compare like for like.
+// What every render mode is: LIDR ("lidr"), tiled ("tiled") and clustered ("clustered") forward, multi-pass forward
+// ("forward-multipass"), the brute-force reference ("forward-brute") and "auto". Each holds its FrameResources: the
+// same scene, camera, light table layout and shading function, so their images and times compare like for like.
 #include <string>
 #include <vector>
 
@@ -9,6 +9,7 @@
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/saved_gl_state.h"
+#include "lidr/render/frame_pass.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/render/output_transform.h"
 #include "lidr/render/shadow_settings.h"
@@ -128,6 +129,10 @@ public:
     // table, the shadow maps, the environment light's maps and the timer; every mode holds one (the automatic mode
     // answers with the candidate that drew its last frame).
     virtual const FrameResources& frame() const = 0;
+    // The passes of this renderer's frame in order, as its options and context built it (FramePass: name, reads,
+    // writes, when; lidr/render/frame_pass.h). FrameStats::passes times them by these names; `lidr-demo
+    // --list-passes MODE` prints them.
+    virtual std::vector<FramePass> passes() const = 0;
     const RenderTargets& targets() const;  // the last frame's image until the next render()
     // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
     virtual size_t lightDataBytes() const { return 0; }

@@ -99,7 +99,7 @@ const std::vector<int>& drawShadowMaps(ShadowMaps& shadows, FrameTimer& timer, F
                                        const std::vector<PointLight>& lights, const ShadingParameters& shading,
                                        LightTableFormat table) {
     if (shading.shadows.enabled) shadows.checkUnits(table);
-    TimedPass shadowMapsTime(timer, "shadow-maps");
+    TimedPass shadowMapsTime(timer, pass::kShadowMaps.name);
     const std::vector<int>& tiles = shadows.update(scene, lights, shading.shadows);
     shadowMapsTime.end();
     stats.shadowCasters = shadows.casters();

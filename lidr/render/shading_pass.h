@@ -1,5 +1,5 @@
 #pragma once
-// The shading pass every mode shares once it knows its lights (LIDR's forward pass, tiled forward, the
+// The shading pass every mode shares once it knows its lights (LIDR's forward pass, tiled and clustered forward, the
 // reference, multi-pass's ambient pass): where surfaces are shaded, with which depth test, and the per-frame
 // uniforms of shading.glsl. Each mode then binds its own light lists and draws.
 #include <vector>

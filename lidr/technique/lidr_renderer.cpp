@@ -130,18 +130,39 @@ int lightTableCapacity(const Scene& scene, const LidrOptions& o, const PackingCo
 
 // The frame's resources as LIDR sets them up: its depth precision, a light table sized for the index width.
 FrameSetup frameSetup(const Scene& scene, const LidrOptions& o, const PackingConfig& first, int width, int height) {
-    FrameSetup setup;
-    setup.width = width;
-    setup.height = height;
-    setup.msaaSamples = o.msaaSamples;
+    FrameSetup setup = FrameSetup::of(o, scene, width, height);
     setup.depthBits = o.depthBits;
     setup.prepassDepth = DepthEmulation{o.emulatedDepthBits};
     setup.lightCapacity = lightTableCapacity(scene, o, first, width, height);
-    setup.forceFixedLightTable = o.forceFixedLightTable;
-    setup.timingMethod = o.timingMethod;
-    setup.timing = o.timing;
     return setup;
 }
+
+// LIDR's passes (passes(), render(); doc/architecture.md, "One frame of LIDR"), between FrameResources' shadow-maps and
+// msaa-resolve. Where a pass reads or writes more in some configurations, its variants share its name; [x]: read
+// where the configuration or the frame has it.
+constexpr FramePass kDepthPrepass{"depth-prepass", "scene", "depth, stencil"};
+constexpr FramePass kDepthPrepassCopy{"depth-prepass", "scene",
+                                      "depth, stencil, depth copy (the sphere tests read it)"};
+constexpr FramePass kVolumeTiles{"volume-tiles", "depth (read back)", "volume tiles (depth per tile)",
+                                 "the tile decision takes tiles: the lights cover enough screens and tiles pay"};
+constexpr FramePass kFramePlan{"light-table", "lights, [shadow atlas], [volume tiles], mesh bounds",
+                               "frame plan (indices, index width, regions), light table"};
+constexpr FramePass kLightVolumesTransparent{"light-volumes-transparent", "frame plan, depth, [depth copy]",
+                                             "transparent index targets, stencil count",
+                                             "lights reach transparent meshes in view"};
+constexpr FramePass kLightVolumes{"light-volumes",
+                                  "frame plan, depth, [depth copy], [volume tiles], [shadow atlas]",
+                                  "index targets, stencil count",
+                                  "a light reaches a visible surface; again at each re-pack"};
+constexpr FramePass kOverlapProbe{"overlap-probe", "stencil count", "overlap measure (occlusion queries)",
+                                  "automatic budget"};
+constexpr FramePass kMsaaDepthPrepass{"msaa-depth-prepass", "scene", "depth (MSAA)"};
+constexpr FramePass kForward{"forward",
+                             "scene, depth, index targets, light table, [shadow atlas], [environment]", "colour"};
+constexpr FramePass kForwardTransparent{"forward-transparent",
+                                        "transparent meshes, depth, transparent index targets, light table, "
+                                        "[shadow atlas], [environment]",
+                                        "colour", "transparent meshes in the scene"};
 
 // The probe's thresholds a volume pass asks about this frame (bit i: OverlapProbe::kThreshold[i]). Steady frames
 // ask over the budget (re-pack) and, every autoNarrowingInterval frames, over half of it (may narrow); only an
@@ -204,6 +225,22 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     selectTransparentVariant(first.budget, first.indexBits);
 }
 
+std::vector<FramePass> LidrRenderer::passes() const {
+    std::vector<FramePass> p{pass::kShadowMaps};
+    if (options_.depthPrepass) p.push_back(depthTexture_ ? kDepthPrepassCopy : kDepthPrepass);
+    if (volumeTiles_ && options_.depthPrepass) p.push_back(kVolumeTiles);
+    p.push_back(kFramePlan);
+    if (transparentIndexTargets_) p.push_back(kLightVolumesTransparent);
+    p.push_back(kLightVolumes);
+    if (options_.packing.autoBudget()) p.push_back(kOverlapProbe);
+    if (frame_.targets.samples() > 0 && options_.depthPrepass && !options_.perSampleIndices)
+        p.push_back(kMsaaDepthPrepass);
+    p.push_back(kForward);
+    if (drawTransparent_) p.push_back(kForwardTransparent);
+    if (frame_.targets.samples() > 0) p.push_back(pass::kMsaaResolve);
+    return p;
+}
+
 LidrRenderer::Variant& LidrRenderer::variant(int budget, int indexBits) {
     Variant& v = variants_[{budget, indexBits}];
     if (!v.scheme) {
@@ -262,23 +299,25 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     const FrameScope scope(stats_, frame_.timer, lights.size());
     volumeQuadPixels_ = volumeStepLights_ = 0;  // this frame's, summed over its volume passes
 
-    // 0. Shadow maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
-    const std::vector<int>& shadowTiles =
-        frame_.drawShadowMaps(lights, shading, stats_);
+    // 0. shadow-maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
+    const std::vector<int>& shadowTiles = frame_.drawShadowMaps(lights, shading, stats_);
     const bool volumeShadows = useVolumeShadows(shadowTiles, shading);
-    // 1. The depth pre-pass, and the tile decision: whether the light volumes are culled by its depth per tile.
+    // 1. depth-prepass, and the tile decision: whether the light volumes are culled by its depth per tile
+    //    (volume-tiles).
     depthPrepass(cam);
     const TileDecision::Choice tiles = cullByTiles(cam, lights);
-    // 2. The frame plan: which lights get an index, their numbers, regions and index width; the light table and
-    //    the packing follow it.
-    TimedPass lightTableTime(frame_.timer, "light-table");
+    // 2. The frame plan (the light-table pass): which lights get an index, their numbers, regions and index width;
+    //    the light table and the packing follow it.
+    TimedPass lightTableTime(frame_.timer, kFramePlan.name);
     plan_ = plan(cam, lights, tiles.tiles, volumeShadows ? &shadowTiles : nullptr);
     loadPlan(lights, shadowTiles);
     selectPacking();
     lightTableTime.end();
-    // 3. The light volumes into the index targets, 4. the forward passes that read them, and 5. with an automatic
-    //    budget, the re-pack of a frame measured over the budget it was packed with. Nothing for nothing: a frame
-    //    where no light can reach a visible surface draws no volume, measures nothing and reads no index.
+    // 3. The light volumes into the index targets (light-volumes-transparent, light-volumes, overlap-probe), 4. the
+    //    forward passes that read them ([msaa-depth-prepass], forward, forward-transparent), and 5. with an
+    //    automatic budget, the re-pack of a frame measured over the budget it was packed with (3 and 4 again).
+    //    Nothing for nothing: a frame where no light can reach a visible surface draws no volume, measures nothing
+    //    and reads no index.
     if (plan_.lightless()) {
         shade(cam, shading, false);
     } else {
@@ -286,7 +325,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
         shade(cam, shading);
         if (options_.packing.autoBudget()) repackWhileOver(cam, shading, needTransparent);
     }
-    // 6. The record: what the tiles saved (the next tile decision's measure) and the frame's statistics.
+    // 6. The record: what the tiles saved (the next tile decision's measure) and the frame's statistics; then
+    //    msaa-resolve.
     recordFrame(tiles);
     frame_.targets.resolve(frame_.timer);  // the forward passes left the default state (ForwardPass::unbindInputs)
     frame_.finishFrame(stats_, "LidrRenderer::render");
@@ -320,7 +360,7 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         StateCache::current().clear(clear);
         return;
     }
-    TimedPass depthPrepassTime(frame_.timer, "depth-prepass");
+    TimedPass depthPrepassTime(frame_.timer, kDepthPrepass.name);
     frame_.depthPrepass.run(frame_.scene, cam);
     if (!depthTexture_) return;
     // The shader volume tests read the pre-pass depth from a texture that is not attached to the framebuffer
@@ -342,7 +382,7 @@ TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const 
     const TileDecision::Choice choice =
         volumeTiles_ ? tileDecision_.decide(lightRectArea(cam, lights), screenPixels()) : TileDecision::Choice{};
     if (choice.tiles) {
-        TimedPass volumeTilesTime(frame_.timer, "volume-tiles");
+        TimedPass volumeTilesTime(frame_.timer, kVolumeTiles.name);
         volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, frame_.targets.depthBits() == 24);  // the single-sample pre-pass depth
         volumePass_.setTiles(volumeTiles_.get(), cam);
     } else {
@@ -372,8 +412,10 @@ FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointL
     s.tableCapacity = frame_.lightTable.capacity();
     s.shadowTiles = volumeShadowTiles;
     FramePlanQueries q;
-    q.touchesScene = [this](const glm::vec4& sphere) { return touchesScene(sphere); };
-    q.reachesTransparent = [this](const glm::vec4& sphere) { return reachesTransparentMesh(sphere); };
+    q.touchesScene = [this](const glm::vec4& sphere) { return frame_.scene.batchesTouchSphere(sphere, DrawFilter::All); };
+    q.reachesTransparent = [this](const glm::vec4& sphere) {
+        return frame_.scene.batchesTouchSphere(sphere, DrawFilter::Transparent);
+    };
     q.reachesTiles = [this](const glm::vec4& sphere) { return volumePass_.sphereReachesTiles(sphere); };
     q.regionsReached = [this](const glm::vec4& sphere, const IndexRegions& regions) {
         return volumePass_.sphereRegions(sphere, regions);
@@ -460,12 +502,12 @@ void LidrRenderer::recordFrame(const TileDecision::Choice& tiles) {
 void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {
     const bool multisampled = frame_.targets.samples() > 0;
     if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
-        TimedPass msaaDepthPrepassTime(frame_.timer, "msaa-depth-prepass");
+        TimedPass msaaDepthPrepassTime(frame_.timer, kMsaaDepthPrepass.name);
         frame_.targets.bindColor();
         frame_.depthPrepass.run(frame_.scene, cam);
     }
 
-    TimedPass forwardTime(frame_.timer, "forward");
+    TimedPass forwardTime(frame_.timer, kForward.name);
     const ShadowMaps* shadows = lights && frame_.shadows.active() ? &frame_.shadows : nullptr;
     frame_.prepareEnvironment(shading, stats_, lights ? indexTargets_->count() : 0);
     current_->forward->run(frame_.targets, *indexTargets_, frame_.scene, frame_.lightTable, cam, shading, frame_.environment,
@@ -473,7 +515,7 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     forwardTime.end();
 
     if (drawTransparent_) {
-        TimedPass forwardTransparentTime(frame_.timer, "forward-transparent");
+        TimedPass forwardTransparentTime(frame_.timer, kForwardTransparent.name);
         const IndexTargets& transparentTargets = transparentIndexTargets();
         frame_.environment.prepare(shading.environment, lights ? transparentTargets.count() : 0);
         currentTransparent_->forward->runTransparent(frame_.targets, transparentTargets, frame_.scene, frame_.lightTable, cam, shading,
@@ -502,7 +544,7 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
     // stencil: the transparent pass's thresholds are read at once, the main pass's after the forward passes
     // (measuredNeed()).
     const int needTransparent = transparentIndexTargets_ ? drawTransparentVolumes(cam, volumes) : -1;
-    TimedPass lightVolumesTime(frame_.timer, "light-volumes");
+    TimedPass lightVolumesTime(frame_.timer, kLightVolumes.name);
     volumePass_.begin(*indexTargets_, cam, &depthTexture_);
     current_->scheme->encode(volumePass_, volumes);
     volumeQuadPixels_ += volumePass_.tileQuadPixels();
@@ -510,7 +552,7 @@ int LidrRenderer::drawVolumes(const CameraMatrices& cam, const std::vector<Volum
     volumePass_.end();
     lightVolumesTime.end();
     if (options_.packing.autoBudget()) {
-        TimedPass probeTime(frame_.timer, "overlap-probe");  // apart: full-screen draws, not volume fragments
+        TimedPass probeTime(frame_.timer, kOverlapProbe.name);  // apart: full-screen draws, not volume fragments
         probe_.issue(thresholdsToAsk(auto_, current_->scheme->config().budget, narrowingAsked_), probeAreas());
     }
     return needTransparent;
@@ -521,12 +563,12 @@ int LidrRenderer::drawTransparentVolumes(const CameraMatrices& cam, const std::v
     // the lists outside stay empty, and no transparent surface reads them.
     glm::ivec4 area(0);
     std::vector<VolumeLight> reaching;
-    if (transparentScreenArea(cam, area))
+    if (frame_.scene.batchesPixelRect(cam, DrawFilter::Transparent, area))
         for (const VolumeLight& v : volumes)
-            if (reachesTransparentMesh(v.posRadius)) reaching.push_back(v);
+            if (frame_.scene.batchesTouchSphere(v.posRadius, DrawFilter::Transparent)) reaching.push_back(v);
     stats_.transparentVolumeLights = static_cast<int>(reaching.size());
     stats_.transparentVolumePassSkipped = reaching.empty();
-    TimedPass lightVolumesTransparentTime(frame_.timer, "light-volumes-transparent");
+    TimedPass lightVolumesTransparentTime(frame_.timer, kLightVolumesTransparent.name);
     transparentVolumePass_.begin(*transparentIndexTargets_, cam, &depthTexture_);
     if (reaching.empty()) {
         transparentVolumePass_.end();
@@ -560,84 +602,6 @@ OverlapProbe::Areas LidrRenderer::probeAreas() const {
         areas[i] = volumePass_.drawsScreenTiles() ? volumePass_.tileCandidateArea(OverlapProbe::kThreshold[i])
                                                   : glm::ivec4(0, 0, -1, -1);
     return areas;
-}
-
-bool LidrRenderer::transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const {
-    bool any = false;
-    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
-        if (!frame_.scene.batchTransparent(b)) continue;
-        glm::vec3 lo, hi;
-        frame_.scene.batchBounds(b, lo, hi);
-        glm::ivec4 r;
-        if (!boxPixelRect(cam, lo, hi, r)) continue;
-        area = any ? glm::ivec4(glm::min(glm::ivec2(area), glm::ivec2(r)), glm::max(glm::ivec2(area.z, area.w), glm::ivec2(r.z, r.w)))
-                   : r;
-        any = true;
-    }
-    return any;
-}
-
-bool LidrRenderer::touchesScene(const glm::vec4& posRadius) const {
-    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
-        glm::vec3 lo, hi;
-        frame_.scene.batchBounds(b, lo, hi);
-        if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
-    }
-    return false;
-}
-
-bool LidrRenderer::reachesTransparentMesh(const glm::vec4& posRadius) const {
-    for (size_t b = 0; b < frame_.scene.batchCount(); ++b) {
-        if (!frame_.scene.batchTransparent(b)) continue;
-        glm::vec3 lo, hi;
-        frame_.scene.batchBounds(b, lo, hi);
-        if (sphereTouchesBox(glm::vec3(posRadius), posRadius.w, lo, hi)) return true;
-    }
-    return false;
-}
-
-std::vector<ImageRGBA8> LidrRenderer::readIndexTargets() const {
-    std::vector<ImageRGBA8> out;
-    if (lightlessFrame_) {  // no volume pass: every list is empty (index 0)
-        for (int i = 0; i < indexTargets_->count(); ++i) out.emplace_back(indexTargets_->width(), indexTargets_->height());
-        return out;
-    }
-    indexTargets_->framebuffer().bind();
-    for (int i = 0; i < indexTargets_->count(); ++i) {
-        if (frame_.info.gles) {
-            // OpenGL ES 2.0 reads COLOR_ATTACHMENT0 only (no glReadBuffer): each target in turn is attached
-            // there to a framebuffer of its own.
-            gl::Framebuffer single = gl::Framebuffer::create();
-            single.attachTexture(GL_COLOR_ATTACHMENT0, indexTargets_->texture(i));
-            single.checkComplete("index target read-back");
-            out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
-            continue;
-        }
-        glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
-        out.push_back(readPixelsRGBA8(indexTargets_->width(), indexTargets_->height()));
-    }
-    StateCache::current().bindFramebuffer(0);
-    return out;
-}
-
-std::vector<float> LidrRenderer::volumeOutsideRadii(const std::vector<PointLight>& lights) const {
-    std::vector<float> radii;
-    radii.reserve(lights.size());
-    for (size_t i = 0; i < lights.size(); ++i)
-        radii.push_back(volumePass_.outsideRadiusFor(
-            {uint32_t(i + 1), glm::vec4(lights[i].position, lights[i].radius), -1, spotCone(lights[i])}));
-    return radii;
-}
-
-std::vector<uint8_t> LidrRenderer::readLightCounts() const {
-    const int bits = volumePass_.stencilCountBits();
-    if (bits == 0) return {};
-    if (lightlessFrame_) return std::vector<uint8_t>(size_t(frame_.targets.width()) * size_t(frame_.targets.height()), 0);
-    std::vector<uint8_t> s = frame_.targets.readStencil();
-    const uint8_t mask = static_cast<uint8_t>((1u << bits) - 1u);
-    for (uint8_t& v : s) v &= mask;
-    StateCache::current().bindFramebuffer(0);
-    return s;
 }
 
 void LidrRenderer::checkObjectMaterial(const Material& material) const {

@@ -111,6 +111,7 @@ public:
     const PackingScheme& transparentScheme() const { return *currentTransparent_->scheme; }
     const LidrOptions& options() const { return options_; }
     const FrameResources& frame() const override { return frame_; }
+    std::vector<FramePass> passes() const override;
     const IndexTargets& indexTargets() const { return *indexTargets_; }
     // With an automatic index width, visible lights are numbered 1..n in draw order: entry k - 1 is the scene
     // index (1-based) of index k. Empty: indices are the scene's own.
@@ -171,11 +172,6 @@ private:
     void recordFrame(const TileDecision::Choice& tiles);
 
     double screenPixels() const { return double(frame_.targets.width()) * frame_.targets.height(); }
-    // The pixel rectangle (x0, y0, x1, y1, inclusive, GL window coordinates) where transparent meshes can be
-    // seen; false when none can.
-    bool transparentScreenArea(const CameraMatrices& cam, glm::ivec4& area) const;
-    bool reachesTransparentMesh(const glm::vec4& posRadius) const;  // touches a transparent mesh's bounds
-    bool touchesScene(const glm::vec4& posRadius) const;           // reaches some mesh's bounds
     // One packing of the frame: the scheme and its forward shader, built on first use and kept.
     struct Variant {
         std::unique_ptr<PackingScheme> scheme;

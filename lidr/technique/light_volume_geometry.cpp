@@ -15,6 +15,20 @@ namespace lidr {
 
 LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth)
     : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+    uploadMeshes();
+    programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
+        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
+        const std::string vertex = buildShaderSource("light_volume.vert", defs);
+        ShaderIncludes includes;
+        depth.apply(defs, includes);
+        return gl::Program::create("light_volume-" + std::to_string(targetCount), vertex,
+                                   buildShaderSource("light_volume.frag", defs, includes),
+                                   {{"aPosition", gl::kPosition}});
+    });
+    if (isShaderVolumeTest(test)) setUpBatches(info, test, depth);
+}
+
+void LightVolumeGeometry::uploadMeshes() {
     std::vector<glm::vec3> positions;
     std::vector<uint16_t> indices;
     for (int level = 0; level < kDetailLevels; ++level) {
@@ -36,69 +50,61 @@ LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bo
     }
     vertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, positions.data(), positions.size() * sizeof(glm::vec3));
     indices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices.data(), indices.size() * sizeof(uint16_t));
-    programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
-        ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
-        const std::string vertex = buildShaderSource("light_volume.vert", defs);
-        ShaderIncludes includes;
-        depth.apply(defs, includes);
-        return gl::Program::create("light_volume-" + std::to_string(targetCount), vertex,
-                                   buildShaderSource("light_volume.frag", defs, includes),
-                                   {{"aPosition", gl::kPosition}});
-    });
-    if (isShaderVolumeTest(test)) {
-        // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
-        // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
-        // its extra fill costs less than their vertices (doc/benchmarks.md).
-        const LightVolumeMesh& mesh = meshes_[batchLevel_];
-        // Per light: its sphere, its cone and one index colour per target.
-        const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 3;  // one target
-        batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
-        std::vector<glm::vec4> copies;
-        std::vector<uint16_t> copyIndices;
-        copies.reserve(mesh.positions.size() * size_t(batch_));
-        copyIndices.reserve(mesh.indices.size() * size_t(batch_));
-        for (int slot = 0; slot < batch_; ++slot) {
-            const auto base = static_cast<uint16_t>(copies.size());
-            for (const glm::vec3& p : mesh.positions) copies.emplace_back(p, float(slot));
-            for (uint16_t i : mesh.indices) copyIndices.push_back(static_cast<uint16_t>(base + i));
-        }
-        batchCopyIndices_ = static_cast<GLsizei>(mesh.indices.size());
-        batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
-        batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
-        maxVertexUniformVectors_ = info.maxVertexUniformVectors;
-        // By value: the geometry moves with its pass.
-        const int uniforms = maxVertexUniformVectors_;
-        auto programs = [info, test, depth, batch = batch_, uniforms](bool screenTiles, bool cones,
-                                                                      const ShaderDefines& shadow) {
-            return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles, cones, shadow](int targetCount) {
-                if (targetCount != 1 && targetCount != 2 && targetCount != 4)
-                    throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
-                                std::to_string(targetCount));
-                ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
-                                      {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
-                                                                             !shadow.empty()))}};
-                if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-                if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
-                if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
-                defs.insert(defs.end(), shadow.begin(), shadow.end());
-                const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
-                ShaderIncludes includes;
-                depth.apply(defs, includes);
-                return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
-                                               (cones ? "cones-" : "") + (shadow.empty() ? "" : "shadows-") +
-                                               std::to_string(targetCount),
-                                           vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
-                                           {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
-            });
-        };
-        // Each with and without the cone test: a draw of point lights alone skips its varying and arithmetic
-        // (+8 % volume-pass instructions on hall-1024, callgrind). Compiled on first use.
-        for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1, {});
-        if (test == VolumeTest::Sphere) {
-            for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1, {});
-            makePrograms_ = programs;
-            tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
-        }
+}
+
+void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, DepthEmulation depth) {
+    // The shader decides, so the volume need only enclose the sphere: the icosahedron (vertices at 1.26 x
+    // the radius) beat the 80- and 320-face meshes on the room (volume pass 32 / 40 / 70 ms, llvmpipe):
+    // its extra fill costs less than their vertices (doc/benchmarks.md).
+    const LightVolumeMesh& mesh = meshes_[batchLevel_];
+    // Per light: its sphere, its cone and one index colour per target.
+    const int byUniforms = (info.maxVertexUniformVectors - kReservedVertexUniforms) / 3;  // one target
+    batch_ = std::max(1, std::min({kMaxBatch, byUniforms, int(65535 / mesh.positions.size())}));
+    std::vector<glm::vec4> copies;
+    std::vector<uint16_t> copyIndices;
+    copies.reserve(mesh.positions.size() * size_t(batch_));
+    copyIndices.reserve(mesh.indices.size() * size_t(batch_));
+    for (int slot = 0; slot < batch_; ++slot) {
+        const auto base = static_cast<uint16_t>(copies.size());
+        for (const glm::vec3& p : mesh.positions) copies.emplace_back(p, float(slot));
+        for (uint16_t i : mesh.indices) copyIndices.push_back(static_cast<uint16_t>(base + i));
+    }
+    batchCopyIndices_ = static_cast<GLsizei>(mesh.indices.size());
+    batchVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, copies.data(), copies.size() * sizeof(glm::vec4));
+    batchIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, copyIndices.data(), copyIndices.size() * sizeof(uint16_t));
+    maxVertexUniformVectors_ = info.maxVertexUniformVectors;
+    // By value: the geometry moves with its pass.
+    const int uniforms = maxVertexUniformVectors_;
+    auto programs = [info, test, depth, batch = batch_, uniforms](bool screenTiles, bool cones,
+                                                                  const ShaderDefines& shadow) {
+        return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles, cones, shadow](int targetCount) {
+            if (targetCount != 1 && targetCount != 2 && targetCount != 4)
+                throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
+                            std::to_string(targetCount));
+            ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)},
+                                  {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
+                                                                         !shadow.empty()))}};
+            if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+            if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
+            if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
+            defs.insert(defs.end(), shadow.begin(), shadow.end());
+            const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
+            ShaderIncludes includes;
+            depth.apply(defs, includes);
+            return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
+                                           (cones ? "cones-" : "") + (shadow.empty() ? "" : "shadows-") +
+                                           std::to_string(targetCount),
+                                       vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
+                                       {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
+        });
+    };
+    // Each with and without the cone test: a draw of point lights alone skips its varying and arithmetic
+    // (+8 % volume-pass instructions on hall-1024, callgrind). Compiled on first use.
+    for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1, {});
+    if (test == VolumeTest::Sphere) {
+        for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1, {});
+        makePrograms_ = programs;
+        tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
     }
 }
 

@@ -150,6 +150,10 @@ private:
         glm::ivec4 rect{0};  // the sphere's pixel rectangle (spherePixelRect): quads are clipped to it
         std::vector<TileReach> tiles;
     };
+    // The constructor's parts: the volume meshes (each detail level and the spot cone) in one vertex and one index
+    // buffer; for the shader tests, the batches of mesh copies and their programs.
+    void uploadMeshes();
+    void setUpBatches(const GlInfo& info, VolumeTest test, DepthEmulation depth);
     bool reachesFarPlane(const VolumeLight& light, const CameraMatrices& camera) const;
     // A spot light's cone mesh shape (spotVolumeShape, cached by cone), its unit axis in `axis`; nullptr for a
     // point light.

@@ -81,6 +81,10 @@ struct StateTable {
     bool shaderTest = false;
     std::vector<RenderState>* states = nullptr;
 
+    explicit StateTable(std::vector<RenderState>& used) : states(&used) {
+        for (auto& row : index) std::fill(std::begin(row), std::end(row), -1);
+    }
+    RenderState& of(VolumeStepRole role) { return base[int(role)]; }
     int use(VolumeStepRole role, Depth depth) {
         int& i = index[int(role)][depth];
         if (i >= 0) return i;
@@ -99,12 +103,18 @@ struct StateTable {
     }
 };
 
-}  // namespace
+// The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count, and a
+// saturated count never matches a window below 64, so no number of lights wraps into a window.
+struct RankWindow {
+    bool on;
+    GLuint mask;
+    explicit RankWindow(const VolumeDraw& d)
+        : on(d.rankCount > 0), mask(d.rankCount > 0 ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu) {}
+};
 
-VolumeDrawPlan planVolumeDraw(const VolumeDraw& d, const VolumePlanContext& c,
-                              const std::vector<VolumeLightFacts>& lights) {
-    checkRankWindow(d);
-    VolumeDrawPlan plan;
+// Where the draw writes: its targets' draw buffers (OpenGL ES: from attachment 0 of a framebuffer that starts at
+// firstTarget).
+void planTargets(const VolumeDraw& d, const VolumePlanContext& c, VolumeDrawPlan& plan) {
     plan.restartCount = d.restartCount;
     plan.programTargets = d.targetCount;
     if (c.gles) {  // gl_FragData[i] goes to COLOR_ATTACHMENTi only: the targets from firstTarget on start at 0
@@ -114,111 +124,119 @@ VolumeDrawPlan planVolumeDraw(const VolumeDraw& d, const VolumePlanContext& c,
     } else {
         for (int i = 0; i < d.targetCount; ++i) plan.drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + d.firstTarget + i);
     }
+}
 
-    StateTable table;
-    for (auto& row : table.index) std::fill(std::begin(row), std::end(row), -1);
-    table.states = &plan.states;
-    auto base = [&](VolumeStepRole r) -> RenderState& { return table.base[int(r)]; };
-    // The rank window: (count & ~(rankCount - 1)) == rankFirst. GL_INCR saturates at the top of the count,
-    // and a saturated count never matches a window below 64, so no number of lights wraps into a window.
-    const bool window = d.rankCount > 0;
-    const GLuint windowMask = window ? (~GLuint(d.rankCount - 1)) & 0xFFu : 0xFFu;
-
-    if (isShaderVolumeTest(c.test)) {
-        // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
-        // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
-        // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
-        // one draw does what the stencil tests need a count draw for.
-        plan.program = VolumeProgram::Batch;
-        plan.countBits = 8;
-        table.shaderTest = true;
-        RenderState& st = base(VolumeStepRole::Write);
-        st = backFaceState(d, c);
-        // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
-        // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
-        st.depthTest = c.test == VolumeTest::Sphere && !c.screenTiles;
-        st.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-        st.stencil.ref = d.rankFirst;
-        st.stencil.readMask = windowMask;
-        st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
-        st.stencil.writeMask = 0xFF;
-        const int batch = std::max(1, c.batchSize);
-        for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
-            VolumeStep step;
-            step.firstLight = int(first);
-            step.lightCount = int(std::min(lights.size() - first, size_t(batch)));
-            for (int i = 0; i < step.lightCount; ++i)
-                step.clampToFar = step.clampToFar || (!c.depthClamp && lights[first + size_t(i)].reachesFarPlane);
-            step.state = table.use(VolumeStepRole::Write, step.clampToFar ? kNoDepth : kAsTested);
-            plan.steps.push_back(step);
-        }
-        return plan;
+// The shader tests (sphere, sphere-ray): lights in batches, one step a batch.
+void planShaderTest(const VolumeDraw& d, const VolumePlanContext& c, const std::vector<VolumeLightFacts>& lights,
+                    const RankWindow& window, StateTable& table, VolumeDrawPlan& plan) {
+    // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
+    // once per light. Only fragments the shader keeps reach the stencil, so every stencil outcome counts the
+    // light (INCR on stencil fail, depth fail and pass) and the rank window decides the colour write alone:
+    // one draw does what the stencil tests need a count draw for.
+    plan.program = VolumeProgram::Batch;
+    plan.countBits = 8;
+    table.shaderTest = true;
+    RenderState& st = table.of(VolumeStepRole::Write);
+    st = backFaceState(d, c);
+    // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
+    // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
+    st.depthTest = c.test == VolumeTest::Sphere && !c.screenTiles;
+    st.stencil.func = window.on ? GL_EQUAL : GL_ALWAYS;
+    st.stencil.ref = d.rankFirst;
+    st.stencil.readMask = window.mask;
+    st.stencil.stencilFail = st.stencil.depthFail = st.stencil.depthPass = GL_INCR;  // saturates at 255
+    st.stencil.writeMask = 0xFF;
+    const int batch = std::max(1, c.batchSize);
+    for (size_t first = 0; first < lights.size(); first += size_t(batch)) {
+        VolumeStep step;
+        step.firstLight = int(first);
+        step.lightCount = int(std::min(lights.size() - first, size_t(batch)));
+        for (int i = 0; i < step.lightCount; ++i)
+            step.clampToFar = step.clampToFar || (!c.depthClamp && lights[first + size_t(i)].reachesFarPlane);
+        step.state = table.use(VolumeStepRole::Write, step.clampToFar ? kNoDepth : kAsTested);
+        plan.steps.push_back(step);
     }
+}
 
-    // The volume test proper: back faces (cull front) at or behind the surface.
-    RenderState& inside = base(VolumeStepRole::Write);
+// The exact test's mark and unmark states, the write and count states reading them (plan.countBits 7).
+void setExactStates(const VolumeDraw& d, const VolumePlanContext& c, const RankWindow& window, StateTable& table,
+                    VolumeDrawPlan& plan) {
+    RenderState& inside = table.of(VolumeStepRole::Write);
+    RenderState& count = table.of(VolumeStepRole::Count);
+    // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
+    // bits 0..6 count the lights that really contain the surface.
+    RenderState& mark = table.of(VolumeStepRole::Mark);
+    mark.depthTest = true;
+    mark.depthFunc = GL_GREATER;  // front face behind the surface: surface in front of the light
+    mark.depthClamp = c.depthClamp;
+    mark.cull = true;
+    mark.cullFace = GL_BACK;
+    mark.colorMask = glm::bvec4(false);
+    mark.stencilTest = true;
+    mark.stencil.func = GL_ALWAYS;
+    mark.stencil.ref = 0x80;
+    mark.stencil.depthPass = GL_REPLACE;
+    mark.stencil.writeMask = 0x80;
+    mark.scissor = c.scissor.z >= 0;
+    mark.scissorBox = c.scissor;
+    table.of(VolumeStepRole::Unmark) = mark;
+    table.of(VolumeStepRole::Unmark).stencil.ref = 0;
+    // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
+    inside.stencil.func = window.on ? GL_EQUAL : GL_GREATER;
+    inside.stencil.ref = window.on ? d.rankFirst : 0x80;
+    inside.stencil.readMask = window.mask;
+    inside.stencil.writeMask = 0;
+    count = inside;
+    count.colorMask = glm::bvec4(false);
+    count.blend = false;
+    count.stencil.func = GL_GREATER;
+    count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
+    count.stencil.readMask = 0xFF;
+    count.stencil.depthPass = GL_INCR;
+    count.stencil.writeMask = 0x7F;
+    plan.countBits = 7;
+}
+
+// The stencil tests' states (back faces, cull front, at or behind the surface); returns whether the count is a
+// draw of its own (a rank window without the exact test).
+bool setStencilTestStates(const VolumeDraw& d, const VolumePlanContext& c, const RankWindow& window, StateTable& table,
+                          VolumeDrawPlan& plan) {
+    RenderState& inside = table.of(VolumeStepRole::Write);
     inside = backFaceState(d, c);
     inside.depthTest = true;
-    RenderState& count = base(VolumeStepRole::Count);
+    if (c.test == VolumeTest::ExactStencil) {
+        setExactStates(d, c, window, table, plan);
+        return false;
+    }
     // The stencil test comes BEFORE the depth test: a fragment the window rejects never reaches the depth
     // test, so "GL_INCR on stencil fail" would count lights whose back face lies in front of the surface
     // (lights that do not mark the pixel), and later passes would rank differently from earlier ones (one
     // light taken twice, another never). With a window, each light is therefore drawn twice: the colour draw
     // tests the window and leaves the stencil alone, then the count draw (no colour) counts depth passes.
-    bool separateCount = false;
-    const bool exact = c.test == VolumeTest::ExactStencil;
-    if (!exact) {
-        inside.stencil.func = window ? GL_EQUAL : GL_ALWAYS;
-        inside.stencil.ref = d.rankFirst;
-        inside.stencil.readMask = windowMask;
-        if (window) {
-            separateCount = true;
-            inside.stencil.writeMask = 0;
-            count = inside;
-            count.colorMask = glm::bvec4(false);
-            count.blend = false;
-            count.stencil.func = GL_ALWAYS;
-            count.stencil.depthPass = GL_INCR;  // saturates at 255
-            count.stencil.writeMask = 0xFF;
-        } else {
-            inside.stencil.depthPass = GL_INCR;
-        }
-        plan.countBits = 8;
-    } else {
-        // Bit 7 marks "this pixel's surface lies in front of the volume" for the current light only;
-        // bits 0..6 count the lights that really contain the surface.
-        RenderState& mark = base(VolumeStepRole::Mark);
-        mark.depthTest = true;
-        mark.depthFunc = GL_GREATER;  // front face behind the surface: surface in front of the light
-        mark.depthClamp = c.depthClamp;
-        mark.cull = true;
-        mark.cullFace = GL_BACK;
-        mark.colorMask = glm::bvec4(false);
-        mark.stencilTest = true;
-        mark.stencil.func = GL_ALWAYS;
-        mark.stencil.ref = 0x80;
-        mark.stencil.depthPass = GL_REPLACE;
-        mark.stencil.writeMask = 0x80;
-        mark.scissor = c.scissor.z >= 0;
-        mark.scissorBox = c.scissor;
-        base(VolumeStepRole::Unmark) = mark;
-        base(VolumeStepRole::Unmark).stencil.ref = 0;
-        // Marked pixels hold >= 128, so "128 > stencil" and the masked window (bit 7 in its mask) reject them.
-        inside.stencil.func = window ? GL_EQUAL : GL_GREATER;
-        inside.stencil.ref = window ? d.rankFirst : 0x80;
-        inside.stencil.readMask = windowMask;
-        inside.stencil.writeMask = 0;
-        count = inside;
-        count.colorMask = glm::bvec4(false);
-        count.blend = false;
-        count.stencil.func = GL_GREATER;
-        count.stencil.ref = 0x7F;  // saturate the 7-bit count at 127
-        count.stencil.readMask = 0xFF;
-        count.stencil.depthPass = GL_INCR;
-        count.stencil.writeMask = 0x7F;
-        plan.countBits = 7;
+    inside.stencil.func = window.on ? GL_EQUAL : GL_ALWAYS;
+    inside.stencil.ref = d.rankFirst;
+    inside.stencil.readMask = window.mask;
+    plan.countBits = 8;
+    if (!window.on) {
+        inside.stencil.depthPass = GL_INCR;
+        return false;
     }
+    inside.stencil.writeMask = 0;
+    RenderState& count = table.of(VolumeStepRole::Count);
+    count = inside;
+    count.colorMask = glm::bvec4(false);
+    count.blend = false;
+    count.stencil.func = GL_ALWAYS;
+    count.stencil.depthPass = GL_INCR;  // saturates at 255
+    count.stencil.writeMask = 0xFF;
+    return true;
+}
 
+// The stencil tests' steps: per light, mark, write, count and unmark (exact), or write then count (a rank
+// window), or one write.
+void planStencilTest(const VolumeDraw& d, const VolumePlanContext& c, const std::vector<VolumeLightFacts>& lights,
+                     bool separateCount, StateTable& table, VolumeDrawPlan& plan) {
+    const bool exact = c.test == VolumeTest::ExactStencil;
     plan.steps.reserve(lights.size() * (exact ? 4 : separateCount ? 2 : 1));
     for (size_t i = 0; i < lights.size(); ++i) {
         const VolumeLightFacts& l = lights[i];
@@ -253,6 +271,23 @@ VolumeDrawPlan planVolumeDraw(const VolumeDraw& d, const VolumePlanContext& c,
         } else {
             add(VolumeStepRole::Write, depth);
         }
+    }
+}
+
+}  // namespace
+
+VolumeDrawPlan planVolumeDraw(const VolumeDraw& d, const VolumePlanContext& c,
+                              const std::vector<VolumeLightFacts>& lights) {
+    checkRankWindow(d);
+    VolumeDrawPlan plan;
+    planTargets(d, c, plan);
+    StateTable table(plan.states);
+    const RankWindow window(d);
+    if (isShaderVolumeTest(c.test)) {
+        planShaderTest(d, c, lights, window, table, plan);
+    } else {
+        const bool separateCount = setStencilTestStates(d, c, window, table, plan);
+        planStencilTest(d, c, lights, separateCount, table, plan);
     }
     return plan;
 }

@@ -49,6 +49,12 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
     slices_.assign(tiles, 0u);
     sliceSpan_.assign(tiles, 0);
     margin += kDepthSlack;
+    rangeTiles(depth, margin);
+    markSlices(depth, margin);
+    measureSlices();
+}
+
+void VolumeTiles::rangeTiles(const std::vector<float>& depth, float margin) {
     // Both passes walk each row a tile's span at a time (no division per pixel) with branch-free inner loops
     // the compiler can vectorise: this is the CPU side of every tile-culled frame (doc/benchmarks.md).
     // Pass 1: each tile's range of surface depths, widened by the margin. Rounding is monotonic, so
@@ -71,6 +77,10 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
             maxDepth_[t] = std::max(maxDepth_[t], hi + margin);
         }
     }
+}
+
+void VolumeTiles::markSlices(const std::vector<float>& depth, float margin) {
+    const size_t tiles = size_t(tileCount());
     // Pass 2: the slices each pixel's widened depth overlaps. d - margin >= the tile's minimum, so both slice
     // coordinates are >= 0 and truncation is the floor.
     std::vector<float> scale(tiles, 0.0f);
@@ -98,6 +108,10 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
             sliceSpan_[t] = span;
         }
     }
+}
+
+void VolumeTiles::measureSlices() {
+    const size_t tiles = size_t(tileCount());
     // Pass 3: each occupied slice's distances, widened by a tenth of a slice (rounding in the floors above) and
     // by relative slack, computed once here rather than for every light that reaches the tile.
     sliceDistances_.resize(tiles * size_t(kSlices));

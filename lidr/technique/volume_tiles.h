@@ -80,6 +80,12 @@ public:
     uint32_t tileSlices(int tile) const { return slices_[size_t(tile)]; }
 
 private:
+    // build()'s three passes over the depth (`margin` with kDepthSlack): each tile's widened depth range, the slices
+    // each pixel overlaps, each occupied slice's distances.
+    void rangeTiles(const std::vector<float>& depth, float margin);
+    void markSlices(const std::vector<float>& depth, float margin);
+    void measureSlices();
+
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
     std::vector<float> minDepth_, maxDepth_;  // per tile; min > max: no surface
     std::vector<uint32_t> slices_;

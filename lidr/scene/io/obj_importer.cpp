@@ -178,12 +178,10 @@ glm::vec3 normalizedOr(const glm::vec3& v, const glm::vec3& fallback) {
     return std::isfinite(length) && length > 1e-20f ? v / length : fallback;
 }
 
-}  // namespace
+using Report = std::function<void(const std::string&)>;  // appendObj's fail (throws) and warn
 
-void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial,
-               const ObjImportOptions& options) {
-    const auto fail = [&](const std::string& problem) { throw Error(objPath + ": " + problem); };
-    const auto warn = [&](const std::string& warning) { scene.warnings.push_back(objPath + ": " + warning); };
+// The file checked before tinyobjloader reads it: its format, that it can be read, the override material, its lines.
+void checkObjFile(const Scene& scene, const std::string& objPath, int overrideMaterial, const Report& fail) {
     const std::string format = unsupportedModelFormat(objPath);
     if (!format.empty()) fail("format not supported (" + format + "); OBJ and glTF models can be loaded");
     const std::string extension = lowerCaseExtension(objPath);
@@ -192,97 +190,116 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
     if (!problem.empty()) fail("OBJ file " + problem);
     if (overrideMaterial >= int(scene.materials.size())) fail("override material out of range");
     checkObjLines(objPath, fail);
+}
 
+// tinyobjloader's parse (triangulated); its warnings (a missing .mtl, an unknown usemtl: those faces get the
+// "default" material) are the scene's, one line each, and not fatal: the geometry is checked after.
+void readObj(tinyobj::ObjReader& reader, const std::string& objPath, const Report& fail, const Report& warn) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    // Warnings (a missing .mtl, say) are not fatal; the geometry is checked below.
     if (!reader.ParseFromFile(objPath, config)) {
         std::string message = reader.Error();
         message.erase(message.find_last_not_of(" \n") + 1);  // tinyobjloader ends its messages with newlines
         fail("malformed OBJ: " + message);
     }
-    // tinyobjloader's warnings (a missing .mtl, an unknown usemtl: those faces get the "default" material) are
-    // the scene's, one line each.
-    {
-        std::istringstream lines(reader.Warning());
-        std::string line;
-        while (std::getline(lines, line)) {
-            line.erase(line.find_last_not_of(" \r\n.") + 1);
-            if (!line.empty()) warn(line);
-        }
+    std::istringstream lines(reader.Warning());
+    std::string line;
+    while (std::getline(lines, line)) {
+        line.erase(line.find_last_not_of(" \r\n.") + 1);
+        if (!line.empty()) warn(line);
     }
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+}
+
+// An MTL material as lidr's, its values checked (a value the renderer cannot use is the file's error, named with
+// its keyword: the fuzzer found "Kd 0 0 -0.5" passing import and failing only later, in scene validation).
+Material objMaterial(const tinyobj::material_t& source, const fs::path& folder, bool illumGiven, const Report& fail,
+                     const Report& warn) {
+    Material material;
+    material.name = source.name;
+    material.diffuse = {source.diffuse[0], source.diffuse[1], source.diffuse[2]};
+    material.specular = {source.specular[0], source.specular[1], source.specular[2]};
+    material.shininess = std::max(source.shininess, 1.0f);  // exporters often write Ns 0
+    material.opacity = source.dissolve;
+    material.emissive = {source.emission[0], source.emission[1], source.emission[2]};
+    const auto color = [&](const char* keyword, const glm::vec3& c) {
+        if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.x >= 0.0f && c.y >= 0.0f &&
+              c.z >= 0.0f))
+            fail("material '" + source.name + "': " + keyword + " must be finite and >= 0, got (" +
+                 std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ")");
+    };
+    color("Kd", material.diffuse);
+    color("Ks", material.specular);
+    color("Ke", material.emissive);
+    // MTL colours are display values (sRGB-encoded, as colour pickers give them); lidr shades in linear light.
+    material.diffuse = displayColourToLinear(material.diffuse);
+    material.specular = displayColourToLinear(material.specular);
+    material.emissive = displayColourToLinear(material.emissive);
+    if (!std::isfinite(material.shininess))
+        fail("material '" + source.name + "': Ns must be finite, got " + std::to_string(source.shininess));
+    if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+        fail("material '" + source.name + "': d (dissolve) must be in [0, 1], got " + std::to_string(source.dissolve));
+    applyIllum(material, source, illumGiven, warn);
+    if (!source.diffuse_texname.empty()) {
+        material.diffuseTexture = (folder / source.diffuse_texname).lexically_normal().string();
+        const std::string problem = imageProblem(material.diffuseTexture);
+        if (!problem.empty()) fail("material '" + source.name + "': " + problem);
+    }
+    return material;
+}
+
+// The file's triangles in world space, with what the meshes are built from.
+struct Triangle {
+    std::array<tinyobj::index_t, 3> corners;
+    glm::vec3 faceNormal;
+    bool smooth;
+    int sceneMaterial;
+    size_t shape;
+};
+
+struct ObjTriangles {
+    std::vector<Triangle> triangles;
+    // Corners without a normal in smoothing groups share the normal of their position, averaged over its faces
+    // weighted by the corner angle (so how a polygon was triangulated does not matter).
+    std::vector<glm::vec3> smoothNormals;
+};
+
+// How appendObj places the file's vertices and picks each face's scene material.
+struct ObjPlacement {
+    const tinyobj::attrib_t& attrib;
+    glm::mat4 transform;
+    bool mirrored;  // keep triangles counter-clockwise from outside
+    int overrideMaterial;
+    std::vector<int> sceneMaterialOf;  // per MTL material
+    glm::vec3 worldPosition(int index) const {
+        const float* p = &attrib.vertices[3 * size_t(index)];
+        return glm::vec3(transform * glm::vec4(p[0], p[1], p[2], 1.0f));
+    }
+};
+
+// A face's corners checked against the file's vertices, normals and texture coordinates.
+void checkCorners(const Triangle& triangle, const tinyobj::attrib_t& attrib, const std::string& faceName,
+                  const Report& fail) {
     const int positionCount = int(attrib.vertices.size() / 3);
     const int normalCount = int(attrib.normals.size() / 3);
     const int texCoordCount = int(attrib.texcoords.size() / 2);
-
-    std::vector<int> sceneMaterialOf;
-    if (overrideMaterial < 0) {
-        const fs::path folder = fs::path(objPath).parent_path();
-        const std::set<std::string> withIllum = materialsWithIllum(objPath);
-        for (const tinyobj::material_t& source : reader.GetMaterials()) {
-            Material material;
-            material.name = source.name;
-            material.diffuse = {source.diffuse[0], source.diffuse[1], source.diffuse[2]};
-            material.specular = {source.specular[0], source.specular[1], source.specular[2]};
-            material.shininess = std::max(source.shininess, 1.0f);  // exporters often write Ns 0
-            material.opacity = source.dissolve;
-            material.emissive = {source.emission[0], source.emission[1], source.emission[2]};
-            // MTL values the renderer cannot use are the file's error, named with its keyword (the fuzzer found
-            // "Kd 0 0 -0.5" passing import and failing only later, in scene validation).
-            const auto color = [&](const char* keyword, const glm::vec3& c) {
-                if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.x >= 0.0f && c.y >= 0.0f &&
-                      c.z >= 0.0f))
-                    fail("material '" + source.name + "': " + keyword + " must be finite and >= 0, got (" +
-                         std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ")");
-            };
-            color("Kd", material.diffuse);
-            color("Ks", material.specular);
-            color("Ke", material.emissive);
-            // MTL colours are display values (sRGB-encoded, as colour pickers give them); lidr shades in linear light.
-            material.diffuse = displayColourToLinear(material.diffuse);
-            material.specular = displayColourToLinear(material.specular);
-            material.emissive = displayColourToLinear(material.emissive);
-            if (!std::isfinite(material.shininess))
-                fail("material '" + source.name + "': Ns must be finite, got " + std::to_string(source.shininess));
-            if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
-                fail("material '" + source.name + "': d (dissolve) must be in [0, 1], got " + std::to_string(source.dissolve));
-            applyIllum(material, source, withIllum.count(source.name) > 0, warn);
-            if (!source.diffuse_texname.empty()) {
-                material.diffuseTexture = (folder / source.diffuse_texname).lexically_normal().string();
-                const std::string problem = imageProblem(material.diffuseTexture);
-                if (!problem.empty()) fail("material '" + source.name + "': " + problem);
-            }
-            sceneMaterialOf.push_back(findOrAddMaterial(scene, material));
-        }
+    for (const tinyobj::index_t& corner : triangle.corners) {
+        if (corner.vertex_index < 0 || corner.vertex_index >= positionCount)
+            fail(faceName + ": vertex index " + std::to_string(corner.vertex_index + 1) + " out of range (" +
+                 std::to_string(positionCount) + " vertices)");
+        if (corner.normal_index >= normalCount)
+            fail(faceName + ": normal index " + std::to_string(corner.normal_index + 1) + " out of range (" +
+                 std::to_string(normalCount) + " normals)");
+        if (corner.texcoord_index >= texCoordCount)
+            fail(faceName + ": texcoord index " + std::to_string(corner.texcoord_index + 1) + " out of range (" +
+                 std::to_string(texCoordCount) + " texcoords)");
     }
+}
 
-    const glm::mat3 linear(transform);
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
-    const bool mirrored = glm::determinant(linear) < 0.0f;  // keep triangles counter-clockwise from outside
-    const auto worldPosition = [&](int index) {
-        const float* p = &attrib.vertices[3 * size_t(index)];
-        return glm::vec3(transform * glm::vec4(p[0], p[1], p[2], 1.0f));
-    };
-    for (int i = 0; i < positionCount; ++i)
-        if (!std::isfinite(attrib.vertices[3 * i]) || !std::isfinite(attrib.vertices[3 * i + 1]) ||
-            !std::isfinite(attrib.vertices[3 * i + 2]))
-            fail("vertex " + std::to_string(i + 1) + " is not finite");
-
-    struct Triangle {
-        std::array<tinyobj::index_t, 3> corners;
-        glm::vec3 faceNormal;
-        bool smooth;
-        int sceneMaterial;
-        size_t shape;
-    };
-    std::vector<Triangle> triangles;
-    // Corners without a normal in smoothing groups share the normal of their position, averaged over its
-    // faces weighted by the corner angle (so how a polygon was triangulated does not matter).
-    std::vector<glm::vec3> smoothNormals(size_t(positionCount), glm::vec3(0.0f));
-    const std::vector<tinyobj::shape_t>& shapes = reader.GetShapes();
+ObjTriangles collectTriangles(Scene& scene, const std::vector<tinyobj::shape_t>& shapes, const ObjPlacement& place,
+                              const ObjImportOptions& options, const Report& fail) {
+    ObjTriangles out;
+    out.smoothNormals.assign(place.attrib.vertices.size() / 3, glm::vec3(0.0f));
     for (size_t shapeIndex = 0; shapeIndex < shapes.size(); ++shapeIndex) {
         const tinyobj::shape_t& shape = shapes[shapeIndex];
         const tinyobj::mesh_t& source = shape.mesh;
@@ -292,30 +309,20 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
                 fail(faceName + " has " + std::to_string(source.num_face_vertices[face]) + " vertices after triangulation");
             Triangle triangle;
             for (int k = 0; k < 3; ++k) triangle.corners[size_t(k)] = source.indices[3 * face + size_t(k)];
-            if (mirrored) std::swap(triangle.corners[1], triangle.corners[2]);
-            for (const tinyobj::index_t& corner : triangle.corners) {
-                if (corner.vertex_index < 0 || corner.vertex_index >= positionCount)
-                    fail(faceName + ": vertex index " + std::to_string(corner.vertex_index + 1) + " out of range (" +
-                         std::to_string(positionCount) + " vertices)");
-                if (corner.normal_index >= normalCount)
-                    fail(faceName + ": normal index " + std::to_string(corner.normal_index + 1) + " out of range (" +
-                         std::to_string(normalCount) + " normals)");
-                if (corner.texcoord_index >= texCoordCount)
-                    fail(faceName + ": texcoord index " + std::to_string(corner.texcoord_index + 1) +
-                         " out of range (" + std::to_string(texCoordCount) + " texcoords)");
-            }
+            if (place.mirrored) std::swap(triangle.corners[1], triangle.corners[2]);
+            checkCorners(triangle, place.attrib, faceName, fail);
             std::array<glm::vec3, 3> points;
-            for (size_t k = 0; k < 3; ++k) points[k] = worldPosition(triangle.corners[k].vertex_index);
+            for (size_t k = 0; k < 3; ++k) points[k] = place.worldPosition(triangle.corners[k].vertex_index);
             const glm::vec3 areaNormal = glm::cross(points[1] - points[0], points[2] - points[0]);
             triangle.faceNormal = normalizedOr(areaNormal, glm::vec3(0.0f, 1.0f, 0.0f));
             triangle.smooth = options.smoothNormals ||
                               (face < source.smoothing_group_ids.size() && source.smoothing_group_ids[face] != 0);
             triangle.shape = shapeIndex;
             const int objMaterial = face < source.material_ids.size() ? source.material_ids[face] : -1;
-            if (overrideMaterial >= 0)
-                triangle.sceneMaterial = overrideMaterial;
-            else if (objMaterial >= 0 && size_t(objMaterial) < sceneMaterialOf.size())
-                triangle.sceneMaterial = sceneMaterialOf[size_t(objMaterial)];
+            if (place.overrideMaterial >= 0)
+                triangle.sceneMaterial = place.overrideMaterial;
+            else if (objMaterial >= 0 && size_t(objMaterial) < place.sceneMaterialOf.size())
+                triangle.sceneMaterial = place.sceneMaterialOf[size_t(objMaterial)];
             else
                 triangle.sceneMaterial = findOrAddDefaultMaterial(scene);
             if (triangle.smooth && glm::length(areaNormal) > 0.0f)
@@ -324,18 +331,21 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
                     const glm::vec3 toNext = glm::normalize(points[(k + 1) % 3] - points[k]);
                     const glm::vec3 toPrevious = glm::normalize(points[(k + 2) % 3] - points[k]);
                     const float angle = std::acos(glm::clamp(glm::dot(toNext, toPrevious), -1.0f, 1.0f));
-                    smoothNormals[size_t(triangle.corners[k].vertex_index)] += angle * triangle.faceNormal;
+                    out.smoothNormals[size_t(triangle.corners[k].vertex_index)] += angle * triangle.faceNormal;
                 }
-            triangles.push_back(triangle);
+            out.triangles.push_back(triangle);
         }
     }
-    if (triangles.empty()) fail("no triangles");
+    return out;
+}
 
-    const std::string stem = fs::path(objPath).stem().string();
-    // By group or object (tinyobjloader's shapes, in file order), then scene material: the mesh order is
-    // deterministic.
+// The triangles as meshes, by group or object (tinyobjloader's shapes, in file order), then scene material: the
+// mesh order is deterministic. Each is split spatially for culling (mesh_split.h).
+void addMeshes(Scene& scene, const std::string& objPath, const std::vector<tinyobj::shape_t>& shapes,
+               const ObjTriangles& obj, const ObjPlacement& place) {
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(place.transform)));
     std::map<std::pair<size_t, int>, MeshBuilder> builders;
-    for (const Triangle& triangle : triangles) {
+    for (const Triangle& triangle : obj.triangles) {
         MeshBuilder& builder = builders[{triangle.shape, triangle.sceneMaterial}];
         for (const tinyobj::index_t& corner : triangle.corners) {
             const bool flat = corner.normal_index < 0 && !triangle.smooth;
@@ -347,25 +357,26 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
             }
             glm::vec3 normal = triangle.faceNormal;
             if (corner.normal_index >= 0) {
-                const float* n = &attrib.normals[3 * size_t(corner.normal_index)];
+                const float* n = &place.attrib.normals[3 * size_t(corner.normal_index)];
                 normal = normalizedOr(normalMatrix * glm::vec3(n[0], n[1], n[2]), triangle.faceNormal);
             } else if (triangle.smooth) {
-                normal = normalizedOr(smoothNormals[size_t(corner.vertex_index)], triangle.faceNormal);
+                normal = normalizedOr(obj.smoothNormals[size_t(corner.vertex_index)], triangle.faceNormal);
             }
             glm::vec2 texCoord(0.0f);
             if (corner.texcoord_index >= 0) {
-                texCoord = {attrib.texcoords[2 * size_t(corner.texcoord_index)],
-                            attrib.texcoords[2 * size_t(corner.texcoord_index) + 1]};
+                texCoord = {place.attrib.texcoords[2 * size_t(corner.texcoord_index)],
+                            place.attrib.texcoords[2 * size_t(corner.texcoord_index) + 1]};
                 builder.hasTexCoords = true;
             }
             const uint32_t index = uint32_t(builder.mesh.positions.size());
-            builder.mesh.positions.push_back(worldPosition(corner.vertex_index));
+            builder.mesh.positions.push_back(place.worldPosition(corner.vertex_index));
             builder.mesh.normals.push_back(normal);
             builder.mesh.texCoords.push_back(texCoord);
             builder.mesh.indices.push_back(index);
             builder.vertexOf.emplace(key, index);
         }
     }
+    const std::string stem = fs::path(objPath).stem().string();
     for (auto& [key, builder] : builders) {
         const auto& [shape, material] = key;
         builder.mesh.material = material;
@@ -374,6 +385,35 @@ void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transf
         if (!builder.hasTexCoords) builder.mesh.texCoords.clear();
         for (Mesh& part : splitMeshSpatially(std::move(builder.mesh))) scene.meshes.push_back(std::move(part));
     }
+}
+
+}  // namespace
+
+void appendObj(Scene& scene, const std::string& objPath, const glm::mat4& transform, int overrideMaterial,
+               const ObjImportOptions& options) {
+    const Report fail = [&](const std::string& problem) { throw Error(objPath + ": " + problem); };
+    const Report warn = [&](const std::string& warning) { scene.warnings.push_back(objPath + ": " + warning); };
+    checkObjFile(scene, objPath, overrideMaterial, fail);
+    tinyobj::ObjReader reader;
+    readObj(reader, objPath, fail, warn);
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const glm::mat3 linear(transform);
+    ObjPlacement place{attrib, transform, glm::determinant(linear) < 0.0f, overrideMaterial, {}};
+    if (overrideMaterial < 0) {
+        const fs::path folder = fs::path(objPath).parent_path();
+        const std::set<std::string> withIllum = materialsWithIllum(objPath);
+        for (const tinyobj::material_t& source : reader.GetMaterials())
+            place.sceneMaterialOf.push_back(
+                findOrAddMaterial(scene, objMaterial(source, folder, withIllum.count(source.name) > 0, fail, warn)));
+    }
+    const int positionCount = int(attrib.vertices.size() / 3);
+    for (int i = 0; i < positionCount; ++i)
+        if (!std::isfinite(attrib.vertices[3 * i]) || !std::isfinite(attrib.vertices[3 * i + 1]) ||
+            !std::isfinite(attrib.vertices[3 * i + 2]))
+            fail("vertex " + std::to_string(i + 1) + " is not finite");
+    const ObjTriangles obj = collectTriangles(scene, reader.GetShapes(), place, options, fail);
+    if (obj.triangles.empty()) fail("no triangles");
+    addMeshes(scene, objPath, reader.GetShapes(), obj, place);
 }
 
 }  // namespace lidr
