@@ -1,0 +1,43 @@
+#pragma once
+// The web page's URL query (doc/web.md, "Options by URL"), read by one function: parsePageQuery. Plain C++ (no
+// emscripten), so the native tests check it (tests/test_web_query.cpp).
+//
+// When the library's option table (one table of renderer options, for lidr-demo, lidr-bench, the viewer and the
+// page) is on this branch, the renderer settings below go through it (setRenderOptionsFromQuery sets them and
+// returns the other pairs), and this function keeps only the page's own keys: scene, lights, width, height,
+// bench, bench-modes, environment and the checks.
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lidr::web {
+
+struct PageQuery {
+    // The settings lidr_web_set takes, in the order given, unchecked: applied together, the library's checks
+    // (and the page's applySettings) accept or refuse them. mode, scheme, budget, index-bits, view, shadows,
+    // shadow-filter, environment-intensity, paused.
+    std::vector<std::pair<std::string, std::string>> settings;
+    std::string scene;        // a model to open, by URL relative to the page; empty: the built-in room
+    std::string environment;  // auto, default, none or the URL of a .hdr; empty: not given
+    int lights = 0;           // 0: a model's own lights (256 when it has none), the room's 255
+    int width = 0, height = 0;  // the image's size; 0: it follows the window
+    int bench = 0;              // a timing run of this many frames per mode; 0: none
+    std::vector<std::string> benchModes;  // the modes it times (bench-modes=a,b); empty: every mode
+    // CTest web.chromium's runs (web/run_chromium_check.py): the page's own check, the model check's files.
+    bool check = false;
+    std::string checkModel, checkLarge, checkHuge;
+};
+
+// Limits of the query's numbers.
+constexpr int kMinPageSide = 16, kMaxPageSide = 4096;
+constexpr int kMaxBenchFrames = 10000;
+
+// "%41+b" -> "A b" (application/x-www-form-urlencoded, as URLSearchParams reads it); a bad escape is kept as it is.
+std::string urlDecode(const std::string& text);
+
+// The query ("?mode=tiled&lights=1024", the '?' optional; keys and values URL-decoded). Throws lidr::Error naming
+// the key for an unknown key (listing the known ones), a key given twice, or a number out of its range; a setting's
+// value is checked where it is applied. A key without '=' is a flag ("check").
+PageQuery parsePageQuery(const std::string& query);
+
+}  // namespace lidr::web
