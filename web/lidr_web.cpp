@@ -2,8 +2,9 @@
 // drop; web/shell.html writes it into the page's memory file system and calls lidr_web_load), rendered with LIDR
 // on WebGL 1 (the library's GLES 2.0 path), with the page's HTML controls calling the exported lidr_web_*
 // functions, and a fly camera (WASD + mouse drag). A loaded model gets lights scattered over its surfaces
-// (lidr::scatterLights, as --lights N). ?check in the URL runs the page's own check instead (web/web_check.h;
-// CTest web.chromium).
+// (lidr::scatterLights, as --lights N). The image follows the window, or width / height in the URL query; the
+// query (web/page_query.h, read once by lidr_web_query) also takes the settings, a model and bench=N, a timing run
+// of every mode asked for. ?check runs the page's own check instead (web/web_check.h; CTest web.chromium).
 #include "lidr/base/gl.h"
 
 #include <emscripten.h>
@@ -32,13 +33,17 @@
 #include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/scene_loader.h"
 #include "lidr/scene/light_scatter.h"
+#include "lidr/scene/render_mode_names.h"
+#include "page_bench.h"
+#include "page_query.h"
 #include "web_check.h"
 
 using namespace lidr;
 
 namespace {
 
-constexpr int kWidth = 640, kHeight = 480;
+// The image before the page sizes it (and the size the checks use): 640x480.
+constexpr int kStartWidth = 640, kStartHeight = 480;
 
 // What the HTML controls set. Budgets and widths are fixed numbers: the automatic budget measures the overlap
 // with occlusion queries, which WebGL 1 does not have (doc/web.md).
@@ -67,6 +72,7 @@ constexpr int kMaxModelLights = 16384;
 
 struct Page {
     std::unique_ptr<GlContext> context;
+    int width = kStartWidth, height = kStartHeight;  // the image: the canvases' size and the renderers' targets
     Scene fileScene;  // the room or the model as read
     Scene scene;      // what is rendered: fileScene, plus the lights scattered over a model
     std::string sceneName = "built-in room";
@@ -130,7 +136,7 @@ std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& s
     shading.environment.intensity = s.environmentIntensity;
     if (s.shadows == "off") return lights;
     if (s.shadows != "scene")
-        chooseShadowCasters(lights, cameraMatrices(camera, kWidth, kHeight), std::stoi(s.shadows));
+        chooseShadowCasters(lights, cameraMatrices(camera, page->width, page->height), std::stoi(s.shadows));
     shading.shadows.enabled = true;
     shading.shadows.filtered = s.shadowFilter;
     shading.shadows.atlas.size = kShadowAtlasSize;
@@ -145,7 +151,7 @@ std::unique_ptr<Renderer> makeRenderer(const Settings& s) {
     o.transparency = true;
     // WebGL 1 (GLSL ES 1.00) gives gl_FragCoord.z at mediump only, which the tiled mode's depth bounds refuse.
     o.tiled.depthBounds = false;
-    return createRenderer(o, page->context->info(), page->scene, kWidth, kHeight);
+    return createRenderer(o, page->context->info(), page->scene, page->width, page->height);
 }
 
 // Applies new settings; anything the library refuses keeps the old ones and says why (as lidr-viewer does).
@@ -241,8 +247,8 @@ void showGlCanvas() {
 
 ReferenceRenderer& reference() {
     if (!page->reference)
-        page->reference = std::make_unique<ReferenceRenderer>(page->context->info(), page->scene, kWidth, kHeight,
-                                                              int(page->scene.lights.size()));
+        page->reference = std::make_unique<ReferenceRenderer>(page->context->info(), page->scene, page->width,
+                                                              page->height, int(page->scene.lights.size()));
     return *page->reference;
 }
 
@@ -254,13 +260,14 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
         if (!atlas) throw Error("no shadow maps drawn yet (no light casts a shadow in this frame)");
         if (!atlas->packed() && page->context->info().gles)
             throw Error("WebGL 1 cannot read a depth texture back: the atlas view needs the packed atlas");
-        const ImageRGBA8 maps = atlas->image(kHeight);
-        ImageRGBA8 canvas(kWidth, kHeight);
+        const int width = page->width, height = page->height;
+        const ImageRGBA8 maps = atlas->image(std::min(width, height));
+        ImageRGBA8 canvas(width, height);
         for (int y = 0; y < maps.height; ++y)
             for (int x = 0; x < maps.width; ++x)
                 std::copy_n(maps.at(x, y), 4, canvas.at(x, y));
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = maps.width; x < kWidth; ++x) canvas.at(x, y)[3] = 255;
+        for (int y = 0; y < height; ++y)
+            for (int x = maps.width; x < width; ++x) canvas.at(x, y)[3] = 255;
         showCpuImage(canvas);
         const FrameStats& st = page->renderer->lastFrame();
         page->viewNote = "the shadow atlas (" + std::to_string(atlas->size()) + " texels, " +
@@ -296,20 +303,21 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
     // index-lists / overlap: LIDR's lists decoded on the CPU, against the CPU truth from the depth read back.
     auto& lidr = dynamic_cast<LidrRenderer&>(*page->renderer);
     if (!page->depthReadback)
-        page->depthReadback = std::make_unique<web::DepthReadback>(page->context->info(), page->scene, kWidth, kHeight);
-    const CameraMatrices m = cameraMatrices(camera, kWidth, kHeight);
+        page->depthReadback =
+            std::make_unique<web::DepthReadback>(page->context->info(), page->scene, page->width, page->height);
+    const CameraMatrices m = cameraMatrices(camera, page->width, page->height);
     const CoverageTruth truth = computeCoverage(page->depthReadback->read(m), m, lights);
     const ListCheck lists = checkIndexLists(truth, lidr.scheme(), lidr.readIndexTargets(), uint32_t(lights.size()),
                                             lidr.frameLightIndices(), lidr.frameIndexRegions());
     const int budget = lidr.scheme().config().budget;
     if (view == "index-lists") {
-        showCpuImage(indexListImage(kWidth, kHeight, lists.decoded));
+        showCpuImage(indexListImage(page->width, page->height, lists.decoded));
         page->viewNote = "decoded index lists (one colour per light), " + std::to_string(lists.droppedLightPixels) +
                          " dropped light-pixels";
     } else {
-        std::vector<int> counts(size_t(kWidth) * kHeight);
+        std::vector<int> counts(size_t(page->width) * size_t(page->height));
         for (size_t p = 0; p < counts.size(); ++p) counts[p] = truth.count(p);
-        showCpuImage(overlapHeatMap(kWidth, kHeight, counts, budget, &truth.surface));
+        showCpuImage(overlapHeatMap(page->width, page->height, counts, budget, &truth.surface));
         page->viewNote = "lights touching each surface (CPU truth), budget " + std::to_string(budget) +
                          ": blue to yellow within, red past it; max " + std::to_string(truth.maxOverlap());
     }
@@ -336,6 +344,20 @@ float loopedTime(float t) {
     return a.start + std::fmod(t - a.start, a.end - a.start);
 }
 
+// One frame of the page's renderer, in milliseconds. WebGL returns from draw calls at once and runs them later; a
+// 1-pixel glReadPixels of the frame's own target returns only when every command before it has run, so the clock
+// from the first call to it is the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not
+// used: lidr's ES path has no timer queries, headless Chromium does not offer it, and the read works everywhere.
+double renderTimed(const Camera& camera, const std::vector<PointLight>& lights, const ShadingParameters& shading) {
+    const double start = emscripten_get_now();
+    page->renderer->render(camera, lights, shading);
+    glBindFramebuffer(GL_FRAMEBUFFER, page->renderer->targets().colorFramebuffer().id());
+    uint8_t pixel[4];
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return emscripten_get_now() - start;
+}
+
 void frame() {
     const double now = emscripten_get_now();
     const float dt = page->lastFrameMs > 0.0 ? float(std::min(0.1, (now - page->lastFrameMs) / 1000.0)) : 0.0f;
@@ -351,17 +373,7 @@ void frame() {
         const Camera camera = page->camera.camera();
         ShadingParameters shading;
         const std::vector<PointLight> lights = currentLights(camera, shading);
-        // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
-        // target returns only when every command before it has run, so the clock from the first call to it is
-        // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
-        // has no timer queries, headless Chromium does not offer it, and the read works everywhere.
-        const double start = emscripten_get_now();
-        page->renderer->render(camera, lights, shading);
-        glBindFramebuffer(GL_FRAMEBUFFER, page->renderer->targets().colorFramebuffer().id());
-        uint8_t pixel[4];
-        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        page->renderMsLast = emscripten_get_now() - start;
+        page->renderMsLast = renderTimed(camera, lights, shading);
         page->renderMsAverage = page->renderMsAverage > 0.0 ? 0.9 * page->renderMsAverage + 0.1 * page->renderMsLast
                                                             : page->renderMsLast;
         drawView(camera, lights, shading);
@@ -384,6 +396,104 @@ EM_BOOL onMouse(int type, const EmscriptenMouseEvent* e, void*) {
         page->camera.turn(float(e->movementX) * 0.004f, -float(e->movementY) * 0.004f);
     }
     return EM_TRUE;
+}
+
+// One setting by its name and text (lidr_web_set's names); throws lidr::Error for an unknown name or a number
+// that is not one. The value itself is checked by applySettings and the library.
+void setFromText(Settings& s, const std::string& n, const std::string& v) {
+    try {
+        if (n == "mode") s.mode = v;
+        else if (n == "scheme") s.scheme = v;
+        else if (n == "budget") s.budget = std::stoi(v);
+        else if (n == "index-bits") s.indexBits = std::stoi(v);
+        else if (n == "view") s.view = v;
+        else if (n == "lights") s.lightCount = std::stoi(v);
+        else if (n == "paused") s.paused = v == "1" || v == "true";
+        else if (n == "shadows") s.shadows = v;
+        else if (n == "shadow-filter") s.shadowFilter = v == "pcf";
+        else if (n == "environment") s.environment = v;
+        else if (n == "environment-intensity") s.environmentIntensity = std::stof(v);
+        else throw Error("unknown setting '" + n +
+                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter, "
+                         "environment, environment-intensity, time, follow-camera)");
+    } catch (const std::logic_error&) {  // std::stoi / std::stof
+        throw Error("setting " + n + ": a number, got '" + v + "'");
+    }
+}
+
+// The image at `width` x `height` (the canvases and every renderer's targets); false, keeping the old size, where
+// it is out of range or the library refuses the renderer at that size (the reason in page->message).
+bool resizePage(int width, int height) {
+    if (width < web::kMinPageSide || width > web::kMaxPageSide || height < web::kMinPageSide ||
+        height > web::kMaxPageSide) {
+        page->message = "image size " + std::to_string(width) + "x" + std::to_string(height) + ": each side " +
+                        std::to_string(web::kMinPageSide) + " to " + std::to_string(web::kMaxPageSide);
+        return false;
+    }
+    if (width == page->width && height == page->height && page->renderer) return true;
+    const int oldWidth = page->width, oldHeight = page->height;
+    std::unique_ptr<Renderer> old = std::move(page->renderer);  // applySettings builds one at the new size
+    page->width = width;
+    page->height = height;
+    if (!applySettings(page->settings)) {
+        page->width = oldWidth;
+        page->height = oldHeight;
+        page->renderer = std::move(old);
+        return false;
+    }
+    page->reference.reset();  // made again at the new size when a view needs them
+    page->depthReadback.reset();
+    emscripten_set_canvas_element_size("#canvas", width, height);
+    EM_ASM({
+        const view = document.getElementById('view');
+        view.width = $0;
+        view.height = $1;
+    }, width, height);
+    return true;
+}
+
+// bench=N: N frames of each mode in `modes` (empty: every mode but auto) from the page's camera, at its time and
+// settings, each finished by a 1-pixel read (renderTimed); a first frame per mode is drawn untimed (its shader
+// variants compiled, its tables uploaded). The settings are put back after. Returns the table (web/page_bench.h).
+std::string runBench(int frames, std::vector<std::string> modes) {
+    if (modes.empty())
+        for (const std::string& m : renderModeNames())
+            if (m != "auto") modes.push_back(m);
+    const Settings kept = page->settings;
+    const Camera camera = page->camera.camera();
+    std::vector<web::BenchRow> rows;
+    for (const std::string& mode : modes) {
+        web::BenchRow row{mode, {}, ""};
+        Settings wanted = kept;
+        wanted.mode = mode;
+        wanted.view = "frame";
+        if (!applySettings(wanted)) {
+            row.refused = page->message;
+            rows.push_back(row);
+            continue;
+        }
+        try {
+            placeAnimatedObjects(*page->renderer, page->scene, page->time);
+            ShadingParameters shading;
+            const std::vector<PointLight> lights = currentLights(camera, shading);
+            for (int i = -1; i < frames; ++i) {
+                const double ms = renderTimed(camera, lights, shading);
+                if (i >= 0) row.frameMs.push_back(ms);
+            }
+        } catch (const std::exception& e) {
+            row.frameMs.clear();
+            row.refused = e.what();
+        }
+        rows.push_back(row);
+    }
+    applySettings(kept);
+    page->message.clear();
+    const std::string what = std::to_string(frames) + " frames per mode (each finished by a 1-pixel glReadPixels; "
+                             "one untimed frame before), " + std::to_string(page->width) + "x" +
+                             std::to_string(page->height) + ", " + page->sceneName + ", " +
+                             std::to_string(std::min(page->settings.lightCount, int(page->scene.lights.size()))) +
+                             " lights, shadows " + page->settings.shadows + ", " + page->context->info().summary();
+    return web::benchTable(what, rows);
 }
 
 std::string jsonEscape(const std::string& s) {
@@ -419,23 +529,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
             else page->followSceneCamera = number != 0.0f && page->scene.animation.cameraNode >= 0;
             return 1;
         }
-        if (n == "mode") s.mode = v;
-        else if (n == "scheme") s.scheme = v;
-        else if (n == "budget") s.budget = std::stoi(v);
-        else if (n == "index-bits") s.indexBits = std::stoi(v);
-        else if (n == "view") s.view = v;
-        else if (n == "lights") s.lightCount = std::stoi(v);
-        else if (n == "paused") s.paused = v == "1" || v == "true";
-        else if (n == "shadows") s.shadows = v;
-        else if (n == "shadow-filter") s.shadowFilter = v == "pcf";
-        else if (n == "environment") s.environment = v;
-        else if (n == "environment-intensity") s.environmentIntensity = std::stof(v);
-        else throw Error("unknown setting '" + n +
-                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter, "
-                         "environment, environment-intensity, time, follow-camera)");
-    } catch (const std::logic_error&) {
-        page->message = "setting " + n + ": a number, got '" + v + "'";
-        return 0;
+        setFromText(s, n, v);
     } catch (const std::exception& e) {
         page->message = e.what();
         return 0;
@@ -486,7 +580,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_load(const char* path, int lights) {
 
 // One frame of the current scene and settings from its own camera at its own time, read back (the model check:
 // web/run_chromium_check.py compares it with the native renderer's frame). Returns the RGBA pixels, rows top
-// first, `kWidth` x `kHeight`; nullptr when the frame was refused (the reason in lidr_web_status()).
+// first, the page's width x height (lidr_web_status); nullptr when the frame was refused (the reason in lidr_web_status()).
 EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     static ImageRGBA8 image;
     try {
@@ -513,8 +607,8 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_set_message(const char* text) { page->message
 // Back to the built-in room (its own lights, the count it had).
 EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
     DefaultSceneOptions sceneOptions;
-    sceneOptions.width = kWidth;
-    sceneOptions.height = kHeight;
+    sceneOptions.width = page->width;
+    sceneOptions.height = page->height;
     page->fileScene = makeDefaultScene(sceneOptions);
     page->model = false;
     page->sceneName = "built-in room";
@@ -552,7 +646,7 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
                   "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
                   "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d,"
                   "\"environmentIntensity\":%g,\"timeStart\":%g,\"timeEnd\":%g,\"frames\":%d,"
-                  "\"animated\":%s,\"sceneCamera\":%s,\"followCamera\":%s",
+                  "\"animated\":%s,\"sceneCamera\":%s,\"followCamera\":%s,\"width\":%d,\"height\":%d",
                   page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
                   s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
                   page->model ? "true" : "false", s.paused ? "true" : "false",
@@ -560,7 +654,8 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
                   page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0, double(s.environmentIntensity),
                   double(page->scene.animation.start), double(page->scene.animation.end), page->scene.animation.frames,
                   page->scene.animation.end > page->scene.animation.start ? "true" : "false",
-                  page->scene.animation.cameraNode >= 0 ? "true" : "false", page->followSceneCamera ? "true" : "false");
+                  page->scene.animation.cameraNode >= 0 ? "true" : "false", page->followSceneCamera ? "true" : "false",
+                  page->width, page->height);
     std::string warnings;
     for (const std::string& w : page->fileScene.warnings)
         warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";
@@ -571,6 +666,54 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
            "\",\"message\":\"" + jsonEscape(page->message) + "\",\"scene\":\"" + jsonEscape(page->sceneName) +
            "\",\"warnings\":[" + warnings + "]," + figures + "}";
     return json.c_str();
+}
+
+// The URL query (location.search), read by web::parsePageQuery: its settings applied together (refused as
+// lidr_web_set refuses one), the rest returned as JSON for the page's script, which fetches the scene and the
+// environment, sizes the image and starts a bench run: {"ok", "message", "scene", "environment", "lights",
+// "width", "height", "bench", "benchModes", "check", "checkModel", "checkLarge", "checkHuge"}.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_query(const char* search) {
+    static std::string json;
+    web::PageQuery q;
+    std::string problem;
+    try {
+        q = web::parsePageQuery(search);
+        Settings wanted = page->settings;
+        for (const auto& [name, value] : q.settings) setFromText(wanted, name, value);
+        if (!applySettings(wanted)) problem = page->message;
+    } catch (const std::exception& e) {
+        problem = e.what();
+        page->message = problem;
+    }
+    std::string modes;
+    for (const std::string& m : q.benchModes) modes += (modes.empty() ? "\"" : ",\"") + jsonEscape(m) + "\"";
+    const auto text = [](const std::string& s) { return "\"" + jsonEscape(s) + "\""; };
+    json = "{\"ok\":" + std::string(problem.empty() ? "true" : "false") + ",\"message\":" + text(problem) +
+           ",\"scene\":" + text(q.scene) + ",\"environment\":" + text(q.environment) +
+           ",\"lights\":" + std::to_string(q.lights) + ",\"width\":" + std::to_string(q.width) +
+           ",\"height\":" + std::to_string(q.height) + ",\"bench\":" + std::to_string(q.bench) +
+           ",\"benchModes\":[" + modes + "],\"check\":" + (q.check ? "true" : "false") +
+           ",\"checkModel\":" + text(q.checkModel) + ",\"checkLarge\":" + text(q.checkLarge) +
+           ",\"checkHuge\":" + text(q.checkHuge) + "}";
+    return json.c_str();
+}
+
+// The image at width x height (the page calls it as its window changes, or once with the query's size); 1 when
+// applied, 0 when refused (the reason in lidr_web_status()).
+EMSCRIPTEN_KEEPALIVE int lidr_web_resize(int width, int height) { return resizePage(width, height) ? 1 : 0; }
+
+// A timing run (bench=N): `frames` frames of each mode in `modes` (comma-separated; empty: every mode). Prints
+// the table to the console and returns it for the page to show.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_bench(int frames, const char* modes) {
+    static std::string table;
+    if (frames < 1 || frames > web::kMaxBenchFrames) {
+        page->message = "bench: 1 to " + std::to_string(web::kMaxBenchFrames) + " frames, got " + std::to_string(frames);
+        return "";
+    }
+    table = runBench(frames, web::commaList(modes ? modes : ""));
+    std::printf("%s", table.c_str());
+    std::fflush(stdout);
+    return table.c_str();
 }
 
 // The check web.chromium runs (?check): fixed frames against the CPU model, the truth and the reference.
@@ -588,12 +731,12 @@ int main() {
     try {
         ContextOptions options;
         options.backend = ContextBackend::WebGl;
-        options.windowWidth = kWidth;
-        options.windowHeight = kHeight;
+        options.windowWidth = page->width;
+        options.windowHeight = page->height;
         page->context = GlContext::create(options);
         DefaultSceneOptions sceneOptions;
-        sceneOptions.width = kWidth;
-        sceneOptions.height = kHeight;
+        sceneOptions.width = page->width;
+        sceneOptions.height = page->height;
         page->fileScene = makeDefaultScene(sceneOptions);
         page->scene = page->fileScene;
         page->camera.reset(page->scene.camera);

@@ -33,19 +33,6 @@ int wholeNumber(const std::string& key, const std::string& value, int min, int m
     return number;
 }
 
-std::vector<std::string> commaList(const std::string& value) {
-    std::vector<std::string> items;
-    size_t from = 0;
-    while (from <= value.size()) {
-        const size_t comma = value.find(',', from);
-        const std::string item = value.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
-        if (!item.empty()) items.push_back(item);
-        if (comma == std::string::npos) break;
-        from = comma + 1;
-    }
-    return items;
-}
-
 void readPageKey(PageQuery& q, const std::string& key, const std::string& value) {
     if (key == "scene") q.scene = value;
     else if (key == "environment") q.environment = value;
@@ -63,6 +50,19 @@ void readPageKey(PageQuery& q, const std::string& key, const std::string& value)
 }
 
 }  // namespace
+
+std::vector<std::string> commaList(const std::string& value) {
+    std::vector<std::string> items;
+    size_t from = 0;
+    while (from <= value.size()) {
+        const size_t comma = value.find(',', from);
+        const std::string item = value.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+        if (!item.empty()) items.push_back(item);
+        if (comma == std::string::npos) break;
+        from = comma + 1;
+    }
+    return items;
+}
 
 std::string urlDecode(const std::string& text) {
     std::string out;

@@ -35,6 +35,9 @@ constexpr int kMaxBenchFrames = 10000;
 // "%41+b" -> "A b" (application/x-www-form-urlencoded, as URLSearchParams reads it); a bad escape is kept as it is.
 std::string urlDecode(const std::string& text);
 
+// "lidr,,tiled" -> {"lidr", "tiled"}: the items of a comma-separated list, empty ones left out.
+std::vector<std::string> commaList(const std::string& value);
+
 // The query ("?mode=tiled&lights=1024", the '?' optional; keys and values URL-decoded). Throws lidr::Error naming
 // the key for an unknown key (listing the known ones), a key given twice, or a number out of its range; a setting's
 // value is checked where it is applied. A key without '=' is a flag ("check").
