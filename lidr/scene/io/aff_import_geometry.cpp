@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The unit normal of triangle a, b, c (counter-clockwise seen from its front); +y where it has no area.
 glm::vec3 faceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 n = glm::cross(b - a, c - a);
     const float length = glm::length(n);

@@ -6,20 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <map>
-#include <set>
-#include <tuple>
 
-#include <glm/gtc/matrix_transform.hpp>
-
-#include "lidr/base/colour.h"
 #include "lidr/base/error.h"
-#include "lidr/scene/camera.h"
 #include "lidr/scene/io/aff_tokenizer.h"
 #include "lidr/scene/io/file_checks.h"
-#include "lidr/scene/io/mesh_split.h"
-#include "lidr/scene/io/ppm_image.h"
-#include "lidr/scene/kochanek_bartels.h"
 
 namespace lidr {
 
