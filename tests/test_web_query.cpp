@@ -14,10 +14,10 @@ TEST_CASE("web page: the URL query's keys, settings in order, page keys read", "
     const PageQuery q = parsePageQuery(
         "?mode=tiled&scene=models%2Fmy%20model.glb&lights=1024&width=800&height=600&bench=3"
         "&bench-modes=lidr,tiled&view=difference&index-bits=16&environment=none");
-    REQUIRE(q.settings.size() == 3);
-    CHECK(q.settings[0] == std::make_pair(std::string("mode"), std::string("tiled")));
-    CHECK(q.settings[1] == std::make_pair(std::string("view"), std::string("difference")));
-    CHECK(q.settings[2] == std::make_pair(std::string("index-bits"), std::string("16")));
+    // The renderer settings as the option table set them, then the page's own; applied together by the page.
+    CHECK(q.options == RenderOptionValues{{"index-bits", "16"}, {"mode", "tiled"}});
+    CHECK(q.settings == std::vector<std::pair<std::string, std::string>>{
+                            {"index-bits", "16"}, {"mode", "tiled"}, {"view", "difference"}});
     CHECK(q.scene == "models/my model.glb");
     CHECK(q.lights == 1024);
     CHECK(q.width == 800);
@@ -46,6 +46,10 @@ TEST_CASE("web page: a bad URL query is refused naming the key", "[web][cpu][bad
         return std::string("accepted");
     };
     CHECK_THAT(refusal("?modes=lidr"), Catch::Contains("unknown option 'modes'") && Catch::Contains("bench-modes"));
+    // Renderer settings: the option table's checks and messages (lidr/modes/render_options.h).
+    CHECK_THAT(refusal("?budget=3"), Catch::Contains("--budget must be") && Catch::Contains("got '3'"));
+    CHECK_THAT(refusal("?mode=fastest"), Catch::Contains("--mode must be") && Catch::Contains("got 'fastest'"));
+    CHECK_THAT(refusal("?tile-size=16"), Catch::Contains("tile-size is a renderer option the page has no control for"));
     CHECK_THAT(refusal("?width=15"), Catch::Contains("width takes a whole number from 16 to 4096, got '15'"));
     CHECK_THAT(refusal("?height=4097"), Catch::Contains("height takes a whole number from 16 to 4096"));
     CHECK_THAT(refusal("?bench=0"), Catch::Contains("bench takes a whole number from 1 to 10000, got '0'"));

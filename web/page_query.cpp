@@ -1,5 +1,6 @@
 #include "page_query.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -9,18 +10,40 @@ namespace lidr::web {
 
 namespace {
 
-// The settings lidr_web_set applies (lidr_web.cpp), passed on as given.
-const char* const kSettings[] = {"mode",    "scheme",        "budget",                "index-bits", "view",
-                                 "shadows", "shadow-filter", "environment-intensity", "paused"};
+// The option table's renderer settings the page has controls for (lidr_web_set's names, the table's names).
+const char* const kTableSettings[] = {"mode", "scheme", "budget", "index-bits", "shadows", "shadow-filter"};
+// The page's own settings (lidr_web_set), passed on as given.
+const char* const kPageSettings[] = {"view", "environment-intensity", "paused"};
 // The page's own keys, read here.
 const char* const kPageKeys[] = {"scene",       "lights", "width",       "height",      "bench",     "bench-modes",
                                  "environment", "check",  "check-model", "check-large", "check-huge"};
 
-std::string knownKeys() {
+std::string pageKeys() {
     std::string list;
-    for (const char* k : kSettings) list += (list.empty() ? "" : ", ") + std::string(k);
+    for (const char* k : kTableSettings) list += (list.empty() ? "" : ", ") + std::string(k);
+    for (const char* k : kPageSettings) list += ", " + std::string(k);
     for (const char* k : kPageKeys) list += ", " + std::string(k);
     return list;
+}
+
+template <size_t N>
+bool among(const std::string& key, const char* const (&keys)[N]) {
+    for (const char* k : keys)
+        if (key == k) return true;
+    return false;
+}
+
+// Each key once: the table would take the last of a repeated setting, the page refuses it.
+void checkRepeats(const std::string& text) {
+    std::set<std::string> seen;
+    size_t from = 0;
+    while (from < text.size()) {
+        size_t end = text.find('&', from);
+        if (end == std::string::npos) end = text.size();
+        const std::string key = urlDecode(text.substr(from, std::min(text.find('=', from), end) - from));
+        from = end + 1;
+        if (!key.empty() && !seen.insert(key).second) throw Error("URL query: " + key + " given twice");
+    }
 }
 
 int wholeNumber(const std::string& key, const std::string& value, int min, int max) {
@@ -83,31 +106,19 @@ std::string urlDecode(const std::string& text) {
 
 PageQuery parsePageQuery(const std::string& query) {
     PageQuery q;
-    std::set<std::string> seen;
-    const std::string text = !query.empty() && query[0] == '?' ? query.substr(1) : query;
-    size_t from = 0;
-    while (from < text.size()) {
-        size_t end = text.find('&', from);
-        if (end == std::string::npos) end = text.size();
-        const std::string pair = text.substr(from, end - from);
-        from = end + 1;
-        if (pair.empty()) continue;
-        const size_t equals = pair.find('=');
-        const std::string key = urlDecode(pair.substr(0, equals));
-        const std::string value = equals == std::string::npos ? "" : urlDecode(pair.substr(equals + 1));
-        if (!seen.insert(key).second) throw Error("URL query: " + key + " given twice");
-        bool known = false;
-        for (const char* k : kSettings)
-            if (key == k) {
-                q.settings.emplace_back(key, value);
-                known = true;
-            }
-        for (const char* k : kPageKeys)
-            if (key == k) {
-                readPageKey(q, key, value);
-                known = true;
-            }
-        if (!known) throw Error("URL query: unknown option '" + key + "' (known: " + knownKeys() + ")");
+    checkRepeats(!query.empty() && query[0] == '?' ? query.substr(1) : query);
+    // The renderer's settings: set and checked by the library's table; the rest are the page's.
+    const std::vector<std::pair<std::string, std::string>> others = setRenderOptionsFromQuery(q.options, query);
+    for (const auto& [name, value] : q.options) {
+        if (!among(name, kTableSettings))
+            throw Error("URL query: " + name + " is a renderer option the page has no control for (it takes " +
+                        pageKeys() + ")");
+        q.settings.emplace_back(name, value);
+    }
+    for (const auto& [key, value] : others) {
+        if (among(key, kPageSettings)) q.settings.emplace_back(key, value);
+        else if (among(key, kPageKeys)) readPageKey(q, key, value);
+        else throw Error("URL query: unknown option '" + key + "' (the page takes " + pageKeys() + ")");
     }
     return q;
 }

@@ -1,21 +1,22 @@
 #pragma once
-// The web page's URL query (doc/web.md, "Options by URL"), read by one function: parsePageQuery. Plain C++ (no
-// emscripten), so the native tests check it (tests/test_web_query.cpp).
-//
-// When the library's option table (one table of renderer options, for lidr-demo, lidr-bench, the viewer and the
-// page) is on this branch, the renderer settings below go through it (setRenderOptionsFromQuery sets them and
-// returns the other pairs), and this function keeps only the page's own keys: scene, lights, width, height,
-// bench, bench-modes, environment and the checks.
+// The web page's URL query (doc/web.md, "Options by URL"), read by one function: parsePageQuery. The renderer's
+// settings in it go through the library's option table (lidr/modes/render_options.h, setRenderOptionsFromQuery:
+// the same names, checks and messages as lidr-demo's and lidr-viewer's command lines); the other keys are the
+// page's. Plain C++ (no emscripten), so the native tests check it (tests/test_web_query.cpp).
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "lidr/modes/render_options.h"
+
 namespace lidr::web {
 
 struct PageQuery {
-    // The settings lidr_web_set takes, in the order given, unchecked: applied together, the library's checks
-    // (and the page's applySettings) accept or refuse them. mode, scheme, budget, index-bits, view, shadows,
-    // shadow-filter, environment-intensity, paused.
+    // The renderer settings given, as the option table checked them (its names: mode, scheme, budget, ...).
+    RenderOptionValues options;
+    // The settings lidr_web_set takes, unchecked beyond the table's checks: the table's options the page has
+    // controls for (mode, scheme, budget, index-bits, shadows, shadow-filter), then the page's own (view,
+    // environment-intensity, paused). Applied together, by the page's applySettings and the library.
     std::vector<std::pair<std::string, std::string>> settings;
     std::string scene;        // a model to open, by URL relative to the page; empty: the built-in room
     std::string environment;  // auto, default, none or the URL of a .hdr; empty: not given
@@ -39,8 +40,8 @@ std::string urlDecode(const std::string& text);
 std::vector<std::string> commaList(const std::string& value);
 
 // The query ("?mode=tiled&lights=1024", the '?' optional; keys and values URL-decoded). Throws lidr::Error naming
-// the key for an unknown key (listing the known ones), a key given twice, or a number out of its range; a setting's
-// value is checked where it is applied. A key without '=' is a flag ("check").
+// the key for a renderer setting the table refuses (its message), one the page has no control for, an unknown key
+// (listing the page's keys), a key given twice, or a number out of its range.
 PageQuery parsePageQuery(const std::string& query);
 
 }  // namespace lidr::web
