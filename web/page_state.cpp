@@ -167,6 +167,9 @@ double renderTimed(const Camera& camera, const std::vector<PointLight>& lights, 
 // One setting by its name and text (lidr_web_set's names); throws lidr::Error for an unknown name or a number
 // that is not one. The value itself is checked by applySettings and the library.
 void setFromText(Settings& s, const std::string& n, const std::string& v) {
+    if ((n == "budget" || n == "index-bits") && v == "auto")  // the option table's value, not the page's
+        throw Error(n + ": the page takes a number, not auto (the automatic budget measures the overlap with "
+                        "occlusion queries, which WebGL 1 does not have)");
     try {
         if (n == "mode") s.mode = v;
         else if (n == "scheme") s.scheme = v;
