@@ -25,11 +25,13 @@
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/render_options.h"
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
 #include "lidr/render/shadow_atlas.h"
 #include "lidr/scene/default_scene.h"
 #include "lidr/scene/io/scene_loader.h"
+#include "lidr/scene/render_mode_names.h"
 #include "page_query.h"
 #include "page_state.h"
 #include "web_check.h"
@@ -417,6 +419,33 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_bench(int frames, const char* modes) {
     std::printf("%s", table.c_str());
     std::fflush(stdout);
     return table.c_str();
+}
+
+// The choices of the page's mode, scheme, budget and index-bits menus, and their help, from the library's option
+// table (lidr/modes/render_options.h) and mode table (renderModes(): each mode's one-line description), less
+// `auto`, which needs occlusion or timer queries WebGL 1 does not have: {"mode": {"help": ..., "choices":
+// [[value, description], ...]}, ...}.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_controls() {
+    static std::string json;
+    json = "{";
+    for (const char* name : {"mode", "scheme", "budget", "index-bits"}) {
+        const RenderOption* option = findRenderOption(name);
+        if (!option) continue;
+        std::string choices;
+        for (const std::string& value : option->choices) {
+            if (value == "auto") continue;
+            std::string description;
+            if (option->name == "mode")
+                for (const RenderModeInfo& m : renderModes())
+                    if (value == m.name) description = m.description;
+            choices += std::string(choices.empty() ? "" : ",") + "[\"" + jsonEscape(value) + "\",\"" +
+                       jsonEscape(description) + "\"]";
+        }
+        json += std::string(json.size() > 1 ? "," : "") + "\"" + name + "\":{\"help\":\"" + jsonEscape(option->help) +
+                "\",\"choices\":[" + choices + "]}";
+    }
+    json += "}";
+    return json.c_str();
 }
 
 // The check web.chromium runs (?check): fixed frames against the CPU model, the truth and the reference.
