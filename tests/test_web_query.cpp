@@ -1,6 +1,7 @@
 // The web page's URL query (web/page_query.h) and its bench table (web/page_bench.h): plain C++, checked natively.
 #include <catch2/catch.hpp>
 
+#include <set>
 #include <string>
 
 #include "lidr/base/error.h"
@@ -68,4 +69,30 @@ TEST_CASE("web page: the bench table has a row per mode with its figures", "[web
     CHECK_THAT(table, Catch::Contains("lidr                    3      3.00      3.00      2.00      4.00    333.3\n"));
     CHECK_THAT(table, Catch::Contains("tiled                   2      6.00      6.00      5.00      7.00    166.7\n"));
     CHECK_THAT(table, Catch::Contains("deferred           refused: mode 'deferred' needs float targets\n"));
+}
+
+TEST_CASE("web page: every option of the library's table is taken or refused by name in the URL query",
+          "[web][options][cpu]") {
+    // The page's controls: the table's mode, scheme, budget, index-bits, shadows, shadow-filter.
+    const std::set<std::string> controls = {"mode", "scheme", "budget", "index-bits", "shadows", "shadow-filter"};
+    size_t taken = 0;
+    for (const RenderOption& option : renderOptions()) {
+        const std::string value = !option.defaultValue.empty() ? option.defaultValue
+                                  : !option.choices.empty()    ? option.choices.front()
+                                  : option.type == RenderOptionType::Flag ? "on"
+                                                                          : "";
+        if (value.empty()) continue;  // a Text option without a default or example: nothing to give
+        INFO(option.name << "=" << value);
+        if (controls.count(option.name)) {
+            const PageQuery q = parsePageQuery(option.name + "=" + value);
+            CHECK(q.options.at(option.name) == value);
+            REQUIRE(q.settings.size() == 1);
+            CHECK(q.settings[0].first == option.name);
+            ++taken;
+        } else {
+            CHECK_THROWS_WITH(parsePageQuery(option.name + "=" + value),
+                              Catch::Contains(option.name + " is a renderer option the page has no control for"));
+        }
+    }
+    CHECK(taken == controls.size());
 }
