@@ -27,6 +27,12 @@ TEST_CASE("web page: the URL query's keys, settings in order, page keys read", "
     CHECK(q.benchModes == std::vector<std::string>{"lidr", "tiled"});
     CHECK(q.environment == "none");
     CHECK_FALSE(q.check);
+    CHECK(q.rendererOptions.empty());
+    // The table's settings without a control on the page: its renderers are built with them.
+    const PageQuery more = parsePageQuery("mode=tiled&tile-size=16&volume-test=sphere-ray&tone-map=aces");
+    CHECK(more.rendererOptions ==
+          RenderOptionValues{{"tile-size", "16"}, {"tone-map", "aces"}, {"volume-test", "sphere-ray"}});
+    CHECK(more.settings == std::vector<std::pair<std::string, std::string>>{{"mode", "tiled"}});
 
     const PageQuery empty = parsePageQuery("");
     CHECK(empty.settings.empty());
@@ -50,7 +56,8 @@ TEST_CASE("web page: a bad URL query is refused naming the key", "[web][cpu][bad
     // Renderer settings: the option table's checks and messages (lidr/modes/render_options.h).
     CHECK_THAT(refusal("?budget=3"), Catch::Contains("--budget must be") && Catch::Contains("got '3'"));
     CHECK_THAT(refusal("?mode=fastest"), Catch::Contains("--mode must be") && Catch::Contains("got 'fastest'"));
-    CHECK_THAT(refusal("?tile-size=16"), Catch::Contains("tile-size is a renderer option the page has no control for"));
+    CHECK_THAT(refusal("?tile-size=big"), Catch::Contains("--tile-size must be"));
+    CHECK_THAT(refusal("?shadow-atlas=4096"), Catch::Contains("shadow-atlas is set by the page's shadows control"));
     CHECK_THAT(refusal("?width=15"), Catch::Contains("width takes a whole number from 16 to 4096, got '15'"));
     CHECK_THAT(refusal("?height=4097"), Catch::Contains("height takes a whole number from 16 to 4096"));
     CHECK_THAT(refusal("?bench=0"), Catch::Contains("bench takes a whole number from 1 to 10000, got '0'"));
@@ -71,11 +78,11 @@ TEST_CASE("web page: the bench table has a row per mode with its figures", "[web
     CHECK_THAT(table, Catch::Contains("deferred           refused: mode 'deferred' needs float targets\n"));
 }
 
-TEST_CASE("web page: every option of the library's table is taken or refused by name in the URL query",
+TEST_CASE("web page: every option of the library's table is taken (a control or the renderers' build) or refused by name in the URL query",
           "[web][options][cpu]") {
     // The page's controls: the table's mode, scheme, budget, index-bits, shadows, shadow-filter.
     const std::set<std::string> controls = {"mode", "scheme", "budget", "index-bits", "shadows", "shadow-filter"};
-    size_t taken = 0;
+    size_t taken = 0, built = 0;
     for (const RenderOption& option : renderOptions()) {
         const std::string value = !option.defaultValue.empty() ? option.defaultValue
                                   : !option.choices.empty()    ? option.choices.front()
@@ -89,10 +96,16 @@ TEST_CASE("web page: every option of the library's table is taken or refused by 
             REQUIRE(q.settings.size() == 1);
             CHECK(q.settings[0].first == option.name);
             ++taken;
-        } else {
+        } else if (option.name == "shadow-atlas" || option.name == "shadow-lookup") {
             CHECK_THROWS_WITH(parsePageQuery(option.name + "=" + value),
-                              Catch::Contains(option.name + " is a renderer option the page has no control for"));
+                              Catch::Contains(option.name + " is set by the page's shadows control"));
+        } else {  // no control: the page's renderers are built with it
+            const PageQuery q = parsePageQuery(option.name + "=" + value);
+            CHECK(q.settings.empty());
+            CHECK(q.rendererOptions.at(option.name) == value);
+            ++built;
         }
     }
     CHECK(taken == controls.size());
+    CHECK(built + taken + 2 >= renderOptions().size() - 2);  // every option but Text ones without an example
 }

@@ -385,6 +385,7 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_query(const char* search) {
         q = web::parsePageQuery(search);
         Settings wanted = page->settings;
         for (const auto& [name, value] : q.settings) setFromText(wanted, name, value);
+        wanted.rendererOptions = q.rendererOptions;
         if (!applySettings(wanted)) problem = page->message;
     } catch (const std::exception& e) {
         problem = e.what();

@@ -12,6 +12,9 @@ namespace {
 
 // The option table's renderer settings the page has controls for (lidr_web_set's names, the table's names).
 const char* const kTableSettings[] = {"mode", "scheme", "budget", "index-bits", "shadows", "shadow-filter"};
+// The table's settings the page does not build its renderer from: its shadows control sets the atlas (2048 texels)
+// and LIDR's shadow look-up (forward), so these are refused by name rather than ignored.
+const char* const kRefusedSettings[] = {"shadow-atlas", "shadow-lookup"};
 // The page's own settings (lidr_web_set), passed on as given.
 const char* const kPageSettings[] = {"view", "environment-intensity", "paused"};
 // The page's own keys, read here.
@@ -110,10 +113,11 @@ PageQuery parsePageQuery(const std::string& query) {
     // The renderer's settings: set and checked by the library's table; the rest are the page's.
     const std::vector<std::pair<std::string, std::string>> others = setRenderOptionsFromQuery(q.options, query);
     for (const auto& [name, value] : q.options) {
-        if (!among(name, kTableSettings))
-            throw Error("URL query: " + name + " is a renderer option the page has no control for (it takes " +
-                        pageKeys() + ")");
-        q.settings.emplace_back(name, value);
+        if (among(name, kRefusedSettings))
+            throw Error("URL query: " + name + " is set by the page's shadows control (a 2048-texel atlas, LIDR's "
+                        "forward look-up); leave it out");
+        if (among(name, kTableSettings)) q.settings.emplace_back(name, value);
+        else q.rendererOptions[name] = value;  // no control on the page: the renderer is built with it
     }
     for (const auto& [key, value] : others) {
         if (among(key, kPageSettings)) q.settings.emplace_back(key, value);

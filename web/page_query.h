@@ -18,6 +18,9 @@ struct PageQuery {
     // controls for (mode, scheme, budget, index-bits, shadows, shadow-filter), then the page's own (view,
     // environment-intensity, paused). Applied together, by the page's applySettings and the library.
     std::vector<std::pair<std::string, std::string>> settings;
+    // The table's other settings given (tile-size, volume-test, msaa, tone-map, ...): the page has no control for
+    // them; its renderers are built with them (Settings::rendererOptions), and the library checks them there.
+    RenderOptionValues rendererOptions;
     std::string scene;        // a model to open, by URL relative to the page; empty: the built-in room
     std::string environment;  // auto, default, none or the URL of a .hdr; empty: not given
     int lights = 0;           // 0: a model's own lights (256 when it has none), the room's 255
@@ -40,7 +43,8 @@ std::string urlDecode(const std::string& text);
 std::vector<std::string> commaList(const std::string& value);
 
 // The query ("?mode=tiled&lights=1024", the '?' optional; keys and values URL-decoded). Throws lidr::Error naming
-// the key for a renderer setting the table refuses (its message), one the page has no control for, an unknown key
+// the key for a renderer setting the table refuses (its message), shadow-atlas and shadow-lookup (set by the
+// page's shadows control), an unknown key
 // (listing the page's keys), a key given twice, or a number out of its range.
 PageQuery parsePageQuery(const std::string& query);
 

@@ -69,10 +69,14 @@ std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& s
 }
 
 std::unique_ptr<Renderer> makeRenderer(const Settings& s) {
-    RenderModeOptions o;
-    o.mode = s.mode;
-    o.lidr.packing = {parsePackingScheme(s.scheme), s.budget, s.indexBits};
-    o.transparency = true;
+    // The page's controls over the URL's other table settings; the library's table checks them together.
+    RenderOptionValues values = s.rendererOptions;
+    values["mode"] = s.mode;
+    values["scheme"] = s.scheme;
+    values["budget"] = std::to_string(s.budget);
+    values["index-bits"] = std::to_string(s.indexBits);
+    if (!values.count("transparency")) values["transparency"] = "on";
+    RenderModeOptions o = renderModeOptionsFrom(values, page->scene);
     // WebGL 1 (GLSL ES 1.00) gives gl_FragCoord.z at mediump only, which the tiled mode's depth bounds refuse.
     o.tiled.depthBounds = false;
     return createRenderer(o, page->context->info(), page->scene, page->width, page->height);
@@ -96,7 +100,8 @@ bool applySettings(Settings wanted, bool sceneChanged) {
         }
         const bool rebuild = wanted.mode != page->settings.mode || wanted.scheme != page->settings.scheme ||
                              wanted.budget != page->settings.budget ||
-                             wanted.indexBits != page->settings.indexBits || !page->renderer || sceneChanged ||
+                             wanted.indexBits != page->settings.indexBits ||
+                             wanted.rendererOptions != page->settings.rendererOptions || !page->renderer || sceneChanged ||
                              lightsChanged;
         if (wanted.view != "frame" && wanted.view != "reference" && wanted.view != "difference" &&
             wanted.view != "index-lists" && wanted.view != "overlap" && wanted.view != "shadow-atlas")

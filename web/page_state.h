@@ -12,6 +12,7 @@
 #include "fly_camera.h"
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/render_options.h"
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
 #include "lidr/scene/scene.h"
@@ -37,6 +38,9 @@ struct Settings {
     // ambient, the room none), default, none, or a .hdr the page wrote into its file system; and its intensity.
     std::string environment = "auto";
     float environmentIntensity = 1.0f;
+    // The option table's settings given by URL that have no control (tile-size, volume-test, msaa, tone-map, ...):
+    // the renderers are built with them (renderModeOptionsFrom, the library's checks).
+    RenderOptionValues rendererOptions;
 };
 
 // The page's shadow atlas: 2048 texels a side, the largest tile (up to 512) that holds the casters' maps.
