@@ -9,6 +9,7 @@
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/modes/render_options.h"
+#include "lidr/modes/shadow_choice.h"
 #include "lidr/render/renderer.h"
 #include "lidr/scene/scene.h"
 
@@ -46,22 +47,8 @@ struct SceneChoice {
 // or a frame outside it.
 float frameTimeOf(const Scene& scene, int frame);
 
-// --shadows and its settings, checked (RendererChoice::shadowChoice), applied to each frame's lights and shading.
-struct ShadowChoice {
-    enum class Casters { Off, Scene, Brightest };
-    Casters casters = Casters::Off;
-    int brightest = 0;             // Casters::Brightest: K (chooseShadowCasters)
-    ShadowSettings settings{};     // enabled unless Off
-    bool automaticTile = true;     // --shadow-atlas without :TILE: the largest tile (<= 512) the casters' maps fit
-    bool lidrMode = false;         // the lookup setting applies (describe() names it)
-    // Sets the lights' castsShadow (Scene: left as the scene says; Brightest: the rule, with the scene's camera)
-    // and shading.shadows. Throws lidr::Error where the casters' maps cannot fit the atlas.
-    void apply(const Scene& scene, std::vector<PointLight>& lights, ShadingParameters& shading) const;
-    // The same with the rule's view given (the viewer's and the page's moving camera).
-    void apply(const CameraMatrices& view, std::vector<PointLight>& lights, ShadingParameters& shading) const;
-    // "8 brightest, atlas 4096 (512-texel tiles, chosen to fit), lookup volume, filter nearest"; `used`: apply()'s.
-    std::string describe(const ShadowSettings& used) const;
-};
+// --shadows and its settings: the library's (lidr/modes/shadow_choice.h), read from the same values.
+using ShadowChoice = lidr::ShadowChoice;
 
 // The renderer settings, by name, as lidr::renderOptions() declares them (lidr/modes/render_options.h): the command
 // line is made from that table and checked by it, and the viewer changes the same values.
@@ -76,7 +63,7 @@ struct RendererChoice {
     // One command-line option per renderOptions() row (and --context), each checked as it is parsed.
     void addOptions(CLI::App& app);
     // --shadows and the --shadow-* options, checked against each other and the mode; throws lidr::Error.
-    ShadowChoice shadowChoice(const std::string& mode) const;
+    ShadowChoice shadowChoice(const std::string& mode) const { return shadowChoiceFrom(values, mode); }
     OutputTransform outputTransform() const { return outputTransformFrom(values); }
     LidrOptions lidrOptions(const Scene& scene) const { return lidrOptionsFrom(values, scene); }
     // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error.

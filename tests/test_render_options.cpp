@@ -4,6 +4,7 @@
 
 #include "lidr/base/error.h"
 #include "lidr/modes/render_options.h"
+#include "lidr/modes/shadow_choice.h"
 #include "lidr/scene/default_scene.h"
 
 using namespace lidr;
@@ -89,4 +90,32 @@ TEST_CASE("renderModeOptionsFrom: defaults are the library's, settings reach the
     CHECK_THROWS_WITH(renderModeOptionsFrom(packing, scene), Catch::Contains("--scheme auto chooses the budget"));
     setRenderOption(packing, "scheme", "bitshift");
     CHECK(renderModeOptionsFrom(packing, scene).lidr.packing.budget == 4);
+}
+
+TEST_CASE("shadow settings are read and checked by the library (shadowChoiceFrom)", "[options][shadows]") {
+    const auto refusal = [](const RenderOptionValues& values, const std::string& mode) {
+        try {
+            shadowChoiceFrom(values, mode);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    CHECK(shadowChoiceFrom({}, "lidr").casters == ShadowChoice::Casters::Off);
+    const ShadowChoice eight = shadowChoiceFrom({{"shadows", "8"}, {"shadow-atlas", "2048:256"}}, "lidr");
+    CHECK(eight.casters == ShadowChoice::Casters::Brightest);
+    CHECK(eight.brightest == 8);
+    CHECK(eight.settings.enabled);
+    CHECK(eight.settings.atlas.size == 2048);
+    CHECK(eight.settings.atlas.tileSize == 256);
+    CHECK_FALSE(eight.automaticTile);
+    CHECK(shadowChoiceFrom({{"shadows", "scene"}, {"shadow-filter", "pcf"}}, "tiled").settings.filtered);
+    CHECK_THAT(refusal({{"shadows", "many"}}, "lidr"), Catch::Contains("--shadows must be off, scene or a number"));
+    CHECK_THAT(refusal({{"shadow-filter", "pcf"}}, "lidr"), Catch::Contains("add --shadows scene"));
+    CHECK_THAT(refusal({{"shadows", "4"}, {"shadow-lookup", "volume"}}, "tiled"),
+               Catch::Contains("--shadow-lookup says where LIDR applies shadows"));
+    CHECK_THAT(refusal({{"shadows", "4"}, {"shadow-atlas", "3000"}}, "lidr"),
+               Catch::Contains("SIZE must be a power of two"));
+    CHECK_THAT(refusal({{"shadows", "4"}, {"shadow-atlas", "1024:2048"}}, "lidr"),
+               Catch::Contains("TILE must be a power of two from 16 to SIZE"));
 }

@@ -39,6 +39,17 @@ Scene sceneWithLights(const Scene& file, bool model, int count) {
     return scene;
 }
 
+// The shadow control's settings as the library reads them (lidr/modes/shadow_choice.h): its casters and filter on
+// the page's 2048-texel atlas (the tile chosen to fit). Throws lidr::Error with the library's message.
+ShadowChoice pageShadowChoice(const Settings& s) {
+    RenderOptionValues values{{"shadows", s.shadows}};
+    if (s.shadows != "off") {
+        values["shadow-filter"] = s.shadowFilter ? "pcf" : "nearest";
+        values["shadow-atlas"] = std::to_string(kShadowAtlasSize);
+    }
+    return shadowChoiceFrom(values, s.mode);
+}
+
 // The frame's lights, with castsShadow as the shadow setting says, and its shading (shadows on or off).
 std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& shading) {
     std::vector<PointLight> lights = page->scene.lightsAt(page->time);
@@ -58,13 +69,9 @@ std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& s
         shading.environment.map = s.environment == "default" ? defaultEnvironment() : page->environmentFile;
     }
     shading.environment.intensity = s.environmentIntensity;
-    if (s.shadows == "off") return lights;
-    if (s.shadows != "scene")
-        chooseShadowCasters(lights, cameraMatrices(camera, page->width, page->height), std::stoi(s.shadows));
-    shading.shadows.enabled = true;
-    shading.shadows.filtered = s.shadowFilter;
-    shading.shadows.atlas.size = kShadowAtlasSize;
-    shading.shadows.atlas.tileSize = shadowTileToFit(lights, kShadowAtlasSize);
+    const ShadowChoice shadows = pageShadowChoice(s);
+    if (shadows.casters != ShadowChoice::Casters::Off)
+        shadows.apply(cameraMatrices(camera, page->width, page->height), lights, shading);
     return lights;
 }
 
@@ -107,11 +114,7 @@ bool applySettings(Settings wanted, bool sceneChanged) {
             wanted.view != "index-lists" && wanted.view != "overlap" && wanted.view != "shadow-atlas")
             throw Error("view '" + wanted.view +
                         "' (valid: frame, reference, difference, index-lists, overlap, shadow-atlas)");
-        if (wanted.shadows != "off" && wanted.shadows != "scene") {
-            const bool digits = !wanted.shadows.empty() && wanted.shadows.size() <= 5 &&
-                                wanted.shadows.find_first_not_of("0123456789") == std::string::npos;
-            if (!digits) throw Error("shadows: off, scene or a number of lights K, got '" + wanted.shadows + "'");
-        }
+        pageShadowChoice(wanted);  // the library's checks of the shadow settings
         if (wanted.environment != page->settings.environment && wanted.environment != "auto" &&
             wanted.environment != "none" && wanted.environment != "default") {
             // A file the page wrote: read (and checked) now; a refusal keeps the environment shown.

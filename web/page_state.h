@@ -13,6 +13,7 @@
 #include "lidr/modes/reference_renderer.h"
 #include "lidr/modes/render_mode.h"
 #include "lidr/modes/render_options.h"
+#include "lidr/modes/shadow_choice.h"
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
 #include "lidr/scene/scene.h"
