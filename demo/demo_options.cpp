@@ -259,6 +259,13 @@ void RendererChoice::addOptions(CLI::App& app) {
                    std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
                                "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
                        (clustered.occupiedClusters ? "on" : "off") + ")");
+    app.add_option("--deferred-stencil", deferredStencil,
+                   "Deferred mode: on (light volumes' back faces mark the stencil, front faces shade where marked) or "
+                   "off (back faces shade every surface in front of them)")
+        ->capture_default_str();
+    app.add_option("--g-buffer", gBufferFormat, "Deferred and tiled-deferred modes: the G-buffer's format, rgba16f or "
+                                                "rgba32f (doc/deferred.md)")
+        ->capture_default_str();
     app.add_option("--multipass-accumulation", multipassAccumulation,
                    "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
                    "8-bit colour target), 8-bit (the 8-bit target, to compare)")
@@ -486,6 +493,8 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     o.transparency = o.lidr.transparency;
     o.timingMethod = o.lidr.timingMethod;
     o.tiled.tileSize = tileSize;
+    o.tiledDeferred.tileSize = tileSize;  // tiled deferred shares the grid options
+    o.tiledDeferred.depthBounds = !noDepthBounds;
     o.tiled.depthBounds = !noDepthBounds;
     o.tiled.forcePackedDepth = packedDepth;
     o.tiled.halfZ = halfZ;
@@ -523,6 +532,10 @@ RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
     if (multipassAccumulation != "auto" && multipassAccumulation != "8-bit")
         throw Error("--multipass-accumulation must be auto or 8-bit, got '" + multipassAccumulation + "'");
     o.multipass.halfFloatAccumulation = multipassAccumulation == "auto";
+    if (deferredStencil != "on" && deferredStencil != "off")
+        throw Error("--deferred-stencil must be on or off, got '" + deferredStencil + "'");
+    o.deferred.stencil = deferredStencil == "on";
+    o.deferred.format = o.tiledDeferred.format = parseGBufferFormat(gBufferFormat);
     o.forceFixedLightTable = fixedLightTable;
     outputTransform();  // checked with the rest, before any context; the frame loop reads it again
     return o;

@@ -5,7 +5,8 @@
 namespace lidr {
 
 const std::vector<std::string>& renderModeNames() {
-    static const std::vector<std::string> names = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto"};
+    static const std::vector<std::string> names = {"lidr", "tiled", "clustered", "forward-multipass", "deferred", "tiled-deferred",
+                                                         "forward-brute", "auto"};
     return names;
 }
 

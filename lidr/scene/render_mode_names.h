@@ -6,11 +6,11 @@
 
 namespace lidr {
 
-// "lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto" (the fastest of the first four,
-// measured).
+// "lidr", "tiled", "clustered", "forward-multipass", "deferred", "tiled-deferred", "forward-brute", "auto" (the
+// fastest of lidr, tiled, clustered and forward-multipass, measured).
 const std::vector<std::string>& renderModeNames();
 bool isRenderModeName(const std::string& name);
-// "lidr, tiled, clustered, forward-multipass, forward-brute, auto": for error messages and help texts.
+// "lidr, tiled, clustered, forward-multipass, deferred, tiled-deferred, forward-brute, auto": for error messages and help texts.
 std::string renderModeList();
 
 }  // namespace lidr
