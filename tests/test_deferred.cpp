@@ -107,6 +107,10 @@ TEST_CASE("deferred and tiled deferred equal the reference within the G-buffer's
     if (!takeRow(v.format == GBufferFormat::Half)) return;
     DYNAMIC_SECTION(v.name()) {
         const LitFloor f = litFloor();
+        if (testGl().gles && v.format == GBufferFormat::Float) {  // OpenGL ES 2.0: no float colour buffers
+            REQUIRE_THROWS_AS(build(v, f.scene), UnsupportedError);
+            return;
+        }
         const ImageRGBA8 reference = referenceImage(f.scene, f.lights, f.shading);
         std::unique_ptr<Renderer> r = build(v, f.scene);
         r->render(f.scene.camera, f.lights, f.shading);
@@ -187,7 +191,7 @@ TEST_CASE("deferred with the stencil test: lights around the eye and past the fa
 }
 
 TEST_CASE("deferred and tiled deferred: a transparent layer forward over the deferred opaque frame, shadows on",
-          "[deferred][transparency][shadows]") {
+          "[deferred][transparency][shadows][every-gl]") {
     testContext();
     Scene scene = firstPersonGlassScene();
     PointLight caster = spot({1.0f, 5.0f, -4.0f}, {0.0f, -1.0f, -0.3f}, 10.0f, 0.7f, {1.0f, 0.9f, 0.7f});
@@ -226,4 +230,11 @@ TEST_CASE("deferred modes: their passes, G-buffer sizes and MSAA refused with th
                             Catch::Contains(mode + ": MSAA needs a G-buffer per sample"));
     }
     REQUIRE_THROWS_WITH(parseGBufferFormat("rgba8"), Catch::Contains("valid: rgba16f, rgba32f"));
+    // A context without 4 draw buffers (ES 2.0 / WebGL 1 without EXT_draw_buffers) is refused naming the extension.
+    GlInfo withoutDrawBuffers = testGl();
+    withoutDrawBuffers.drawBuffers = false;
+    withoutDrawBuffers.gles = true;
+    REQUIRE_THROWS_WITH(DeferredRenderer(withoutDrawBuffers, scene, DeferredOptions{}, scene.width, scene.height),
+                        Catch::Contains("EXT_draw_buffers") && Catch::Contains("WEBGL_draw_buffers"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
 }
