@@ -31,6 +31,39 @@ constexpr FramePass kComposite{"deferred-composite", "G-buffer, light sum, [envi
 constexpr FramePass kTransparent{"deferred-transparent",
                                  "transparent meshes, depth, light table, [shadow atlas], [environment]", "colour",
                                  "transparent meshes in the scene"};
+// The light volumes' states: without the stencil test, back faces shade where the surface lies in front of the
+// volume's far side; with it, back faces mark 1 there (no colour), then front faces shade where marked in front of
+// the near side and clear the mark (depth pass or fail: every marked pixel lies under a front face).
+struct VolumeStates {
+    RenderState backFaces, mark, frontFaces;
+};
+VolumeStates volumeStates() {
+    VolumeStates v;
+    RenderState& backFaces = v.backFaces;  // shade (or mark) where the surface lies in front of the volume's far side
+    backFaces.depthTest = true;
+    backFaces.depthFunc = GL_GEQUAL;
+    backFaces.cull = true;
+    backFaces.cullFace = GL_FRONT;
+    backFaces.blend = true;
+    backFaces.blendSrcRgb = backFaces.blendDstRgb = backFaces.blendSrcAlpha = backFaces.blendDstAlpha = GL_ONE;
+    RenderState& mark = v.mark;
+    mark = backFaces;  // the stencil way: mark 1 there, no colour
+    mark.blend = false;
+    mark.colorMask = glm::bvec4(false);
+    mark.stencilTest = true;
+    mark.stencil.ref = 1;
+    mark.stencil.depthPass = GL_REPLACE;
+    RenderState& frontFaces = v.frontFaces;
+    frontFaces = backFaces;  // ... then shade where marked in front of the near side; clear the mark
+    frontFaces.depthFunc = GL_LEQUAL;
+    frontFaces.cullFace = GL_BACK;
+    frontFaces.stencilTest = true;
+    frontFaces.stencil.func = GL_EQUAL;
+    frontFaces.stencil.ref = 1;
+    frontFaces.stencil.depthFail = frontFaces.stencil.depthPass = GL_ZERO;
+
+    return v;
+}
 }  // namespace
 
 DeferredRenderer::DeferredRenderer(const GlInfo& info, const Scene& scene, const DeferredOptions& options, int width,
@@ -42,6 +75,8 @@ DeferredRenderer::DeferredRenderer(const GlInfo& info, const Scene& scene, const
     lightDefines_.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
     light_ = gl::Program::create("deferred-light", buildShaderSource("deferred_volume.vert"),
                                  buildShaderSource("deferred_light.frag", lightDefines_), geometryAttributes());
+    mark_ = gl::Program::create("deferred-stencil-mark", buildShaderSource("deferred_volume.vert"),
+                                buildShaderSource("deferred_stencil_mark.frag"), geometryAttributes());
     composite_ = gl::Program::create("deferred-composite", buildShaderSource("deferred_fullscreen.vert"),
                                      buildShaderSource("deferred_composite.frag", lightDefines_), geometryAttributes());
     const LightVolumeMesh mesh = makeLightVolumeMesh(2);
@@ -101,31 +136,17 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
     useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
     frame_.shadows.bind(program, shading.shadows);
     gBuffer_.bind(program, cam);
+    if (options_.stencil) {
+        mark_.use();
+        mark_.set("uViewProj", cam.viewProjection);
+        program.use();
+    }
     glBindBuffer(GL_ARRAY_BUFFER, volumeVertices_.id());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, volumeIndices_.id());
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
 
-    RenderState backFaces;  // shade (or mark) where the surface lies in front of the volume's far side
-    backFaces.depthTest = true;
-    backFaces.depthFunc = GL_GEQUAL;
-    backFaces.cull = true;
-    backFaces.cullFace = GL_FRONT;
-    backFaces.blend = true;
-    backFaces.blendSrcRgb = backFaces.blendDstRgb = backFaces.blendSrcAlpha = backFaces.blendDstAlpha = GL_ONE;
-    RenderState mark = backFaces;  // the stencil way: mark 1 there, no colour
-    mark.blend = false;
-    mark.colorMask = glm::bvec4(false);
-    mark.stencilTest = true;
-    mark.stencil.ref = 1;
-    mark.stencil.depthPass = GL_REPLACE;
-    RenderState frontFaces = backFaces;  // ... then shade where marked in front of the near side; clear the mark
-    frontFaces.depthFunc = GL_LEQUAL;
-    frontFaces.cullFace = GL_BACK;
-    frontFaces.stencilTest = true;
-    frontFaces.stencil.func = GL_EQUAL;
-    frontFaces.stencil.ref = 1;
-    frontFaces.stencil.depthFail = frontFaces.stencil.depthPass = GL_ZERO;
+    const VolumeStates states = volumeStates();
 
     const float reach = frame_.lightTable.reachError();
     stencilLights_ = backFaceLights_ = 0;
@@ -134,19 +155,24 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
         const float r = l.radius + reach;
         if (!sphereMayBeVisible(cam, l.position, r * volumeOutsideRadius_)) continue;
         if (!frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
-        program.set("uVolumePosRadius", glm::vec4(l.position, r));
-        program.set("uLightIndex", float(i + 1));
-        if (options_.stencil && !volumeNearEye(cam, l.position, r)) {
-            cache.apply(mark);
+        const glm::vec4 volume(l.position, r);
+        const bool stenciled = options_.stencil && !volumeNearEye(cam, l.position, r);
+        if (stenciled) {
+            mark_.use();
+            mark_.set("uVolumePosRadius", volume);
+            cache.apply(states.mark);
             cache.drawElements(GL_TRIANGLES, volumeIndexCount_, GL_UNSIGNED_SHORT, nullptr);
-            cache.apply(frontFaces);
+            program.use();
+            cache.apply(states.frontFaces);
             ++stencilLights_;
         } else {
-            cache.apply(backFaces);
+            cache.apply(states.backFaces);
             ++backFaceLights_;
         }
+        program.set("uVolumePosRadius", volume);
+        program.set("uLightIndex", float(i + 1));
         cache.drawElements(GL_TRIANGLES, volumeIndexCount_, GL_UNSIGNED_SHORT, nullptr);
-        stats_.volumeDrawCalls += options_.stencil ? 2 : 1;
+        stats_.volumeDrawCalls += stenciled ? 2 : 1;
         ++stats_.drawnLights;
     }
     glDisableVertexAttribArray(gl::kPosition);

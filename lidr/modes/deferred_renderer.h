@@ -62,7 +62,7 @@ private:
     FrameResources frame_;
     DeferredOptions options_;
     GBuffer gBuffer_;
-    gl::Program light_, composite_, transparent_;
+    gl::Program light_, mark_, composite_, transparent_;
     ShaderDefines lightDefines_, transparentDefines_;
     int transparentBound_ = 0;  // transparent_'s LIDR_MAX_LIGHTS (rebuilt when a frame has more lights)
     gl::Buffer volumeVertices_, volumeIndices_;
