@@ -235,6 +235,19 @@ Scene SceneChoice::load() const {
     return scene;
 }
 
+namespace {
+// The deferred modes' options (doc/deferred.md), beside the other modes' in RendererChoice::addOptions.
+void addDeferredOptions(CLI::App& app, std::string& stencil, std::string& gBufferFormat) {
+    app.add_option("--deferred-stencil", stencil,
+                   "Deferred mode: on (light volumes' back faces mark the stencil, front faces shade where marked) or "
+                   "off (back faces shade every surface in front of them)")
+        ->capture_default_str();
+    app.add_option("--g-buffer", gBufferFormat, "Deferred and tiled-deferred modes: the G-buffer's format, rgba16f or "
+                                                "rgba32f (doc/deferred.md)")
+        ->capture_default_str();
+}
+}  // namespace
+
 void RendererChoice::addOptions(CLI::App& app) {
     app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
     app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
@@ -259,13 +272,7 @@ void RendererChoice::addOptions(CLI::App& app) {
                    std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
                                "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
                        (clustered.occupiedClusters ? "on" : "off") + ")");
-    app.add_option("--deferred-stencil", deferredStencil,
-                   "Deferred mode: on (light volumes' back faces mark the stencil, front faces shade where marked) or "
-                   "off (back faces shade every surface in front of them)")
-        ->capture_default_str();
-    app.add_option("--g-buffer", gBufferFormat, "Deferred and tiled-deferred modes: the G-buffer's format, rgba16f or "
-                                                "rgba32f (doc/deferred.md)")
-        ->capture_default_str();
+    addDeferredOptions(app, deferredStencil, gBufferFormat);
     app.add_option("--multipass-accumulation", multipassAccumulation,
                    "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
                    "8-bit colour target), 8-bit (the 8-bit target, to compare)")

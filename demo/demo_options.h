@@ -72,7 +72,7 @@ struct RendererChoice {
     std::optional<int> clusterTileSize, clusterSlices;
     std::optional<std::string> clusterSlicing, clusterOccupancy;
     std::optional<float> clusterLightNear;
-    std::string deferredStencil = "on", gBufferFormat = "rgba16f";  // deferred modes (DeferredOptions)
+    std::string deferredStencil = "off", gBufferFormat = "rgba16f";  // deferred modes (DeferredOptions)
     std::string multipassAccumulation = "auto";  // or 8-bit (MultipassOptions::halfFloatAccumulation false)
     std::string scheme = "auto";      // bit-shift, budget and width chosen per frame (doc/auto.md)
     std::string budget = "auto";      // or 1, 2, 4, 8, 16 (with a named scheme)

@@ -183,7 +183,9 @@ TEST_CASE("deferred with the stencil test: lights around the eye and past the fa
     lights.push_back(light(scene.camera.position + glm::vec3(0.0f, 0.0f, 0.05f), 0.5f, {0.5f, 0.5f, 0.5f}));
     const ShadingParameters shading = sceneShading(scene);
     const ImageRGBA8 reference = referenceImage(scene, lights, shading);
-    DeferredRenderer r(testGl(), scene, DeferredOptions{}, scene.width, scene.height);
+    DeferredOptions o;
+    o.stencil = true;
+    DeferredRenderer r(testGl(), scene, o, scene.width, scene.height);
     r.render(scene.camera, lights, shading);
     CHECK(r.backFaceLights() >= 1);  // the lights at the eye: their front faces are clipped
     CHECK(r.stencilLights() >= 1);

@@ -9,7 +9,7 @@
 // transform -> transparent meshes by the brute-force forward shading every light (the reference's program: exact,
 // no light list to reuse) -> passes() lists them (lidr-demo --list-passes deferred).
 //
-// Volumes: without the stencil test, back faces with depth GEQUAL (every surface in front of the volume's far side,
+// Volumes: without the stencil test (the default, by measurement), back faces with depth GEQUAL (every surface in front of the volume's far side,
 // lit or not, runs the light's shader; the shading's falloff gives 0 outside). With it (DeferredOptions::stencil,
 // Olsson & Assarsson's Deferred-Stencil), back faces first mark in the stencil where the surface lies in front of
 // them, then front faces shade where marked (depth LEQUAL) and clear the mark: only surfaces inside the volume's
@@ -24,7 +24,10 @@
 namespace lidr {
 
 struct DeferredOptions {
-    bool stencil = true;  // the stencil test on the light volumes (--deferred-stencil on|off)
+    // The stencil test on the light volumes (--deferred-stencil on|off). Off by measurement: on llvmpipe the marking
+    // pass costs more than the shading it saves (light-volumes 0.5-0.8x with it off on hall-255 and many-1024-fp at
+    // 320x240, doc/deferred.md); a GPU's early stencil test may decide otherwise (not measured here).
+    bool stencil = false;
     GBufferFormat format = GBufferFormat::Half;
     bool transparency = true;  // draw transparent meshes (opacity < 1) after the opaque ones, forward
     int msaaSamples = 0;       // refused above 0 (UnsupportedError)
