@@ -1,13 +1,36 @@
 #include "frame_accuracy.h"
 
+#include <algorithm>
+
 #include "lidr/eval/frame_evaluation.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/clustered_renderer.h"
+#include "lidr/modes/deferred_renderer.h"
+#include "lidr/modes/tiled_deferred_renderer.h"
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/scene/camera.h"
 #include "lidr/technique/lidr_renderer.h"
 
 namespace lidr::bench {
+
+namespace {
+// Deferred shading has no lists: its accumulation target counts the light shaders run per pixel (rows from the
+// bottom). A pixel that ran fewer than the lights touching its surface dropped that many.
+FrameAccuracy judgeLightCounts(FrameAccuracy a, const CoverageTruth& truth, const std::vector<float>& counts) {
+    a.hasLists = true;
+    for (int y = 0; y < truth.height; ++y)
+        for (int x = 0; x < truth.width; ++x) {
+            const size_t p = size_t(y) * size_t(truth.width) + size_t(x);
+            const long ran = long(counts[size_t(truth.height - 1 - y) * size_t(truth.width) + size_t(x)] + 0.5f);
+            const long dropped = std::max(0L, long(truth.count(p)) - ran);
+            a.droppedLightPixels += dropped;
+            a.pixelsWithDrops += dropped > 0;
+            a.trueLightPixels += truth.count(p);
+            if (truth.surface[p]) a.shadedLightPixels += ran;
+        }
+    return a;
+}
+}  // namespace
 
 FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights,
                          const ImageRGBA8& image, const ImageRGBA8& reference) {
@@ -30,15 +53,19 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
     a.errorWithinBudget = a.error;
     const auto* tiled = dynamic_cast<const TiledRenderer*>(&renderer);
     const auto* clustered = dynamic_cast<const ClusteredRenderer*>(&renderer);
-    if ((!tiled && !clustered) || renderer.targets().samples() > 0) return a;
+    const auto* tiledDeferred = dynamic_cast<const TiledDeferredRenderer*>(&renderer);
+    const auto* deferred = dynamic_cast<const DeferredRenderer*>(&renderer);
+    if ((!tiled && !clustered && !tiledDeferred && !deferred) || renderer.targets().samples() > 0) return a;
+    if (deferred && renderer.frame().info.gles) return a;  // ES 2.0 reads no float pixels back
     const int width = image.width, height = image.height;
     const CoverageTruth truth = computeCoverage(renderer.targets().readDepth(), cameraMatrices(camera, width, height), lights);
+    if (deferred) return judgeLightCounts(a, truth, deferred->gBuffer().readLightCounts());
     PixelListCheck check;
     if (clustered) {
         const ClusterGrid& g = clustered->grid();
         check = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
     } else {
-        const LightGrid& g = tiled->grid();
+        const LightGrid& g = tiled ? tiled->grid() : tiledDeferred->grid();
         std::vector<int> tileOfPixel(size_t(width) * size_t(height));
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) tileOfPixel[size_t(y) * size_t(width) + size_t(x)] = g.tileOf(x, height - 1 - y);

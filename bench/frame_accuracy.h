@@ -11,7 +11,8 @@ namespace lidr::bench {
 
 struct FrameAccuracy {
     ImageError error;
-    bool hasLists = false;         // the lists below were checked (LIDR, tiled, clustered; not with MSAA)
+    bool hasLists = false;  // the lists below were checked (LIDR, tiled, clustered, tiled deferred; deferred: its
+                            // per-pixel count of light shaders run; not with MSAA)
     long droppedLightPixels = 0;   // (pixel, light) pairs whose light touches the pixel and is not in its list
     long pixelsWithDrops = 0;
     long trueLightPixels = 0;      // (pixel, light) pairs of the truth: the fewest lighting computations that are exact

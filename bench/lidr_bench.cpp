@@ -22,6 +22,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_animation.h"
+#include "frame_accuracy.h"
 #include "bench_config.h"
 #include "bench_report.h"
 #include "lidr/base/error.h"
@@ -932,6 +933,14 @@ int main(int argc, char** argv) {
                             row.pixelsWithDrops = check.pixelsWithMissing;
                             row.trueLightPixels = check.truthPairs;
                             row.extraLightPixels = check.extraPairs;
+                        } else if (run.config.mode.find("deferred") != std::string::npos && run.config.msaa == 0) {
+                            // Tiled deferred's lists, deferred's count of light shaders run per pixel (frame_accuracy).
+                            const FrameAccuracy a = judgeFrame(*slot.renderer, scene.camera, lights, image, reference.image);
+                            row.hasPixelLists = a.hasLists;
+                            row.droppedLightPixels = a.droppedLightPixels;
+                            row.pixelsWithDrops = a.pixelsWithDrops;
+                            row.trueLightPixels = a.trueLightPixels;
+                            row.extraLightPixels = a.shadedLightPixels - (a.trueLightPixels - a.droppedLightPixels);
                         }
                     }
                 }
