@@ -17,8 +17,9 @@ struct ScriptFailure : Error {
     using Error::Error;
 };
 
-inline constexpr const char* kModes[] = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto"};
-constexpr int kModeCount = 6;
+inline constexpr const char* kModes[] = {"lidr",     "tiled",          "clustered",     "forward-multipass",
+                                         "deferred", "tiled-deferred", "forward-brute", "auto"};
+constexpr int kModeCount = int(sizeof(kModes) / sizeof(kModes[0]));
 inline constexpr const char* kSchemes[] = {"auto", "bitshift", "max-stencil", "cpu-sorted"};
 inline constexpr const char* kBudgets[] = {"auto", "1", "2", "4", "8", "16"};
 inline constexpr const char* kIndexBits[] = {"auto", "4", "8", "16"};
