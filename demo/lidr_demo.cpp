@@ -218,6 +218,31 @@ void describeRun(nlohmann::json& summary, std::ostream& s, const GlInfo& info, c
     s << "renderer   " << info.renderer << " (" << info.version << ")\n";
 }
 
+// The deferred modes' G-buffer (doc/deferred.md): its format and bytes a pixel beside the light sum's, and, for
+// deferred, the last frame's lighting computations (its per-pixel count of light shaders run, read back).
+void describeDeferred(const Renderer& renderer, nlohmann::json& summary, std::ostream& s) {
+    const auto* deferred = dynamic_cast<const DeferredRenderer*>(&renderer);
+    const auto* tiledDeferred = dynamic_cast<const TiledDeferredRenderer*>(&renderer);
+    if (!deferred && !tiledDeferred) return;
+    const GBuffer& g = deferred ? deferred->gBuffer() : tiledDeferred->gBuffer();
+    nlohmann::json j = {{"g_buffer_format", gBufferFormatName(g.format())},
+                        {"g_buffer_bytes_per_pixel", g.bytesPerPixel()},
+                        {"light_sum_bytes_per_pixel", g.accumulationBytesPerPixel()}};
+    s << "g-buffer   " << gBufferFormatName(g.format()) << ", " << g.bytesPerPixel() << " bytes a pixel";
+    if (deferred) {
+        double computations = 0.0;
+        if (!renderer.frame().info.gles)  // ES 2.0 reads no float pixels back
+            for (float c : g.readLightCounts()) computations += c;
+        j["stencil"] = deferred->options().stencil;
+        j["lighting_computations"] = renderer.frame().info.gles ? -1.0 : computations;
+        s << " + " << g.accumulationBytesPerPixel() << " for the light sum ("
+          << gBufferFormatName(g.format()) << "), stencil " << (deferred->options().stencil ? "on" : "off");
+        if (!renderer.frame().info.gles) s << ", " << long(computations) << " lighting computations";
+    }
+    s << "\n";
+    summary["deferred"] = j;
+}
+
 int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::string& outDir, int frames,
                     bool withReference, const demo::RendererChoice& rc, const demo::ShadowChoice& shadowChoice) {
     const auto [lights, shading, context, warnings] = startHeadless(scene, outDir, rc, shadowChoice);
@@ -312,6 +337,7 @@ int runHeadlessMode(const Scene& scene, const RenderModeOptions& mo, const std::
         s << "multi-pass accumulation: " << multipass->accumulation()
           << (multipass->accumulationNote().empty() ? "" : " (" + multipass->accumulationNote() + ")") << "\n";
     }
+    describeDeferred(*renderer, summary, s);
     s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["median_ms"].items()) s << " " << k << "=" << v.get<double>();
