@@ -120,11 +120,16 @@ TEST_CASE("deferred and tiled deferred equal the reference within the G-buffer's
     }
 }
 
-TEST_CASE("deferred: every light touching a pixel's surface runs its shader there; the stencil test runs fewer",
+TEST_CASE("deferred: every light touching a pixel's surface runs its shader there (spot lights in their cone meshes); the "
+          "stencil test runs fewer",
           "[deferred][coverage]") {
     testContext();
     Scene scene = firstPersonScene();
-    const std::vector<PointLight> lights = floorLights(60, 0.5f, 4.0f, 7);
+    std::vector<PointLight> lights = floorLights(60, 0.5f, 4.0f, 7);
+    for (int i = 0; i < 8; ++i)  // spot lights, drawn with the cone mesh: narrow and wide, aimed down and sideways
+        lights.push_back(spot({-6.0f + 1.7f * float(i), 1.0f + 0.4f * float(i % 3), -2.0f - float(i % 4)},
+                              {0.3f * float(i % 3 - 1), -1.0f, 0.4f * float(i % 2)}, 5.0f, 0.25f + 0.15f * float(i % 5),
+                              {0.8f, 0.7f, 0.5f}));
     const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
     double computations[2] = {0.0, 0.0};
     for (bool stencil : {false, true}) {

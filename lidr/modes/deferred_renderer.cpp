@@ -79,12 +79,25 @@ DeferredRenderer::DeferredRenderer(const GlInfo& info, const Scene& scene, const
                                 buildShaderSource("deferred_stencil_mark.frag"), geometryAttributes());
     composite_ = gl::Program::create("deferred-composite", buildShaderSource("deferred_fullscreen.vert"),
                                      buildShaderSource("deferred_composite.frag", lightDefines_), geometryAttributes());
-    const LightVolumeMesh mesh = makeLightVolumeMesh(2);
-    volumeVertices_ = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-    volumeIndices_ = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(), mesh.indices.size() * sizeof(uint16_t));
-    volumeIndexCount_ = int(mesh.indices.size());
-    volumeOutsideRadius_ = mesh.outsideRadius;
+    sphere_ = upload(makeLightVolumeMesh(2));
+    cone_ = upload(makeSpotVolumeMesh());
+    cone_.outsideRadius = 1.0f;  // its vertices lie on the cap's sphere (radius: the range x the cap's scale)
     checkGl("DeferredRenderer");
+}
+
+DeferredRenderer::VolumeMesh DeferredRenderer::upload(const LightVolumeMesh& mesh) {
+    VolumeMesh m;
+    m.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+    m.indices = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(), mesh.indices.size() * sizeof(uint16_t));
+    m.indexCount = int(mesh.indices.size());
+    m.outsideRadius = mesh.outsideRadius;
+    return m;
+}
+
+void DeferredRenderer::bindVolumeMesh(const VolumeMesh& mesh) const {
+    glBindBuffer(GL_ARRAY_BUFFER, mesh.vertices.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.id());
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
 }
 
 std::vector<FramePass> DeferredRenderer::passes() const {
@@ -120,7 +133,7 @@ bool DeferredRenderer::volumeNearEye(const CameraMatrices& cam, const glm::vec3&
                             glm::vec4(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f, -1.0f, 1.0f);
         nearReach = std::max(nearReach, glm::length(glm::vec3(p) / p.w - cam.eye));
     }
-    return glm::length(centre - cam.eye) <= r * volumeOutsideRadius_ * 1.01f + nearReach * 1.01f;
+    return glm::length(centre - cam.eye) <= r * 1.01f + nearReach * 1.01f;
 }
 
 void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::vector<PointLight>& lights,
@@ -141,10 +154,8 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
         mark_.set("uViewProj", cam.viewProjection);
         program.use();
     }
-    glBindBuffer(GL_ARRAY_BUFFER, volumeVertices_.id());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, volumeIndices_.id());
     glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    const VolumeMesh* bound = nullptr;
 
     const VolumeStates states = volumeStates();
 
@@ -153,15 +164,27 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
     for (size_t i = 0; i < lights.size(); ++i) {
         const PointLight& l = lights[i];
         const float r = l.radius + reach;
-        if (!sphereMayBeVisible(cam, l.position, r * volumeOutsideRadius_)) continue;
+        if (!sphereMayBeVisible(cam, l.position, r * sphere_.outsideRadius)) continue;
         if (!frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
-        const glm::vec4 volume(l.position, r);
-        const bool stenciled = options_.stencil && !volumeNearEye(cam, l.position, r);
+        // A spot light: LIDR's cone mesh around the cone as the light table holds it (lidr::spotCone).
+        const glm::vec4 cone = spotCone(l);
+        const float coneScale = glm::length(glm::vec3(cone));
+        const VolumeMesh& mesh = l.isSpot() && coneScale > 0.0f ? cone_ : sphere_;
+        glm::vec4 volume(l.position, r), spot(0.0f);
+        if (&mesh == &cone_) {
+            const SpotVolumeShape shape = spotVolumeShape(std::acos(std::clamp(-cone.w / coneScale, 0.0f, 1.0f)));
+            volume.w = r * shape.capScale;
+            spot = glm::vec4(glm::vec3(cone) / coneScale, shape.rimAngle);
+        }
+        if (&mesh != bound) bindVolumeMesh(*(bound = &mesh));
+        const float reachOfVolume = &mesh == &cone_ ? volume.w : r * sphere_.outsideRadius;
+        const bool stenciled = options_.stencil && !volumeNearEye(cam, l.position, reachOfVolume);
         if (stenciled) {
             mark_.use();
             mark_.set("uVolumePosRadius", volume);
+            mark_.set("uSpotVolume", spot);
             cache.apply(states.mark);
-            cache.drawElements(GL_TRIANGLES, volumeIndexCount_, GL_UNSIGNED_SHORT, nullptr);
+            cache.drawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_SHORT, nullptr);
             program.use();
             cache.apply(states.frontFaces);
             ++stencilLights_;
@@ -170,8 +193,9 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
             ++backFaceLights_;
         }
         program.set("uVolumePosRadius", volume);
+        program.set("uSpotVolume", spot);
         program.set("uLightIndex", float(i + 1));
-        cache.drawElements(GL_TRIANGLES, volumeIndexCount_, GL_UNSIGNED_SHORT, nullptr);
+        cache.drawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_SHORT, nullptr);
         stats_.volumeDrawCalls += stenciled ? 2 : 1;
         ++stats_.drawnLights;
     }

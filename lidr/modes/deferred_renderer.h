@@ -13,13 +13,14 @@
 // lit or not, runs the light's shader; the shading's falloff gives 0 outside). With it (DeferredOptions::stencil,
 // Olsson & Assarsson's Deferred-Stencil), back faces first mark in the stencil where the surface lies in front of
 // them, then front faces shade where marked (depth LEQUAL) and clear the mark: only surfaces inside the volume's
-// depth span run the shader. A light whose volume reaches the near plane (the eye inside or close) is drawn the
+// depth span run the shader. A spot light draws LIDR's cone mesh around its cone. A light whose volume reaches the near plane (the eye inside or close) is drawn the
 // first way, its front faces being clipped. MSAA is refused (GL 2.1 / ES 2.0 / WebGL 1 have no per-sample G-buffer).
 #include <string>
 #include <vector>
 
 #include "lidr/modes/g_buffer.h"
 #include "lidr/render/frame_resources.h"
+#include "lidr/technique/light_volume_mesh.h"
 
 namespace lidr {
 
@@ -56,7 +57,7 @@ public:
 private:
     void drawLightVolumes(const CameraMatrices& cam, const std::vector<PointLight>& lights,
                           const ShadingParameters& shading);
-    // Whether the light's volume (radius r) may reach the near plane: its front faces may be clipped.
+    // Whether a light's volume (within r of `centre`) may reach the near plane: its front faces may be clipped.
     bool volumeNearEye(const CameraMatrices& cam, const glm::vec3& centre, float r) const;
     void composite(const CameraMatrices& cam, const ShadingParameters& shading);
     void shadeTransparent(const CameraMatrices& cam, const std::vector<PointLight>& lights,
@@ -68,9 +69,14 @@ private:
     gl::Program light_, mark_, composite_, transparent_;
     ShaderDefines lightDefines_, transparentDefines_;
     int transparentBound_ = 0;  // transparent_'s LIDR_MAX_LIGHTS (rebuilt when a frame has more lights)
-    gl::Buffer volumeVertices_, volumeIndices_;
-    int volumeIndexCount_ = 0;
-    float volumeOutsideRadius_ = 1.0f;
+    struct VolumeMesh {  // a light volume mesh on the GPU
+        gl::Buffer vertices, indices;
+        int indexCount = 0;
+        float outsideRadius = 1.0f;  // of the unit mesh (the sphere's; the cone's cap lies within its scale)
+    };
+    static VolumeMesh upload(const LightVolumeMesh& mesh);
+    void bindVolumeMesh(const VolumeMesh& mesh) const;
+    VolumeMesh sphere_, cone_;
     int stencilLights_ = 0, backFaceLights_ = 0;
 };
 
