@@ -119,12 +119,11 @@ execute_process(COMMAND ${DEMO} --headless --mode forward-multipass --multipass-
 if(r EQUAL 0 OR NOT err MATCHES "--multipass-accumulation must be auto or 8-bit")
   message(FATAL_ERROR "lidr-demo --multipass-accumulation 16-bit: exit ${r}, '${err}'")
 endif()
-# The deferred modes' summary: the G-buffer's bytes a pixel, deferred's lighting computations (doc/deferred.md).
+# The deferred modes' summary: the G-buffer's bytes a pixel, (doc/deferred.md).
 file(READ ${OUT}/deferred/summary.json summary)
 string(JSON gbuffer_bytes GET "${summary}" deferred g_buffer_bytes_per_pixel)
-string(JSON computations GET "${summary}" deferred lighting_computations)
-if(NOT gbuffer_bytes EQUAL 32 OR computations LESS 1000)
-  message(FATAL_ERROR "lidr-demo --mode deferred: G-buffer ${gbuffer_bytes} bytes a pixel, ${computations} lighting computations")
+if(NOT gbuffer_bytes EQUAL 32)
+  message(FATAL_ERROR "lidr-demo --mode deferred: G-buffer ${gbuffer_bytes} bytes a pixel")
 endif()
 if(NOT EXISTS ${OUT}/tiled/tile_heatmap.png)
   message(FATAL_ERROR "lidr-demo --mode tiled did not write tile_heatmap.png")
@@ -169,7 +168,7 @@ endforeach()
 set(bad_values
   "--mode|clustered|--cluster-tile-size|2@--cluster-tile-size must be 4..256 pixels, got 2"
   "--mode|clustered|--cluster-slices|65@--cluster-slices must be 1..64, got 65"
-  "--mode|clustered|--cluster-slicing|linear@unknown cluster slicing 'linear' \\(valid: exponential, near-slice\\)"
+  "--mode|clustered|--cluster-slicing|linear@--cluster-slicing must be exponential or near-slice, got 'linear'"
   "--mode|clustered|--cluster-slicing|exponential|--cluster-light-near|4@--cluster-light-near ends the first slice of --cluster-slicing near-slice"
   "--mode|clustered|--cluster-light-near|0@--cluster-light-near must be a positive view depth, got 0"
   "--mode|clustered|--cluster-occupancy|maybe@--cluster-occupancy must be on or off, got 'maybe'"
@@ -182,7 +181,7 @@ set(bad_values
   "--scene|/dev/null@/dev/null: scene file is not a regular file"
   "--scene|${OUT}@scene file is a directory"
   "--scheme|auto|--budget|4@--scheme auto chooses the budget and the index width itself"
-  "--index-bits|12@--index-bits must be auto, 4, 8, 16.*got '12'"
+  "--index-bits|12@--index-bits must be auto, 4, 8 or 16, got '12'"
   "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
   "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'"
   "--scene|${OUT}/version-1.gltf@version-1.gltf: /asset/version: glTF 1.0 is not 2.x"

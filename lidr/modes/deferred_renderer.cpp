@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -238,6 +239,23 @@ void DeferredRenderer::shadeTransparent(const CameraMatrices& cam, const std::ve
     frame_.shadows.bind(program, shading.shadows);
     program.set("uLightCount", float(lights.size()));
     frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
+}
+
+ModeStatistics DeferredRenderer::modeStatistics() const {
+    ModeStatistics m;
+    m.section = "deferred";
+    const std::string format = gBufferFormatName(gBuffer_.format());
+    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
+                modeStatistic("light_sum_bytes_per_pixel", gBuffer_.accumulationBytesPerPixel()),
+                modeStatistic("stencil", options_.stencil), modeStatistic("stencil_lights", stencilLights_),
+                modeStatistic("back_face_lights", backFaceLights_)};
+    std::ostringstream s;
+    s << "g-buffer   " << format << ", " << gBuffer_.bytesPerPixel() << " bytes a pixel + "
+      << gBuffer_.accumulationBytesPerPixel() << " for the light sum (" << format << "), stencil "
+      << (options_.stencil ? "on" : "off") << " (" << stencilLights_ << " lights the stencil way, " << backFaceLights_
+      << " the back-face way)";
+    m.line = s.str();
+    return m;
 }
 
 }  // namespace lidr

@@ -48,6 +48,9 @@ public:
     std::vector<FramePass> passes() const override;
     // The G-buffer and the accumulation target.
     size_t lightDataBytes() const override { return gBuffer_.bytes(); }
+    // "deferred": the G-buffer's format and bytes a pixel, the light sum's, the stencil test, the lights drawn
+    // each way.
+    ModeStatistics modeStatistics() const override;
     const GBuffer& gBuffer() const { return gBuffer_; }
     const DeferredOptions& options() const { return options_; }
     // The last frame's lights drawn the stencil way and the back-face way (near-plane lights, or stencil off).

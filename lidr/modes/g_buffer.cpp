@@ -46,6 +46,11 @@ const char* gBufferFormatName(GBufferFormat format) {
     return format == GBufferFormat::Half ? "rgba16f" : "rgba32f";
 }
 
+const std::vector<std::string>& gBufferFormatNames() {
+    static const std::vector<std::string> names = {"rgba16f", "rgba32f"};
+    return names;
+}
+
 GBufferFormat parseGBufferFormat(const std::string& name) {
     if (name == "rgba16f") return GBufferFormat::Half;
     if (name == "rgba32f") return GBufferFormat::Float;

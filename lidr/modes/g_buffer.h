@@ -20,6 +20,7 @@ namespace lidr {
 
 enum class GBufferFormat { Half, Float };
 const char* gBufferFormatName(GBufferFormat format);  // "rgba16f", "rgba32f"
+const std::vector<std::string>& gBufferFormatNames();  // every format's name, the default first
 // "rgba16f" or "rgba32f"; lidr::Error naming the valid ones for another name.
 GBufferFormat parseGBufferFormat(const std::string& name);
 

@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/gl_state.h"
@@ -158,6 +159,20 @@ void TiledDeferredRenderer::shadeTransparent(const CameraMatrices& cam, const Sh
     frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program, true);
     frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
+}
+
+ModeStatistics TiledDeferredRenderer::modeStatistics() const {
+    ModeStatistics m;
+    m.section = "deferred";
+    const std::string format = gBufferFormatName(gBuffer_.format());
+    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
+                modeStatistic("tile_size", options_.tileSize), modeStatistic("depth_bounds", depthBoundsUsed()),
+                modeStatistic("loop_bound", loopBound_)};
+    std::ostringstream s;
+    s << "g-buffer   " << format << ", " << gBuffer_.bytesPerPixel() << " bytes a pixel; " << options_.tileSize
+      << " px tiles, depth bounds " << (depthBoundsUsed() ? "min/max" : "off") << ", loop bound " << loopBound_;
+    m.line = s.str();
+    return m;
 }
 
 }  // namespace lidr

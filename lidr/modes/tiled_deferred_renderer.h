@@ -45,6 +45,8 @@ public:
     std::vector<FramePass> passes() const override;
     // The G-buffer, the grid and list textures and the depth reduction.
     size_t lightDataBytes() const override;
+    // "deferred": the G-buffer's format and bytes a pixel, the tile grid and its longest list.
+    ModeStatistics modeStatistics() const override;
     const GBuffer& gBuffer() const { return gBuffer_; }
     const LightGrid& grid() const { return grid_; }
     const TiledDeferredOptions& options() const { return options_; }
