@@ -28,8 +28,25 @@ FrameAccuracy judgeLightCounts(FrameAccuracy a, const CoverageTruth& truth, cons
             a.trueLightPixels += truth.count(p);
             if (truth.surface[p]) a.shadedLightPixels += ran;
         }
+    // Every light shader run counts, over the background too (without the stencil test a back face in front of
+    // the far plane shades it).
+    a.lightingComputations = 0;
+    for (float c : counts) a.lightingComputations += long(c + 0.5f);
     return a;
 }
+}  // namespace
+
+namespace {
+// Multi-pass forward shades one light per fragment of its light passes (one fragment per pixel and pass): their
+// fragment shader invocations, where the context counts them (pipeline statistics, measuring runs); else -1.
+long lightPassFragments(const Renderer& renderer) {
+    long n = -1;
+    for (const PassTime& p : renderer.lastFrame().passes)
+        if (p.pass == "light-passes" && p.fragments >= 0) n = std::max(0L, n) + p.fragments;
+    return n;
+}
+
+long surfacePixels(const CoverageTruth& truth) { return long(std::count(truth.surface.begin(), truth.surface.end(), true)); }
 }  // namespace
 
 FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights,
@@ -45,6 +62,7 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
         a.droppedLightPixels = ev.lists.droppedLightPixels;
         a.pixelsWithDrops = ev.lists.pixelsWithDrops;
         a.shadedLightPixels = ev.lists.slotsUsed;
+        a.lightingComputations = ev.lists.slotsUsed;  // the forward pass shades every filled slot
         for (size_t p = 0; p < ev.truth.surface.size(); ++p)
             if (ev.truth.surface[p]) a.trueLightPixels += ev.truth.count(p);
         return a;
@@ -55,10 +73,19 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
     const auto* clustered = dynamic_cast<const ClusteredRenderer*>(&renderer);
     const auto* tiledDeferred = dynamic_cast<const TiledDeferredRenderer*>(&renderer);
     const auto* deferred = dynamic_cast<const DeferredRenderer*>(&renderer);
-    if ((!tiled && !clustered && !tiledDeferred && !deferred) || renderer.targets().samples() > 0) return a;
+    const bool brute = renderer.modeName() == "forward-brute", multipass = renderer.modeName() == "forward-multipass";
+    if ((!tiled && !clustered && !tiledDeferred && !deferred && !brute && !multipass) || renderer.targets().samples() > 0)
+        return a;
     if (deferred && renderer.frame().info.gles) return a;  // ES 2.0 reads no float pixels back
     const int width = image.width, height = image.height;
     const CoverageTruth truth = computeCoverage(renderer.targets().readDepth(), cameraMatrices(camera, width, height), lights);
+    if (brute || multipass) {
+        for (size_t p = 0; p < truth.surface.size(); ++p)
+            if (truth.surface[p]) a.trueLightPixels += truth.count(p);
+        // Brute force: every surface pixel loops over every light.
+        a.lightingComputations = brute ? surfacePixels(truth) * long(lights.size()) : lightPassFragments(renderer);
+        return a;
+    }
     if (deferred) return judgeLightCounts(a, truth, deferred->gBuffer().readLightCounts());
     PixelListCheck check;
     if (clustered) {
@@ -76,7 +103,13 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
     a.pixelsWithDrops = check.pixelsWithMissing;
     a.trueLightPixels = check.truthPairs;
     a.shadedLightPixels = check.listPairs;
+    a.lightingComputations = check.listPairs;  // each surface pixel loops over its tile's or cluster's list
     return a;
+}
+
+long countLightingComputations(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights) {
+    const ImageRGBA8 image = renderer.targets().readColor();
+    return judgeFrame(renderer, camera, lights, image, image).lightingComputations;
 }
 
 }  // namespace lidr::bench

@@ -119,12 +119,21 @@ execute_process(COMMAND ${DEMO} --headless --mode forward-multipass --multipass-
 if(r EQUAL 0 OR NOT err MATCHES "--multipass-accumulation must be auto or 8-bit")
   message(FATAL_ERROR "lidr-demo --multipass-accumulation 16-bit: exit ${r}, '${err}'")
 endif()
-# The deferred modes' summary: the G-buffer's bytes a pixel, (doc/deferred.md).
+# The deferred modes' summary: the G-buffer's bytes a pixel (doc/deferred.md); every mode's lighting computations
+# against the true light-pixel pairs (an exact frame runs at least one per pair; brute force one per light a pixel).
 file(READ ${OUT}/deferred/summary.json summary)
 string(JSON gbuffer_bytes GET "${summary}" deferred g_buffer_bytes_per_pixel)
 if(NOT gbuffer_bytes EQUAL 32)
   message(FATAL_ERROR "lidr-demo --mode deferred: G-buffer ${gbuffer_bytes} bytes a pixel")
 endif()
+foreach(mode depth16 tiled clustered deferred tiled-deferred forward-brute)
+  file(READ ${OUT}/${mode}/summary.json summary)
+  string(JSON computations GET "${summary}" lighting computations)
+  string(JSON pairs GET "${summary}" lighting true_light_pixels)
+  if(pairs LESS 1000 OR computations LESS pairs)
+    message(FATAL_ERROR "lidr-demo --mode ${mode}: ${computations} lighting computations for ${pairs} true light-pixels")
+  endif()
+endforeach()
 if(NOT EXISTS ${OUT}/tiled/tile_heatmap.png)
   message(FATAL_ERROR "lidr-demo --mode tiled did not write tile_heatmap.png")
 endif()
