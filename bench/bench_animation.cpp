@@ -33,10 +33,8 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-// The lighting-function invocations a mode counted in its frame (the paper's Figure 3). FrameStats holds no such
-// count yet; when the deferred modes add one (issue 45), it is read here and every frame gets the column. Until
-// then: -1, and the judged frames give the count of the lists' entries the mode shades (FrameAccuracy).
-long countedLightingComputations(const FrameStats&) { return -1; }
+// The lighting-function invocations a mode ran in a frame (the paper's Figure 3) are counted on the judged frames
+// (FrameAccuracy::lightingComputations: they read the frame's depth and lists back, so never inside a timed frame).
 
 struct ModeRun {
     std::string label;
@@ -99,6 +97,8 @@ struct ModeSummary {
     long dropped = 0, overBudget = 0;
     bool hasLists = false;
     double shaded = 0.0, truth = 0.0;  // summed over the judged frames
+    double computations = 0.0;         // lighting computations, summed over the frames that counted them
+    int counted = 0;
     double average() const { return frames ? sumMs / frames : 0.0; }
 };
 
@@ -201,7 +201,6 @@ private:
         r.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         r.frameMs = stats.frameMilliseconds();
         r.drawnLights = stats.drawnLights;
-        r.lightingComputations = countedLightingComputations(stats);
         for (const PassTime& p : stats.passes) r.passes += (r.passes.empty() ? "" : ";") + p.pass + "=" + fixed(p.milliseconds, 2);
         const AutoDecision& d = stats.autoDecision;  // LIDR's automatic configuration of the frame (zeros elsewhere)
         if (d.budget > 0)
@@ -223,6 +222,7 @@ private:
             ModeRun& m = *std::find_if(modes.begin(), modes.end(), [&](const ModeRun& r) { return r.label == records[i].mode; });
             records[i].judged = true;
             records[i].accuracy = judgeFrame(*m.renderer, camera, lights, m.renderer->targets().readColor(), truth);
+            records[i].lightingComputations = records[i].accuracy.lightingComputations;
         }
     }
 
@@ -261,6 +261,7 @@ private:
             const double within = r.accuracy.errorWithinBudget.psnr;
             s.worstPsnrWithinBudget = std::min(s.worstPsnrWithinBudget, std::isinf(within) ? 999.0 : within);
             s.overBudget += r.accuracy.pixelsOverBudget;
+            if (r.lightingComputations >= 0) s.computations += double(r.lightingComputations), ++s.counted;
             if (r.accuracy.hasLists) {
                 s.hasLists = true;
                 s.dropped += r.accuracy.droppedLightPixels;
@@ -288,6 +289,7 @@ private:
                 row["worst_psnr_within_budget_db"] = s.worstPsnrWithinBudget;  // LIDR: where its budget holds
                 row["pixels_over_budget"] = s.overBudget;
             }
+            if (s.counted) row["lighting_computations_per_counted_frame"] = s.computations / s.counted;
             if (s.hasLists) {
                 row["dropped_light_pixels"] = s.dropped;
                 row["shaded_light_pixels_per_judged_frame"] = s.shaded / s.judged;

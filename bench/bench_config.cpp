@@ -203,6 +203,7 @@ std::string ModeConfig::label() const {
                c.clusterSlicing + (c.clusterOccupancy == 1 ? " occupied" : "");
     }
     if (mode == "forward-multipass" && multipassEightBit) return mode + " 8-bit";
+    if (mode == "deferred" && deferredStencil) return "deferred-stencil";
     return mode;
 }
 
@@ -298,6 +299,7 @@ std::unique_ptr<Renderer> createUntimedRenderer(const ModeConfig& c, const GlInf
     if (!c.clusterSlicing.empty()) o.clustered.slicing = parseClusterSlicing(c.clusterSlicing);
     if (c.clusterOccupancy >= 0) o.clustered.occupiedClusters = c.clusterOccupancy == 1;
     o.multipass.halfFloatAccumulation = !(c.mode == "forward-multipass" && c.multipassEightBit);
+    o.deferred.stencil = c.mode == "deferred" && c.deferredStencil;
     o.msaaSamples = c.msaa;
     o.transparency = c.transparency;
     return createRenderer(o, info, scene, width, height);

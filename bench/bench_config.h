@@ -49,6 +49,8 @@ struct ModeConfig {
     // mode "forward-multipass": its passes summed in the 8-bit colour target (MultipassOptions::
     // halfFloatAccumulation false) rather than in half float where the context has it
     bool multipassEightBit = false;
+    // mode "deferred": light volumes with the stencil test (DeferredOptions::stencil), the paper's Deferred-Stencil
+    bool deferredStencil = false;
     // every mode
     int msaa = 0;
     // With MSAA: LIDR's per-sample index lists (LidrOptions::perSampleIndices) and a reference shaded per
@@ -93,6 +95,7 @@ struct SweepGroup {
     std::vector<std::string> clusterSlicings{""};
     std::vector<int> clusterOccupancy{-1};
     std::vector<bool> multipassEightBit{false};
+    std::vector<bool> deferredStencil{false};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
     std::vector<int> volumeTileSizes{16};

@@ -1,5 +1,7 @@
 #include "bench_measure.h"
 
+#include "frame_accuracy.h"
+
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
@@ -174,6 +176,7 @@ void judgeLidrLists(LidrRenderer& lidrRenderer, const Scene& scene, const std::v
     row.maxMarked = ev.maxMarked;
     row.psnrWithinBudget = ev.errorWithinBudget.psnr;
     if (!row.hasLists) return;
+    row.lightingComputations = ev.lists.slotsUsed;  // the forward pass shades every filled slot
     row.trueLightPixels = 0;
     for (size_t p = 0; p < ev.truth.surface.size(); ++p)
         if (ev.truth.surface[p]) row.trueLightPixels += ev.truth.count(p);
@@ -208,6 +211,7 @@ void judgeGridLists(const Renderer& renderer, const Scene& scene, const std::vec
     row.pixelsWithDrops = check.pixelsWithMissing;
     row.trueLightPixels = check.truthPairs;
     row.extraLightPixels = check.extraPairs;
+    row.lightingComputations = check.listPairs;  // each surface pixel loops over its list
 }
 
 }  // namespace
@@ -487,8 +491,25 @@ void SetMeasurer::judge(SetState& set, Slot& slot, Row& row, const Renderer* bas
         judgeLidrLists(*lidrRenderer, scene, lights, image, reference.image, row);
         return;
     }
+    if (run.config.mode == "deferred" || run.config.mode == "tiled-deferred") {
+        // Tiled deferred's lists, deferred's count of light shaders run per pixel (frame_accuracy.cpp).
+        const FrameAccuracy a = judgeFrame(*slot.renderer, scene.camera, lights, image, reference.image);
+        row.error = a.error;
+        row.hasPixelLists = a.hasLists;
+        row.droppedLightPixels = a.droppedLightPixels;
+        row.pixelsWithDrops = a.pixelsWithDrops;
+        row.trueLightPixels = a.trueLightPixels;
+        row.extraLightPixels = a.shadedLightPixels - (a.trueLightPixels - a.droppedLightPixels);
+        row.lightingComputations = a.lightingComputations;
+        return;
+    }
     row.error = compareImages(image, reference.image);
     if (run.config.msaa == 0) judgeGridLists(*slot.renderer, scene, lights, run, row);
+    if (run.config.mode == "forward-multipass" || run.config.mode == "forward-brute") {  // counted, no lists
+        const FrameAccuracy a = judgeFrame(*slot.renderer, scene.camera, lights, image, image);
+        row.lightingComputations = a.lightingComputations;
+        if (a.trueLightPixels > 0) row.trueLightPixels = a.trueLightPixels;
+    }
 }
 
 }  // namespace lidr::bench

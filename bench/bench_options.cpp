@@ -34,6 +34,7 @@ std::vector<SweepList> sweepLists() {
             {"--cluster-slicings", "cluster-slicing", {}},
             {"--cluster-occupancy", "cluster-occupancy", {}},
             {"--multipass-accumulation", "multipass-accumulation", {"auto"}},
+            {"--deferred-stencil", "deferred-stencil", {"off"}},
             {"--volume-detail", "volume-detail", {"off"}},
             {"--volume-tiles", "volume-tiles", {"on"}},
             {"--regional-indices", "regional-indices", {"on"}},
@@ -179,6 +180,7 @@ SweepGroup commandLineGroup(const CLI::App& app, const BenchOptions& o) {
     g.tiledDepthBounds = onOffList(o.listOf("--tiled-depth-bounds"));
     g.multipassEightBit.clear();
     for (const std::string& a : o.listOf("--multipass-accumulation")) g.multipassEightBit.push_back(a == "8-bit");
+    g.deferredStencil = onOffList(o.listOf("--deferred-stencil"));
     g.volumeDetail = onOffList(o.listOf("--volume-detail"));
     g.volumeTiles = onOffList(o.listOf("--volume-tiles"));
     g.volumeTileSizes = intList(o.listOf("--volume-tile-size"), "--volume-tile-size value");

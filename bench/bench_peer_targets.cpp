@@ -1,8 +1,10 @@
-// summary.md's "best peer" targets (issue 37): LIDR's default configuration against the faster of tiled forward
-// and clustered forward in the same rounds, per scene and size, with both ratios, and --mode auto against the
-// fastest of the three lossless modes.
+// summary.md's "best peer" targets (issue 37): LIDR's default configuration against tiled forward, clustered
+// forward and, where measured, the deferred modes (issue 45) in the same rounds, per scene and size, with each
+// ratio and the best peer (the fastest of them), and --mode auto against the fastest of LIDR, tiled and clustered.
 #include <string>
 #include <vector>
+
+#include <algorithm>
 
 #include "bench_report_text.h"
 #include "bench_targets.h"
@@ -16,11 +18,29 @@ struct PeerRows {
     const Row* tiled = nullptr;
     const Row* clustered = nullptr;
     const Row* autoMode = nullptr;
-    // The faster of tiled and clustered (median frame), null where neither was measured.
+    const Row* deferred = nullptr;
+    const Row* deferredStencil = nullptr;
+    const Row* tiledDeferred = nullptr;
+    std::vector<const Row*> peers() const {
+        std::vector<const Row*> out;
+        for (const Row* r : {tiled, clustered, deferred, deferredStencil, tiledDeferred})
+            if (r) out.push_back(r);
+        return out;
+    }
+    // The fastest peer (median frame), null where none was measured.
     const Row* bestPeer() const {
-        if (!tiled) return clustered;
-        if (!clustered) return tiled;
-        return clustered->frameMs.median < tiled->frameMs.median ? clustered : tiled;
+        const std::vector<const Row*> p = peers();
+        if (p.empty()) return nullptr;
+        return *std::min_element(p.begin(), p.end(), [](const Row* a, const Row* b) {
+            return a->frameMs.median < b->frameMs.median;
+        });
+    }
+    // The fastest of LIDR, tiled and clustered: --mode auto's candidates among them.
+    const Row* fastestAutoCandidate() const {
+        const Row* f = lidr;
+        for (const Row* r : {tiled, clustered})
+            if (r && r->frameMs.median < f->frameMs.median) f = r;
+        return f;
     }
 };
 
@@ -42,19 +62,22 @@ void writePeerTargets(std::ostream& o, const std::vector<Row>& rows) {
         const auto find = [&](const std::string& key) {
             return findRow(rows, r.run.scene, r.run.width, r.run.height, key);
         };
-        PeerRows p{&r, find("tiled min/max opaque"), find("clustered opaque"), find("auto opaque")};
+        PeerRows p{&r, find("tiled min/max opaque"), find("clustered opaque"), find("auto opaque"),
+                   find("deferred opaque"), find("deferred-stencil opaque"), find("tiled-deferred opaque")};
         if (p.tiled || p.clustered) sets.push_back(p);
     }
     if (sets.empty()) return;
     o << "## Targets (issue 37): LIDR against the best peer\n\n"
          "Opaque, per scene and size: LIDR's default (`lidr auto sphere`) frame over tiled forward's (min/max) and "
          "clustered forward's (its default grid), each in the same rounds (median ratio, min-max over the rounds); "
-         "the best peer is the faster of the two in this run. `auto / fastest` is `--mode auto` over the fastest of "
+         "deferred (stencil off, on) and tiled deferred where the run measured them; the best peer is the fastest "
+         "peer in this run. `auto / fastest` is `--mode auto` over the fastest of "
          "LIDR, tiled and clustered. Targets at 1024x768: LIDR <= 0.8x the best peer on hall-255 and city-255, "
          "<= 0.65x on hall-1024 and many-4096; everywhere 0 dropped light-pixels in LIDR, tiled and clustered "
          "(where the run checked their lists) and auto <= 1.05x the fastest.\n\n"
-         "| scene | LIDR ms | tiled ms | clustered ms | LIDR / tiled | LIDR / clustered | best peer | LIDR / best peer "
-         "| auto / fastest | targets |\n|---|---|---|---|---|---|---|---|---|---|\n";
+         "| scene | LIDR ms | tiled ms | clustered ms | LIDR / tiled | LIDR / clustered | LIDR / deferred, "
+         "deferred-stencil, tiled-deferred | best peer | LIDR / best peer | auto / fastest | targets |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const PeerRows& p : sets) {
         const Row& l = *p.lidr;
         double toTiled = -1, toClustered = -1, toBest = -1, autoRatio = -1;
@@ -62,7 +85,12 @@ void writePeerTargets(std::ostream& o, const std::vector<Row>& rows) {
         const std::string clusteredCell = ratioCell(l, p.clustered, toClustered);
         const Row* best = p.bestPeer();
         const std::string bestCell = ratioCell(l, best, toBest);
-        const Row* fastest = best && best->frameMs.median < l.frameMs.median ? best : &l;
+        const Row* fastest = p.fastestAutoCandidate();
+        std::string deferredCell;
+        for (const Row* d : {p.deferred, p.deferredStencil, p.tiledDeferred}) {
+            double unused = -1;
+            deferredCell += (deferredCell.empty() ? "" : ", ") + (d ? ratioCell(l, d, unused) : std::string("-"));
+        }
         const std::string autoCell = p.autoMode ? ratioCell(*p.autoMode, fastest, autoRatio) : "-";
         std::vector<std::string> verdicts;
         const auto judge = [&](const std::string& what, double value, double goal) {
@@ -72,8 +100,8 @@ void writePeerTargets(std::ostream& o, const std::vector<Row>& rows) {
         if (goal > 0) judge("best peer <= " + num(goal, 2), toBest, goal);
         long drops = l.hasLists ? l.droppedLightPixels : 0;
         bool checked = l.hasLists;
-        for (const Row* peer : {p.tiled, p.clustered})
-            if (peer && peer->hasPixelLists) {
+        for (const Row* peer : p.peers())
+            if (peer->hasPixelLists) {
                 drops += peer->droppedLightPixels;
                 checked = true;
             }
@@ -84,7 +112,7 @@ void writePeerTargets(std::ostream& o, const std::vector<Row>& rows) {
         o << "| " << sceneKey(l) << " | " << ms(l.frameMs.median) << " | "
           << (p.tiled ? ms(p.tiled->frameMs.median) : "-") << " | "
           << (p.clustered ? ms(p.clustered->frameMs.median) : "-") << " | " << tiledCell << " | " << clusteredCell
-          << " | " << (best ? best->run.config.label() : "-") << " | " << bestCell << " | " << autoCell
+          << " | " << deferredCell << " | " << (best ? best->run.config.label() : "-") << " | " << bestCell << " | " << autoCell
           << (p.autoMode ? " of " + fastest->run.config.label() : "") << " | " << (targets.empty() ? "-" : targets)
           << " |\n";
     }

@@ -146,11 +146,19 @@ void multipassConfigs(const SweepGroup& g, const ModeConfig& base, Configs& conf
     }
 }
 
+void deferredConfigs(const SweepGroup& g, const ModeConfig& base, Configs& configs) {
+    for (bool stencil : g.deferredStencil) {
+        ModeConfig c = base;
+        c.deferredStencil = stencil;
+        configs.push_back(c);
+    }
+}
+
 using ConfigExpander = void (*)(const SweepGroup&, const ModeConfig&, Configs&);
 const std::map<std::string, ConfigExpander>& modeExpanders() {
     static const std::map<std::string, ConfigExpander> expanders = {
         {"lidr", lidrConfigs}, {"tiled", tiledConfigs}, {"clustered", clusteredConfigs},
-        {"forward-multipass", multipassConfigs}};
+        {"forward-multipass", multipassConfigs}, {"deferred", deferredConfigs}};
     return expanders;
 }
 

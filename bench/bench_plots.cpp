@@ -248,6 +248,23 @@ std::map<std::string, std::vector<std::pair<double, double>>> sweepLines(const s
     return lines;
 }
 
+// The lighting computations per true light-pixel pair of each row that counted them (the LIDR paper's Figure 3):
+// 1 is the least an exact frame can run; log scale, brute force runs one per light a pixel.
+std::string lightingPlot(const std::vector<const Row*>& rows, const std::string& title) {
+    std::ostringstream g;
+    const int width = std::clamp(380 + 30 * int(rows.size()), 720, 1400);
+    g << "set terminal pngcairo size " << width << ",520 font 'sans,8' noenhanced\nset output " << gpString("") << "\n";
+    g << "set title " << gpString(title) << "\n";
+    g << "set style data histograms\nset style fill solid 0.85 border -1\nset boxwidth 0.75\n"
+         "set xtics rotate by -40 left font ',7'\nset logscale y\nset yrange [0.5:*]\n"
+         "set ylabel 'lighting computations per true light-pixel pair'\nset key off\n"
+         "set grid ytics lc rgb '#dddddd'\nset bmargin 12\n";
+    g << "$L << EOD\n";
+    for (const Row* r : rows) g << gpString(r->run.config.key()) << " " << r->lightingPerTruePair() << "\n";
+    g << "EOD\nplot $L using 2:xtic(1)\n";
+    return g.str();
+}
+
 using PlotJobs = std::vector<std::pair<std::string, std::string>>;  // png name, gnuplot script
 
 // Per scene and size: time against error and the per-pass breakdown; the controlled-overlap scenes' rows as lines
@@ -273,6 +290,11 @@ void addScenePlots(PlotJobs& jobs, const std::vector<Row>& rows_, OverlapLines& 
         if (!overlapScene || rows.front()->run.scene == "overlap-16") {
             jobs.push_back({"passes_" + base + ".png", passesPlot(rows, "per-pass breakdown: " + key, "")});
         }
+        std::vector<const Row*> counted;
+        for (const Row* r : rows)
+            if (r->lightingPerTruePair() > 0) counted.push_back(r);
+        if (!overlapScene && !counted.empty())
+            jobs.push_back({"lighting_" + base + ".png", lightingPlot(counted, "lighting computations: " + key)});
         if (overlapScene) {
             const int k = std::atoi(rows.front()->run.scene.c_str() + 8);
             for (const Row* r : rows)

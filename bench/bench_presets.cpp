@@ -252,7 +252,8 @@ std::vector<SweepGroup> clustersSweep(const SweepGroup& base, bool quick) {
 std::vector<SweepGroup> peersSweep(const SweepGroup& base, bool quick) {
     std::vector<SweepGroup> groups;
     // Issue 37's best-peer targets (bench_peer_targets.cpp): LIDR's default configuration against tiled forward
-    // (min/max), clustered forward (its default grid), multi-pass and --mode auto in the same interleaved rounds,
+    // (min/max), clustered forward (its default grid), multi-pass, deferred (with and without the stencil test),
+    // tiled deferred and --mode auto in the same interleaved rounds,
     // opaque (every mode draws the same), on the deep scenes and the many-light ones at 1024x768, against the
     // reference.
     SweepGroup g = base;
@@ -260,8 +261,10 @@ std::vector<SweepGroup> peersSweep(const SweepGroup& base, bool quick) {
     g.scenes = quick ? std::vector<std::string>{"hall-64"}
                      : std::vector<std::string>{"hall-255", "city-255", "hall-1024", "many-4096-top", "many-4096-fp"};
     g.resolutions = {quick ? std::make_pair(96, 72) : std::make_pair(1024, 768)};
+    // The deferred modes (doc/deferred.md): deferred with and without the stencil test, tiled deferred.
     for (const std::string& have : availableModes())
-        if (have == "auto") g.modes.push_back(have);
+        if (have == "auto" || have == "deferred" || have == "tiled-deferred") g.modes.push_back(have);
+    g.deferredStencil = {false, true};
     g.schemes = {"auto"};
     g.volumeTests = {"sphere"};
     g.indexBits = {16};

@@ -90,7 +90,8 @@ const std::vector<std::string>& resultColumns() {
         "auto_index_bits", "auto_repacks", "state_calls", "state_calls_skipped", "draw_calls", "true_light_pixels",
         "volume_fragments", "volume_fragments_per_light_pixel", "shadow_casters", "shadow_maps_first_frame",
         "shadow_maps_first_frame_ms", "shadow_maps_later_frames", "cluster_tile_size", "cluster_slices",
-        "cluster_slicing", "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
+        "cluster_slicing", "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair", "lighting_computations",
+        "lighting_computations_per_true_pair"};
     return c;
 }
 
@@ -171,7 +172,9 @@ std::vector<std::string> csvCells(const Row& r) {
             clustered ? std::to_string(grid.clusterTileSize) : "", clustered ? std::to_string(grid.clusterSlices) : "",
             clustered ? grid.clusterSlicing : "", clustered ? std::to_string(grid.clusterOccupancy) : "",
             r.hasPixelLists ? std::to_string(r.extraLightPixels) : "",
-            r.hasPixelLists ? num(r.extraPerTruePair(), 3) : ""};
+            r.hasPixelLists ? num(r.extraPerTruePair(), 3) : "",
+            r.lightingComputations >= 0 ? std::to_string(r.lightingComputations) : "",
+            r.lightingPerTruePair() >= 0 ? num(r.lightingPerTruePair(), 3) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -238,6 +241,8 @@ nlohmann::json rowJson(const Row& r) {
         j["pixel_lists"] = {{"dropped_light_pixels", r.droppedLightPixels}, {"pixels_with_drops", r.pixelsWithDrops},
                             {"true_light_pixels", r.trueLightPixels}, {"extra_light_pixels", r.extraLightPixels},
                             {"extra_per_true_pair", r.extraPerTruePair()}};
+    if (r.lightingComputations >= 0)
+        j["lighting_computations"] = {{"count", r.lightingComputations}, {"per_true_pair", r.lightingPerTruePair()}};
     return j;
 }
 

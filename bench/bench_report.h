@@ -64,6 +64,13 @@ struct Row {
     // volume fragments per pair).
     bool hasPixelLists = false;
     long extraLightPixels = -1;
+    // How many times the frame ran the lighting function (the paper's Figure 3; frame_accuracy.h says how each mode
+    // is counted); -1: not counted. Per true light-pixel pair: 1 is the least an exact frame can do.
+    long lightingComputations = -1;
+    double lightingPerTruePair() const {
+        return trueLightPixels > 0 && lightingComputations >= 0 ? double(lightingComputations) / double(trueLightPixels)
+                                                                : -1.0;
+    }
     double extraPerTruePair() const {
         return trueLightPixels > 0 && extraLightPixels >= 0 ? double(extraLightPixels) / double(trueLightPixels) : -1.0;
     }

@@ -166,6 +166,7 @@ int runHeadlessOtherMode(const Scene& scene, const RenderModeOptions& mo, const 
     addShadowSummary(summary, s, shadowChoice, start.shading, firstFrameMaps, stats);
     addEnvironmentSummary(summary, s, scene, stats);
     addModeStatistics(summary, s, renderer->modeStatistics());
+    addLightingComputations(summary, s, *renderer, scene.camera, start.lights);
     std::string outputs = imageFile;
     if (renderer->shadowAtlas() && !(info.gles && !renderer->shadowAtlas()->packed())) outputs += ", shadow_atlas.png";
     outputs += writeGridHeatMaps(*renderer, outDir);
@@ -365,6 +366,7 @@ int runHeadlessLidr(const Scene& scene, const RenderModeOptions& modeOptions, co
     addShadowSummary(summary, s, shadowChoice, start.shading, firstFrameMaps, stats);
     addEnvironmentSummary(summary, s, scene, stats);
     addAutoDecisionLine(s, renderer, stats);
+    addLightingComputations(summary, s, renderer, scene.camera, start.lights);
     s << glCallsLine(stats.glCalls) << passCountsLine(stats.passes);
     s << "timing     " << stats.timingMethod << ", median of " << frames << " frames (ms):";
     for (const auto& [k, v] : summary["timing"]["lidr_median_ms"].items()) s << " " << k << "=" << v.get<double>();

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "lidr/base/error.h"
+#include "frame_accuracy.h"
 #include "lidr/base/image.h"
 #include "lidr/render/material_variants.h"
 #include "lidr/render/shadow_atlas.h"
@@ -198,6 +199,25 @@ void addModeStatistics(nlohmann::json& summary, std::ostream& s, const ModeStati
     nlohmann::json& section = summary[m.section];
     for (const ModeStatistic& v : m.values) section[v.name] = statisticJson(v.value);
     s << m.line << "\n";
+}
+
+void addLightingComputations(nlohmann::json& summary, std::ostream& s, Renderer& renderer, const Camera& camera,
+                             const std::vector<PointLight>& lights) {
+    const ImageRGBA8 image = renderer.targets().readColor();
+    const bench::FrameAccuracy a = bench::judgeFrame(renderer, camera, lights, image, image);
+    if (a.lightingComputations < 0) {
+        summary["lighting"] = {{"computations", -1},
+                               {"why", "not counted here (MSAA, ES 2.0 float read-back, the automatic mode, or no "
+                                       "fragment counts for multi-pass)"}};
+        s << "lighting   computations not counted here\n";
+        return;
+    }
+    const double perPair = a.trueLightPixels > 0 ? double(a.lightingComputations) / double(a.trueLightPixels) : -1.0;
+    summary["lighting"] = {{"computations", a.lightingComputations},
+                           {"true_light_pixels", a.trueLightPixels},
+                           {"per_true_pair", perPair}};
+    s << "lighting   " << a.lightingComputations << " lighting computations, " << a.trueLightPixels
+      << " true light-pixel pairs (" << perPair << " per pair)\n";
 }
 
 }  // namespace lidr::demo

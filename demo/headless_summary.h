@@ -59,5 +59,10 @@ void addEnvironmentSummary(nlohmann::json& summary, std::ostream& s, const Scene
 void describeRun(nlohmann::json& summary, std::ostream& s, const GlInfo& info, const Scene& scene, size_t lights,
                  const std::vector<std::string>& warnings);
 void addModeStatistics(nlohmann::json& summary, std::ostream& s, const ModeStatistics& m);
+// summary.json's "lighting" and the text summary's line: how many times the last frame ran the lighting function
+// (the paper's Figure 3), counted as lidr-bench counts it (bench/frame_accuracy.h), against the true light-pixel
+// pairs. Reads the frame back: after its timing.
+void addLightingComputations(nlohmann::json& summary, std::ostream& s, Renderer& renderer, const Camera& camera,
+                             const std::vector<PointLight>& lights);
 
 }  // namespace lidr::demo

@@ -1,5 +1,5 @@
-// lidr-demo: renders a scene with LIDR (or --mode tiled, clustered, forward-multipass, forward-brute) and writes what a
-// person needs to judge it.
+// lidr-demo: renders a scene with LIDR (or --mode tiled, clustered, forward-multipass, deferred, tiled-deferred,
+// forward-brute, auto) and writes what a person needs to judge it.
 //   --headless (default): render the default room (or --scene FILE) offscreen, compare with the brute-force
 //   reference, write images and a summary to --out DIR; --dump DIR adds the raw artefacts.
 //   --window: an interactive GLFW window (needs a display) that animates the scene.

@@ -8,7 +8,8 @@
 //                lidr::currentContextGlInfo() reads the context current on this thread (lidr/gl/gl_info.h)
 //   scenes       lidr::Scene, lidr::makeDefaultScene(), lidr::loadSceneFile(), primitives, lidr::Camera
 //   renderers    lidr::LidrRenderer (LidrOptions), or lidr::createRenderer() for any mode by name: "lidr",
-//                "tiled" (TiledOptions), "clustered" (ClusteredOptions), "forward-multipass", "forward-brute", "auto"
+//                "tiled" (TiledOptions), "clustered" (ClusteredOptions), "forward-multipass", "deferred"
+//                (DeferredOptions), "tiled-deferred" (TiledDeferredOptions), "forward-brute", "auto"
 //   output       Renderer::targets().readColor() -> ImageRGBA8 -> lidr::writePng(), or
 //                lidr::FramePresenter::present() into your framebuffer or FBO (lidr/render/present.h)
 //   environment  lidr::defaultEnvironment() (a studio room) or lidr::loadEnvironment("sky.hdr"): set
@@ -38,5 +39,7 @@
 #include "lidr/modes/render_options.h"
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/modes/clustered_renderer.h"
+#include "lidr/modes/deferred_renderer.h"
+#include "lidr/modes/tiled_deferred_renderer.h"
 #include "lidr/modes/auto_mode_renderer.h"
 #include "lidr/eval/image_compare.h"

@@ -82,7 +82,7 @@ endif()
 
 # The other render modes: their image, the reference and, for tiled and clustered, the heat map; tiled and clustered
 # must miss no light.
-foreach(mode tiled clustered forward-multipass forward-brute auto)
+foreach(mode tiled clustered forward-multipass deferred tiled-deferred forward-brute auto)
   run_demo(${mode} "--mode ${mode}" --mode ${mode} --width 160 --height 120 --frames 1)
   foreach(f ${mode}.png reference.png difference.png summary.json summary.txt)
     if(NOT EXISTS ${OUT}/${mode}/${f})
@@ -119,6 +119,21 @@ execute_process(COMMAND ${DEMO} --headless --mode forward-multipass --multipass-
 if(r EQUAL 0 OR NOT err MATCHES "--multipass-accumulation must be auto or 8-bit")
   message(FATAL_ERROR "lidr-demo --multipass-accumulation 16-bit: exit ${r}, '${err}'")
 endif()
+# The deferred modes' summary: the G-buffer's bytes a pixel (doc/deferred.md); every mode's lighting computations
+# against the true light-pixel pairs (an exact frame runs at least one per pair; brute force one per light a pixel).
+file(READ ${OUT}/deferred/summary.json summary)
+string(JSON gbuffer_bytes GET "${summary}" deferred g_buffer_bytes_per_pixel)
+if(NOT gbuffer_bytes EQUAL 32)
+  message(FATAL_ERROR "lidr-demo --mode deferred: G-buffer ${gbuffer_bytes} bytes a pixel")
+endif()
+foreach(mode depth16 tiled clustered deferred tiled-deferred forward-brute)
+  file(READ ${OUT}/${mode}/summary.json summary)
+  string(JSON computations GET "${summary}" lighting computations)
+  string(JSON pairs GET "${summary}" lighting true_light_pixels)
+  if(pairs LESS 1000 OR computations LESS pairs)
+    message(FATAL_ERROR "lidr-demo --mode ${mode}: ${computations} lighting computations for ${pairs} true light-pixels")
+  endif()
+endforeach()
 if(NOT EXISTS ${OUT}/tiled/tile_heatmap.png)
   message(FATAL_ERROR "lidr-demo --mode tiled did not write tile_heatmap.png")
 endif()
@@ -146,7 +161,11 @@ set(bad_runs
   "--width|100000"
   "--volume-test|sideways"
   "--context|carrier-pigeon"
-  "--mode|deferred"
+  "--mode|forward-plus"
+  "--mode|deferred|--msaa|4"
+  "--mode|tiled-deferred|--msaa|4"
+  "--mode|deferred|--deferred-stencil|maybe"
+  "--mode|deferred|--g-buffer|rgba8"
   "--mode|tiled|--tile-size|0"
   "--mode|tiled|--tile-size|5000"
   "--mode|tiled|--dump|${OUT}/bad-dump")

@@ -119,3 +119,31 @@ TEST_CASE("shadow settings are read and checked by the library (shadowChoiceFrom
     CHECK_THAT(refusal({{"shadows", "4"}, {"shadow-atlas", "1024:2048"}}, "lidr"),
                Catch::Contains("TILE must be a power of two from 16 to SIZE"));
 }
+
+TEST_CASE("the deferred modes' settings are table rows that reach their options", "[options][deferred]") {
+    const RenderOption* stencil = findRenderOption("deferred-stencil");
+    const RenderOption* gBuffer = findRenderOption("g-buffer");
+    REQUIRE(stencil);
+    REQUIRE(gBuffer);
+    CHECK(stencil->usedBy("deferred"));
+    CHECK(!stencil->usedBy("tiled-deferred"));
+    CHECK(gBuffer->usedBy("deferred"));
+    CHECK(gBuffer->usedBy("tiled-deferred"));
+    CHECK(!gBuffer->usedBy("lidr"));
+    CHECK(findRenderOption("tile-size")->usedBy("tiled-deferred"));
+    RenderOptionValues v;
+    CHECK_THROWS_WITH(setRenderOption(v, "deferred-stencil", "maybe"), "--deferred-stencil must be on or off, got 'maybe'");
+    CHECK_THROWS_WITH(setRenderOption(v, "g-buffer", "rgba8"), "--g-buffer must be rgba16f or rgba32f, got 'rgba8'");
+    const Scene scene = makeDefaultScene();
+    CHECK(!renderModeOptionsFrom(v, scene).deferred.stencil);  // the default: off (measured, doc/deferred.md)
+    CHECK(renderModeOptionsFrom(v, scene).deferred.format == GBufferFormat::Half);
+    setRenderOption(v, "mode", "deferred");
+    setRenderOption(v, "deferred-stencil", "on");
+    setRenderOption(v, "g-buffer", "rgba32f");
+    setRenderOption(v, "tile-size", "16");
+    const RenderModeOptions o = renderModeOptionsFrom(v, scene);
+    CHECK(o.deferred.stencil);
+    CHECK(o.deferred.format == GBufferFormat::Float);
+    CHECK(o.tiledDeferred.format == GBufferFormat::Float);
+    CHECK(o.tiledDeferred.tileSize == 16);
+}

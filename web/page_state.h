@@ -26,7 +26,7 @@ constexpr int kStartWidth = 640, kStartHeight = 480;
 // What the HTML controls set. Budgets and widths are fixed numbers: the automatic budget measures the overlap
 // with occlusion queries, which WebGL 1 does not have (doc/web.md).
 struct Settings {
-    std::string mode = "lidr";  // lidr, tiled, clustered, forward-multipass, forward-brute
+    std::string mode = "lidr";  // a row of the mode table (lidr/scene/render_mode_names.h)
     std::string scheme = "bitshift";
     int budget = 4;
     int indexBits = 8;

@@ -25,6 +25,9 @@ enum TextureUnit : int {
     kUnitReductionInput = 0,
     kUnitTileDepthMin = 1,
     kUnitTileDepthMax = 2,
+    // Deferred modes: the four G-buffer targets (units 2..5, above the tile grid's) and the lights' sum.
+    kUnitGBuffer0 = 2,
+    kUnitLightSum = 6,
     // Every shading pass: the light table (lidr/render/light_table.h) above the index targets.
     kUnitLightPosRadius = 8,
     kUnitLightColor = 9,

@@ -34,6 +34,16 @@ std::unique_ptr<Renderer> createRenderer(const RenderModeOptions& o, const GlInf
     }
     if (o.mode == "forward-multipass")  // draws no transparent meshes (additive passes cannot blend a layer)
         return std::make_unique<MultipassForwardRenderer>(info, scene, shared(o.multipass), width, height);
+    if (o.mode == "deferred") {
+        DeferredOptions d = shared(o.deferred);
+        d.transparency = o.transparency;
+        return std::make_unique<DeferredRenderer>(info, scene, d, width, height);
+    }
+    if (o.mode == "tiled-deferred") {
+        TiledDeferredOptions d = shared(o.tiledDeferred);
+        d.transparency = o.transparency;
+        return std::make_unique<TiledDeferredRenderer>(info, scene, d, width, height);
+    }
     if (o.mode == "forward-brute")
         return std::make_unique<ReferenceRenderer>(info, scene, width, height,
                                                    std::max<int>(1, int(scene.lights.size())), o.forceFixedLightTable,

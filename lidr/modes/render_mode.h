@@ -1,5 +1,6 @@
 #pragma once
-// Choosing a render mode by name: "lidr", "tiled", "clustered", "forward-multipass", "forward-brute", or "auto" (the
+// Choosing a render mode by name: "lidr", "tiled", "clustered", "forward-multipass", "deferred", "tiled-deferred",
+// "forward-brute", or "auto" (the
 // fastest of the first four, measured: lidr/modes/auto_mode_renderer.h). lidr-demo's --mode
 // and a scene file's "mode" key both come through here, so every mode is built the same way everywhere.
 #include <memory>
@@ -8,11 +9,13 @@
 
 #include "lidr/gl/gl_info.h"
 #include "lidr/modes/clustered_renderer.h"
+#include "lidr/modes/deferred_renderer.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/multipass_forward_renderer.h"
 #include "lidr/render/renderer.h"
 #include "lidr/scene/render_mode_names.h"  // renderModeNames(), isRenderModeName(), renderModeList()
 #include "lidr/scene/scene.h"
+#include "lidr/modes/tiled_deferred_renderer.h"
 #include "lidr/modes/tiled_renderer.h"
 
 namespace lidr {
@@ -23,6 +26,8 @@ struct RenderModeOptions {
     TiledOptions tiled;          // mode "tiled"
     ClusteredOptions clustered;  // mode "clustered"
     MultipassOptions multipass;  // mode "forward-multipass"
+    DeferredOptions deferred;    // mode "deferred"
+    TiledDeferredOptions tiledDeferred;  // mode "tiled-deferred"
     // These apply to every mode and replace the per-mode fields of the same name.
     bool forceFixedLightTable = false;  // the RGBA8 fixed-point light table
     int msaaSamples = 0;                // 0, or 2..GL_MAX_SAMPLES

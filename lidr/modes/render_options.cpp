@@ -17,6 +17,7 @@ namespace {
 using T = RenderOptionType;
 const std::vector<std::string> kOnOff = {"on", "off"};
 const std::vector<std::string> kLidr = {"lidr"}, kTiled = {"tiled"}, kClustered = {"clustered", "auto"};
+const std::vector<std::string> kDeferred = {"deferred", "tiled-deferred"}, kTileGrid = {"tiled", "tiled-deferred"};
 
 std::vector<std::string> withAuto(std::vector<std::string> names) {
     names.insert(names.begin(), "auto");
@@ -39,8 +40,8 @@ std::string number(double v) {
 // The rows for the per-mode settings of tiled, clustered and multi-pass forward.
 void addModeRows(std::vector<RenderOption>& o) {
     const ClusteredOptions clustered;
-    o.push_back({"tile-size", T::Int, {"8", "16", "32", "64"}, 0, 0, "32", "Tiled mode: tile edge in pixels", kTiled});
-    o.push_back({"no-depth-bounds", T::Flag, {}, 0, 0, "", "Tiled mode: no per-tile min/max depth pruning", kTiled});
+    o.push_back({"tile-size", T::Int, {"8", "16", "32", "64"}, 0, 0, "32", "Tiled and tiled-deferred modes: tile edge in pixels", kTileGrid});
+    o.push_back({"no-depth-bounds", T::Flag, {}, 0, 0, "", "Tiled and tiled-deferred modes: no per-tile min/max depth pruning", kTileGrid});
     o.push_back({"half-z", T::Flag, {}, 0, 0, "", "Tiled mode: split each tile's depth range in two (half-Z)", kTiled});
     o.push_back({"packed-depth", T::Flag, {}, 0, 0, "",
                  "Tiled mode: reduce depth in packed RGBA8 even with float targets", kTiled});
@@ -67,6 +68,14 @@ void addModeRows(std::vector<RenderOption>& o) {
                              "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
                      (clustered.occupiedClusters ? "on" : "off") + ")",
                  kClustered});
+    o.push_back({"deferred-stencil", T::Choice, kOnOff, 0, 0, "off",
+                 "Deferred mode: on (light volumes' back faces mark the stencil, front faces shade where marked) or "
+                 "off (default, faster on llvmpipe: back faces shade every surface in front of them; doc/deferred.md)",
+                 {"deferred"}});
+    o.push_back({"g-buffer", T::Choice, gBufferFormatNames(), 0, 0, "rgba16f",
+                 "Deferred and tiled-deferred modes: the G-buffer's format, " + joinOr(gBufferFormatNames()) +
+                     " (doc/deferred.md)",
+                 kDeferred});
     o.push_back({"multipass-accumulation", T::Choice, {"auto", "8-bit"}, 0, 0, "auto",
                  "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
                  "8-bit colour target), 8-bit (the 8-bit target, to compare)",
@@ -362,6 +371,10 @@ RenderModeOptions renderModeOptionsFrom(const RenderOptionValues& v, const Scene
     o.tiled.depthBounds = !on(v, "no-depth-bounds");
     o.tiled.forcePackedDepth = on(v, "packed-depth");
     o.tiled.halfZ = on(v, "half-z");
+    o.tiledDeferred.tileSize = o.tiled.tileSize;  // tiled deferred builds the same grid
+    o.tiledDeferred.depthBounds = o.tiled.depthBounds;
+    o.deferred.stencil = on(v, "deferred-stencil");
+    o.deferred.format = o.tiledDeferred.format = parseGBufferFormat(renderOptionValue(v, "g-buffer"));
     setClusterOptions(v, o.mode, o.clustered);
     o.multipass.halfFloatAccumulation = renderOptionValue(v, "multipass-accumulation") == "auto";
     o.forceFixedLightTable = on(v, "fixed-light-table");

@@ -10,6 +10,10 @@ const std::vector<RenderModeInfo>& renderModes() {
         {"tiled", "tiled forward: a CPU-built light list per screen tile, bounded by the tile's depth range"},
         {"clustered", "clustered forward: a CPU-built light list per cluster (screen tile x view-depth slice)"},
         {"forward-multipass", "multi-pass forward: each mesh drawn once per batch of the lights that touch it"},
+        {"deferred", "deferred shading: one geometry pass into a G-buffer, each light's volume shaded with additive "
+                     "blending (doc/deferred.md)"},
+        {"tiled-deferred", "tiled deferred: the G-buffer shaded in one full-screen pass over each screen tile's "
+                           "light list (doc/deferred.md)"},
         {"forward-brute", "brute-force forward: every pixel shades every light (the reference)"},
         {"auto", "the fastest of lidr, tiled, clustered and forward-multipass for this scene, measured"},
     };

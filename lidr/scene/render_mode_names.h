@@ -12,12 +12,12 @@ struct RenderModeInfo {
     const char* description;  // one line for help texts, --list and the viewer
 };
 
-// Every mode in the order tools list them: lidr, tiled, clustered, forward-multipass, forward-brute, auto (the
-// fastest of the first four, measured).
+// Every mode in the order tools list them: lidr, tiled, clustered, forward-multipass, deferred, tiled-deferred,
+// forward-brute, auto (the fastest of lidr, tiled, clustered and forward-multipass, measured).
 const std::vector<RenderModeInfo>& renderModes();
 const std::vector<std::string>& renderModeNames();  // the names of renderModes(), in order
 bool isRenderModeName(const std::string& name);
-// "lidr, tiled, clustered, forward-multipass, forward-brute, auto": for error messages and help texts.
+// "lidr, tiled, clustered, forward-multipass, deferred, tiled-deferred, forward-brute, auto": for error messages and help texts.
 std::string renderModeList();
 // The description of `name`; "" for an unknown name.
 std::string renderModeDescription(const std::string& name);

@@ -1,0 +1,153 @@
+#include "lidr/modes/g_buffer.h"
+#include "lidr/base/gl.h"
+
+#include <cstdio>
+
+#include "lidr/base/error.h"
+#include "lidr/gl/bindings.h"
+#include "lidr/gl/shader_source.h"
+#include "lidr/render/depth_prepass.h"
+
+namespace lidr {
+
+namespace {
+constexpr GLenum kHalfFloatOes = 0x8D61;  // OES_texture_half_float's type (ES 2.0)
+constexpr const char* kSamplers[GBuffer::kTargets] = {"uGBuffer0", "uGBuffer1", "uGBuffer2", "uGBuffer3"};
+
+void requireComplete(const gl::Framebuffer& fbo, const std::string& what, const GlInfo& info) {
+    StateCache::current().bindFramebuffer(fbo.id());
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    StateCache::current().bindFramebuffer(0);
+    checkGl("G-buffer");
+    if (status == GL_FRAMEBUFFER_COMPLETE) return;
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", status);
+    throw UnsupportedError("the G-buffer (" + what + ") is incomplete on " + info.renderer + " (status " + code + ")");
+}
+
+// What the context must have before any GL object is made.
+void checkContext(const GlInfo& info, GBufferFormat format) {
+    if (!info.drawBuffers || info.maxDrawBuffers < GBuffer::kTargets)
+        throw UnsupportedError(std::string("deferred shading writes 4 G-buffer targets at once: ") +
+                               (info.gles ? "this OpenGL ES 2.0 / WebGL 1 context lacks EXT_draw_buffers "
+                                            "(WEBGL_draw_buffers) with 4 draw buffers"
+                                          : "this context has fewer than 4 draw buffers (glDrawBuffers)"));
+    if (format == GBufferFormat::Half && !info.halfFloatColorBuffer)
+        throw UnsupportedError(info.gles ? "an RGBA16F G-buffer needs half-float colour buffers (OES_texture_half_float "
+                                           "+ EXT_color_buffer_half_float); an RGBA8 G-buffer is not implemented"
+                                         : "an RGBA16F G-buffer needs half-float colour buffers (GL 3.0, or "
+                                           "ARB_texture_float + ARB_color_buffer_float)");
+    if (format == GBufferFormat::Float && !info.textureFloat)
+        throw UnsupportedError("an RGBA32F G-buffer needs float textures (ARB_texture_float / OES_texture_float)");
+}
+}  // namespace
+
+const char* gBufferFormatName(GBufferFormat format) {
+    return format == GBufferFormat::Half ? "rgba16f" : "rgba32f";
+}
+
+const std::vector<std::string>& gBufferFormatNames() {
+    static const std::vector<std::string> names = {"rgba16f", "rgba32f"};
+    return names;
+}
+
+GBufferFormat parseGBufferFormat(const std::string& name) {
+    if (name == "rgba16f") return GBufferFormat::Half;
+    if (name == "rgba32f") return GBufferFormat::Float;
+    throw Error("unknown G-buffer format '" + name + "' (valid: rgba16f, rgba32f)");
+}
+
+gl::Texture GBuffer::target(const GlInfo& info) const {
+    if (format_ == GBufferFormat::Half)
+        return gl::Texture::create2D(GL_RGBA16F, width_, height_, GL_RGBA, info.gles ? kHalfFloatOes : GL_FLOAT);
+    return gl::Texture::create2D(info.gles ? GL_RGBA : GL_RGBA32F, width_, height_, GL_RGBA, GL_FLOAT);
+}
+
+GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat format, bool accumulation)
+    : format_(format), width_(targets.width()), height_(targets.height()) {
+    checkContext(info, format);
+    fbo_ = gl::Framebuffer::create();
+    for (int i = 0; i < kTargets; ++i) {
+        targets_[i] = target(info);
+        fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
+    }
+    fbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
+    requireComplete(fbo_, std::string("4 ") + gBufferFormatName(format) + " targets", info);
+    if (accumulation) {
+        accumulation_ = target(info);
+        accumulationFbo_ = gl::Framebuffer::create();
+        accumulationFbo_.attachTexture(GL_COLOR_ATTACHMENT0, accumulation_);
+        accumulationFbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
+        requireComplete(accumulationFbo_, std::string("the ") + gBufferFormatName(format) + " light sum", info);
+    }
+    program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"), buildShaderSource("g_buffer.frag"),
+                                   geometryAttributes());
+    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
+    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    checkGl("GBuffer");
+}
+
+void GBuffer::draw(const GpuScene& scene, const CameraMatrices& camera) const {
+    PassDescription pass{fbo_.id(), glm::ivec4(0, 0, width_, height_),
+                         {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3}, {}};
+    pass.clear.color = true;
+    pass.clear.colorValue = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);  // depth hi 2: no surface (g_buffer.glsl)
+    StateCache& cache = StateCache::current();
+    cache.beginPass(pass);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_EQUAL;  // one fragment a pixel: the pre-pass's
+    cache.apply(s);
+    program_.use();
+    program_.set("uViewProj", camera.viewProjection);
+    program_.setIfDeclared("uEyePosition", camera.eye);
+    program_.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
+    scene.draw(program_, DrawFilter::Opaque, true, &camera, 0);
+}
+
+PassDescription GBuffer::accumulationPass() const {
+    PassDescription pass{accumulationFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}};
+    pass.clear.color = true;
+    return pass;
+}
+
+void GBuffer::bind(const gl::Program& program, const CameraMatrices& camera) const {
+    for (int i = 0; i < kTargets; ++i) {
+        targets_[i].bind(gl::kUnitGBuffer0 + i);
+        program.set(kSamplers[i], gl::kUnitGBuffer0 + i);
+    }
+    program.set("uGBufferInvSize", glm::vec2(1.0f / float(width_), 1.0f / float(height_)));
+    program.set("uInverseViewProj", camera.inverseViewProjection);
+    if (accumulation_ && program.declares("uLightSum")) {
+        accumulation_.bind(gl::kUnitLightSum);
+        program.set("uLightSum", int(gl::kUnitLightSum));
+    }
+}
+
+void GBuffer::unbind() const {
+    StateCache::current().unbindTextures(gl::kUnitGBuffer0, kTargets + 1);  // and the light sum's unit above them
+}
+
+std::vector<float> GBuffer::readLightCounts() const {
+    if (!accumulation_) throw Error("GBuffer::readLightCounts: this G-buffer has no accumulation target");
+    std::vector<float> rgba(size_t(width_) * height_ * 4);
+    StateCache::current().bindFramebuffer(accumulationFbo_.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+    StateCache::current().bindFramebuffer(0);
+    checkGl("GBuffer::readLightCounts");
+    std::vector<float> counts(size_t(width_) * height_);
+    for (size_t i = 0; i < counts.size(); ++i) counts[i] = rgba[i * 4 + 3];
+    return counts;
+}
+
+void GBuffer::drawFullScreen() const {
+    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
+    glEnableVertexAttribArray(gl::kPosition);
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
+    glDisableVertexAttribArray(gl::kPosition);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+}  // namespace lidr

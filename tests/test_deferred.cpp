@@ -1,0 +1,247 @@
+// Deferred shading and tiled deferred (issue 45) against the brute-force reference: the images within the G-buffer
+// format's bound (RGBA32F >= 60 dB, RGBA16F >= 50 dB) with point, spot and directional lights, the environment,
+// shadows and a transparent layer; every light that touches a pixel's surface shaded there (CPU truth,
+// lidr/eval/light_coverage.h): deferred's per-pixel count of light shaders run (the accumulation's alpha),
+// tiled deferred's tile lists; the stencil test shading fewer pixels than the back faces alone; the eye inside a
+// light's volume; MSAA refused with its reason.
+#include <algorithm>
+#include <memory>
+
+#include <catch2/catch.hpp>
+
+#include "gl_test_context.h"
+#include "lidr/base/error.h"
+#include "lidr/base/gl.h"
+#include "lidr/eval/image_compare.h"
+#include "lidr/eval/light_coverage.h"
+#include "lidr/modes/deferred_renderer.h"
+#include "lidr/modes/reference_renderer.h"
+#include "lidr/modes/render_mode.h"
+#include "lidr/modes/tiled_deferred_renderer.h"
+#include "lidr/scene/environment.h"
+#include "lidr/scene/primitives.h"
+#include "render_helpers.h"
+
+using namespace lidr;
+using namespace lidr::test;
+
+namespace {
+
+struct Variant {
+    std::string mode;  // "deferred" or "tiled-deferred"
+    bool stencil = true;
+    GBufferFormat format = GBufferFormat::Half;
+    std::string name() const {
+        return mode + (mode == "deferred" ? (stencil ? ", stencil" : ", no stencil") : "") + ", " +
+               gBufferFormatName(format);
+    }
+    double minPsnr() const { return format == GBufferFormat::Float ? 60.0 : 50.0; }
+};
+
+std::vector<Variant> variants() {
+    std::vector<Variant> v;
+    for (GBufferFormat f : {GBufferFormat::Half, GBufferFormat::Float}) {
+        v.push_back({"deferred", true, f});
+        v.push_back({"deferred", false, f});
+        v.push_back({"tiled-deferred", true, f});
+    }
+    return v;
+}
+
+std::unique_ptr<Renderer> build(const Variant& v, const Scene& scene, bool transparency = true) {
+    RenderModeOptions o;
+    o.mode = v.mode;
+    o.transparency = transparency;
+    o.deferred.stencil = v.stencil;
+    o.deferred.format = o.tiledDeferred.format = v.format;
+    return createRenderer(o, testGl(), scene, scene.width, scene.height);
+}
+
+ImageRGBA8 referenceImage(const Scene& scene, const std::vector<PointLight>& lights, const ShadingParameters& shading,
+                          bool transparency = true) {
+    ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, std::max<int>(1, int(lights.size())),
+                                false, 0, transparency);
+    reference.render(scene.camera, lights, shading);
+    return reference.targets().readColor();
+}
+
+PointLight spot(glm::vec3 position, glm::vec3 direction, float radius, float outer, glm::vec3 color) {
+    PointLight l = light(position, radius, color);
+    l.direction = glm::normalize(direction);
+    l.outerConeAngle = outer;
+    l.innerConeAngle = 0.5f * outer;
+    return l;
+}
+
+// The floor with 40 point lights, two spots, a sun and the environment: everything a pixel's shading adds.
+struct LitFloor {
+    Scene scene;
+    std::vector<PointLight> lights;
+    ShadingParameters shading;
+};
+LitFloor litFloor() {
+    LitFloor f{floorScene(), floorLights(40, 0.5f, 4.0f, 45), {}};
+    f.lights.push_back(spot({-2.0f, 4.0f, 1.0f}, {0.2f, -1.0f, -0.1f}, 9.0f, 0.6f, {1.0f, 0.8f, 0.5f}));
+    f.lights.push_back(spot({4.0f, 2.0f, -3.0f}, {-1.0f, -0.5f, 0.3f}, 8.0f, 0.4f, {0.4f, 0.6f, 1.0f}));
+    f.shading = sceneShading(f.scene);
+    f.shading.directionalLights = {DirectionalLight{{0.3f, -1.0f, 0.2f}, {0.3f, 0.25f, 0.2f}}};
+    f.shading.environment.map = defaultEnvironment();
+    f.shading.environment.intensity = 0.3f;
+    return f;
+}
+
+void requireWithinBound(const Variant& v, const ImageRGBA8& image, const ImageRGBA8& reference) {
+    const ImageError e = compareImages(image, reference);
+    INFO(v.name() << ": PSNR " << e.psnr << " dB, max " << e.maxAbsError << ", " << e.differingPixels << " of "
+                  << e.comparedPixels << " pixels differ");
+    REQUIRE(e.psnr >= v.minPsnr());
+}
+
+}  // namespace
+
+TEST_CASE("deferred and tiled deferred equal the reference within the G-buffer's bound: point, spot and sun lights, "
+          "the environment",
+          "[deferred][modes][every-gl]") {
+    testContext();
+    const Variant v = GENERATE(from_range(variants()));
+    if (!takeRow(v.format == GBufferFormat::Half)) return;
+    DYNAMIC_SECTION(v.name()) {
+        const LitFloor f = litFloor();
+        if (testGl().gles && v.format == GBufferFormat::Float) {  // OpenGL ES 2.0: no float colour buffers
+            REQUIRE_THROWS_AS(build(v, f.scene), UnsupportedError);
+            return;
+        }
+        const ImageRGBA8 reference = referenceImage(f.scene, f.lights, f.shading);
+        std::unique_ptr<Renderer> r = build(v, f.scene);
+        r->render(f.scene.camera, f.lights, f.shading);
+        requireWithinBound(v, r->targets().readColor(), reference);
+        CHECK(r->lastFrame().drawnLights > 0);
+        REQUIRE(glGetError() == GL_NO_ERROR);
+    }
+}
+
+TEST_CASE("deferred: every light touching a pixel's surface runs its shader there (spot lights in their cone meshes); the "
+          "stencil test runs fewer",
+          "[deferred][coverage]") {
+    testContext();
+    Scene scene = firstPersonScene();
+    std::vector<PointLight> lights = floorLights(60, 0.5f, 4.0f, 7);
+    for (int i = 0; i < 8; ++i)  // spot lights, drawn with the cone mesh: narrow and wide, aimed down and sideways
+        lights.push_back(spot({-6.0f + 1.7f * float(i), 1.0f + 0.4f * float(i % 3), -2.0f - float(i % 4)},
+                              {0.3f * float(i % 3 - 1), -1.0f, 0.4f * float(i % 2)}, 5.0f, 0.25f + 0.15f * float(i % 5),
+                              {0.8f, 0.7f, 0.5f}));
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    double computations[2] = {0.0, 0.0};
+    for (bool stencil : {false, true}) {
+        INFO((stencil ? "stencil" : "no stencil"));
+        DeferredOptions o;
+        o.stencil = stencil;
+        DeferredRenderer r(testGl(), scene, o, scene.width, scene.height);
+        r.render(scene.camera, lights, sceneShading(scene));
+        const CoverageTruth truth = computeCoverage(r.targets().readDepth(), cam, lights);
+        const std::vector<float> counts = r.gBuffer().readLightCounts();  // rows from the bottom
+        long truthPairs = 0, missing = 0;
+        for (int y = 0; y < scene.height; ++y)
+            for (int x = 0; x < scene.width; ++x) {
+                const size_t p = size_t(y) * scene.width + x;  // the truth's rows: top to bottom
+                const int ran = int(counts[size_t(scene.height - 1 - y) * scene.width + x] + 0.5f);
+                truthPairs += truth.count(p);
+                missing += std::max(0, truth.count(p) - ran);
+                computations[stencil] += ran;
+            }
+        INFO("truth pairs " << truthPairs << ", lighting computations " << computations[stencil]);
+        REQUIRE(truthPairs > 1000);
+        REQUIRE(missing == 0);
+        CHECK(computations[stencil] >= double(truthPairs));
+    }
+    CHECK(computations[1] < computations[0]);
+}
+
+TEST_CASE("tiled deferred: no light missing from any pixel's tile list", "[deferred][coverage]") {
+    testContext();
+    Scene scene = firstPersonScene();
+    const std::vector<PointLight> lights = floorLights(60, 0.5f, 4.0f, 8);
+    TiledDeferredRenderer r(testGl(), scene, TiledDeferredOptions{}, scene.width, scene.height);
+    r.render(scene.camera, lights, sceneShading(scene));
+    REQUIRE(r.depthBoundsUsed());
+    const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
+    const CoverageTruth truth = computeCoverage(r.targets().readDepth(), cam, lights);
+    const LightGrid& grid = r.grid();
+    std::vector<int> listOfPixel(size_t(scene.width) * scene.height);
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x)
+            listOfPixel[size_t(y) * scene.width + x] = grid.tileOf(x, scene.height - 1 - y);
+    const PixelListCheck c =
+        checkPixelLists(truth, listOfPixel, grid.entries(), grid.opaqueOffsets(), grid.opaqueCounts());
+    INFO("truth pairs " << c.truthPairs << ", extra per true pair " << c.extraPerTruePair());
+    REQUIRE(c.truthPairs > 1000);
+    REQUIRE(c.missingPairs == 0);
+    REQUIRE(c.surfaceWithoutList == 0);
+}
+
+TEST_CASE("deferred with the stencil test: lights around the eye and past the far plane are still exact",
+          "[deferred][every-gl]") {
+    testContext();
+    Scene scene = firstPersonScene();
+    std::vector<PointLight> lights = floorLights(20, 0.5f, 3.0f, 9);
+    lights.push_back(light(scene.camera.position + glm::vec3(0.2f, -0.3f, 0.1f), 5.0f, {0.6f, 0.5f, 0.4f}));
+    lights.push_back(light(scene.camera.position + glm::vec3(0.0f, 0.0f, 0.05f), 0.5f, {0.5f, 0.5f, 0.5f}));
+    const ShadingParameters shading = sceneShading(scene);
+    const ImageRGBA8 reference = referenceImage(scene, lights, shading);
+    DeferredOptions o;
+    o.stencil = true;
+    DeferredRenderer r(testGl(), scene, o, scene.width, scene.height);
+    r.render(scene.camera, lights, shading);
+    CHECK(r.backFaceLights() >= 1);  // the lights at the eye: their front faces are clipped
+    CHECK(r.stencilLights() >= 1);
+    requireWithinBound(Variant{"deferred", true, GBufferFormat::Half}, r.targets().readColor(), reference);
+}
+
+TEST_CASE("deferred and tiled deferred: a transparent layer forward over the deferred opaque frame, shadows on",
+          "[deferred][transparency][shadows][every-gl]") {
+    testContext();
+    Scene scene = firstPersonGlassScene();
+    PointLight caster = spot({1.0f, 5.0f, -4.0f}, {0.0f, -1.0f, -0.3f}, 10.0f, 0.7f, {1.0f, 0.9f, 0.7f});
+    caster.castsShadow = true;
+    scene.lights.push_back(caster);
+    ShadingParameters shading = sceneShading(scene);
+    shading.shadows.enabled = true;
+    shading.shadows.atlas.size = 512;
+    shading.shadows.atlas.tileSize = 128;
+    const ImageRGBA8 reference = referenceImage(scene, scene.lights, shading);
+    for (const Variant& v : {Variant{"deferred", true, GBufferFormat::Half},
+                             Variant{"tiled-deferred", true, GBufferFormat::Half}}) {
+        std::unique_ptr<Renderer> r = build(v, scene);
+        const FrameStats& stats = r->render(scene.camera, scene.lights, shading);
+        CHECK(stats.shadowCasters == 1);
+        requireWithinBound(v, r->targets().readColor(), reference);
+    }
+}
+
+TEST_CASE("deferred modes: their passes, G-buffer sizes and MSAA refused with the reason", "[deferred][every-gl]") {
+    testContext();
+    const Scene scene = floorScene();
+    DeferredRenderer deferred(testGl(), scene, DeferredOptions{}, scene.width, scene.height);
+    std::vector<std::string> names;
+    for (const FramePass& p : deferred.passes()) names.push_back(p.name);
+    CHECK(names == std::vector<std::string>{"shadow-maps", "light-table", "depth-prepass", "g-buffer", "light-volumes",
+                                            "deferred-composite", "deferred-transparent"});
+    CHECK(deferred.gBuffer().bytesPerPixel() == 32);
+    CHECK(GBuffer::bytesPerPixel(GBufferFormat::Float) == 64);
+    CHECK(deferred.lightDataBytes() == size_t(scene.width) * scene.height * 40);
+    for (const std::string mode : {"deferred", "tiled-deferred"}) {
+        RenderModeOptions o;
+        o.mode = mode;
+        o.msaaSamples = 4;
+        REQUIRE_THROWS_WITH(createRenderer(o, testGl(), scene, scene.width, scene.height),
+                            Catch::Contains(mode + ": MSAA needs a G-buffer per sample"));
+    }
+    REQUIRE_THROWS_WITH(parseGBufferFormat("rgba8"), Catch::Contains("valid: rgba16f, rgba32f"));
+    // A context without 4 draw buffers (ES 2.0 / WebGL 1 without EXT_draw_buffers) is refused naming the extension.
+    GlInfo withoutDrawBuffers = testGl();
+    withoutDrawBuffers.drawBuffers = false;
+    withoutDrawBuffers.gles = true;
+    REQUIRE_THROWS_WITH(DeferredRenderer(withoutDrawBuffers, scene, DeferredOptions{}, scene.width, scene.height),
+                        Catch::Contains("EXT_draw_buffers") && Catch::Contains("WEBGL_draw_buffers"));
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}
