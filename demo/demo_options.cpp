@@ -277,8 +277,9 @@ void RendererChoice::addOptions(CLI::App& app) {
                    "Light index width: auto (the narrowest for the visible lights) or 4, 8, 16 (with a named scheme)")
         ->capture_default_str();
     app.add_option("--volume-test", volumeTest,
-                   "Light volume test: auto (sphere; sphere-ray with MSAA; backface with --msaa-per-sample), sphere "
-                   "(exact, in the shader, batched), sphere-ray, backface, exact (stencil), frontface");
+                   "Light volume test: auto (sphere; sphere-span with MSAA; backface with --msaa-per-sample), sphere "
+                   "(exact, in the shader, batched), sphere-span (MSAA: every sample's surface), sphere-ray, backface, "
+                   "exact (stencil), frontface");
     app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
     app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
     app.add_flag("--msaa-per-sample", msaaPerSample,
@@ -467,7 +468,7 @@ LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
     else if (!depthBits.empty() && depthBits != "24")
         throw Error("--depth-bits must be 24, 16 or 16-emulated, got '" + depthBits + "'");
     o.volumeTest = volumeTest == "auto"
-                       ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereRay : VolumeTest::Sphere)
+                       ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereSpan : VolumeTest::Sphere)
                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = fixedLightTable;
     o.timingMethod = parseTimingMethod(timer);

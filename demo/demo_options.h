@@ -76,7 +76,7 @@ struct RendererChoice {
     std::string scheme = "auto";      // bit-shift, budget and width chosen per frame (doc/auto.md)
     std::string budget = "auto";      // or 1, 2, 4, 8, 16 (with a named scheme)
     std::string indexBits = "auto";   // or 4, 8, 16 (with a named scheme)
-    std::string volumeTest = "auto";  // sphere, or sphere-ray with MSAA (backface with per-sample lists)
+    std::string volumeTest = "auto";  // sphere, or sphere-span with MSAA (backface with per-sample lists)
     std::optional<int> msaa;           // unset: the scene's; set: 0 or a power of two (checked)
     std::string transparency = "scene";
     bool msaaPerSample = false;
