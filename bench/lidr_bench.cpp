@@ -351,7 +351,7 @@ void printNames() {
     std::cout << "render modes:   " << joinNames(availableModes()) << "\n"
               << "packing schemes: " << joinNames(packingSchemeNames()) << "\n"
               << "budgets, index widths: any; each scheme refuses what it cannot do (see --dry-run)\n"
-              << "volume tests:   sphere (the library's default), sphere-ray, backface, exact, frontface\n"
+              << "volume tests:   sphere (the library's default; sphere-span under MSAA), sphere-span, sphere-ray, backface, exact, frontface\n"
               << "cluster slicings: exponential, near-slice (clustered mode; tile sizes 4..256, slices 1..64)\n"
               << "scenes:         " << sceneNameHelp() << "\n";
 }
@@ -380,8 +380,8 @@ int main(int argc, char** argv) {
     app.add_option("--schemes", schemes, "Packing schemes for mode lidr (default: all the library has)");
     app.add_option("--budgets", budgets, "LIDR light slots per pixel")->capture_default_str();
     app.add_option("--index-bits", indexBits, "LIDR light index widths")->capture_default_str();
-    app.add_option("--volume-tests", volumeTests, "LIDR volume tests: sphere (the library's default), sphere-ray, backface, exact, frontface")->capture_default_str();
-    app.add_option("--msaa", msaa, "MSAA sample counts (0 = off); LIDR needs the frontface test for MSAA unless per-sample")->capture_default_str();
+    app.add_option("--volume-tests", volumeTests, "LIDR volume tests: sphere (the library's default; sphere-span under MSAA), sphere-span, sphere-ray, backface, exact, frontface")->capture_default_str();
+    app.add_option("--msaa", msaa, "MSAA sample counts (0 = off); LIDR's sphere test becomes sphere-span under MSAA (every sample's surface)")->capture_default_str();
     app.add_option("--per-sample", perSample, "With MSAA: LIDR per-sample index lists (GL 3.2) off, on")->capture_default_str();
     app.add_option("--transparency", transparency, "Transparent materials: on, off")->capture_default_str();
     app.add_option("--tiled-depth-bounds", tiledBounds, "Tiled mode with / without per-tile min/max depth: on, off")->capture_default_str();

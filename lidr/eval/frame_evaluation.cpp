@@ -63,7 +63,9 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     for (size_t p = 0; p < n; ++p)
         e.droppedMarks[p] = std::max(0, e.marked[p] - static_cast<int>(e.lists.decoded[p].size()));
     for (size_t p = 0; p < n; ++p) {
-        if (!e.truth.surface[p]) {
+        // sphere-span: a pixel whose centre sees background may still have samples on a surface (its span).
+        const bool surface = e.truth.surface[p] || (!e.spanTruth.surface.empty() && e.spanTruth.surface[p]);
+        if (!surface) {
             // Background: no opaque surface, but transparent layers in front of it read front-face lists.
             e.withinBudget[p] = e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= transparentBudget;
             continue;
