@@ -40,7 +40,7 @@ public:
                     bool forcePacked = false, bool halfZ = false, const RenderTargets* msaa = nullptr);
     // Clears depth, stencil and the depth copy, then draws the scene's opaque geometry.
     void prepass(const GpuScene& scene, const CameraMatrices& camera) const;
-    // MSAA, after prepass() and the MSAA pre-pass (the targets' multisampled depth): the samples' depth spans.
+    // MSAA, after prepass(): the MSAA pre-pass into the targets' multisampled depth, with the samples' depth spans.
     void samples(const GpuScene& scene, const CameraMatrices& camera) const;
     bool coversSamples() const { return spans_ != nullptr; }
     // Reduces the depth copy to one (min, max) per tile on the GPU and reads the result back.

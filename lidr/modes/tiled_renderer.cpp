@@ -126,9 +126,7 @@ void TiledRenderer::drawDepthPrepass(const CameraMatrices& cam) {
     if (depthBounds_) {
         depthBounds_->prepass(frame_.scene, cam);
         if (!depthBounds_->coversSamples()) return;
-        frame_.targets.bindColor();  // MSAA: the samples' depth, then the depths each pixel's samples shade
-        frame_.depthPrepass.run(frame_.scene, cam);
-        depthBounds_->samples(frame_.scene, cam);
+        depthBounds_->samples(frame_.scene, cam);  // MSAA: the samples' depth, with the depths they shade
     } else if (options_.preZ) {
         frame_.targets.bindColor();
         frame_.depthPrepass.run(frame_.scene, cam);

@@ -37,12 +37,15 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, b
 void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const {
     ClearAction clear;
     clear.color = true;  // 0: a sample no surface covers adds nothing to either bound
+    clear.depth = clear.stencil = true;
     StateCache& cache = StateCache::current();
     cache.beginPass(target_.pass(clear));
+    // The MSAA pre-pass itself (as DepthPrepass, the same vertex shader: the forward pass's EQUAL test holds):
+    // the nearest fragment of each sample writes last.
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = GL_EQUAL;  // the MSAA pre-pass's depth, per sample: each keeps its own surface's fragment
-    s.depthWrite = false;
+    s.depthFunc = GL_LESS;
+    s.depthWrite = true;
     cache.apply(s);
     program_.use();
     program_.set("uViewProj", camera.viewProjection);

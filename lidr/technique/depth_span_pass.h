@@ -5,9 +5,9 @@
 // primitive there), between a nearest and a farthest depth, and takes the lights whose sphere meets the eye ray
 // between those two. GL 2.1 reads no sample of a multisampled buffer, so the pass writes, per sample, how far
 // its surface's depth lies from the centre's (past and before), and the resolve averages them: times the sample
-// count each bound holds for every sample. One colour-only draw of the opaque meshes against the MSAA pre-pass
-// (depth EQUAL, as the forward pass) and one resolve; exact, with no neighbourhood guess and no sub-pixel
-// fallback. doc/msaa-transparency.md, "Edge pixels".
+// count each bound holds for every sample. The pass is the MSAA depth pre-pass (depth LESS with writes into the
+// targets' multisampled depth-stencil, the forward pass then tests EQUAL) with these colours written, and one
+// resolve; exact, with no neighbourhood guess and no sub-pixel fallback. doc/msaa-transparency.md, "Edge pixels".
 #include <vector>
 
 #include "lidr/base/image.h"
@@ -34,8 +34,8 @@ public:
     DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre = false);
     explicit operator bool() const { return bool(target_); }
 
-    // After the single-sample pre-pass (centreDepth: its copy) and the MSAA pre-pass (in targets' depth-stencil):
-    // draws the opaque meshes into the span target and resolves it. Leaves framebuffer 0 bound.
+    // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
+    // targets (the MSAA pre-pass) with the spans in colour, and resolves them. Leaves framebuffer 0 bound.
     void run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const;
     // The resolved spans (r: past the anchor, g: before it, times kStoreScale, averaged over the samples).
     const gl::Texture& texture() const { return target_.texture(); }

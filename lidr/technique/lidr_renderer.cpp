@@ -164,8 +164,9 @@ constexpr FramePass kLightVolumes{"light-volumes",
 constexpr FramePass kOverlapProbe{"overlap-probe", "stencil count", "overlap measure (occlusion queries)",
                                   "automatic budget"};
 constexpr FramePass kMsaaDepthPrepass{"msaa-depth-prepass", "scene", "depth (MSAA)"};
-constexpr FramePass kDepthSpans{"depth-spans", "scene, depth (MSAA), depth copy",
-                                "depth spans (the depths each pixel's samples shade)", "sphere-span (MSAA)"};
+constexpr FramePass kDepthSpans{"depth-spans", "scene, depth copy",
+                                "depth (MSAA), depth spans (the depths each pixel's samples shade)",
+                                "sphere-span (MSAA): the MSAA pre-pass"};
 constexpr FramePass kForward{"forward",
                              "scene, depth, index targets, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kForwardTransparent{"forward-transparent",
@@ -244,10 +245,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
 std::vector<FramePass> LidrRenderer::passes() const {
     std::vector<FramePass> p{pass::kShadowMaps};
     if (options_.depthPrepass) p.push_back(depthTexture_ ? kDepthPrepassCopy : kDepthPrepass);
-    if (depthSpans_) {
-        p.push_back(kMsaaDepthPrepass);
-        p.push_back(kDepthSpans);
-    }
+    if (depthSpans_) p.push_back(kDepthSpans);
     if (volumeTiles_ && options_.depthPrepass) p.push_back(kVolumeTiles);
     p.push_back(kFramePlan);
     if (transparentIndexTargets_) p.push_back(kLightVolumesTransparent);
@@ -397,12 +395,7 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
     }
     depthTime.end();
     if (!depthSpans_) return;
-    // sphere-span: the MSAA pre-pass first (the forward pass tests against it too), then the samples' spans.
-    {
-        TimedPass msaaDepthPrepassTime(frame_.timer, kMsaaDepthPrepass.name);
-        frame_.targets.bindColor();
-        frame_.depthPrepass.run(frame_.scene, cam);
-    }
+    // sphere-span: the MSAA pre-pass (the forward pass tests against it) writes the samples' spans as it goes.
     TimedPass depthSpansTime(frame_.timer, kDepthSpans.name);
     depthSpans_.run(frame_.scene, cam, depthTexture_);
     frame_.targets.bindSingleSample();

@@ -1,10 +1,14 @@
 #version 120
-// DepthSpanPass: drawn over the opaque meshes into a multisampled float target, depth-tested EQUAL against the
-// MSAA pre-pass, so each sample keeps what its own surface's fragment writes. A fragment (run once per pixel and
+// DepthSpanPass: the MSAA pre-pass, drawn over the opaque meshes into a multisampled float target (depth LESS
+// with writes), so each sample ends with what its own (nearest) surface's fragment writes. A fragment (run once per pixel and
 // primitive, at the pixel centre, where the forward pass shades that primitive too) writes how far its depth
 // lies past (r) and before (g) an anchor: the pixel centre's single-sample depth, or 0 and 1 where the centre
 // sees no surface. Samples no surface covers keep 0. The resolve averages: times the sample count, each channel
 // bounds every sample's, so the volume pass knows the depths [near, far] the pixel's samples shade.
+#ifdef LIDR_ALPHA_MASK  // the material variant of a MASK material: cut out as the pre-pass and the shading do
+#include "output_transform.glsl"
+#include "material.glsl"
+#endif
 #ifdef LIDR_CENTRE_PACKED
 #include "depth_pack.glsl"
 uniform sampler2D uDepth;      // the centre's depth packed in RGBA8 (tiled forward's pre-Z copy, depth_pack.glsl)
@@ -17,6 +21,9 @@ uniform float uStoreScale;     // half floats keep small differences better scal
 varying vec3 vWorldPos;        // interpolated as the forward pass interpolates it: the point it shades
 
 void main() {
+#ifdef LIDR_ALPHA_MASK
+    lidrAlphaTest(lidrBaseColor().a);
+#endif
     vec4 clip = uViewProj * vec4(vWorldPos, 1.0);
     float d = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
 #ifdef LIDR_CENTRE_PACKED
