@@ -25,29 +25,9 @@ LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
     return o;
 }
 
-// Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
-// an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
-PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
-    if (o.emulatedDepthBits != 0) {
-        if (o.emulatedDepthBits != 16)
-            throw Error("emulatedDepthBits is 0 (off) or 16, got " + std::to_string(o.emulatedDepthBits));
-        if (o.depthBits != 24)
-            throw Error("emulatedDepthBits rounds depth to 16 bits inside the 24-bit buffer: keep depthBits 24 "
-                        "(depthBits 16 is the real 16-bit buffer)");
-        if (o.msaaSamples > 0)
-            throw Error("emulatedDepthBits writes one depth per fragment, which would replace MSAA's per-sample "
-                        "depth: use it without MSAA");
-        if (!o.materialShader.empty())
-            throw Error("emulatedDepthBits needs lidr's own forward shader: a material shader does not write the "
-                        "rounded depth the pre-pass wrote");
-        if (info.gles)
-            throw UnsupportedError("emulatedDepthBits writes gl_FragDepth, which OpenGL ES 2.0 has only with "
-                                   "EXT_frag_depth: use a desktop GL context");
-    }
-    checkDepthBits(info, o.depthBits);
-    if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
-        throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
-                    " volume test needs the depth pre-pass; only frontface may skip it");
+// The MSAA options: per-sample index targets where the context has them, a volume test whose single-sample lists
+// cover every sample's surface.
+void checkMsaaOptions(const GlInfo& info, const LidrOptions& o) {
     if (o.perSampleIndices) {
         if (o.msaaSamples < 2) throw Error("per-sample index targets need MSAA (2 or more samples)");
         if (!info.multisampleTexture || !info.sampleShading)
@@ -72,6 +52,32 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
                     "per-sample index targets take backface, exact or frontface");
     if (o.perSampleIndices && !o.depthPrepass)
         throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
+}
+
+// Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
+// an automatic budget to its initial value, an automatic width to the narrowest for the scene's lights.
+PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrOptions& o) {
+    if (o.emulatedDepthBits != 0) {
+        if (o.emulatedDepthBits != 16)
+            throw Error("emulatedDepthBits is 0 (off) or 16, got " + std::to_string(o.emulatedDepthBits));
+        if (o.depthBits != 24)
+            throw Error("emulatedDepthBits rounds depth to 16 bits inside the 24-bit buffer: keep depthBits 24 "
+                        "(depthBits 16 is the real 16-bit buffer)");
+        if (o.msaaSamples > 0)
+            throw Error("emulatedDepthBits writes one depth per fragment, which would replace MSAA's per-sample "
+                        "depth: use it without MSAA");
+        if (!o.materialShader.empty())
+            throw Error("emulatedDepthBits needs lidr's own forward shader: a material shader does not write the "
+                        "rounded depth the pre-pass wrote");
+        if (info.gles)
+            throw UnsupportedError("emulatedDepthBits writes gl_FragDepth, which OpenGL ES 2.0 has only with "
+                                   "EXT_frag_depth: use a desktop GL context");
+    }
+    checkDepthBits(info, o.depthBits);
+    if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
+        throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
+                    " volume test needs the depth pre-pass; only frontface may skip it");
+    checkMsaaOptions(info, o);
     checkSamples(info, o.msaaSamples);
     // The shader tests read a depth texture; transparent layers under `sphere` take `sphere-ray`.
     if (isShaderVolumeTest(o.volumeTest) && !info.depthTexture)
