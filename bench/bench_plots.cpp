@@ -248,25 +248,14 @@ std::map<std::string, std::vector<std::pair<double, double>>> sweepLines(const s
     return lines;
 }
 
-}  // namespace
+using PlotJobs = std::vector<std::pair<std::string, std::string>>;  // png name, gnuplot script
 
-std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
-    std::vector<std::string> written;
-    if (rows_.empty()) {
-        message = "no rows measured, no plots";
-        return written;
-    }
-    if (!haveGnuplot()) {
-        message = "gnuplot not found: no plots written (CSV, JSON and summary.md are complete). Install Debian's "
-                  "gnuplot-nox (scripts/setup.sh does) and run lidr-bench again.";
-        return written;
-    }
-    const fs::path plotDir = fs::path(dir_) / "plots";
-    fs::create_directories(plotDir);
-    std::vector<std::pair<std::string, std::string>> jobs;  // png name, script
+// Per scene and size: time against error and the per-pass breakdown; the controlled-overlap scenes' rows as lines
+// against k.
+using OverlapLines = std::map<std::string, std::vector<std::pair<int, double>>>;
+void addScenePlots(PlotJobs& jobs, const std::vector<Row>& rows_, OverlapLines& overlapLines,
+                   OverlapLines& overlapErrors) {
     const std::vector<std::string> order = sceneOrder(rows_);
-    std::map<std::string, std::vector<std::pair<int, double>>> overlapLines, overlapErrors;
-    std::string overlapSize;
     for (const std::string& key : order) {
         std::vector<const Row*> rows;
         for (const Row& r : rows_)
@@ -296,7 +285,10 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
                 }
         }
     }
-    // The scaling sweeps: many-N-fp scenes against N, the room and heavy-T scenes against their triangles.
+}
+
+// The scaling sweeps: many-N-fp scenes against N, the room and heavy-T scenes against their triangles.
+void addSweepPlots(PlotJobs& jobs, const std::vector<Row>& rows_) {
     const auto lightLines = sweepLines(rows_, [](const Row& r) {
         const std::string& s = r.run.scene;
         return s.rfind("many-", 0) == 0 && s.size() > 3 && s.substr(s.size() - 3) == "-fp" ? double(r.sceneLights) : 0.0;
@@ -317,13 +309,21 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
         jobs.push_back({"triangles_time.png",
                         scalingPlot(triangleLines, "frame time against scene triangles (room, heavy-T scenes; 255 lights)",
                                     "triangles in the scene (log scale)", false)});
+}
+
+// Frame time and error against the overlap k of the controlled-overlap scenes.
+void addOverlapPlots(PlotJobs& jobs, const OverlapLines& overlapLines, const OverlapLines& overlapErrors) {
     if (!overlapLines.empty()) {
         jobs.push_back({"overlap_time.png", overlapPlot(overlapLines, "frame time against overlap k (controlled-overlap scenes)",
                                                         "", "frame time, ms (median, log scale)", true)});
         jobs.push_back({"overlap_error.png", overlapPlot(overlapErrors, "error against overlap k (controlled-overlap scenes)",
                                                          "", "RMSE against forward-brute (8-bit steps)", false)});
     }
-    std::string failures;
+}
+
+// Writes each job's script next to its PNG and runs gnuplot on it; returns the PNGs written, and the failures.
+std::vector<std::string> runGnuplot(PlotJobs& jobs, const fs::path& plotDir, std::string& failures) {
+    std::vector<std::string> written;
     for (auto& [png, script] : jobs) {
         const fs::path pngPath = plotDir / png;
         const fs::path gp = plotDir / (png.substr(0, png.size() - 4) + ".gp");
@@ -341,6 +341,30 @@ std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
             failures += (failures.empty() ? "" : ", ") + png;
         }
     }
+    return written;
+}
+
+}  // namespace
+
+std::vector<std::string> ReportWriter::writePlots(std::string& message) const {
+    if (rows_.empty()) {
+        message = "no rows measured, no plots";
+        return {};
+    }
+    if (!haveGnuplot()) {
+        message = "gnuplot not found: no plots written (CSV, JSON and summary.md are complete). Install Debian's "
+                  "gnuplot-nox (scripts/setup.sh does) and run lidr-bench again.";
+        return {};
+    }
+    const fs::path plotDir = fs::path(dir_) / "plots";
+    fs::create_directories(plotDir);
+    PlotJobs jobs;
+    OverlapLines overlapLines, overlapErrors;
+    addScenePlots(jobs, rows_, overlapLines, overlapErrors);
+    addSweepPlots(jobs, rows_);
+    addOverlapPlots(jobs, overlapLines, overlapErrors);
+    std::string failures;
+    const std::vector<std::string> written = runGnuplot(jobs, plotDir, failures);
     message = std::to_string(written.size()) + " plots in " + plotDir.string() +
               (failures.empty() ? "" : "; gnuplot failed on " + failures + " (see the .gp.log files)");
     return written;

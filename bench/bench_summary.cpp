@@ -45,11 +45,8 @@ void shadowSection(std::ostream& o, const std::vector<Row>& rows) {
     }
 }
 
-}  // namespace
-
-void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::string>& plots,
-                                const std::string& plotMessage) const {
-    std::ostringstream o;
+// summary.md's opening: status, run metadata, timing methods, and what the columns mean.
+void writeSummaryHeader(std::ostream& o, const RunInfo& info, const std::vector<Row>& rows_) {
     const auto& m = info.meta;
     o << "# lidr-bench results\n\n";
     o << "- status: " << (info.complete ? "complete" : info.interrupted ? "INTERRUPTED (rows so far)" : "incomplete") << ", "
@@ -74,6 +71,9 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
          "transparency; \"dropped\" counts (pixel, light) pairs a LIDR, tiled or clustered list missed against the CPU "
          "truth; \"per pair\": LIDR's volume-pass fragments per true light-pixel pair, tiled's and clustered's extra "
          "pairs (listed lights that do not touch the pixel's surface) per true pair.\n\n";
+}
+
+void writeSteadiness(std::ostream& o, const std::vector<Row>& rows_) {
     const Steadiness st = steadiness(rows_);
     o << "## Steadiness\n\n";
     o << "- verdict: **" << st.verdict << "**\n";
@@ -85,9 +85,10 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
     o << "- every configuration of a scene and size renders one frame per round, in turn; a ratio divides its frame "
          "time by the baseline's in the same round (forward-multipass where measured), so drift of the machine "
          "cancels out of it\n\n";
-    writeTargets(o, rows_);
+}
 
-    // One table per scene and size, in measurement order.
+// One table per scene and size, in measurement order.
+void writeSceneTables(std::ostream& o, const std::vector<Row>& rows_) {
     const std::vector<std::string> order = sceneOrder(rows_);
     o << "## Results per scene\n\nTimes are the median of the measured frames (min-max in brackets), in ms. "
          "\"ratio\" is the frame time over the baseline's in the same round, median (min-max) over the rounds; "
@@ -123,7 +124,11 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
               << " |\n";
         }
     }
-    shadowSection(o, rows_);
+}
+
+// The plots' links, and the skipped combinations collapsed by the library's reason.
+void writePlotsAndSkipped(std::ostream& o, const RunInfo& info, const std::vector<std::string>& plots,
+                          const std::string& plotMessage, const std::string& dir_) {
     o << "\n## Plots\n\n";
     if (plots.empty()) o << plotMessage << "\n";
     for (const std::string& p : plots) {
@@ -139,6 +144,19 @@ void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::stri
             o << "- " << what.size() << " x \"" << reason << "\" (e.g. " << what.front() << ")\n";
         }
     }
+}
+
+}  // namespace
+
+void ReportWriter::writeSummary(const RunInfo& info, const std::vector<std::string>& plots,
+                                const std::string& plotMessage) const {
+    std::ostringstream o;
+    writeSummaryHeader(o, info, rows_);
+    writeSteadiness(o, rows_);
+    writeTargets(o, rows_);
+    writeSceneTables(o, rows_);
+    shadowSection(o, rows_);
+    writePlotsAndSkipped(o, info, plots, plotMessage, dir_);
     std::ofstream out(fs::path(dir_) / "summary.md");
     out << o.str();
     if (!out) throw Error("cannot write summary.md in '" + dir_ + "'");

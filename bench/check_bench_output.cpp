@@ -77,39 +77,92 @@ bool isPng(const fs::path& p) {
     return f && std::memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0;
 }
 
-}  // namespace
+const std::set<std::string> kTextColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method",
+                                        "baseline", "cluster_slicing"};
+// Empty in a timing-only sweep (no reference): all of them or none.
+const std::set<std::string> kErrorColumns{"rmse", "psnr_db", "max_abs_error", "differing_pixels", "compared_pixels"};
 
-int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::cerr << "usage: lidr-bench-check DIR [--expect-plots] [--expect-sweep-plots] [--expect-interrupted] [--min-rows N]\n";
-        return 2;
-    }
-    const fs::path dir = argv[1];
-    bool expectPlots = false, expectSweepPlots = false, expectInterrupted = false;
-    size_t minRows = 1;
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--expect-plots") expectPlots = true;
-        else if (a == "--expect-sweep-plots") expectSweepPlots = true;
-        else if (a == "--expect-interrupted") expectInterrupted = true;
-        else if (a == "--min-rows" && i + 1 < argc) minRows = std::stoul(argv[++i]);
-        else { std::cerr << "unknown argument " << a << "\n"; return 2; }
-    }
-    const std::set<std::string> textColumns{"group", "scene", "mode", "config", "scheme", "volume_test", "timing_method",
-                                            "baseline", "cluster_slicing"};
-    // Empty in a timing-only sweep (no reference): all of them or none.
-    const std::set<std::string> errorColumns{"rmse", "psnr_db", "max_abs_error", "differing_pixels", "compared_pixels"};
-    auto col = [&](const std::string& name) {
-        const auto& cs = lidr::bench::resultColumns();
-        return size_t(std::find(cs.begin(), cs.end(), name) - cs.begin());
-    };
+size_t col(const std::string& name) {
+    const auto& cs = lidr::bench::resultColumns();
+    return size_t(std::find(cs.begin(), cs.end(), name) - cs.begin());
+}
+
+// What the rows of results.csv say about each other: each row's set and the baseline it names.
+struct RowSets {
     std::set<std::string> configsBySet;                       // "scene|WxH|config"
     std::vector<std::pair<std::string, std::string>> baselines;  // (row id, "scene|WxH|baseline")
+};
 
-    // results.csv
+// One results.csv row: every number finite and >= 0 where the mode has it, the frame and ratio statistics ordered.
+void checkResultRow(const std::vector<std::string>& row, RowSets& sets) {
+    const auto& columns = lidr::bench::resultColumns();
+    const auto& textColumns = kTextColumns;
+    const auto& errorColumns = kErrorColumns;
+    std::set<std::string>& configsBySet = sets.configsBySet;
+    std::vector<std::pair<std::string, std::string>>& baselines = sets.baselines;
+    double frames = 0, median = 0, lo = 0, hi = 0;
+    size_t emptyErrors = 0;
+    for (size_t c = 0; c < columns.size(); ++c) {
+        if (textColumns.count(columns[c])) continue;
+        double v = 0;
+        if (row[c].empty() && errorColumns.count(columns[c])) {
+            ++emptyErrors;
+            continue;
+        }
+        if (row[c].empty()) {  // not applicable to the mode: allowed only in the mode-specific columns
+            static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
+                "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
+                "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "auto_budget",
+                "auto_index_bits", "auto_repacks", "true_light_pixels", "volume_fragments",
+                "volume_fragments_per_light_pixel", "cluster_tile_size", "cluster_slices", "cluster_slicing",
+                "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
+            if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
+            continue;
+        }
+        if (!finiteNonNegative(row[c], v))
+            problem("results.csv row " + row[0] + ": " + columns[c] + " = '" + row[c] + "' is not a finite number >= 0");
+        if (columns[c] == "draw_calls" && v < 1)
+            problem("results.csv row " + row[0] + ": no draw call counted (the state cache's counters)");
+        if (columns[c] == "frames") frames = v;
+        if (columns[c] == "frame_ms_median") median = v;
+        if (columns[c] == "frame_ms_min") lo = v;
+        if (columns[c] == "frame_ms_max") hi = v;
+    }
+    if (frames < 1) problem("results.csv row " + row[0] + ": no measured frames");
+    if (!(lo <= median && median <= hi)) problem("results.csv row " + row[0] + ": frame median outside [min, max]");
+    if (row[7] == "lidr" && row[10].empty()) problem("results.csv row " + row[0] + ": a lidr row without a budget");
+    if (row[7] == "lidr" && row[9] == "auto" && (row[col("auto_budget")].empty() || row[col("auto_index_bits")].empty()))
+        problem("results.csv row " + row[0] + ": a lidr auto row without the budget and width it chose");
+    if (emptyErrors != 0 && emptyErrors != errorColumns.size())
+        problem("results.csv row " + row[0] + ": some error columns empty, others not");
+    // The interleaved rounds.
+    const std::string set = row[col("scene")] + "|" + row[col("width")] + "x" + row[col("height")] + "|";
+    configsBySet.insert(set + row[col("config")]);
+    const std::string& baseline = row[col("baseline")];
+    if (baseline.empty()) problem("results.csv row " + row[0] + ": no baseline named");
+    else baselines.push_back({row[0], set + baseline});
+    double rounds = 0, rMedian = 0, rMin = 0, rMax = 0;
+    const bool ok = finiteNonNegative(row[col("rounds")], rounds) &&
+                    finiteNonNegative(row[col("ratio_to_baseline_median")], rMedian) &&
+                    finiteNonNegative(row[col("ratio_to_baseline_min")], rMin) &&
+                    finiteNonNegative(row[col("ratio_to_baseline_max")], rMax);
+    if (ok) {
+        if (rounds < 1 || rounds != std::floor(rounds)) problem("results.csv row " + row[0] + ": rounds must be a whole number >= 1");
+        if (frames > rounds) problem("results.csv row " + row[0] + ": more measured frames than rounds");
+        if (!(rMin > 0 && rMedian > 0 && rMax > 0)) problem("results.csv row " + row[0] + ": a ratio to the baseline is not positive");
+        if (!(rMin <= rMedian && rMedian <= rMax)) problem("results.csv row " + row[0] + ": ratio median outside [min, max]");
+        if (row[col("config")] == baseline && std::fabs(rMedian - 1.0) > 1e-6)
+            problem("results.csv row " + row[0] + ": the baseline's ratio to itself is not 1");
+    }
+}
+
+// results.csv: the documented header, every row well formed, each row's baseline measured with it. Returns the
+// row ids and the line count.
+std::set<std::string> checkResultsCsv(const fs::path& dir, size_t minRows, size_t& lines) {
     const auto csv = readCsv(dir / "results.csv");
     const auto& columns = lidr::bench::resultColumns();
     std::set<std::string> ids;
+    RowSets sets;
     if (csv.empty() || csv[0] != columns) problem("results.csv header is not the documented column list");
     for (size_t r = 1; r < csv.size(); ++r) {
         const auto& row = csv[r];
@@ -118,65 +171,16 @@ int main(int argc, char** argv) {
             continue;
         }
         ids.insert(row[0]);
-        double frames = 0, median = 0, lo = 0, hi = 0;
-        size_t emptyErrors = 0;
-        for (size_t c = 0; c < columns.size(); ++c) {
-            if (textColumns.count(columns[c])) continue;
-            double v = 0;
-            if (row[c].empty() && errorColumns.count(columns[c])) {
-                ++emptyErrors;
-                continue;
-            }
-            if (row[c].empty()) {  // not applicable to the mode: allowed only in the mode-specific columns
-                static const std::set<std::string> optional{"budget", "index_bits", "tiled_depth_bounds",
-                    "light_volume_ms_median", "light_volume_share", "dropped_light_pixels", "pixels_with_drops",
-                    "pixels_over_budget", "max_marked", "invalid_slots", "psnr_within_budget_db", "auto_budget",
-                    "auto_index_bits", "auto_repacks", "true_light_pixels", "volume_fragments",
-                    "volume_fragments_per_light_pixel", "cluster_tile_size", "cluster_slices", "cluster_slicing",
-                    "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair"};
-                if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
-                continue;
-            }
-            if (!finiteNonNegative(row[c], v))
-                problem("results.csv row " + row[0] + ": " + columns[c] + " = '" + row[c] + "' is not a finite number >= 0");
-            if (columns[c] == "draw_calls" && v < 1)
-                problem("results.csv row " + row[0] + ": no draw call counted (the state cache's counters)");
-            if (columns[c] == "frames") frames = v;
-            if (columns[c] == "frame_ms_median") median = v;
-            if (columns[c] == "frame_ms_min") lo = v;
-            if (columns[c] == "frame_ms_max") hi = v;
-        }
-        if (frames < 1) problem("results.csv row " + row[0] + ": no measured frames");
-        if (!(lo <= median && median <= hi)) problem("results.csv row " + row[0] + ": frame median outside [min, max]");
-        if (row[7] == "lidr" && row[10].empty()) problem("results.csv row " + row[0] + ": a lidr row without a budget");
-        if (row[7] == "lidr" && row[9] == "auto" && (row[col("auto_budget")].empty() || row[col("auto_index_bits")].empty()))
-            problem("results.csv row " + row[0] + ": a lidr auto row without the budget and width it chose");
-        if (emptyErrors != 0 && emptyErrors != errorColumns.size())
-            problem("results.csv row " + row[0] + ": some error columns empty, others not");
-        // The interleaved rounds.
-        const std::string set = row[col("scene")] + "|" + row[col("width")] + "x" + row[col("height")] + "|";
-        configsBySet.insert(set + row[col("config")]);
-        const std::string& baseline = row[col("baseline")];
-        if (baseline.empty()) problem("results.csv row " + row[0] + ": no baseline named");
-        else baselines.push_back({row[0], set + baseline});
-        double rounds = 0, rMedian = 0, rMin = 0, rMax = 0;
-        const bool ok = finiteNonNegative(row[col("rounds")], rounds) &&
-                        finiteNonNegative(row[col("ratio_to_baseline_median")], rMedian) &&
-                        finiteNonNegative(row[col("ratio_to_baseline_min")], rMin) &&
-                        finiteNonNegative(row[col("ratio_to_baseline_max")], rMax);
-        if (ok) {
-            if (rounds < 1 || rounds != std::floor(rounds)) problem("results.csv row " + row[0] + ": rounds must be a whole number >= 1");
-            if (frames > rounds) problem("results.csv row " + row[0] + ": more measured frames than rounds");
-            if (!(rMin > 0 && rMedian > 0 && rMax > 0)) problem("results.csv row " + row[0] + ": a ratio to the baseline is not positive");
-            if (!(rMin <= rMedian && rMedian <= rMax)) problem("results.csv row " + row[0] + ": ratio median outside [min, max]");
-            if (row[col("config")] == baseline && std::fabs(rMedian - 1.0) > 1e-6)
-                problem("results.csv row " + row[0] + ": the baseline's ratio to itself is not 1");
-        }
+        checkResultRow(row, sets);
     }
-    for (const auto& [id, key] : baselines)
-        if (!configsBySet.count(key)) problem("results.csv row " + id + ": baseline " + key + " was not measured with it");
+    for (const auto& [id, key] : sets.baselines)
+        if (!sets.configsBySet.count(key)) problem("results.csv row " + id + ": baseline " + key + " was not measured with it");
     if (csv.size() < minRows + 1) problem("results.csv has " + std::to_string(csv.size() - (csv.empty() ? 0 : 1)) + " rows, expected at least " + std::to_string(minRows));
+    lines = csv.size();
+    return ids;
+}
 
+void checkPassesCsv(const fs::path& dir, const std::set<std::string>& ids) {
     // passes.csv
     const auto passes = readCsv(dir / "passes.csv");
     if (passes.empty() || passes[0] != lidr::bench::passColumns()) problem("passes.csv header is not the documented column list");
@@ -197,7 +201,11 @@ int main(int argc, char** argv) {
     for (const auto& id : ids)
         if (!idsWithPasses.count(id)) problem("row " + id + " has no per-pass times");
 
-    // results.json
+}
+
+// results.json: the run's metadata, steadiness, rows (as many as results.csv's) and status.
+void checkResultsJson(const fs::path& dir, size_t csvLines, bool expectInterrupted) {
+    const size_t csvSize = csvLines;
     nlohmann::json j;
     try {
         std::ifstream in(dir / "results.json");
@@ -218,7 +226,7 @@ int main(int argc, char** argv) {
             for (const char* k : {"frame_spread_median", "ratio_spread_median"})
                 if (!std::isfinite(st.at(k).get<double>()) || st.at(k).get<double>() < 0) problem(std::string("bad steadiness ") + k);
             const auto& rows = j.at("rows");
-            if (rows.size() + 1 != csv.size()) problem("results.json and results.csv disagree on the row count");
+            if (rows.size() + 1 != csvSize) problem("results.json and results.csv disagree on the row count");
             for (const auto& row : rows) {
                 const auto& t = row.at("timing");
                 if (t.at("method").get<std::string>().empty()) problem("a row without its timing method");
@@ -241,8 +249,9 @@ int main(int argc, char** argv) {
             problem(std::string("results.json lacks a field: ") + e.what());
         }
     }
-    if (!fs::exists(dir / "summary.md") || fs::file_size(dir / "summary.md") == 0) problem("no summary.md");
+}
 
+void checkPlots(const fs::path& dir, bool expectPlots, bool expectSweepPlots) {
     if (expectPlots) {
         int timeVsError = 0, passPlots = 0;
         if (fs::is_directory(dir / "plots"))
@@ -260,10 +269,36 @@ int main(int argc, char** argv) {
     if (expectSweepPlots)
         for (const char* png : {"lights_time.png", "triangles_time.png", "hall_lights_time.png"})
             if (!fs::exists(dir / "plots" / png) || !isPng(dir / "plots" / png)) problem(std::string("no sweep plot ") + png);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::cerr << "usage: lidr-bench-check DIR [--expect-plots] [--expect-sweep-plots] [--expect-interrupted] [--min-rows N]\n";
+        return 2;
+    }
+    const fs::path dir = argv[1];
+    bool expectPlots = false, expectSweepPlots = false, expectInterrupted = false;
+    size_t minRows = 1;
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--expect-plots") expectPlots = true;
+        else if (a == "--expect-sweep-plots") expectSweepPlots = true;
+        else if (a == "--expect-interrupted") expectInterrupted = true;
+        else if (a == "--min-rows" && i + 1 < argc) minRows = std::stoul(argv[++i]);
+        else { std::cerr << "unknown argument " << a << "\n"; return 2; }
+    }
+    size_t lines = 0;
+    const std::set<std::string> ids = checkResultsCsv(dir, minRows, lines);
+    checkPassesCsv(dir, ids);
+    checkResultsJson(dir, lines, expectInterrupted);
+    if (!fs::exists(dir / "summary.md") || fs::file_size(dir / "summary.md") == 0) problem("no summary.md");
+    checkPlots(dir, expectPlots, expectSweepPlots);
     if (problems) {
         std::cerr << problems << " problem(s) in " << dir << "\n";
         return 1;
     }
-    std::cout << "bench output in " << dir << " is well formed: " << (csv.size() - 1) << " rows\n";
+    std::cout << "bench output in " << dir << " is well formed: " << (lines - 1) << " rows\n";
     return 0;
 }

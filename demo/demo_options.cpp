@@ -26,19 +26,6 @@
 
 namespace lidr::demo {
 
-namespace {
-// "auto" (PackingConfig::kAuto) or one of `valid`; anything else names the option and the valid values.
-int parseAutoOrNumber(const std::string& text, const char* option, std::initializer_list<int> valid) {
-    if (text == "auto") return PackingConfig::kAuto;
-    std::string list = "auto";
-    for (int v : valid) {
-        list += ", " + std::to_string(v);
-        if (text == std::to_string(v)) return v;
-    }
-    throw Error(std::string(option) + " must be " + list + "; got '" + text + "'");
-}
-}  // namespace
-
 std::string defaultBartFolder() { return std::string(LIDR_SOURCE_DIR) + "/../shared/bart-robots"; }
 
 void SceneChoice::addOptions(CLI::App& app) {
@@ -149,6 +136,38 @@ float frameTimeOf(const Scene& scene, int frame) {
     return a.frameTime(frame);
 }
 
+namespace {
+// --lights N (with --light-radius, --spot-share): N seeded lights scattered over the scene's surfaces.
+void addScatteredLightsChosen(const SceneChoice& c, Scene& scene) {
+    const auto& lights = c.lights;
+    const auto& lightRadius = c.lightRadius;
+    const auto& spotShare = c.spotShare;
+    const unsigned seed = c.seed;
+    if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
+    if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");
+    if (lights) {
+        LightScatterOptions scatter;
+        scatter.count = *lights;
+        scatter.seed = seed;
+        if (lightRadius) {
+            if (!(std::isfinite(*lightRadius) && *lightRadius > 0.0 && *lightRadius <= double(maxLightRadius)))
+                throw Error("--light-radius must be a finite number > 0, got " + std::to_string(*lightRadius));
+            scatter.radius = float(*lightRadius);
+        }
+        if (spotShare) {
+            if (!(*spotShare >= 0.0 && *spotShare <= 1.0))
+                throw Error("--spot-share must be a number in [0, 1], got " + std::to_string(*spotShare));
+            scatter.spotShare = float(*spotShare);
+        }
+        addScatteredLights(scene, scatter);
+        std::cout << "lights     " << *lights << " scattered over the surfaces, radius "
+                  << (lightRadius ? *lightRadius : double(defaultScatterRadius(scene, *lights))) << ", seed " << seed
+                  << (scatter.spotShare > 0.0f ? ", spot share " + std::to_string(scatter.spotShare) : std::string())
+                  << "\n";
+    }
+}
+}  // namespace
+
 Scene SceneChoice::load() const {
     // Checked first, before the scene is built; float(time) must also stay finite.
     if (time && !(std::isfinite(*time) && *time >= 0.0 && *time <= double(std::numeric_limits<float>::max()))) {
@@ -202,28 +221,7 @@ Scene SceneChoice::load() const {
     }
     applyEnvironment(scene, model);
     if (!exportEnvironment.empty()) exportEnvironmentPanorama(scene, exportEnvironment);
-    if (lightRadius && !lights) throw Error("--light-radius sets the radius of --lights: give --lights N too");
-    if (spotShare && !lights) throw Error("--spot-share sets the spot lights among --lights: give --lights N too");
-    if (lights) {
-        LightScatterOptions scatter;
-        scatter.count = *lights;
-        scatter.seed = seed;
-        if (lightRadius) {
-            if (!(std::isfinite(*lightRadius) && *lightRadius > 0.0 && *lightRadius <= double(maxLightRadius)))
-                throw Error("--light-radius must be a finite number > 0, got " + std::to_string(*lightRadius));
-            scatter.radius = float(*lightRadius);
-        }
-        if (spotShare) {
-            if (!(*spotShare >= 0.0 && *spotShare <= 1.0))
-                throw Error("--spot-share must be a number in [0, 1], got " + std::to_string(*spotShare));
-            scatter.spotShare = float(*spotShare);
-        }
-        addScatteredLights(scene, scatter);
-        std::cout << "lights     " << *lights << " scattered over the surfaces, radius "
-                  << (lightRadius ? *lightRadius : double(defaultScatterRadius(scene, *lights))) << ", seed " << seed
-                  << (scatter.spotShare > 0.0f ? ", spot share " + std::to_string(scatter.spotShare) : std::string())
-                  << "\n";
-    }
+    addScatteredLightsChosen(*this, scene);
     if (defaultRig && addDefaultLightRig(scene))
         std::cout << "lights     none in the scene: the default rig (a key light at the eye, radius "
                   << scene.lights.back().radius
@@ -236,92 +234,41 @@ Scene SceneChoice::load() const {
 }
 
 void RendererChoice::addOptions(CLI::App& app) {
-    app.add_option("--mode", mode, "Render mode: " + renderModeList() + " (default: the scene's, else lidr)");
-    app.add_option("--tile-size", tileSize, "Tiled mode: tile edge in pixels")->capture_default_str();
-    app.add_flag("--no-depth-bounds", noDepthBounds, "Tiled mode: no per-tile min/max depth pruning");
-    app.add_flag("--half-z", halfZ, "Tiled mode: split each tile's depth range in two (half-Z)");
-    app.add_flag("--packed-depth", packedDepth, "Tiled mode: reduce depth in packed RGBA8 even with float targets");
-    const ClusteredOptions clustered;
-    app.add_option("--cluster-tile-size", clusterTileSize,
-                   "Clustered mode: screen tile edge in pixels, " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
-                       std::to_string(ClusterGrid::kMaxTileSize) + " (default " + std::to_string(clustered.tileSize) + ")");
-    app.add_option("--cluster-slices", clusterSlices,
-                   "Clustered mode: view-depth slices, 1.." + std::to_string(ClusterGrid::kMaxSlices) + " (default " +
-                       std::to_string(clustered.slices) + ")");
-    app.add_option("--cluster-slicing", clusterSlicing,
-                   std::string("Clustered mode: exponential (Doom's: near to far plane) or near-slice (Filament's: one "
-                               "slice to --cluster-light-near, exponential beyond) (default ") +
-                       clusterSlicingName(clustered.slicing) + ")");
-    app.add_option("--cluster-light-near", clusterLightNear,
-                   "Clustered mode, near-slice: the first slice's far end, view depth in scene units (default " +
-                       std::to_string(int(clustered.lightNear)) + ")");
-    app.add_option("--cluster-occupancy", clusterOccupancy,
-                   std::string("Clustered mode: on (the pre-Z depth read back, lists only for clusters holding a "
-                               "surface; not on ES 2.0/WebGL) or off (every cluster) (default ") +
-                       (clustered.occupiedClusters ? "on" : "off") + ")");
-    app.add_option("--multipass-accumulation", multipassAccumulation,
-                   "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "
-                   "8-bit colour target), 8-bit (the 8-bit target, to compare)")
-        ->capture_default_str();
-    std::string schemes;
-    for (const std::string& n : packingSchemeNames()) schemes += (schemes.empty() ? "" : ", ") + n;
-    app.add_option("--scheme", scheme,
-                   "Packing scheme: auto (default: bit-shift with the budget and index width chosen per frame, "
-                   "doc/auto.md), " + schemes +
-                       " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
-                       "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)");
-    app.add_option("--budget", budget,
-                   "Light slots per pixel: auto (measured per frame; bitshift) or 1, 2, 4, 8, 16 (with a named scheme)")
-        ->capture_default_str();
-    app.add_option("--index-bits", indexBits,
-                   "Light index width: auto (the narrowest for the visible lights) or 4, 8, 16 (with a named scheme)")
-        ->capture_default_str();
-    app.add_option("--volume-test", volumeTest,
-                   "Light volume test: auto (sphere; sphere-span with MSAA; backface with --msaa-per-sample), sphere "
-                   "(exact, in the shader, batched), sphere-span (MSAA: every sample's surface), sphere-ray, backface, "
-                   "exact (stencil), frontface");
-    app.add_option("--msaa", msaa, "MSAA samples: 0 (off), 2, 4, ... up to GL_MAX_SAMPLES (default: the scene's)");
-    app.add_option("--transparency", transparency, "Draw transparent materials: on, off, scene (default)");
-    app.add_flag("--msaa-per-sample", msaaPerSample,
-                 "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)");
-    app.add_flag("--volume-detail", volumeDetail,
-                 "Coarser light volumes (20 / 80 faces) for lights small on screen (LidrOptions::volumeDetail)");
-    app.add_option("--volume-tiles", volumeTiles,
-                   "Sphere test over depth-culled screen tiles: on (default; desktop GL) or off (volume meshes) "
-                   "(LidrOptions::tileCulledVolumes, doc/architecture.md)")
-        ->capture_default_str();
-    app.add_option("--volume-tile-size", volumeTileSize, "Tile size of --volume-tiles in pixels, 4..256")
-        ->capture_default_str();
-    app.add_option("--regional-indices", regionalIndices,
-                   "Over 255 lights with --volume-tiles: 8-bit indices numbered per screen region (on, default) or "
-                   "16-bit global ones (off) (LidrOptions::regionalIndices, doc/architecture.md)")
-        ->capture_default_str();
-    app.add_option("--depth-bits", depthBits,
-                   "LIDR depth precision: 24 (default), 16 (a 16-bit depth buffer with a separate stencil, where the "
-                   "driver holds it) or 16-emulated (16-bit levels inside the 24-bit buffer; doc/stability.md)");
-    app.add_option("--context", context, "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; --window: glfw or glfw-gles2)");
-    app.add_option("--timer", timer, "Pass timing: auto, gpu (timer queries), cpu (glFinish around each pass)");
-    app.add_flag("--fixed-light-table", fixedLightTable, "Use the RGBA8 fixed-point light table (no float textures)");
-    app.add_option("--tone-map", toneMap,
-                   std::string("Tone map of the linear frame before its sRGB encoding: ") + toneMapNames() +
-                       " (doc/colour.md)")
-        ->capture_default_str();
-    app.add_option("--exposure", exposure, "Exposure in stops: linear light x 2^stops before the tone map")
-        ->capture_default_str();
-    app.add_option("--shadows", shadows,
-                   "Shadow-casting lights: off (default), scene (the lights' own \"shadow\" flags: scene files, glTF "
-                   "extras.lidr.shadow) or K (the K brightest lights that can touch the view: colour luminance x range^2; "
-                   "doc/shadows.md)");
-    app.add_option("--shadow-lookup", shadowLookup,
-                   "Where LIDR applies shadows: forward (default: the forward pass looks each listed light up by index, "
-                   "the paper's second way; faster on llvmpipe) or volume (the volume pass also discards shadowed "
-                   "points, the paper's first way: shorter lists, for fixed budgets); the other modes look up as they shade");
-    app.add_option("--shadow-filter", shadowFilter,
-                   "Shadow-map lookups: nearest (default: one texel decides) or pcf (the four nearest texels, bilinear)");
-    app.add_option("--shadow-atlas", shadowAtlas,
-                   "Shadow atlas SIZE[:TILE] in texels, powers of two, TILE 16..SIZE, SIZE at most 8192 (default 4096 "
-                   "with the largest TILE up to 512 that holds every caster's maps: a spot light takes one tile, a point "
-                   "light six)");
+    for (const RenderOption& row : renderOptions()) {
+        const std::string name = row.name;
+        if (row.type == RenderOptionType::Flag) {
+            app.add_flag_callback("--" + name, [this, name] { set(name, "on"); }, row.help);
+            continue;
+        }
+        CLI::Option* option = app.add_option_function<std::string>(
+            "--" + name,
+            [this, name](const std::string& value) {
+                try {
+                    set(name, value);
+                } catch (const Error& e) {
+                    throw CLI::ValidationError(std::string("error: ") + e.what());  // the library's message
+                }
+            },
+            row.help);
+        option->type_name(row.typeName());
+        if (!row.defaultValue.empty()) option->default_str(row.defaultValue);
+        if (name == "depth-bits") // --context sits among the renderer's settings in --help, as before
+            app.add_option("--context", context,
+                           "GL context: auto, egl, egl-device, egl-gles2, glfw, glfw-gles2, osmesa (env LIDR_CONTEXT; "
+                           "--window: glfw or glfw-gles2)");
+    }
+}
+
+void printRenderOptions(std::ostream& out) {
+    auto join = [](const std::vector<std::string>& items, const char* none) {
+        std::string s;
+        for (const std::string& i : items) s += (s.empty() ? "" : ",") + i;
+        return s.empty() ? std::string(none) : s;
+    };
+    static const char* const kTypes[] = {"flag", "int", "number", "choice", "text"};
+    for (const RenderOption& o : renderOptions())
+        out << o.name << "\t" << kTypes[int(o.type)] << "\t" << (o.defaultValue.empty() ? "-" : o.defaultValue) << "\t"
+            << join(o.modes, "all") << "\t" << join(o.choices, "-") << "\n";
 }
 
 namespace {
@@ -336,6 +283,13 @@ long atlasNumber(const std::string& text, const std::string& whole) {
 
 ShadowChoice RendererChoice::shadowChoice(const std::string& mode) const {
     ShadowChoice c;
+    const std::string shadows = get("shadows");
+    const std::optional<std::string> shadowLookup =
+        given("shadow-lookup") ? std::optional<std::string>(get("shadow-lookup")) : std::nullopt;
+    const std::optional<std::string> shadowFilter =
+        given("shadow-filter") ? std::optional<std::string>(get("shadow-filter")) : std::nullopt;
+    const std::optional<std::string> shadowAtlas =
+        given("shadow-atlas") ? std::optional<std::string>(get("shadow-atlas")) : std::nullopt;
     if (shadows == "off") {
         for (const auto* given : {&shadowLookup, &shadowFilter, &shadowAtlas})
             if (*given)
@@ -419,114 +373,6 @@ std::string ShadowChoice::describe(const ShadowSettings& used) const {
     s << ", filter "
       << (settings.filtered ? "pcf" : "nearest");
     return s.str();
-}
-
-OutputTransform RendererChoice::outputTransform() const {
-    OutputTransform o;
-    o.toneMap = parseToneMap(toneMap, "--tone-map");
-    if (!std::isfinite(exposure) || exposure < -20.0 || exposure > 20.0)
-        throw Error("--exposure must be a number of stops from -20 to 20, got " + std::to_string(exposure));
-    o.exposureStops = float(exposure);
-    return o;
-}
-
-LidrOptions RendererChoice::lidrOptions(const Scene& scene) const {
-    LidrOptions o;
-    if (msaa) checkSampleCount(*msaa, "--msaa");
-    o.msaaSamples = msaa.value_or(scene.msaaSamples);
-    if (transparency == "on" || transparency == "scene")
-        o.transparency = transparency == "on" || scene.transparency;
-    else if (transparency == "off")
-        o.transparency = false;
-    else
-        throw Error("--transparency must be on, off or scene, got '" + transparency + "'");
-    o.packing.scheme = parsePackingScheme(scheme);
-    o.packing.budget = parseAutoOrNumber(budget, "--budget", {1, 2, 4, 8, 16});
-    o.packing.indexBits = parseAutoOrNumber(indexBits, "--index-bits", {4, 8, 16});
-    if (o.packing.autoScheme() && (o.packing.budget != PackingConfig::kAuto || o.packing.indexBits != PackingConfig::kAuto))
-        throw Error("--scheme auto chooses the budget and the index width itself: leave out --budget and --index-bits, "
-                    "or name a scheme (--scheme bitshift) to fix them");
-    if (!o.packing.autoScheme() && o.packing.scheme != PackingSchemeKind::BitShift &&
-        o.packing.budget == PackingConfig::kAuto)
-        throw Error("--budget auto is measured from bit-shift packing's stencil count; --scheme " + scheme +
-                    " needs --budget 1, 2, 4, 8 or 16");
-    o.perSampleIndices = msaaPerSample;
-    o.volumeDetail = volumeDetail;
-    if (volumeTiles != "on" && volumeTiles != "off")
-        throw Error("--volume-tiles must be on or off, got '" + volumeTiles + "'");
-    if (volumeTileSize < 4 || volumeTileSize > 256)
-        throw Error("--volume-tile-size must be in [4, 256], got " + std::to_string(volumeTileSize));
-    o.tileCulledVolumes = volumeTiles == "on";
-    if (regionalIndices != "on" && regionalIndices != "off")
-        throw Error("--regional-indices must be on or off, got '" + regionalIndices + "'");
-    o.regionalIndices = regionalIndices == "on";
-    o.volumeTileSize = volumeTileSize;
-    if (depthBits == "16")
-        o.depthBits = 16;
-    else if (depthBits == "16-emulated")
-        o.emulatedDepthBits = 16;
-    else if (!depthBits.empty() && depthBits != "24")
-        throw Error("--depth-bits must be 24, 16 or 16-emulated, got '" + depthBits + "'");
-    o.volumeTest = volumeTest == "auto"
-                       ? (msaaPerSample ? VolumeTest::BackFace : o.msaaSamples > 0 ? VolumeTest::SphereSpan : VolumeTest::Sphere)
-                       : parseVolumeTest(volumeTest);
-    o.forceFixedLightTable = fixedLightTable;
-    o.timingMethod = parseTimingMethod(timer);
-    return o;
-}
-
-RenderModeOptions RendererChoice::renderModeOptions(const Scene& scene) const {
-    RenderModeOptions o;
-    o.mode = mode.empty() ? scene.renderMode : mode;
-    if (!isRenderModeName(o.mode))
-        throw Error("unknown render mode '" + o.mode + "' (valid: " + renderModeList() + ")");
-    o.lidr = lidrOptions(scene);
-    if (!depthBits.empty() && o.mode != "lidr")
-        throw Error("--depth-bits sets LIDR's depth precision; the " + o.mode + " mode keeps 24-bit depth (use --mode lidr)");
-    o.msaaSamples = o.lidr.msaaSamples;
-    o.transparency = o.lidr.transparency;
-    o.timingMethod = o.lidr.timingMethod;
-    o.tiled.tileSize = tileSize;
-    o.tiled.depthBounds = !noDepthBounds;
-    o.tiled.forcePackedDepth = packedDepth;
-    o.tiled.halfZ = halfZ;
-    const bool clusterOptionSet =
-        clusterTileSize || clusterSlices || clusterSlicing || clusterOccupancy || clusterLightNear;
-    if (clusterOptionSet && o.mode != "clustered" && o.mode != "auto")
-        throw Error("--cluster-* options set the clustered mode's grid; the " + o.mode +
-                    " mode has none (use --mode clustered, or auto)");
-    if (clusterTileSize) {
-        if (*clusterTileSize < ClusterGrid::kMinTileSize || *clusterTileSize > ClusterGrid::kMaxTileSize)
-            throw Error("--cluster-tile-size must be " + std::to_string(ClusterGrid::kMinTileSize) + ".." +
-                        std::to_string(ClusterGrid::kMaxTileSize) + " pixels, got " + std::to_string(*clusterTileSize));
-        o.clustered.tileSize = *clusterTileSize;
-    }
-    if (clusterSlices) {
-        if (*clusterSlices < 1 || *clusterSlices > ClusterGrid::kMaxSlices)
-            throw Error("--cluster-slices must be 1.." + std::to_string(ClusterGrid::kMaxSlices) + ", got " +
-                        std::to_string(*clusterSlices));
-        o.clustered.slices = *clusterSlices;
-    }
-    if (clusterSlicing) o.clustered.slicing = parseClusterSlicing(*clusterSlicing);
-    if (clusterLightNear) {
-        if (o.clustered.slicing != ClusterSlicing::NearSlice)
-            throw Error("--cluster-light-near ends the first slice of --cluster-slicing near-slice; the slicing is " +
-                        std::string(clusterSlicingName(o.clustered.slicing)));
-        if (!(*clusterLightNear > 0.0f) || !std::isfinite(*clusterLightNear))
-            throw Error("--cluster-light-near must be a positive view depth, got " + std::to_string(*clusterLightNear));
-        o.clustered.lightNear = *clusterLightNear;
-    }
-    if (clusterOccupancy) {
-        if (*clusterOccupancy != "on" && *clusterOccupancy != "off")
-            throw Error("--cluster-occupancy must be on or off, got '" + *clusterOccupancy + "'");
-        o.clustered.occupiedClusters = *clusterOccupancy == "on";
-    }
-    if (multipassAccumulation != "auto" && multipassAccumulation != "8-bit")
-        throw Error("--multipass-accumulation must be auto or 8-bit, got '" + multipassAccumulation + "'");
-    o.multipass.halfFloatAccumulation = multipassAccumulation == "auto";
-    o.forceFixedLightTable = fixedLightTable;
-    outputTransform();  // checked with the rest, before any context; the frame loop reads it again
-    return o;
 }
 
 void checkTargetMemory(const Scene& scene, const RenderModeOptions& options) {

@@ -8,6 +8,7 @@
 #include "lidr/platform/context.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/render_options.h"
 #include "lidr/render/renderer.h"
 #include "lidr/scene/scene.h"
 
@@ -62,46 +63,30 @@ struct ShadowChoice {
     std::string describe(const ShadowSettings& used) const;
 };
 
+// The renderer settings, by name, as lidr::renderOptions() declares them (lidr/modes/render_options.h): the command
+// line is made from that table and checked by it, and the viewer changes the same values.
 struct RendererChoice {
-    std::string mode;  // empty: the scene's ("lidr" unless its file says otherwise)
-    int tileSize = 32;
-    bool noDepthBounds = false;
-    bool packedDepth = false;
-    bool halfZ = false;
-    // The clustered mode's grid (ClusteredOptions); unset: the library's defaults. Refused with other modes.
-    std::optional<int> clusterTileSize, clusterSlices;
-    std::optional<std::string> clusterSlicing, clusterOccupancy;
-    std::optional<float> clusterLightNear;
-    std::string multipassAccumulation = "auto";  // or 8-bit (MultipassOptions::halfFloatAccumulation false)
-    std::string scheme = "auto";      // bit-shift, budget and width chosen per frame (doc/auto.md)
-    std::string budget = "auto";      // or 1, 2, 4, 8, 16 (with a named scheme)
-    std::string indexBits = "auto";   // or 4, 8, 16 (with a named scheme)
-    std::string volumeTest = "auto";  // sphere, or sphere-span with MSAA (backface with per-sample lists)
-    std::optional<int> msaa;           // unset: the scene's; set: 0 or a power of two (checked)
-    std::string transparency = "scene";
-    bool msaaPerSample = false;
-    bool volumeDetail = false;
-    std::string volumeTiles = "on";
-    int volumeTileSize = 16;
-    std::string regionalIndices = "on";
-    std::string depthBits;  // empty: 24
-    std::string context = "auto";
-    bool fixedLightTable = false;
-    std::string timer = "auto";
-    std::string toneMap = "pbr-neutral";
-    double exposure = 0.0;  // stops
-    std::string shadows = "off";            // off, scene, or K (doc/shadows.md, "Casters, tools and cost")
-    std::optional<std::string> shadowLookup, shadowFilter, shadowAtlas;  // unset: volume, nearest, 4096 (tile automatic)
+    RenderOptionValues values;   // checked (setRenderOption); a name left out takes its default
+    std::string context = "auto";  // the GL context (lidr/platform/context.h): not a renderer setting
+    // The value of `name` (given or default), whether it was given, and a checked change.
+    std::string get(const std::string& name) const { return renderOptionValue(values, name); }
+    bool given(const std::string& name) const { return values.count(name) != 0; }
+    void set(const std::string& name, const std::string& value) { setRenderOption(values, name, value); }
+    std::string mode() const { return get("mode"); }  // empty: the scene's
+    // One command-line option per renderOptions() row (and --context), each checked as it is parsed.
     void addOptions(CLI::App& app);
     // --shadows and the --shadow-* options, checked against each other and the mode; throws lidr::Error.
     ShadowChoice shadowChoice(const std::string& mode) const;
-    // --tone-map and --exposure; throws lidr::Error on a bad name or an exposure outside [-20, 20] stops.
-    OutputTransform outputTransform() const;
-    LidrOptions lidrOptions(const Scene& scene) const;  // throws lidr::Error on a bad name
-    // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error on a bad name.
-    RenderModeOptions renderModeOptions(const Scene& scene) const;
+    OutputTransform outputTransform() const { return outputTransformFrom(values); }
+    LidrOptions lidrOptions(const Scene& scene) const { return lidrOptionsFrom(values, scene); }
+    // Every mode's settings; the mode is --mode, else the scene's. Throws lidr::Error.
+    RenderModeOptions renderModeOptions(const Scene& scene) const { return renderModeOptionsFrom(values, scene); }
     ContextOptions contextOptions() const;
 };
+
+// lidr-demo --list-options: every renderOptions() row as NAME, TYPE, DEFAULT ("-": none), MODES ("all" or
+// comma-separated), CHOICES (comma-separated, "-": none), tab-separated, one a line.
+void printRenderOptions(std::ostream& out);
 
 // Throws lidr::Error when the render targets the options ask for would need more than maxRenderTargetBytes
 // (lidr/gl/render_targets.h); called after the scene is loaded and before any context is created.

@@ -35,6 +35,7 @@
 #include "lidr/render/shadow_casters.h"
 #include "lidr/technique/lidr_renderer.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/render_options.h"
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/modes/clustered_renderer.h"
 #include "lidr/modes/auto_mode_renderer.h"

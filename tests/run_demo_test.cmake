@@ -158,7 +158,7 @@ endforeach()
 set(bad_values
   "--mode|clustered|--cluster-tile-size|2@--cluster-tile-size must be 4..256 pixels, got 2"
   "--mode|clustered|--cluster-slices|65@--cluster-slices must be 1..64, got 65"
-  "--mode|clustered|--cluster-slicing|linear@unknown cluster slicing 'linear' \\(valid: exponential, near-slice\\)"
+  "--mode|clustered|--cluster-slicing|linear@--cluster-slicing must be exponential or near-slice, got 'linear'"
   "--mode|clustered|--cluster-slicing|exponential|--cluster-light-near|4@--cluster-light-near ends the first slice of --cluster-slicing near-slice"
   "--mode|clustered|--cluster-light-near|0@--cluster-light-near must be a positive view depth, got 0"
   "--mode|clustered|--cluster-occupancy|maybe@--cluster-occupancy must be on or off, got 'maybe'"
@@ -171,7 +171,7 @@ set(bad_values
   "--scene|/dev/null@/dev/null: scene file is not a regular file"
   "--scene|${OUT}@scene file is a directory"
   "--scheme|auto|--budget|4@--scheme auto chooses the budget and the index width itself"
-  "--index-bits|12@--index-bits must be auto, 4, 8, 16.*got '12'"
+  "--index-bits|12@--index-bits must be auto, 4, 8 or 16, got '12'"
   "--scheme|max-stencil@--scheme max-stencil needs --budget 1, 2, 4, 8 or 16"
   "--dump|${OUT}/a-file/dump@--dump: cannot create folder '.*a-file/dump'"
   "--scene|${OUT}/version-1.gltf@version-1.gltf: /asset/version: glTF 1.0 is not 2.x"

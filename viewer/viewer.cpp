@@ -64,9 +64,9 @@ Viewer::Viewer(const demo::SceneChoice& sceneChoice, const demo::RendererChoice&
     // The settings as the UI shows them: the scene's choices made explicit.
     rc_ = rc;
     const RenderModeOptions first = rc.renderModeOptions(scene_);  // throws on a bad name
-    rc_.mode = first.mode;
-    rc_.msaa = first.msaaSamples;
-    rc_.transparency = first.transparency ? "on" : "off";
+    rc_.set("mode", first.mode);
+    rc_.set("msaa", std::to_string(first.msaaSamples));
+    rc_.set("transparency", first.transparency ? "on" : "off");
     demo::checkTargetMemory(scene_, first);
     initialChoice_ = rc_;
     shading_ = sceneShading(scene_);

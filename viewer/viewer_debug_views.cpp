@@ -48,7 +48,7 @@ bool Viewer::viewAvailable(View v, std::string* why) const {
         case View::Overlap:
         case View::Marked:
             if (!lidrMode) return no("index lists and light counts exist in the lidr mode only");
-            if (rc_.msaaPerSample) return no("per-sample index targets are multisample textures: they cannot be read back");
+            if (rc_.get("msaa-per-sample") == "on") return no("per-sample index targets are multisample textures: they cannot be read back");
             return true;
         case View::TileHeatMap:
             if (!dynamic_cast<const TiledRenderer*>(&drawingRenderer()) &&

@@ -34,9 +34,11 @@ void Viewer::onKeyPress(int key, int mods) {
         case GLFW_KEY_C: computeRequested_ = true; break;
         case GLFW_KEY_TAB: showUi_ = !showUi_; break;
         case GLFW_KEY_M: {  // next mode (Shift: previous)
-            int i = 0;
-            while (i < kModeCount && rc_.mode != kModes[i]) ++i;
-            changeSetting("mode", kModes[(i + (shift ? kModeCount - 1 : 1)) % kModeCount]);
+            const std::vector<std::string>& modes = renderModeNames();
+            const size_t n = modes.size();
+            size_t i = 0;
+            while (i < n && rc_.mode() != modes[i]) ++i;
+            changeSetting("mode", modes[(i + (shift ? n - 1 : 1)) % n]);
             break;
         }
         case GLFW_KEY_V: {  // next available view

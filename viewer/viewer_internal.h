@@ -17,19 +17,7 @@ struct ScriptFailure : Error {
     using Error::Error;
 };
 
-inline constexpr const char* kModes[] = {"lidr", "tiled", "clustered", "forward-multipass", "forward-brute", "auto"};
-constexpr int kModeCount = 6;
-inline constexpr const char* kSchemes[] = {"auto", "bitshift", "max-stencil", "cpu-sorted"};
-inline constexpr const char* kBudgets[] = {"auto", "1", "2", "4", "8", "16"};
-inline constexpr const char* kIndexBits[] = {"auto", "4", "8", "16"};
-inline constexpr const char* kVolumeTests[] = {"auto", "sphere", "sphere-span", "sphere-ray", "backface", "exact", "frontface"};
-inline constexpr int kMsaa[] = {0, 2, 4, 8, 16};
-inline constexpr int kTileSizes[] = {8, 16, 32, 64};
-inline constexpr int kClusterTileSizes[] = {16, 32, 64, 128};
-inline constexpr int kClusterSlices[] = {1, 8, 16, 32, 64};
-inline constexpr const char* kClusterSlicings[] = {"exponential", "near-slice"};
-inline constexpr const char* kShadows[] = {"off", "scene", "1", "8", "32", "128"};  // off, the scene's own, K brightest
-inline constexpr const char* kShadowLookups[] = {"forward", "volume"};
+// The renderer settings' menus take their values from lidr::renderOptions() (viewer_panel.cpp).
 
 // GLFW's key callback (viewer_input.cpp): forwards presses to Viewer::onKeyPress unless ImGui takes text.
 void keyCallback(GLFWwindow* w, int key, int scancode, int action, int mods);

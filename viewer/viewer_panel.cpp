@@ -28,6 +28,9 @@ std::string bytesText(double b) {
     return s;
 }
 
+// A setting's values for its menu, from the library's table of options (lidr/modes/render_options.h).
+const std::vector<std::string>& choices(const char* name) { return findRenderOption(name)->choices; }
+
 }  // namespace
 
 void Viewer::uiSettings() {
@@ -52,39 +55,41 @@ void Viewer::uiSettings() {
     };
     auto always = [](const auto&, std::string*) { return true; };
     const GlInfo& info = context_->info();
-    combo("mode (M)", rc_.mode, kModes, "mode", str, always);
-    const bool lidrMode = rc_.mode == "lidr";
+    combo("mode (M)", rc_.mode(), renderModeNames(), "mode", str, always);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", renderModeDescription(rc_.mode()).c_str());
+    const std::string mode = rc_.mode(), scheme = rc_.get("scheme");
+    const bool lidrMode = mode == "lidr";
     ImGui::BeginDisabled(!lidrMode);
-    combo("scheme", rc_.scheme, kSchemes, "scheme", str, always);
-    ImGui::BeginDisabled(rc_.scheme == "auto");
-    combo("budget", rc_.budget, kBudgets, "budget", str, [&](const char* b, std::string* why) {
-        if (std::string(b) == "auto" && rc_.scheme != "bitshift" && rc_.scheme != "auto") {
+    combo("scheme", scheme, choices("scheme"), "scheme", str, always);
+    ImGui::BeginDisabled(scheme == "auto");
+    combo("budget", rc_.get("budget"), choices("budget"), "budget", str, [&](const std::string& b, std::string* why) {
+        if (b == "auto" && scheme != "bitshift" && scheme != "auto") {
             *why = "an automatic budget is measured from bit-shift packing's stencil count";
             return false;
         }
         return true;
     });
-    combo("index bits", rc_.indexBits, kIndexBits, "index-bits", str, always);
+    combo("index bits", rc_.get("index-bits"), choices("index-bits"), "index-bits", str, always);
     ImGui::EndDisabled();
-    if (rc_.scheme == "auto" && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    if (scheme == "auto" && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("the automatic scheme chooses budget and index width per frame: name a scheme to fix them");
-    combo("volume test", rc_.volumeTest, kVolumeTests, "volume-test", str, always);
-    bool detail = rc_.volumeDetail;
+    combo("volume test", rc_.get("volume-test"), choices("volume-test"), "volume-test", str, always);
+    bool detail = rc_.get("volume-detail") == "on";
     if (ImGui::Checkbox("coarse volumes for small lights", &detail)) changeSetting("volume-detail", detail ? "on" : "off");
     ImGui::EndDisabled();
     if (!lidrMode && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("scheme, budget, index width and volume test are the lidr mode's");
-    ImGui::BeginDisabled(rc_.mode != "tiled");
-    combo("tile size", std::to_string(rc_.tileSize), kTileSizes, "tile-size", str, always);
-    bool bounds = !rc_.noDepthBounds, halfZ = rc_.halfZ;
+    ImGui::BeginDisabled(mode != "tiled");
+    combo("tile size", rc_.get("tile-size"), choices("tile-size"), "tile-size", str, always);
+    bool bounds = rc_.get("no-depth-bounds") != "on", halfZ = rc_.get("half-z") == "on";
     if (ImGui::Checkbox("tile depth bounds", &bounds)) changeSetting("depth-bounds", bounds ? "on" : "off");
     ImGui::SameLine();
     if (ImGui::Checkbox("half-Z", &halfZ)) changeSetting("half-z", halfZ ? "on" : "off");
     ImGui::EndDisabled();
-    ImGui::BeginDisabled(rc_.mode != "clustered" && rc_.mode != "auto");
-    combo("cluster tile size", setting("cluster-tile-size"), kClusterTileSizes, "cluster-tile-size", str, always);
-    combo("depth slices", setting("cluster-slices"), kClusterSlices, "cluster-slices", str, always);
-    combo("slicing", setting("cluster-slicing"), kClusterSlicings, "cluster-slicing", str, always);
+    ImGui::BeginDisabled(!findRenderOption("cluster-slices")->usedBy(mode));
+    combo("cluster tile size", setting("cluster-tile-size"), choices("cluster-tile-size"), "cluster-tile-size", str, always);
+    combo("depth slices", setting("cluster-slices"), choices("cluster-slices"), "cluster-slices", str, always);
+    combo("slicing", setting("cluster-slicing"), choices("cluster-slicing"), "cluster-slicing", str, always);
     bool occupied = setting("cluster-occupancy") == "on";
     ImGui::BeginDisabled(!info.readDepthStencil);
     if (ImGui::Checkbox("occupied clusters only", &occupied)) changeSetting("cluster-occupancy", occupied ? "on" : "off");
@@ -92,7 +97,8 @@ void Viewer::uiSettings() {
     if (!info.readDepthStencil && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("occupied clusters read the depth back, which this context cannot");
     ImGui::EndDisabled();
-    combo("MSAA", std::to_string(rc_.msaa.value_or(0)), kMsaa, "msaa", str, [&](int s, std::string* why) {
+    combo("MSAA", setting("msaa"), choices("msaa"), "msaa", str, [&](const std::string& text, std::string* why) {
+        const int s = std::stoi(text);
         if (s == 0) return true;
         if (!info.multisampleFbo) {
             *why = "this context has no multisample framebuffers";
@@ -104,20 +110,20 @@ void Viewer::uiSettings() {
         }
         return true;
     });
-    bool perSample = rc_.msaaPerSample;
+    bool perSample = rc_.get("msaa-per-sample") == "on";
     const bool perSampleOk = info.multisampleTexture && info.sampleShading;
     ImGui::BeginDisabled(!lidrMode || !perSampleOk);
     if (ImGui::Checkbox("per-sample index lists", &perSample)) changeSetting("per-sample", perSample ? "on" : "off");
     ImGui::EndDisabled();
     if (!perSampleOk && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("needs GL 3.2 multisample textures and sample shading; this context has GL %s", info.version.c_str());
-    bool transparency = rc_.transparency == "on";
+    bool transparency = rc_.get("transparency") == "on";
     if (ImGui::Checkbox("transparency", &transparency)) changeSetting("transparency", transparency ? "on" : "off");
-    combo("shadows", rc_.shadows, kShadows, "shadows", str, always);
-    bool pcf = rc_.shadowFilter.value_or("nearest") == "pcf";
+    combo("shadows", rc_.get("shadows"), choices("shadows"), "shadows", str, always);
+    bool pcf = rc_.get("shadow-filter") == "pcf";
     if (ImGui::Checkbox("filtered shadow edges", &pcf)) changeSetting("shadow-filter", pcf ? "pcf" : "nearest");
     ImGui::BeginDisabled(!lidrMode);
-    combo("shadow lookup", rc_.shadowLookup.value_or("forward"), kShadowLookups, "shadow-lookup", str, always);
+    combo("shadow lookup", rc_.get("shadow-lookup"), choices("shadow-lookup"), "shadow-lookup", str, always);
     ImGui::EndDisabled();
     if (!lidrMode && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("where LIDR applies shadows: the volume pass's test or the forward pass's lookup");
@@ -188,9 +194,9 @@ void Viewer::uiStats() {
         ImGui::TextWrapped("auto mode: drawing with %s; %s", autoMode->lastMode().c_str(), autoMode->reason().c_str());
     // The index targets the last frame used (an automatic budget and width change them).
     const unsigned long long targets = estimateRenderTargetBytes(
-        width_, height_, rc_.msaa.value_or(0),
+        width_, height_, std::stoi(setting("msaa")),
         lidrRenderer ? indexBytesPerPixel(lidrRenderer->scheme().config().budget, lidrRenderer->scheme().config().indexBits) : 0,
-        lidrRenderer && rc_.msaaPerSample);
+        lidrRenderer && rc_.get("msaa-per-sample") == "on");
     size_t table = 0;
     if (auto* l = dynamic_cast<const LidrRenderer*>(&drawingRenderer())) table = l->frame().lightTable.bytes();
     if (auto* t = dynamic_cast<const TiledRenderer*>(&drawingRenderer())) table = t->frame().lightTable.bytes();
@@ -257,7 +263,7 @@ void Viewer::buildUi(int fbw, int fbh) {
         const int maxL = maxLightsFor(rc_);
         if (ImGui::SliderInt("lights", &lights, 0, maxL) && lights != lightCount_) changeSetting("lights", std::to_string(lights));
         if (maxL < int(scene_.lights.size()))
-            ImGui::TextDisabled("%s-bit indices hold %d lights: the slider stops there", rc_.indexBits.c_str(), maxL);
+            ImGui::TextDisabled("%s-bit indices hold %d lights: the slider stops there", rc_.get("index-bits").c_str(), maxL);
         const glm::vec3 p = camera_.position();
         ImGui::Text("camera (%.2f, %.2f, %.2f), yaw %.0f, pitch %.0f", double(p.x), double(p.y), double(p.z),
                     double(glm::degrees(camera_.yaw())), double(glm::degrees(camera_.pitch())));

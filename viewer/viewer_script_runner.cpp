@@ -225,12 +225,12 @@ void Viewer::runAction(const ScriptAction& a, int fbw, int fbh) {
                   << std::endl;
         std::string why;
         for (View view : {View::IndexLists, View::Overlap, View::Marked})
-            if (viewAvailable(view, &why) != (lidrDrew && !rc_.msaaPerSample))
+            if (viewAvailable(view, &why) != (lidrDrew && rc_.get("msaa-per-sample") != "on"))
                 fail(std::string("view ") + viewName(view) + (lidrDrew ? " not offered: " + why : " offered"));
         if (viewAvailable(View::TileHeatMap, &why) != tiledDrew)
             fail(std::string("the light-list heat map ") + (tiledDrew ? "not offered: " + why : "offered"));
         if (!eval_.valid || dirty_) fail("no up-to-date figures: add 'compute' first");
-        if (eval_.listsChecked != (lidrDrew && !rc_.msaaPerSample))
+        if (eval_.listsChecked != (lidrDrew && rc_.get("msaa-per-sample") != "on"))
             fail(lidrDrew ? "the index lists of the LIDR frame were not checked" : "index lists checked without LIDR");
         if (lidrDrew && (eval_.images.count(View::IndexLists) == 0 || eval_.images.at(View::IndexLists).width != width_))
             fail("no index-list image of the frame's size");

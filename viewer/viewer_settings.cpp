@@ -14,16 +14,16 @@ namespace lidr::viewer {
 int Viewer::maxLightsFor(const demo::RendererChoice& rc) const {
     const int sceneLights = int(scene_.lights.size());
     // (An automatic index width widens to what the visible lights need, up to 16 bits.)
-    if (rc.mode != "lidr" || rc.scheme == "auto") return sceneLights;
+    if (rc.mode() != "lidr" || rc.get("scheme") == "auto") return sceneLights;
     for (int bits : {4, 8, 16})
-        if (rc.indexBits == std::to_string(bits)) return std::min(sceneLights, (1 << bits) - 1);
+        if (rc.get("index-bits") == std::to_string(bits)) return std::min(sceneLights, (1 << bits) - 1);
     return sceneLights;
 }
 
 demo::ShadowChoice Viewer::shadowChoice(const demo::RendererChoice& rc) const {
     demo::RendererChoice c = rc;
-    if (c.mode != "lidr") c.shadowLookup.reset();  // where LIDR looks up: kept for when the mode comes back
-    return c.shadowChoice(c.mode);
+    if (c.mode() != "lidr") c.values.erase("shadow-lookup");  // where LIDR looks up: kept for when the mode comes back
+    return c.shadowChoice(c.mode());
 }
 
 std::vector<PointLight> Viewer::currentLights(ShadingParameters* shading) const {
@@ -85,6 +85,14 @@ bool Viewer::apply(const demo::RendererChoice& next, const std::string& what) {
         return false;
     }
 }
+
+namespace {
+std::string settingNames() {
+    std::string names;
+    for (const RenderOption& o : renderOptions()) names += (names.empty() ? "" : ", ") + o.name;
+    return names;
+}
+}  // namespace
 
 bool Viewer::changeSetting(const std::string& name, const std::string& value) {
     auto toInt = [&](const std::string& v) {
@@ -153,43 +161,30 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
         animSpeed_ = float(percent) / 100.0f;
         return true;
     }
+    // The renderer's settings: lidr::renderOptions()' names (two kept from the viewer's first scripts: per-sample,
+    // depth-bounds), checked by the library as lidr-demo's command line is.
+    const bool depthBounds = name == "depth-bounds";
+    const std::string option = name == "per-sample" ? "msaa-per-sample" : depthBounds ? "no-depth-bounds" : name;
+    if (!findRenderOption(option))
+        throw Error("unknown setting '" + name + "' (the renderer's: " + settingNames() +
+                    ", per-sample, depth-bounds; the viewer's: lights, scatter, view, paused, speed)");
     demo::RendererChoice next = rc_;
-    if (name == "mode") {
-        next.mode = value;
-        if (value != "clustered" && value != "auto")  // the grid is the clustered mode's: its defaults next time
-            next.clusterTileSize.reset(), next.clusterSlices.reset(), next.clusterSlicing.reset(),
-                next.clusterOccupancy.reset(), next.clusterLightNear.reset();
+    try {
+        next.set(option, depthBounds ? (toBool(value) ? "off" : "on") : value);
+    } catch (const Error& e) {  // refused, as a choice the library refuses is: the old one stays
+        status_ = name + " " + value + " refused: " + e.what();
+        lastRefused_ = true;
+        std::cerr << "lidr-viewer: " << status_ << std::endl;
+        return false;
     }
-    else if (name == "scheme") {
-        next.scheme = value;
-        // The automatic scheme chooses budget and width itself; a named scheme other than bit-shift needs a fixed
-        // budget (only bit-shift's stencil count measures one): the choices the library would refuse are made
-        // for the user, who can change them after.
-        if (value == "auto") next.budget = next.indexBits = "auto";
-        else if (value != "bitshift" && next.budget == "auto") next.budget = "8";
-    }
-    else if (name == "budget") next.budget = value;
-    else if (name == "index-bits") next.indexBits = value;
-    else if (name == "volume-test") next.volumeTest = value;
-    else if (name == "msaa") next.msaa = toInt(value);
-    else if (name == "per-sample") next.msaaPerSample = toBool(value);
-    else if (name == "transparency") next.transparency = toBool(value) ? "on" : "off";
-    else if (name == "volume-detail") next.volumeDetail = toBool(value);
-    else if (name == "tile-size") next.tileSize = toInt(value);
-    else if (name == "depth-bounds") next.noDepthBounds = !toBool(value);
-    else if (name == "half-z") next.halfZ = toBool(value);
-    else if (name == "cluster-tile-size") next.clusterTileSize = toInt(value);
-    else if (name == "cluster-slices") next.clusterSlices = toInt(value);
-    else if (name == "cluster-slicing") next.clusterSlicing = value;
-    else if (name == "cluster-occupancy") next.clusterOccupancy = toBool(value) ? "on" : "off";
-    else if (name == "shadows") next.shadows = value;
-    else if (name == "shadow-filter") next.shadowFilter = value;
-    else if (name == "shadow-lookup") next.shadowLookup = value;
-    else
-        throw Error("unknown setting '" + name +
-                    "' (mode, scheme, budget, index-bits, volume-test, msaa, per-sample, transparency, volume-detail, "
-                    "tile-size, depth-bounds, half-z, cluster-tile-size, cluster-slices, cluster-slicing, "
-                    "cluster-occupancy, shadows, shadow-filter, shadow-lookup, lights, scatter, view, paused, speed)");
+    if (name == "mode" && value != "clustered" && value != "auto")  // the grid is the clustered mode's: its defaults next time
+        for (const char* c : {"cluster-tile-size", "cluster-slices", "cluster-slicing", "cluster-occupancy", "cluster-light-near"})
+            next.values.erase(c);
+    // The automatic scheme chooses budget and width itself; a named scheme other than bit-shift needs a fixed
+    // budget (only bit-shift's stencil count measures one): the choices the library would refuse are made for the
+    // user, who can change them after.
+    if (name == "scheme" && value == "auto") next.set("budget", "auto"), next.set("index-bits", "auto");
+    else if (name == "scheme" && value != "bitshift" && next.get("budget") == "auto") next.set("budget", "8");
     if (name.rfind("shadow", 0) == 0) {
         try {
             shadowChoice(next);  // the value checked as lidr-demo checks --shadows, --shadow-filter, --shadow-lookup
@@ -204,26 +199,18 @@ bool Viewer::changeSetting(const std::string& name, const std::string& value) {
 }
 
 std::string Viewer::setting(const std::string& name) const {
-    if (name == "mode") return rc_.mode;
-    if (name == "scheme") return rc_.scheme;
-    if (name == "budget") return rc_.budget;
-    if (name == "index-bits") return rc_.indexBits;
-    if (name == "volume-test") return rc_.volumeTest;
-    if (name == "msaa") return std::to_string(rc_.msaa.value_or(0));
-    if (name == "per-sample") return rc_.msaaPerSample ? "on" : "off";
-    if (name == "transparency") return rc_.transparency;
-    if (name == "volume-detail") return rc_.volumeDetail ? "on" : "off";
-    if (name == "tile-size") return std::to_string(rc_.tileSize);
-    if (name == "depth-bounds") return rc_.noDepthBounds ? "off" : "on";
-    if (name == "half-z") return rc_.halfZ ? "on" : "off";
+    if (name == "per-sample") return rc_.get("msaa-per-sample") == "on" ? "on" : "off";
+    if (name == "depth-bounds") return rc_.get("no-depth-bounds") == "on" ? "off" : "on";
+    if (name == "msaa") return rc_.given("msaa") ? rc_.get("msaa") : "0";
     const ClusteredOptions clustered;  // the library's defaults, where the choice leaves them
-    if (name == "cluster-tile-size") return std::to_string(rc_.clusterTileSize.value_or(clustered.tileSize));
-    if (name == "cluster-slices") return std::to_string(rc_.clusterSlices.value_or(clustered.slices));
-    if (name == "cluster-slicing") return rc_.clusterSlicing.value_or(clusterSlicingName(clustered.slicing));
-    if (name == "cluster-occupancy") return rc_.clusterOccupancy.value_or(clustered.occupiedClusters ? "on" : "off");
-    if (name == "shadows") return rc_.shadows;
-    if (name == "shadow-filter") return rc_.shadowFilter.value_or("nearest");
-    if (name == "shadow-lookup") return rc_.shadowLookup.value_or("forward");
+    if (name == "cluster-tile-size" && !rc_.given(name)) return std::to_string(clustered.tileSize);
+    if (name == "cluster-slices" && !rc_.given(name)) return std::to_string(clustered.slices);
+    if (name == "cluster-slicing" && !rc_.given(name)) return clusterSlicingName(clustered.slicing);
+    if (name == "cluster-occupancy" && !rc_.given(name)) return clustered.occupiedClusters ? "on" : "off";
+    if (const RenderOption* option = findRenderOption(name)) {
+        const std::string v = rc_.get(name);
+        return option->type == RenderOptionType::Flag && v.empty() ? "off" : v;
+    }
     if (name == "lights") return std::to_string(lightCount_);
     if (name == "scatter") return std::to_string(scatteredLights_);
     if (name == "file") return scenePath_.empty() ? "built-in" : scenePath_;

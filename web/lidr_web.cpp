@@ -2,8 +2,9 @@
 // drop; web/shell.html writes it into the page's memory file system and calls lidr_web_load), rendered with LIDR
 // on WebGL 1 (the library's GLES 2.0 path), with the page's HTML controls calling the exported lidr_web_*
 // functions, and a fly camera (WASD + mouse drag). A loaded model gets lights scattered over its surfaces
-// (lidr::scatterLights, as --lights N). ?check in the URL runs the page's own check instead (web/web_check.h;
-// CTest web.chromium).
+// (lidr::scatterLights, as --lights N). The image follows the window, or width / height in the URL query; the
+// query (web/page_query.h, read once by lidr_web_query) also takes the settings, a model and bench=N, a timing run
+// of every mode asked for. ?check runs the page's own check instead (web/web_check.h; CTest web.chromium).
 #include "lidr/base/gl.h"
 
 #include <emscripten.h>
@@ -24,201 +25,21 @@
 #include "lidr/eval/image_compare.h"
 #include "lidr/eval/light_coverage.h"
 #include "lidr/modes/render_mode.h"
+#include "lidr/modes/render_options.h"
 #include "lidr/platform/context.h"
 #include "lidr/render/present.h"
 #include "lidr/render/shadow_atlas.h"
-#include "lidr/render/shadow_casters.h"
 #include "lidr/scene/default_scene.h"
-#include "lidr/scene/io/environment_file.h"
 #include "lidr/scene/io/scene_loader.h"
-#include "lidr/scene/light_scatter.h"
+#include "lidr/scene/render_mode_names.h"
+#include "page_query.h"
+#include "page_state.h"
 #include "web_check.h"
 
 using namespace lidr;
+using namespace lidr::web;
 
 namespace {
-
-constexpr int kWidth = 640, kHeight = 480;
-
-// What the HTML controls set. Budgets and widths are fixed numbers: the automatic budget measures the overlap
-// with occlusion queries, which WebGL 1 does not have (doc/web.md).
-struct Settings {
-    std::string mode = "lidr";  // lidr, tiled, clustered, forward-multipass, forward-brute
-    std::string scheme = "bitshift";
-    int budget = 4;
-    int indexBits = 8;
-    std::string view = "frame";  // frame, reference, difference, index-lists, overlap
-    int lightCount = 255;  // the room: its first N lights; a model: its own, then scattered ones up to N
-    bool paused = false;
-    std::string shadows = "off";  // off, scene (the lights' own flags), or K: the K brightest lights in view
-    bool shadowFilter = false;    // filtered shadow edges (ShadowSettings::filtered)
-    // The environment light (doc/colour.md): auto (a model gets the built-in studio room in place of the uniform
-    // ambient, the room none), default, none, or a .hdr the page wrote into its file system; and its intensity.
-    std::string environment = "auto";
-    float environmentIntensity = 1.0f;
-};
-
-// The page's shadow atlas: 2048 texels a side, the largest tile (up to 512) that holds the casters' maps.
-constexpr int kShadowAtlasSize = 2048;
-
-// A model's light count reaches this many (16-bit indices hold 65535; the slider stops sooner, for a frame
-// time a browser bears).
-constexpr int kMaxModelLights = 16384;
-
-struct Page {
-    std::unique_ptr<GlContext> context;
-    Scene fileScene;  // the room or the model as read
-    Scene scene;      // what is rendered: fileScene, plus the lights scattered over a model
-    std::string sceneName = "built-in room";
-    bool model = false;  // a loaded file, not the room
-    Settings settings;
-    std::unique_ptr<Renderer> renderer;
-    std::unique_ptr<ReferenceRenderer> reference;  // built on first use by a view that needs it
-    std::unique_ptr<web::DepthReadback> depthReadback;
-    std::unique_ptr<FramePresenter> presenter;
-    viewer::FlyCamera camera;
-    float moveSpeed = 3.0f;
-    float time = 2.0f;
-    // A keyframed scene's camera (an AFF `k camera`, a glTF camera on an animated node) is followed until the user
-    // flies or turns the camera.
-    bool followSceneCamera = false;
-    double lastFrameMs = 0.0, frameMsAverage = 0.0, renderMsAverage = 0.0, renderMsLast = 0.0;
-    std::set<std::string> keysDown;
-    bool dragging = false;
-    std::string message;  // the last refusal or error, shown in red
-    std::string viewNote;  // what the current debug view shows
-    std::shared_ptr<const Environment> environmentFile;  // the last .hdr read, for environment = its path
-    std::string environmentFileName;
-};
-Page* page = nullptr;
-
-int maxLights() {
-    return page->model ? kMaxModelLights : int(page->fileScene.lights.size());
-}
-
-// The scene for a light count: the room keeps its lights (the count picks the first N when drawing); a model
-// gets count - its own lights scattered over it (none when it has enough).
-Scene sceneWithLights(const Scene& file, bool model, int count) {
-    Scene scene = file;
-    const int extra = count - int(file.lights.size());
-    if (model && extra > 0) {
-        LightScatterOptions o;
-        o.count = extra;
-        addScatteredLights(scene, o);
-    }
-    return scene;
-}
-
-// The frame's lights, with castsShadow as the shadow setting says, and its shading (shadows on or off).
-std::vector<PointLight> currentLights(const Camera& camera, ShadingParameters& shading) {
-    std::vector<PointLight> lights = page->scene.lightsAt(page->time);
-    if (int(lights.size()) > page->settings.lightCount) lights.resize(size_t(page->settings.lightCount));
-    shading = sceneShading(page->scene);
-    const Settings& s = page->settings;
-    if (s.environment == "auto") {
-        Scene lit;  // the tools' rule for models (lidr::giveModelDefaultEnvironment), on the shading alone
-        lit.ambient = shading.ambient;
-        if (page->model && !shading.environment.on() && giveModelDefaultEnvironment(lit)) {
-            shading.environment.map = lit.environment;
-            shading.ambient = lit.ambient;
-        }
-    } else if (s.environment == "none") {
-        shading.environment.map = nullptr;
-    } else {
-        shading.environment.map = s.environment == "default" ? defaultEnvironment() : page->environmentFile;
-    }
-    shading.environment.intensity = s.environmentIntensity;
-    if (s.shadows == "off") return lights;
-    if (s.shadows != "scene")
-        chooseShadowCasters(lights, cameraMatrices(camera, kWidth, kHeight), std::stoi(s.shadows));
-    shading.shadows.enabled = true;
-    shading.shadows.filtered = s.shadowFilter;
-    shading.shadows.atlas.size = kShadowAtlasSize;
-    shading.shadows.atlas.tileSize = shadowTileToFit(lights, kShadowAtlasSize);
-    return lights;
-}
-
-std::unique_ptr<Renderer> makeRenderer(const Settings& s) {
-    RenderModeOptions o;
-    o.mode = s.mode;
-    o.lidr.packing = {parsePackingScheme(s.scheme), s.budget, s.indexBits};
-    o.transparency = true;
-    // WebGL 1 (GLSL ES 1.00) gives gl_FragCoord.z at mediump only, which the tiled mode's depth bounds refuse.
-    o.tiled.depthBounds = false;
-    return createRenderer(o, page->context->info(), page->scene, kWidth, kHeight);
-}
-
-// Applies new settings; anything the library refuses keeps the old ones and says why (as lidr-viewer does).
-bool applySettings(Settings wanted, bool sceneChanged = false) {
-    try {
-        if (wanted.lightCount < 1 || wanted.lightCount > maxLights())
-            throw Error("light count: 1 to " + std::to_string(maxLights()) + ", got " +
-                        std::to_string(wanted.lightCount));
-        // A model's light count is its scene's: more lights are scattered over it, so the scene changes.
-        const bool lightsChanged = page->model && wanted.lightCount != page->settings.lightCount;
-        std::string note;
-        if (wanted.mode == "lidr" && wanted.lightCount > (1 << wanted.indexBits) - 1) {
-            // (as lidr-viewer's scheme choice does: a choice the library would refuse is made for the user)
-            note = std::to_string(wanted.indexBits) + "-bit indices hold " +
-                   std::to_string((1 << wanted.indexBits) - 1) + " lights: index bits set to 16 for " +
-                   std::to_string(wanted.lightCount);
-            wanted.indexBits = 16;
-        }
-        const bool rebuild = wanted.mode != page->settings.mode || wanted.scheme != page->settings.scheme ||
-                             wanted.budget != page->settings.budget ||
-                             wanted.indexBits != page->settings.indexBits || !page->renderer || sceneChanged ||
-                             lightsChanged;
-        if (wanted.view != "frame" && wanted.view != "reference" && wanted.view != "difference" &&
-            wanted.view != "index-lists" && wanted.view != "overlap" && wanted.view != "shadow-atlas")
-            throw Error("view '" + wanted.view +
-                        "' (valid: frame, reference, difference, index-lists, overlap, shadow-atlas)");
-        if (wanted.shadows != "off" && wanted.shadows != "scene") {
-            const bool digits = !wanted.shadows.empty() && wanted.shadows.size() <= 5 &&
-                                wanted.shadows.find_first_not_of("0123456789") == std::string::npos;
-            if (!digits) throw Error("shadows: off, scene or a number of lights K, got '" + wanted.shadows + "'");
-        }
-        if (wanted.environment != page->settings.environment && wanted.environment != "auto" &&
-            wanted.environment != "none" && wanted.environment != "default") {
-            // A file the page wrote: read (and checked) now; a refusal keeps the environment shown.
-            page->environmentFile = loadEnvironment(wanted.environment);
-            page->environmentFileName = wanted.environment;
-        }
-        validateEnvironmentIntensity(wanted.environmentIntensity, "environment intensity");
-        if (wanted.view == "shadow-atlas" && wanted.shadows == "off")
-            throw Error("the shadow-atlas view shows the shadow maps: turn shadows on");
-        if ((wanted.view == "index-lists" || wanted.view == "overlap") && wanted.mode != "lidr")
-            throw Error("the " + wanted.view + " view shows LIDR's index lists: choose mode lidr");
-        if (rebuild) {
-            Scene oldScene;
-            if (lightsChanged || sceneChanged) {
-                oldScene = std::move(page->scene);
-                page->scene = sceneWithLights(page->fileScene, page->model, wanted.lightCount);
-            }
-            if (lightsChanged || sceneChanged) {  // the old scene's GL objects go before the new ones are made
-                page->reference.reset();
-                page->depthReadback.reset();
-            }
-            try {
-                // Untimed passes: the frame is timed whole, finished by a 1-pixel read (frame()).
-                std::unique_ptr<Renderer> r = makeRenderer(wanted);
-                page->renderer = std::move(r);
-            } catch (...) {
-                if (lightsChanged || sceneChanged) page->scene = std::move(oldScene);
-                throw;
-            }
-            if (lightsChanged || sceneChanged) {
-                page->reference.reset();
-                page->depthReadback.reset();
-            }
-        }
-        page->settings = wanted;
-        page->message = note;
-        return true;
-    } catch (const std::exception& e) {
-        page->message = e.what();
-        return false;
-    }
-}
 
 // A CPU image into the page's 2D canvas #view (shown in place of the WebGL canvas for the CPU-made views).
 void showCpuImage(const ImageRGBA8& image) {
@@ -241,8 +62,8 @@ void showGlCanvas() {
 
 ReferenceRenderer& reference() {
     if (!page->reference)
-        page->reference = std::make_unique<ReferenceRenderer>(page->context->info(), page->scene, kWidth, kHeight,
-                                                              int(page->scene.lights.size()));
+        page->reference = std::make_unique<ReferenceRenderer>(page->context->info(), page->scene, page->width,
+                                                              page->height, int(page->scene.lights.size()));
     return *page->reference;
 }
 
@@ -254,13 +75,14 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
         if (!atlas) throw Error("no shadow maps drawn yet (no light casts a shadow in this frame)");
         if (!atlas->packed() && page->context->info().gles)
             throw Error("WebGL 1 cannot read a depth texture back: the atlas view needs the packed atlas");
-        const ImageRGBA8 maps = atlas->image(kHeight);
-        ImageRGBA8 canvas(kWidth, kHeight);
+        const int width = page->width, height = page->height;
+        const ImageRGBA8 maps = atlas->image(std::min(width, height));
+        ImageRGBA8 canvas(width, height);
         for (int y = 0; y < maps.height; ++y)
             for (int x = 0; x < maps.width; ++x)
                 std::copy_n(maps.at(x, y), 4, canvas.at(x, y));
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = maps.width; x < kWidth; ++x) canvas.at(x, y)[3] = 255;
+        for (int y = 0; y < height; ++y)
+            for (int x = maps.width; x < width; ++x) canvas.at(x, y)[3] = 255;
         showCpuImage(canvas);
         const FrameStats& st = page->renderer->lastFrame();
         page->viewNote = "the shadow atlas (" + std::to_string(atlas->size()) + " texels, " +
@@ -296,20 +118,21 @@ void drawView(const Camera& camera, const std::vector<PointLight>& lights, const
     // index-lists / overlap: LIDR's lists decoded on the CPU, against the CPU truth from the depth read back.
     auto& lidr = dynamic_cast<LidrRenderer&>(*page->renderer);
     if (!page->depthReadback)
-        page->depthReadback = std::make_unique<web::DepthReadback>(page->context->info(), page->scene, kWidth, kHeight);
-    const CameraMatrices m = cameraMatrices(camera, kWidth, kHeight);
+        page->depthReadback =
+            std::make_unique<web::DepthReadback>(page->context->info(), page->scene, page->width, page->height);
+    const CameraMatrices m = cameraMatrices(camera, page->width, page->height);
     const CoverageTruth truth = computeCoverage(page->depthReadback->read(m), m, lights);
     const ListCheck lists = checkIndexLists(truth, lidr.scheme(), lidr.readIndexTargets(), uint32_t(lights.size()),
                                             lidr.frameLightIndices(), lidr.frameIndexRegions());
     const int budget = lidr.scheme().config().budget;
     if (view == "index-lists") {
-        showCpuImage(indexListImage(kWidth, kHeight, lists.decoded));
+        showCpuImage(indexListImage(page->width, page->height, lists.decoded));
         page->viewNote = "decoded index lists (one colour per light), " + std::to_string(lists.droppedLightPixels) +
                          " dropped light-pixels";
     } else {
-        std::vector<int> counts(size_t(kWidth) * kHeight);
+        std::vector<int> counts(size_t(page->width) * size_t(page->height));
         for (size_t p = 0; p < counts.size(); ++p) counts[p] = truth.count(p);
-        showCpuImage(overlapHeatMap(kWidth, kHeight, counts, budget, &truth.surface));
+        showCpuImage(overlapHeatMap(page->width, page->height, counts, budget, &truth.surface));
         page->viewNote = "lights touching each surface (CPU truth), budget " + std::to_string(budget) +
                          ": blue to yellow within, red past it; max " + std::to_string(truth.maxOverlap());
     }
@@ -336,6 +159,7 @@ float loopedTime(float t) {
     return a.start + std::fmod(t - a.start, a.end - a.start);
 }
 
+
 void frame() {
     const double now = emscripten_get_now();
     const float dt = page->lastFrameMs > 0.0 ? float(std::min(0.1, (now - page->lastFrameMs) / 1000.0)) : 0.0f;
@@ -351,17 +175,7 @@ void frame() {
         const Camera camera = page->camera.camera();
         ShadingParameters shading;
         const std::vector<PointLight> lights = currentLights(camera, shading);
-        // WebGL returns from draw calls at once and runs them later; a 1-pixel glReadPixels of the frame's own
-        // target returns only when every command before it has run, so the clock from the first call to it is
-        // the frame's time on the GPU (plus one small read). EXT_disjoint_timer_query is not used: lidr's ES path
-        // has no timer queries, headless Chromium does not offer it, and the read works everywhere.
-        const double start = emscripten_get_now();
-        page->renderer->render(camera, lights, shading);
-        glBindFramebuffer(GL_FRAMEBUFFER, page->renderer->targets().colorFramebuffer().id());
-        uint8_t pixel[4];
-        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        page->renderMsLast = emscripten_get_now() - start;
+        page->renderMsLast = renderTimed(camera, lights, shading);
         page->renderMsAverage = page->renderMsAverage > 0.0 ? 0.9 * page->renderMsAverage + 0.1 * page->renderMsLast
                                                             : page->renderMsLast;
         drawView(camera, lights, shading);
@@ -385,6 +199,7 @@ EM_BOOL onMouse(int type, const EmscriptenMouseEvent* e, void*) {
     }
     return EM_TRUE;
 }
+
 
 std::string jsonEscape(const std::string& s) {
     std::string out;
@@ -419,23 +234,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_set(const char* name, const char* value) {
             else page->followSceneCamera = number != 0.0f && page->scene.animation.cameraNode >= 0;
             return 1;
         }
-        if (n == "mode") s.mode = v;
-        else if (n == "scheme") s.scheme = v;
-        else if (n == "budget") s.budget = std::stoi(v);
-        else if (n == "index-bits") s.indexBits = std::stoi(v);
-        else if (n == "view") s.view = v;
-        else if (n == "lights") s.lightCount = std::stoi(v);
-        else if (n == "paused") s.paused = v == "1" || v == "true";
-        else if (n == "shadows") s.shadows = v;
-        else if (n == "shadow-filter") s.shadowFilter = v == "pcf";
-        else if (n == "environment") s.environment = v;
-        else if (n == "environment-intensity") s.environmentIntensity = std::stof(v);
-        else throw Error("unknown setting '" + n +
-                         "' (mode, scheme, budget, index-bits, view, lights, paused, shadows, shadow-filter, "
-                         "environment, environment-intensity, time, follow-camera)");
-    } catch (const std::logic_error&) {
-        page->message = "setting " + n + ": a number, got '" + v + "'";
-        return 0;
+        setFromText(s, n, v);
     } catch (const std::exception& e) {
         page->message = e.what();
         return 0;
@@ -486,7 +285,7 @@ EMSCRIPTEN_KEEPALIVE int lidr_web_load(const char* path, int lights) {
 
 // One frame of the current scene and settings from its own camera at its own time, read back (the model check:
 // web/run_chromium_check.py compares it with the native renderer's frame). Returns the RGBA pixels, rows top
-// first, `kWidth` x `kHeight`; nullptr when the frame was refused (the reason in lidr_web_status()).
+// first, the page's width x height (lidr_web_status); nullptr when the frame was refused (the reason in lidr_web_status()).
 EMSCRIPTEN_KEEPALIVE const uint8_t* lidr_web_fixed_frame() {
     static ImageRGBA8 image;
     try {
@@ -513,8 +312,8 @@ EMSCRIPTEN_KEEPALIVE void lidr_web_set_message(const char* text) { page->message
 // Back to the built-in room (its own lights, the count it had).
 EMSCRIPTEN_KEEPALIVE void lidr_web_room() {
     DefaultSceneOptions sceneOptions;
-    sceneOptions.width = kWidth;
-    sceneOptions.height = kHeight;
+    sceneOptions.width = page->width;
+    sceneOptions.height = page->height;
     page->fileScene = makeDefaultScene(sceneOptions);
     page->model = false;
     page->sceneName = "built-in room";
@@ -552,7 +351,7 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
                   "\"indexBits\":%d,\"lights\":%d,\"maxLights\":%d,\"fileLights\":%d,\"triangles\":%zu,"
                   "\"model\":%s,\"paused\":%s,\"shadowCasters\":%d,\"shadowMapsDrawn\":%d,"
                   "\"environmentIntensity\":%g,\"timeStart\":%g,\"timeEnd\":%g,\"frames\":%d,"
-                  "\"animated\":%s,\"sceneCamera\":%s,\"followCamera\":%s",
+                  "\"animated\":%s,\"sceneCamera\":%s,\"followCamera\":%s,\"width\":%d,\"height\":%d",
                   page->frameMsAverage, page->renderMsAverage, page->renderMsLast, page->time, s.budget, s.indexBits,
                   s.lightCount, maxLights(), int(page->fileScene.lights.size()), triangles,
                   page->model ? "true" : "false", s.paused ? "true" : "false",
@@ -560,7 +359,8 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
                   page->renderer ? page->renderer->lastFrame().shadowMapsDrawn : 0, double(s.environmentIntensity),
                   double(page->scene.animation.start), double(page->scene.animation.end), page->scene.animation.frames,
                   page->scene.animation.end > page->scene.animation.start ? "true" : "false",
-                  page->scene.animation.cameraNode >= 0 ? "true" : "false", page->followSceneCamera ? "true" : "false");
+                  page->scene.animation.cameraNode >= 0 ? "true" : "false", page->followSceneCamera ? "true" : "false",
+                  page->width, page->height);
     std::string warnings;
     for (const std::string& w : page->fileScene.warnings)
         warnings += (warnings.empty() ? "\"" : ",\"") + jsonEscape(w) + "\"";
@@ -570,6 +370,81 @@ EMSCRIPTEN_KEEPALIVE const char* lidr_web_status() {
            jsonEscape(page->renderer ? page->renderer->lastFrame().environment : std::string("none")) + "\",\"view\":\"" + s.view + "\",\"viewNote\":\"" + jsonEscape(page->viewNote) +
            "\",\"message\":\"" + jsonEscape(page->message) + "\",\"scene\":\"" + jsonEscape(page->sceneName) +
            "\",\"warnings\":[" + warnings + "]," + figures + "}";
+    return json.c_str();
+}
+
+// The URL query (location.search), read by web::parsePageQuery: its settings applied together (refused as
+// lidr_web_set refuses one), the rest returned as JSON for the page's script, which fetches the scene and the
+// environment, sizes the image and starts a bench run: {"ok", "message", "scene", "environment", "lights",
+// "width", "height", "bench", "benchModes", "check", "checkModel", "checkLarge", "checkHuge"}.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_query(const char* search) {
+    static std::string json;
+    web::PageQuery q;
+    std::string problem;
+    try {
+        q = web::parsePageQuery(search);
+        Settings wanted = page->settings;
+        for (const auto& [name, value] : q.settings) setFromText(wanted, name, value);
+        if (!applySettings(wanted)) problem = page->message;
+    } catch (const std::exception& e) {
+        problem = e.what();
+        page->message = problem;
+    }
+    std::string modes;
+    for (const std::string& m : q.benchModes) modes += (modes.empty() ? "\"" : ",\"") + jsonEscape(m) + "\"";
+    const auto text = [](const std::string& s) { return "\"" + jsonEscape(s) + "\""; };
+    json = "{\"ok\":" + std::string(problem.empty() ? "true" : "false") + ",\"message\":" + text(problem) +
+           ",\"scene\":" + text(q.scene) + ",\"environment\":" + text(q.environment) +
+           ",\"lights\":" + std::to_string(q.lights) + ",\"width\":" + std::to_string(q.width) +
+           ",\"height\":" + std::to_string(q.height) + ",\"bench\":" + std::to_string(q.bench) +
+           ",\"benchModes\":[" + modes + "],\"check\":" + (q.check ? "true" : "false") +
+           ",\"checkModel\":" + text(q.checkModel) + ",\"checkLarge\":" + text(q.checkLarge) +
+           ",\"checkHuge\":" + text(q.checkHuge) + "}";
+    return json.c_str();
+}
+
+// The image at width x height (the page calls it as its window changes, or once with the query's size); 1 when
+// applied, 0 when refused (the reason in lidr_web_status()).
+EMSCRIPTEN_KEEPALIVE int lidr_web_resize(int width, int height) { return resizePage(width, height) ? 1 : 0; }
+
+// A timing run (bench=N): `frames` frames of each mode in `modes` (comma-separated; empty: every mode). Prints
+// the table to the console and returns it for the page to show.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_bench(int frames, const char* modes) {
+    static std::string table;
+    if (frames < 1 || frames > web::kMaxBenchFrames) {
+        page->message = "bench: 1 to " + std::to_string(web::kMaxBenchFrames) + " frames, got " + std::to_string(frames);
+        return "";
+    }
+    table = runBench(frames, web::commaList(modes ? modes : ""));
+    std::printf("%s", table.c_str());
+    std::fflush(stdout);
+    return table.c_str();
+}
+
+// The choices of the page's mode, scheme, budget and index-bits menus, and their help, from the library's option
+// table (lidr/modes/render_options.h) and mode table (renderModes(): each mode's one-line description), less
+// `auto`, which needs occlusion or timer queries WebGL 1 does not have: {"mode": {"help": ..., "choices":
+// [[value, description], ...]}, ...}.
+EMSCRIPTEN_KEEPALIVE const char* lidr_web_controls() {
+    static std::string json;
+    json = "{";
+    for (const char* name : {"mode", "scheme", "budget", "index-bits"}) {
+        const RenderOption* option = findRenderOption(name);
+        if (!option) continue;
+        std::string choices;
+        for (const std::string& value : option->choices) {
+            if (value == "auto") continue;
+            std::string description;
+            if (option->name == "mode")
+                for (const RenderModeInfo& m : renderModes())
+                    if (value == m.name) description = m.description;
+            choices += std::string(choices.empty() ? "" : ",") + "[\"" + jsonEscape(value) + "\",\"" +
+                       jsonEscape(description) + "\"]";
+        }
+        json += std::string(json.size() > 1 ? "," : "") + "\"" + name + "\":{\"help\":\"" + jsonEscape(option->help) +
+                "\",\"choices\":[" + choices + "]}";
+    }
+    json += "}";
     return json.c_str();
 }
 
@@ -588,12 +463,12 @@ int main() {
     try {
         ContextOptions options;
         options.backend = ContextBackend::WebGl;
-        options.windowWidth = kWidth;
-        options.windowHeight = kHeight;
+        options.windowWidth = page->width;
+        options.windowHeight = page->height;
         page->context = GlContext::create(options);
         DefaultSceneOptions sceneOptions;
-        sceneOptions.width = kWidth;
-        sceneOptions.height = kHeight;
+        sceneOptions.width = page->width;
+        sceneOptions.height = page->height;
         page->fileScene = makeDefaultScene(sceneOptions);
         page->scene = page->fileScene;
         page->camera.reset(page->scene.camera);

@@ -11,7 +11,10 @@ frame to /frame. Each pair (URL, drop) must be identical, and each frame must ma
 frame of the same file and options (lidr-web-native-frame, OpenGL ES 2.0 on Mesa) within the stated
 tolerance: PSNR >= MIN_PSNR and at most MAX_BAD_FRACTION of the pixels more than BAD_LEVEL levels apart (the
 two rasterisers and float units differ in the last bits, and an edge pixel may land on either side).
-A --large-triangles model then either renders or is refused with the page's memory estimate."""
+A --large-triangles model then either renders or is refused with the page's memory estimate.
+Last the bench (?bench=2&width=320&height=240): the page times two frames of every mode at the query's size and
+POSTs its table, which must have the size in its title and a row per mode (lidr, tiled, clustered,
+forward-multipass, forward-brute) with two frames and positive times, and must stand in the page's console too."""
 import argparse
 import functools
 import json
@@ -165,6 +168,8 @@ def main():
         ok = run_room_check(args, url)
         if ok and model_check:
             ok = run_model_check(args, url)
+        if ok:
+            ok = run_bench_check(args, url)
     finally:
         server.shutdown()
     return 0 if ok else 1
@@ -284,6 +289,41 @@ def run_model_check(args, url):
               f"(bounds: PSNR >= {args.min_psnr}, <= {100 * args.max_bad_fraction}%); {100 * lit:.1f}% lit")
     print(("PASS" if ok else "FAIL") + f": the model by URL and by drop against the native frames ({out})")
     return ok
+
+
+BENCH_MODES = ("lidr", "tiled", "clustered", "forward-multipass", "forward-brute")
+
+
+def run_bench_check(args, url):
+    result, elapsed, log = run_page(args, url + "?bench=2&width=320&height=240", "profile-bench")
+    if result is None:
+        return False
+    print(result.rstrip())
+    print(f"web.chromium: the bench answered after {elapsed:.1f} s")
+    lines = result.strip().splitlines()
+    problems = []
+    if not lines or not lines[0].startswith("lidr-web bench: 2 frames per mode") or "320x240" not in lines[0]:
+        problems.append("the title does not name 2 frames per mode at 320x240")
+    for mode in BENCH_MODES:
+        rows = [line for line in lines[2:] if line.split()[:1] == [mode]]
+        if len(rows) != 1:
+            problems.append(f"{len(rows)} rows for mode {mode}, not 1")
+            continue
+        fields = rows[0].split()
+        try:
+            figures = [float(x) for x in fields[2:7]]
+        except ValueError:
+            figures = []
+        if fields[1:2] != ["2"] or len(figures) != 5 or min(figures) <= 0.0:
+            problems.append(f"mode {mode}: not 2 frames with positive times: {rows[0]!r}")
+        elif rows[0].strip() not in log:  # the page printed the table to the console (Chromium's log)
+            problems.append(f"mode {mode}: its row is not in the page's console")
+    for problem in problems:
+        print(f"FAIL bench: {problem}")
+    if problems:
+        print("web.chromium: Chromium's log (the page's console):\n" + log[-6000:], file=sys.stderr)
+    print(("PASS" if not problems else "FAIL") + ": the bench table, a row per mode, shown and printed")
+    return not problems
 
 
 if __name__ == "__main__":

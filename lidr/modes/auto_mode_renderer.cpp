@@ -118,4 +118,11 @@ void AutoModeRenderer::checkObjectMaterial(const Material& material) const {
     for (const auto& r : renderers_) r->checkObjectMaterial(material);
 }
 
+ModeStatistics AutoModeRenderer::modeStatistics() const {
+    return {"auto_mode",
+            {modeStatistic("chosen", lastMode()), modeStatistic("reason", reason_),
+             modeStatistic("candidates", candidates_)},
+            "auto mode  " + reason_};
+}
+
 }  // namespace lidr

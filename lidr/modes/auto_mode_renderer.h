@@ -44,6 +44,7 @@ public:
     const std::string& lastMode() const { return candidates_[size_t(last_)]; }
     const std::string& reason() const { return reason_; }
     bool measuring() const { return chosen_ < 0; }
+    ModeStatistics modeStatistics() const override;  // "auto_mode": chosen, reason, candidates
     // The renderer of a candidate, to inspect (e.g. the LidrRenderer's decisions).
     const Renderer& renderer(size_t candidate) const { return *renderers_[candidate]; }
     // The candidate that drew the last frame (its index lists, tiles and decisions are that frame's).

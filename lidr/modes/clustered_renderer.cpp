@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "lidr/base/error.h"
 #include "lidr/base/visualize.h"
@@ -278,6 +279,36 @@ ImageRGBA8 ClusteredRenderer::clusterHeatMap(int budget) const {
             perPixel[p] = grid_.counts()[size_t(c)];
         }
     return overlapHeatMap(w, h, perPixel, budget);
+}
+
+ModeStatistics ClusteredRenderer::modeStatistics() const {
+    const ClusteredFrameInfo& f = frameInfo_;
+    const ClusteredOptions& co = options_;
+    ModeStatistics m;
+    m.section = "clustered";
+    m.values = {modeStatistic("tile_size", co.tileSize), modeStatistic("tiles_x", grid().tilesX()),
+                modeStatistic("tiles_y", grid().tilesY()), modeStatistic("slices", f.slicing.count),
+                modeStatistic("slicing", std::string(clusterSlicingName(co.slicing))),
+                modeStatistic("occupancy", f.occupancyUsed), modeStatistic("msaa_samples", targets().samples()),
+                modeStatistic("clusters", grid().clusterCount()),
+                modeStatistic("active_clusters", f.grid.activeClusters),
+                modeStatistic("listed_clusters", f.grid.listedClusters),
+                modeStatistic("max_cluster_lights", f.grid.maxLights), modeStatistic("entries", f.grid.entries),
+                modeStatistic("cell_tests", f.grid.cellTests), modeStatistic("index_bits", f.indexBits),
+                modeStatistic("loop_bound", f.loopBound), modeStatistic("list_texture_rows", f.listTextureRows),
+                modeStatistic("grid_bytes", gridBytes()), modeStatistic("list_bytes", listBytes()),
+                modeStatistic("light_table_bytes", frame().lightTable.bytes()),
+                modeStatistic("cpu_assign_ms_last_frame", f.assignMilliseconds),
+                modeStatistic("cpu_occupancy_ms_last_frame", f.occupancyMilliseconds)};
+    std::ostringstream s;
+    s << "clustered  " << co.tileSize << " px tiles (" << grid().tilesX() << "x" << grid().tilesY() << ") x "
+      << f.slicing.count << " " << clusterSlicingName(co.slicing) << " slices, occupancy "
+      << (f.occupancyUsed ? "on" : "off") << ", longest list " << f.grid.maxLights << ", " << f.grid.entries
+      << " entries in " << f.grid.listedClusters << " clusters, " << f.indexBits << "-bit indices, CPU assignment "
+      << f.assignMilliseconds << " ms"
+      << (f.occupancyUsed ? ", occupancy " + std::to_string(f.occupancyMilliseconds) + " ms" : std::string());
+    m.line = s.str();
+    return m;
 }
 
 }  // namespace lidr

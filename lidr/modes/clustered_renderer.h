@@ -66,6 +66,7 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     size_t lightDataBytes() const override { return gridTextures_.bytes(); }
+    ModeStatistics modeStatistics() const override;  // "clustered": the grid and its lists
     const FrameResources& frame() const override { return frame_; }
 
     const ClusteredOptions& options() const { return options_; }

@@ -213,4 +213,13 @@ void MultipassForwardRenderer::encodeOutput(const OutputTransform& output) {
     }
 }
 
+ModeStatistics MultipassForwardRenderer::modeStatistics() const {
+    // Where its passes summed their light (doc/colour.md): half float, or the 8-bit target and why.
+    return {"multipass",
+            {modeStatistic("accumulation", std::string(accumulation())),
+             modeStatistic("accumulation_note", accumulationNote_)},
+            std::string("multi-pass accumulation: ") + accumulation() +
+                (accumulationNote_.empty() ? "" : " (" + accumulationNote_ + ")")};
+}
+
 }  // namespace lidr

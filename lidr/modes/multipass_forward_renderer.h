@@ -52,6 +52,7 @@ public:
     // Why the 8-bit target (forced, or what the context lacks); with half float and MSAA, how the samples are
     // resolved; else empty.
     const std::string& accumulationNote() const { return accumulationNote_; }
+    ModeStatistics modeStatistics() const override;  // "multipass": accumulation and its note
 
     std::vector<FramePass> passes() const override;
 

@@ -3,6 +3,7 @@
 #include "lidr/gl/saved_gl_state.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "lidr/base/error.h"
 #include "lidr/render/shading_pass.h"
@@ -189,6 +190,32 @@ ImageRGBA8 TiledRenderer::tileHeatMap(int budget, bool transparent) const {
         for (int y = 0; y < h; ++y)  // image rows top to bottom, tiles counted from the bottom
             for (int x = 0; x < w; ++x) perPixel[size_t(y) * w + x] = counts[grid_.tileOf(x, h - 1 - y)];
     return overlapHeatMap(w, h, perPixel, budget);
+}
+
+ModeStatistics TiledRenderer::modeStatistics() const {
+    const LightGridStats& g = frameInfo_.grid;
+    ModeStatistics m;
+    m.section = "tiled";
+    m.values = {modeStatistic("tile_size", options_.tileSize), modeStatistic("tiles_x", grid().tilesX()),
+                modeStatistic("tiles_y", grid().tilesY()), modeStatistic("depth_bounds", frameInfo_.depthBoundsUsed),
+                modeStatistic("half_z", options_.halfZ), modeStatistic("msaa_samples", targets().samples()),
+                modeStatistic("depth_format", std::string(depthReductionFormatName(depthFormat()))),
+                modeStatistic("max_opaque_lights", g.maxOpaqueLights),
+                modeStatistic("max_transparent_lights", g.maxTransparentLights),
+                modeStatistic("opaque_entries", g.opaqueEntries),
+                modeStatistic("transparent_entries", g.transparentEntries),
+                modeStatistic("loop_bound", frameInfo_.loopBound),
+                modeStatistic("list_texture_rows", frameInfo_.listTextureRows), modeStatistic("grid_bytes", gridBytes()),
+                modeStatistic("list_bytes", listBytes()), modeStatistic("depth_reduction_bytes", depthReductionBytes()),
+                modeStatistic("light_table_bytes", frame().lightTable.bytes()),
+                modeStatistic("cpu_assign_ms_last_frame", frameInfo_.assignMilliseconds)};
+    std::ostringstream s;
+    s << "tiled      " << options_.tileSize << " px tiles (" << grid().tilesX() << "x" << grid().tilesY()
+      << "), depth bounds " << (frameInfo_.depthBoundsUsed ? (options_.halfZ ? "half-Z" : "min/max") : "off")
+      << ", longest list " << g.maxOpaqueLights << " (transparent " << g.maxTransparentLights << "), "
+      << g.opaqueEntries << " entries, CPU assignment " << frameInfo_.assignMilliseconds << " ms";
+    m.line = s.str();
+    return m;
 }
 
 }  // namespace lidr

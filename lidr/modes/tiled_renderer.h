@@ -58,6 +58,7 @@ public:
     const FrameStats& render(const Camera& camera, const std::vector<PointLight>& lights,
                              const ShadingParameters& shading) override;
     size_t lightDataBytes() const override;
+    ModeStatistics modeStatistics() const override;  // "tiled": the grid and its lists
     const FrameResources& frame() const override { return frame_; }
 
     const TiledOptions& options() const { return options_; }

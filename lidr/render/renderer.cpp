@@ -23,6 +23,12 @@ double FrameStats::frameMilliseconds() const {
     return sum;
 }
 
+const ModeStatistic::Value& ModeStatistics::at(const std::string& name) const {
+    for (const ModeStatistic& v : values)
+        if (v.name == name) return v.value;
+    throw Error("mode statistics '" + section + "' have no value '" + name + "'");
+}
+
 const RenderTargets& Renderer::targets() const { return frame().targets; }
 
 const ShadowAtlas* Renderer::shadowAtlas() const { return frame().shadows.atlas(); }

@@ -3,6 +3,8 @@
 // ("forward-multipass"), the brute-force reference ("forward-brute") and "auto". Each holds its FrameResources: the
 // same scene, camera, light table layout and shading function, so their images and times compare like for like.
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "lidr/gl/frame_timer.h"
@@ -118,6 +120,33 @@ private:
     GlCallCount counted_;
 };
 
+// What a mode adds to FrameStats about its own frame (Renderer::modeStatistics): the tiled grid, the clustered grid,
+// multi-pass's accumulation target, the automatic mode's choice. Tools print them without knowing the mode's class.
+struct ModeStatistic {
+    using Value = std::variant<long long, double, bool, std::string, std::vector<std::string>>;
+    std::string name;  // snake_case: lidr-demo's summary.json key
+    Value value;
+};
+// A statistic from a number, flag or text: integers as long long, floating point as double.
+template <class T>
+ModeStatistic modeStatistic(std::string name, const T& value) {
+    if constexpr (std::is_same_v<T, bool>)
+        return {std::move(name), value};
+    else if constexpr (std::is_integral_v<T>)
+        return {std::move(name), static_cast<long long>(value)};
+    else if constexpr (std::is_floating_point_v<T>)
+        return {std::move(name), static_cast<double>(value)};
+    else
+        return {std::move(name), ModeStatistic::Value(value)};
+}
+struct ModeStatistics {
+    std::string section;  // "tiled", "clustered", "multipass", "auto_mode"; empty: the mode adds none
+    std::vector<ModeStatistic> values;
+    std::string line;     // the same in one line of a text summary, its label first ("tiled      32 px tiles ...")
+    // The value named `name`; throws lidr::Error where there is none.
+    const ModeStatistic::Value& at(const std::string& name) const;
+};
+
 class Renderer {
 public:
     virtual ~Renderer() = default;
@@ -136,6 +165,8 @@ public:
     const RenderTargets& targets() const;  // the last frame's image until the next render()
     // Bytes of per-frame light data on the GPU beyond the light table (index targets, light grid).
     virtual size_t lightDataBytes() const { return 0; }
+    // The last frame's statistics particular to this mode (none by default; LIDR's are FrameStats::autoDecision).
+    virtual ModeStatistics modeStatistics() const { return {}; }
     // The shadow maps the last frame used (null: no frame with shadows yet): debug views read it.
     const ShadowAtlas* shadowAtlas() const;
     const FrameStats& lastFrame() const { return stats_; }

@@ -34,6 +34,77 @@ std::vector<glm::vec3> walkerPath(const SceneAnimation& a, int node, int samples
     return path;
 }
 
+// ManyStatic: `o.count` static lights spread evenly along the walkers' paths (their total length, a light every
+// length / count), each a seeded sideways offset across the path (horizontal) and 2 .. 6 over it.
+std::string placeLightsAlongPaths(Scene& scene, const std::vector<int>& walkers, const BartLightOptions& o, float range,
+                                  float intensity, SplitMix64& random) {
+    if (o.count < 1 || size_t(o.count) > maxSceneLights)
+        throw Error("BART lights: count must be 1.." + std::to_string(maxSceneLights) + ", got " + std::to_string(o.count));
+    const SceneAnimation& a = scene.animation;
+    std::vector<std::vector<glm::vec3>> paths;
+    double total = 0.0;
+    for (int w : walkers) {
+        paths.push_back(walkerPath(a, w, 2000));
+        for (size_t i = 1; i < paths.back().size(); ++i) total += double(glm::length(paths.back()[i] - paths.back()[i - 1]));
+    }
+    if (!(total > 0.0)) throw Error("BART lights: the walkers do not move (their paths have no length)");
+    const double spacing = total / double(o.count);
+    double next = 0.5 * spacing, walked = 0.0;
+    for (const std::vector<glm::vec3>& path : paths)
+        for (size_t i = 1; i < path.size() && int(scene.lights.size()) < o.count; ++i) {
+            const glm::vec3 step = path[i] - path[i - 1];
+            const double length = double(glm::length(step));
+            while (next <= walked + length && int(scene.lights.size()) < o.count) {
+                const glm::vec3 at = path[i - 1] + step * float((next - walked) / length);
+                glm::vec3 across(-step.z, 0.0f, step.x);
+                across = glm::length(across) > 0.0f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
+                PointLight light;
+                light.position = at + across * random.uniform(-o.sideways, o.sideways) +
+                                 glm::vec3(0.0f, random.uniform(2.0f, 6.0f), 0.0f);
+                light.radius = range;
+                light.color = lightColour(random, intensity);
+                scene.lights.push_back(light);
+                next += spacing;
+            }
+            walked += length;
+        }
+    std::ostringstream said;
+    said << scene.lights.size() << " static lights along the paths of " << walkers.size() << " walkers ("
+         << total << " units, one every " << spacing << "), up to " << o.sideways << " sideways, range " << range;
+    return said.str();
+}
+
+// FewDynamic: each walker carries one light over its head: the top of what it carries, plus a fifth of its height.
+std::string placeLightsOverWalkers(Scene& scene, const std::vector<int>& walkers, float range, float intensity,
+                                   SplitMix64& random) {
+    SceneAnimation& a = scene.animation;
+    for (int w : walkers) {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+        for (size_t m = 0; m < a.meshNodes.size(); ++m) {
+            bool below = false;
+            for (int k = a.meshNodes[m]; k >= 0 && !below; k = a.nodes[size_t(k)].parent) below = k == w;
+            if (!below) continue;
+            for (const glm::vec3& p : scene.meshes[m].positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+        const glm::mat4 world = a.posedWorld[size_t(w)];
+        const glm::vec3 over(0.5f * (lo.x + hi.x), hi.y + 0.2f * (hi.y - lo.y), 0.5f * (lo.z + hi.z));
+        LightBinding binding;
+        binding.node = w;
+        binding.position = glm::vec3(glm::inverse(world) * glm::vec4(over, 1.0f));
+        binding.radius = range / std::max({glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
+                                          glm::length(glm::vec3(world[2])), 1e-6f});
+        PointLight light;
+        light.position = over;
+        light.radius = range;
+        light.color = lightColour(random, intensity);
+        scene.lights.push_back(light);
+        a.lightBindings.push_back(binding);
+    }
+    std::ostringstream said;
+    said << scene.lights.size() << " lights, one riding over each walker, range " << range;
+    return said.str();
+}
+
 }  // namespace
 
 std::vector<int> bartWalkers(const Scene& scene) {
@@ -65,71 +136,12 @@ std::string addBartLights(Scene& scene, const BartLightOptions& o) {
     if (!std::isfinite(ambientScale)) throw Error("BART lights: the ambient scale must be finite");
     for (Material& m : scene.materials) m.emissive *= ambientScale;
     SplitMix64 random(o.seed);
-    SceneAnimation& a = scene.animation;
     scene.lights.clear();
     scene.lightPaths.clear();
-    a.lightBindings.clear();
+    scene.animation.lightBindings.clear();
     std::ostringstream said;
-    if (many) {
-        if (o.count < 1 || size_t(o.count) > maxSceneLights)
-            throw Error("BART lights: count must be 1.." + std::to_string(maxSceneLights) + ", got " + std::to_string(o.count));
-        // The paths' total length, and a light every (length / count) along it, with a seeded sideways offset
-        // across the path (horizontal) and a height of 2 .. 6 over it.
-        std::vector<std::vector<glm::vec3>> paths;
-        double total = 0.0;
-        for (int w : walkers) {
-            paths.push_back(walkerPath(a, w, 2000));
-            for (size_t i = 1; i < paths.back().size(); ++i) total += double(glm::length(paths.back()[i] - paths.back()[i - 1]));
-        }
-        if (!(total > 0.0)) throw Error("BART lights: the walkers do not move (their paths have no length)");
-        const double spacing = total / double(o.count);
-        double next = 0.5 * spacing, walked = 0.0;
-        for (const std::vector<glm::vec3>& path : paths)
-            for (size_t i = 1; i < path.size() && int(scene.lights.size()) < o.count; ++i) {
-                const glm::vec3 step = path[i] - path[i - 1];
-                const double length = double(glm::length(step));
-                while (next <= walked + length && int(scene.lights.size()) < o.count) {
-                    const glm::vec3 at = path[i - 1] + step * float((next - walked) / length);
-                    glm::vec3 across(-step.z, 0.0f, step.x);
-                    across = glm::length(across) > 0.0f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
-                    PointLight light;
-                    light.position = at + across * random.uniform(-o.sideways, o.sideways) +
-                                     glm::vec3(0.0f, random.uniform(2.0f, 6.0f), 0.0f);
-                    light.radius = range;
-                    light.color = lightColour(random, intensity);
-                    scene.lights.push_back(light);
-                    next += spacing;
-                }
-                walked += length;
-            }
-        said << scene.lights.size() << " static lights along the paths of " << walkers.size() << " walkers ("
-             << total << " units, one every " << spacing << "), up to " << o.sideways << " sideways, range " << range;
-    } else {
-        // Each walker carries one light over its head: the top of what it carries, plus a fifth of its height.
-        for (int w : walkers) {
-            glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-            for (size_t m = 0; m < a.meshNodes.size(); ++m) {
-                bool below = false;
-                for (int k = a.meshNodes[m]; k >= 0 && !below; k = a.nodes[size_t(k)].parent) below = k == w;
-                if (!below) continue;
-                for (const glm::vec3& p : scene.meshes[m].positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-            }
-            const glm::mat4 world = a.posedWorld[size_t(w)];
-            const glm::vec3 over(0.5f * (lo.x + hi.x), hi.y + 0.2f * (hi.y - lo.y), 0.5f * (lo.z + hi.z));
-            LightBinding binding;
-            binding.node = w;
-            binding.position = glm::vec3(glm::inverse(world) * glm::vec4(over, 1.0f));
-            binding.radius = range / std::max({glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
-                                              glm::length(glm::vec3(world[2])), 1e-6f});
-            PointLight light;
-            light.position = over;
-            light.radius = range;
-            light.color = lightColour(random, intensity);
-            scene.lights.push_back(light);
-            a.lightBindings.push_back(binding);
-        }
-        said << scene.lights.size() << " lights, one riding over each walker, range " << range;
-    }
+    said << (many ? placeLightsAlongPaths(scene, walkers, o, range, intensity, random)
+                  : placeLightsOverWalkers(scene, walkers, range, intensity, random));
     said << ", intensity " << intensity << ", the file's ambient x " << ambientScale << ", seed " << o.seed;
     return said.str();
 }
