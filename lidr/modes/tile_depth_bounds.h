@@ -43,9 +43,6 @@ public:
     // MSAA, after prepass(): the MSAA pre-pass into the targets' multisampled depth, with the samples' depth spans.
     void samples(const GpuScene& scene, const CameraMatrices& camera) const;
     bool coversSamples() const { return spans_ != nullptr; }
-    // MSAA (coversSamples()): the single-sample pre-Z depth, packed (depth_pack.glsl), and the samples' spans.
-    const gl::Texture& centreDepth() const { return depthCopy_; }
-    const DepthSpanPass& spans() const { return *spans_; }
     // Reduces the depth copy to one (min, max) per tile on the GPU and reads the result back.
     std::vector<TileDepthRange> reduce() const;
     DepthReductionFormat format() const { return format_; }

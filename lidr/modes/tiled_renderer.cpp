@@ -70,8 +70,6 @@ void TiledRenderer::buildProgram(int loopBound) {
     defines.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
     defines.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
     defines.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
-    // MSAA with the samples' spans: fragments behind every sample's surface skip their list (tiled_forward.frag).
-    if (depthBounds_ && depthBounds_->coversSamples()) defines.push_back({"LIDR_SKIP_HIDDEN", "1"});
     program_ = gl::Program::create("tiled-forward-" + std::to_string(loopBound), buildShaderSource("geometry.vert"),
                                    buildShaderSource("tiled_forward.frag", defines), geometryAttributes());
     programDefines_ = defines;
@@ -92,10 +90,6 @@ constexpr FramePass kTiledTransparent{"tiled-transparent",
                                       "transparent meshes, depth, transparent lists, light table, [shadow atlas], "
                                       "[environment]",
                                       "colour", "transparent meshes in the scene"};
-
-// MSAA: the hidden-fragment skip's inputs, on units the shading leaves free (lidr/gl/bindings.h: above the tile
-// grid and list, below the environment's low units).
-constexpr int kUnitSkipCentreDepth = 2, kUnitSkipDepthSpan = 3;
 
 }  // namespace
 
@@ -122,8 +116,7 @@ const FrameStats& TiledRenderer::render(const Camera& camera, const std::vector<
     const gl::Program& program = shadeOpaque(cam, shading);
     if (transparent) shadeTransparent(cam, shading, program);
     frame_.resolve();  // msaa-resolve
-    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList, kUnitSkipCentreDepth,
-                                          kUnitSkipDepthSpan});
+    StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
     frame_.finishFrame(stats_, "TiledRenderer::render");
     return stats_;
 }
@@ -177,21 +170,8 @@ const gl::Program& TiledRenderer::shadeOpaque(const CameraMatrices& cam, const S
     useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
     frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
-    bindHiddenSkip(program, true);
     frame_.scene.draw(program, DrawFilter::Opaque, true, &cam, shadingVariantKey(program, shading, frame_.environment));
     return program;
-}
-
-void TiledRenderer::bindHiddenSkip(const gl::Program& program, bool opaque) const {
-    if (!depthBounds_ || !depthBounds_->coversSamples()) return;
-    program.set("uSkipHidden", opaque ? 1.0f : 0.0f);
-    depthBounds_->centreDepth().bind(kUnitSkipCentreDepth);
-    depthBounds_->spans().texture().bind(kUnitSkipDepthSpan);
-    program.set("uSkipCentreDepth", kUnitSkipCentreDepth);
-    program.set("uSkipDepthSpan", kUnitSkipDepthSpan);
-    program.set("uSkipSpanBoundScale", depthBounds_->spans().boundScale());
-    program.set("uSkipInvTargetSize",
-                glm::vec2(1.0f / float(frame_.targets.width()), 1.0f / float(frame_.targets.height())));
 }
 
 void TiledRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading,
@@ -199,7 +179,6 @@ void TiledRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingPar
     TimedPass tiledTransparentTime(frame_.timer, kTiledTransparent.name);
     beginTransparentShading();  // back to front over the opaque depth, no depth writes
     gridTextures_.bind(program, true);
-    bindHiddenSkip(program, false);
     frame_.scene.drawTransparentSorted(program, cam.eye, shadingVariantKey(program, shading, frame_.environment));
 }
 

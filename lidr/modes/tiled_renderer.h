@@ -84,7 +84,6 @@ private:
     void buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool transparent);
     const gl::Program& shadeOpaque(const CameraMatrices& cam, const ShadingParameters& shading);
     void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading, const gl::Program& program);
-    void bindHiddenSkip(const gl::Program& program, bool opaque) const;  // MSAA: tiled_forward.frag's LIDR_SKIP_HIDDEN inputs
 
     FrameResources frame_;  // first: the options and the context are checked before any GL object
     TiledOptions options_;
