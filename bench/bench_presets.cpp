@@ -269,6 +269,14 @@ std::vector<SweepGroup> peersSweep(const SweepGroup& base, bool quick) {
     g.volumeTests = {"sphere"};
     g.indexBits = {16};
     groups.push_back(g);
+    // Issue 43: the same modes under MSAA 4x, transparency off and on (multi-pass draws no transparent mesh:
+    // it has the opaque rows only), on the MSAA targets' scenes.
+    SweepGroup msaa = g;
+    msaa.scenes = quick ? std::vector<std::string>{"hall-64"}
+                        : std::vector<std::string>{"hall-255", "room", "hall-1024", "city-255"};
+    msaa.msaa = {4};
+    msaa.transparency = {false, true};
+    groups.push_back(msaa);
     return groups;
 }
 

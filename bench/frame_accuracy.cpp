@@ -59,8 +59,10 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
         a.pixelsOverBudget = ev.pixelsOverBudget;
         a.hasLists = !lidrRenderer->options().perSampleIndices;  // multisample index textures: the image only
         if (!a.hasLists) return a;
-        a.droppedLightPixels = ev.lists.droppedLightPixels;
-        a.pixelsWithDrops = ev.lists.pixelsWithDrops;
+        // sphere-span (MSAA): drops against what every sample's surface needs, not the pixel centre's alone.
+        const ListCheck& lists = ev.spanTruth.offsets.empty() ? ev.lists : ev.spanLists;
+        a.droppedLightPixels = lists.droppedLightPixels;
+        a.pixelsWithDrops = lists.pixelsWithDrops;
         a.shadedLightPixels = ev.lists.slotsUsed;
         a.lightingComputations = ev.lists.slotsUsed;  // the forward pass shades every filled slot
         for (size_t p = 0; p < ev.truth.surface.size(); ++p)

@@ -106,7 +106,8 @@ void printNames() {
               << "packing schemes: " << joinNames(packingSchemeNames()) << "\n"
               << "budgets, index widths: those lidr::renderOptions() lists (lidr-demo --list-options); each scheme "
                  "refuses what it cannot do (see --dry-run)\n"
-              << "volume tests:   sphere (the library's default), sphere-ray, backface, exact, frontface\n"
+              << "volume tests:   sphere (the library's default; sphere-span under MSAA), sphere-span, sphere-ray, backface, "
+                 "exact, frontface\n"
               << "cluster slicings: exponential, near-slice (clustered mode; tile sizes 4..256, slices 1..64)\n"
               << "scenes:         " << sceneNameHelp() << "\n";
 }

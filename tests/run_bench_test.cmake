@@ -112,10 +112,10 @@ endif()
 run_bench(1 "--schemes: --scheme must be auto, bitshift.*got 'nope'" --schemes nope --out ${OUT}/bad)
 run_bench(1 "--modes: --mode must be lidr,.*forward-brute.*got 'warp'" --modes warp --out ${OUT}/bad)
 run_bench(1 "unknown scene 'kitchen'.*valid: room.*overlap-K" --scenes kitchen --out ${OUT}/bad)
-run_bench(1 "--volume-tests: --volume-test must be auto, sphere, sphere-ray, backface, exact or frontface, got 'sideways'" --volume-tests sideways --out ${OUT}/bad)
+run_bench(1 "--volume-tests: --volume-test must be auto, sphere, sphere-span, sphere-ray, backface, exact or frontface, got 'sideways'" --volume-tests sideways --out ${OUT}/bad)
 run_bench(1 "bad scene name 'hall-0'.*hall-N with N lights" --scenes hall-0 --out ${OUT}/bad)
 # --list names every volume test, the default (sphere) first.
-run_bench(0 "volume tests: +sphere \\(the library's default\\), sphere-ray, backface, exact, frontface" --list)
+run_bench(0 "volume tests: +sphere \\(the library's default; sphere-span under MSAA\\), sphere-span, sphere-ray, backface, exact, frontface" --list)
 run_bench(1 "--budgets: --budget must be auto, 1, 2, 4, 8 or 16, got '3'" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
 run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
           --volume-tests backface --msaa 4 --out ${OUT}/bad)

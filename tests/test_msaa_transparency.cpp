@@ -181,8 +181,8 @@ TEST_CASE("MSAA and pre-pass requests the context or the mode cannot honour are 
                         Catch::Contains("multisample framebuffers"));
     o.volumeTest = VolumeTest::BackFace;
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("frontface"));
-    o.volumeTest = VolumeTest::Sphere;
-    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("sphere-ray"));
+    o.volumeTest = VolumeTest::ExactStencil;
+    REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("sphere-span"));
     o.msaaSamples = 0;
     o.depthPrepass = false;
     REQUIRE_THROWS_WITH(LidrRenderer(testGl(), scene, o, scene.width, scene.height), Catch::Contains("pre-pass"));

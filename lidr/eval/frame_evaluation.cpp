@@ -4,6 +4,30 @@
 
 namespace lidr {
 
+namespace {
+// sphere-span: the edge pixels, and the lists against what every sample's surface needs.
+void evaluateSpans(const LidrRenderer& renderer, const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                   FrameEvaluation& e) {
+    const std::vector<DepthSpanPass::Span> spans = renderer.readDepthSpans();
+    if (spans.empty()) return;
+    ImageFloat nearDepth(cam.width, cam.height), farDepth(cam.width, cam.height);
+    for (size_t p = 0; p < spans.size(); ++p) {
+        nearDepth.pixels[p] = spans[p].nearDepth;
+        farDepth.pixels[p] = spans[p].farDepth;
+        if (spans[p].edge(kEdgeDepthMargin)) ++e.edgePixels;
+    }
+    // The span bounds the samples' depths; the segment between may pass through lights that reach no surface at all
+    // (in the air between two walls): a light touching no opaque mesh's bounds lights no sample (radius 0 here).
+    std::vector<PointLight> reaching = lights;
+    for (PointLight& l : reaching)
+        if (!renderer.frame().scene.batchesTouchSphere(glm::vec4(l.position, l.radius), DrawFilter::Opaque)) l.radius = 0.0f;
+    e.spanTruth = computeSpanCoverage(nearDepth, farDepth, cam, reaching);
+    e.spanLists = checkIndexLists(e.spanTruth, renderer.scheme(), renderer.readIndexTargets(),
+                                  static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
+                                  renderer.frameIndexRegions());
+}
+}  // namespace
+
 FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera,
                               const std::vector<PointLight>& lights, const ImageRGBA8& image,
                               const ImageRGBA8& reference) {
@@ -24,6 +48,7 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.lists = checkIndexLists(e.truth, renderer.scheme(), renderer.readIndexTargets(),
                               static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
                               renderer.frameIndexRegions());
+    evaluateSpans(renderer, cam, lights, e);
     const std::vector<uint8_t> counts = renderer.readLightCounts();
     const size_t n = size_t(t.width()) * t.height();
     e.marked.assign(n, 0);
@@ -38,7 +63,9 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     for (size_t p = 0; p < n; ++p)
         e.droppedMarks[p] = std::max(0, e.marked[p] - static_cast<int>(e.lists.decoded[p].size()));
     for (size_t p = 0; p < n; ++p) {
-        if (!e.truth.surface[p]) {
+        // sphere-span: a pixel whose centre sees background may still have samples on a surface (its span).
+        const bool surface = e.truth.surface[p] || (!e.spanTruth.surface.empty() && e.spanTruth.surface[p]);
+        if (!surface) {
             // Background: no opaque surface, but transparent layers in front of it read front-face lists.
             e.withinBudget[p] = e.frontFaceMarked.empty() || e.frontFaceMarked[p] <= transparentBudget;
             continue;

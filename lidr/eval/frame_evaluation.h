@@ -9,6 +9,9 @@
 
 namespace lidr {
 
+// A pixel whose samples' depths differ by more than this (window depth; 24-bit rounding is 6e-8) is an edge pixel.
+constexpr float kEdgeDepthMargin = 1e-5f;
+
 struct FrameEvaluation {
     CoverageTruth truth;            // lights touching each surface pixel
     ListCheck lists;                // decoded lists against the truth
@@ -24,6 +27,11 @@ struct FrameEvaluation {
     // layers by the conservative CPU count.
     std::vector<uint8_t> withinBudget;
     std::vector<int> droppedMarks;  // per pixel: marks the index lists do not hold (GPU count - kept slots)
+    // sphere-span (MSAA): pixels whose samples shade more than one depth, and the lists against the lights the
+    // samples' depth span needs (computeSpanCoverage; a superset of `truth`'s). Empty/0 for the other tests.
+    long edgePixels = 0;
+    CoverageTruth spanTruth;
+    ListCheck spanLists;
     ImageError error;               // whole image against the reference
     ImageError errorWithinBudget;   // only pixels marked by <= budget lights
 };

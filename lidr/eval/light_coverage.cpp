@@ -51,6 +51,18 @@ glm::vec3 surfacePoint(const CameraMatrices& m, const glm::dmat4& inverseView, i
     return glm::vec3(inverseView * view);
 }
 
+
+// The truth's compressed rows from (pixel, light) pairs.
+void fillLists(CoverageTruth& t, std::vector<std::pair<uint32_t, uint32_t>>& pairs) {
+    const size_t n = size_t(t.width) * t.height;
+    std::sort(pairs.begin(), pairs.end());
+    t.offsets.assign(n + 1, 0);
+    for (const auto& pr : pairs) ++t.offsets[pr.first + 1];
+    for (size_t p = 0; p < n; ++p) t.offsets[p + 1] += t.offsets[p];
+    t.lights.reserve(pairs.size());
+    for (const auto& pr : pairs) t.lights.push_back(pr.second);
+}
+
 }  // namespace
 
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
@@ -98,12 +110,57 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
                 pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
             }
     }
-    std::sort(pairs.begin(), pairs.end());
-    t.offsets.assign(n + 1, 0);
-    for (const auto& pr : pairs) ++t.offsets[pr.first + 1];
-    for (size_t p = 0; p < n; ++p) t.offsets[p + 1] += t.offsets[p];
-    t.lights.reserve(pairs.size());
-    for (const auto& pr : pairs) t.lights.push_back(pr.second);
+    fillLists(t, pairs);
+    return t;
+}
+
+CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat& farDepth, const CameraMatrices& camera,
+                                  const std::vector<PointLight>& lights, float band) {
+    if (nearDepth.width != camera.width || nearDepth.height != camera.height || farDepth.width != camera.width ||
+        farDepth.height != camera.height)
+        throw Error("computeSpanCoverage: depth images and camera sizes differ");
+    CoverageTruth t;
+    t.width = camera.width;
+    t.height = camera.height;
+    const size_t n = size_t(t.width) * t.height;
+    t.surface.assign(n, 0);
+    std::vector<glm::vec3> nearPoint(n), farPoint(n);
+    const glm::dmat4 inverseView = glm::inverse(glm::dmat4(camera.view));
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x) {
+            const size_t p = size_t(y) * t.width + x;
+            const float dn = std::max(nearDepth.at(x, y), 0.0f), df = std::min(farDepth.at(x, y), 1.0f);
+            if (!(dn <= df)) continue;
+            t.surface[p] = 1;
+            nearPoint[p] = surfacePoint(camera, inverseView, x, y, dn);
+            farPoint[p] = surfacePoint(camera, inverseView, x, y, df);
+        }
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const PointLight& l = lights[i];
+        const float inner = l.radius * (1.0f - band);
+        const glm::dvec4 cone(spotCone(l));
+        int x0, y0, x1, y1;
+        screenRect(camera, l, x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const size_t p = size_t(y) * t.width + x;
+                if (!t.surface[p]) continue;
+                const glm::vec3 a = nearPoint[p], ab = farPoint[p] - a;  // the closest point of the span to the centre
+                const float len2 = glm::dot(ab, ab);
+                const float s = len2 > 0.0f ? std::clamp(glm::dot(l.position - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+                const glm::vec3 d = a + s * ab - l.position;
+                if (!(glm::dot(d, d) < inner * inner)) continue;
+                if (l.isSpot()) {
+                    const glm::dvec3 fromLight(d);
+                    const double length = glm::length(fromLight);
+                    const double ramp = (length > 0.0 ? glm::dot(fromLight / length, glm::dvec3(cone)) : 0.0) + cone.w;
+                    if (!(ramp > double(band))) continue;
+                }
+                pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
+            }
+    }
+    fillLists(t, pairs);
     return t;
 }
 

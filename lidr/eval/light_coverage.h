@@ -29,6 +29,13 @@ struct CoverageTruth {
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
                               const std::vector<PointLight>& lights, float band = 2e-3f);
 
+// MSAA (sphere-span): per pixel, the lights a sample may need: those whose sphere (radius x (1 - band)) meets the
+// pixel centre's eye ray between window depths nearDepth and farDepth (the depths the pixel's samples shade,
+// LidrRenderer::readDepthSpans; near > far: none). A spot light also needs the closest such point inside its
+// cone (ramp above band). Where near == far, computeCoverage's truth.
+CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat& farDepth, const CameraMatrices& camera,
+                                  const std::vector<PointLight>& lights, float band = 2e-3f);
+
 // Per pixel, the lights whose sphere scaled by `inflate` crosses the eye ray between the near plane and the
 // pixel's opaque surface (the far plane where there is none): what a front-face volume pass marks. With
 // `inflate` >= the volume mesh's outside radius it never counts fewer than the GPU marks.

@@ -10,8 +10,10 @@ enum TextureUnit : int {
     // LIDR forward pass: index target i on unit kUnitIndexTarget0 + i (up to 8: units 0..7).
     kUnitIndexTarget0 = 0,
     kUnitIndexTargetLast = 7,
-    // Light volume pass, sphere tests: the copy of the pre-pass depth.
+    // Light volume pass, sphere tests: the copy of the pre-pass depth; sphere-span (and sphere-ray beside it): the
+    // MSAA samples' depth spans (lidr/technique/depth_span_pass.h), which that pass draws reading the copy.
     kUnitDepthCopy = 0,
+    kUnitDepthSpans = 1,
     // Light volume pass drawing pixel lists (tests/pixel_list_geometry.h): the list step and the colour table.
     kUnitPixelListStep = 0,
     kUnitPixelListColors = 1,

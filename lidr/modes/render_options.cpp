@@ -98,9 +98,11 @@ void addLidrRows(std::vector<RenderOption>& o) {
     o.push_back({"index-bits", T::Choice, {"auto", "4", "8", "16"}, 0, 0, "auto",
                  "Light index width: auto (the narrowest for the visible lights) or 4, 8, 16 (with a named scheme)",
                  kLidr});
-    o.push_back({"volume-test", T::Choice, {"auto", "sphere", "sphere-ray", "backface", "exact", "frontface"}, 0, 0, "auto",
-                 "Light volume test: auto (sphere; sphere-ray with MSAA; backface with --msaa-per-sample), sphere "
-                 "(exact, in the shader, batched), sphere-ray, backface, exact (stencil), frontface",
+    o.push_back({"volume-test", T::Choice, {"auto", "sphere", "sphere-span", "sphere-ray", "backface", "exact", "frontface"}, 0,
+                 0, "auto",
+                 "Light volume test: auto (sphere; sphere-span with MSAA; backface with --msaa-per-sample), sphere "
+                 "(exact, in the shader, batched), sphere-span (MSAA: every sample's surface), sphere-ray, backface, "
+                 "exact (stencil), frontface",
                  kLidr});
     o.push_back({"msaa-per-sample", T::Flag, {}, 0, 0, "",
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)", kLidr});
@@ -349,7 +351,7 @@ LidrOptions lidrOptionsFrom(const RenderOptionValues& v, const Scene& scene) {
     const std::string volumeTest = renderOptionValue(v, "volume-test");
     o.volumeTest = volumeTest == "auto"
                        ? (o.perSampleIndices ? VolumeTest::BackFace
-                          : o.msaaSamples > 0 ? VolumeTest::SphereRay
+                          : o.msaaSamples > 0 ? VolumeTest::SphereSpan
                                               : VolumeTest::Sphere)
                        : parseVolumeTest(volumeTest);
     o.forceFixedLightTable = on(v, "fixed-light-table");

@@ -33,11 +33,12 @@ bool complete(const gl::Framebuffer& f) {
 }  // namespace
 
 TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int tileSize,
-                                 const gl::Renderbuffer& depthStencil, bool forcePacked, bool halfZ)
+                                 const gl::Renderbuffer& depthStencil, bool forcePacked, bool halfZ,
+                                 const RenderTargets* msaa)
     : format_(info.textureFloat && !forcePacked ? DepthReductionFormat::Float32 : DepthReductionFormat::PackedRGBA8),
       width_(width),
       height_(height),
-      halfZ_(halfZ) {
+      halfZ_(halfZ && !msaa) {
     const LightGrid shape(width, height, tileSize);  // validates the tile size
     tilesX_ = shape.tilesX();
     tilesY_ = shape.tilesY();
@@ -46,6 +47,11 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
         // ARB_texture_float makes float textures, not necessarily float render targets: fall back.
         format_ = DepthReductionFormat::PackedRGBA8;
         createTargets(depthStencil);
+    }
+    if (msaa) {
+        if (format_ != DepthReductionFormat::Float32)
+            throw UnsupportedError("tile depth bounds under MSAA reduce the samples' depth spans in float targets");
+        spans_ = std::make_unique<DepthSpanPass>(info, *msaa, true);
     }
     prepassFbo_.checkComplete("tile pre-Z");
     for (const std::vector<Chain>* chains : {&chains_, &splitChains_})
@@ -66,6 +72,7 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
             d.push_back({"LIDR_REDUCE_COUNT", std::to_string(tileSize)});
             d.push_back({"LIDR_REDUCE_VERTICAL", std::to_string(vertical)});
             d.push_back({"LIDR_REDUCE_MAX", c == 1 ? "1" : "0"});
+            d.push_back({"LIDR_INPUT_SPANS", spans_ && !vertical ? "1" : "0"});
             gl::Program p = gl::Program::create("tile-depth-reduce", buildShaderSource("fullscreen.vert"),
                                                 buildShaderSource("tile_depth_reduce.frag", d),
                                                 {{"aPosition", gl::kPosition}});
@@ -142,6 +149,10 @@ void TileDepthBounds::prepass(const GpuScene& scene, const CameraMatrices& camer
     checkGl("tile pre-Z");
 }
 
+void TileDepthBounds::samples(const GpuScene& scene, const CameraMatrices& camera) const {
+    if (spans_) spans_->run(scene, camera, depthCopy_);
+}
+
 void TileDepthBounds::runPass(const gl::Program& program, const gl::Texture& input, const gl::Framebuffer& output,
                               int outW, int outH) const {
     StateCache::current().beginPass({output.id(), glm::ivec4(0, 0, outW, outH), {GL_COLOR_ATTACHMENT0}, {}});
@@ -179,6 +190,12 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     glEnableVertexAttribArray(gl::kPosition);
     glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     for (size_t c = 0; c < chains_.size(); ++c) {
+        if (spans_) {
+            horizontal_[c].use();
+            spans_->texture().bind(gl::kUnitTileDepthMin);  // free until half-Z, which MSAA goes without
+            horizontal_[c].set("uSpans", gl::kUnitTileDepthMin);
+            horizontal_[c].set("uSpanBoundScale", spans_->boundScale());
+        }
         runPass(horizontal_[c], depthCopy_, chains_[c].columnsFbo, tilesX_, height_);
         runPass(vertical_[c], chains_[c].columns, chains_[c].tilesFbo, tilesX_, tilesY_);
     }

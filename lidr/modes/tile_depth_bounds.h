@@ -19,6 +19,9 @@
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/modes/light_grid.h"
+#include "lidr/technique/depth_span_pass.h"
+
+#include <memory>
 
 namespace lidr {
 
@@ -30,10 +33,16 @@ public:
     // `depthStencil` is the frame's depth-stencil buffer (width x height), filled by prepass().
     // `halfZ`: also split each tile's range at its middle (two more passes, tile_depth_split.frag), so the
     // ranges come back with `split` set.
+    // `msaa` (MSAA targets, else nullptr): each tile's range also covers the surfaces its pixels' samples shade
+    // (DepthSpanPass, drawn by samples()); float reduction only (UnsupportedError where the context has none or no
+    // half-float colour buffers), without half-Z.
     TileDepthBounds(const GlInfo& info, int width, int height, int tileSize, const gl::Renderbuffer& depthStencil,
-                    bool forcePacked = false, bool halfZ = false);
+                    bool forcePacked = false, bool halfZ = false, const RenderTargets* msaa = nullptr);
     // Clears depth, stencil and the depth copy, then draws the scene's opaque geometry.
     void prepass(const GpuScene& scene, const CameraMatrices& camera) const;
+    // MSAA, after prepass(): the MSAA pre-pass into the targets' multisampled depth, with the samples' depth spans.
+    void samples(const GpuScene& scene, const CameraMatrices& camera) const;
+    bool coversSamples() const { return spans_ != nullptr; }
     // Reduces the depth copy to one (min, max) per tile on the GPU and reads the result back.
     std::vector<TileDepthRange> reduce() const;
     DepthReductionFormat format() const { return format_; }
@@ -62,6 +71,7 @@ private:
     std::vector<gl::Program> horizontal_, vertical_;  // per chain
     std::vector<gl::Program> splitHorizontal_, splitVertical_;  // per split chain
     bool halfZ_ = false;
+    std::unique_ptr<DepthSpanPass> spans_;  // MSAA
     gl::Buffer triangle_;
 };
 

@@ -43,10 +43,16 @@ TiledRenderer::TiledRenderer(const GlInfo& info, const Scene& scene, const Tiled
       options_(options),
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()) {
-    if (options_.depthBounds && options_.msaaSamples == 0)
-        depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
-                                                         frame_.targets.depthStencil(), options_.forcePackedDepth,
-                                                         options_.halfZ);
+    if (options_.depthBounds) {
+        try {
+            depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
+                                                             frame_.targets.depthStencil(), options_.forcePackedDepth,
+                                                             options_.halfZ,
+                                                             options_.msaaSamples > 0 ? &frame_.targets : nullptr);
+        } catch (const UnsupportedError&) {
+            if (options_.msaaSamples == 0) throw;  // MSAA without float targets: 2D lists (depthBoundsUsed false)
+        }
+    }
     buildProgram(options_.initialLoopBound);
     frameInfo_.shaderRebuilds = 0;
 }
@@ -120,6 +126,8 @@ void TiledRenderer::drawDepthPrepass(const CameraMatrices& cam) {
     TimedPass depthPrepassTime(frame_.timer, pass::kDepthPrepass.name);
     if (depthBounds_) {
         depthBounds_->prepass(frame_.scene, cam);
+        if (!depthBounds_->coversSamples()) return;
+        depthBounds_->samples(frame_.scene, cam);  // MSAA: the samples' depth, with the depths they shade
     } else if (options_.preZ) {
         frame_.targets.bindColor();
         frame_.depthPrepass.run(frame_.scene, cam);

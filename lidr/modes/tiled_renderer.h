@@ -26,8 +26,9 @@ struct TiledOptions {
     bool halfZ = false;                // also split each tile's depth range in two (needs depthBounds)
     bool transparency = true;          // draw transparent meshes (opacity < 1) after the opaque ones
     // MSAA samples: 0, or 2..GL_MAX_SAMPLES. Shading goes to the multisampled targets and is resolved. The
-    // depth bounds are then not used (2D lists only): GL 2.1 cannot read per-sample depth, and one depth per
-    // pixel misses samples of triangles that cover no pixel centre. frameInfo().depthBoundsUsed says so.
+    // depth bounds then cover every sample's surface (one depth per pixel would miss samples of triangles that
+    // cover no pixel centre): the MSAA depth spans of LIDR's sphere-span test (DepthSpanPass), reduced per tile;
+    // without float colour buffers 2D lists only, and no half-Z. frameInfo().depthBoundsUsed says which.
     int msaaSamples = 0;
     bool forceFixedLightTable = false; // the RGBA8 fixed-point light table even with float textures
     bool forcePackedDepth = false;     // the RGBA8 packed depth reduction even with float render targets
@@ -41,7 +42,7 @@ struct TiledFrameInfo {
     int loopBound = 0;          // LIDR_MAX_TILE_LIGHTS the frame's shader ran with (>= every list's length)
     int shaderRebuilds = 0;     // times the loop bound grew, since construction
     int listTextureRows = 0;    // rows of the index list texture (it grows too)
-    bool depthBoundsUsed = false;   // false without depthBounds, and under MSAA
+    bool depthBoundsUsed = false;   // false without depthBounds, and under MSAA without float colour buffers
     double assignMilliseconds = 0.0;  // CPU time of the light assignment and grid upload (GPU timer queries
                                       // do not see CPU work)
 };

@@ -16,10 +16,42 @@ namespace {
 // occlusion queries over the stencil count, so there it becomes the fixed kBudgetWithoutOcclusionQueries
 // (bit-shift; the automatic width stays). FrameStats::autoDecision.budgetFallback says so each frame.
 LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
+    // The default test lists the lights of the pixel centre's surface; under MSAA that is sphere-span, which
+    // lists those of every sample's surface (interior pixels: the same lists; doc/msaa-transparency.md).
+    if (o.msaaSamples > 0 && !o.perSampleIndices && o.volumeTest == VolumeTest::Sphere) o.volumeTest = VolumeTest::SphereSpan;
     if (info.occlusionQuery || !o.packing.autoBudget()) return o;
     if (o.packing.autoScheme()) o.packing.scheme = PackingSchemeKind::BitShift;
     o.packing.budget = LidrRenderer::kBudgetWithoutOcclusionQueries;
     return o;
+}
+
+// The MSAA options: per-sample index targets where the context has them, a volume test whose single-sample lists
+// cover every sample's surface.
+void checkMsaaOptions(const GlInfo& info, const LidrOptions& o) {
+    if (o.perSampleIndices) {
+        if (o.msaaSamples < 2) throw Error("per-sample index targets need MSAA (2 or more samples)");
+        if (!info.multisampleTexture || !info.sampleShading)
+            throw UnsupportedError("per-sample index targets need multisample textures (GL 3.2 / "
+                                   "ARB_texture_multisample) and sample shading (GL 4.0 / ARB_sample_shading); this "
+                                   "context (GL " + info.version + ") lacks them: use the single-sample front-face "
+                                   "index texture instead");
+        if (o.msaaSamples > info.maxColorTextureSamples)
+            throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
+                                   " samples asked for, multisample textures allow at most " +
+                                   std::to_string(info.maxColorTextureSamples));
+    } else if (o.msaaSamples > 0 && !isFrontFaceVolumeTest(o.volumeTest) && o.volumeTest != VolumeTest::SphereSpan) {
+        throw Error("MSAA takes each edge sample's lights from a single-sample index texture that must cover every "
+                    "sample's surface: use the sphere-span (the default), sphere-ray or frontface volume test with MSAA "
+                    "(or per-sample index targets where the context has them)");
+    }
+    if (o.volumeTest == VolumeTest::SphereSpan && (o.msaaSamples == 0 || o.perSampleIndices))
+        throw Error("the sphere-span volume test lists the surfaces of a pixel's MSAA samples: it needs MSAA on the "
+                    "single-sample index path (without MSAA use sphere, which lists the same lights)");
+    if (o.perSampleIndices && isShaderVolumeTest(o.volumeTest))
+        throw Error(std::string("the ") + volumeTestName(o.volumeTest) + " volume test reads single-sample depth; "
+                    "per-sample index targets take backface, exact or frontface");
+    if (o.perSampleIndices && !o.depthPrepass)
+        throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
 }
 
 // Checks the options and returns the concrete packing the first frame uses: "auto" resolved to bit-shift,
@@ -45,26 +77,7 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
     if (!o.depthPrepass && o.volumeTest != VolumeTest::FrontFace)
         throw Error(std::string("the ") + volumeTestName(o.volumeTest) +
                     " volume test needs the depth pre-pass; only frontface may skip it");
-    if (o.perSampleIndices) {
-        if (o.msaaSamples < 2) throw Error("per-sample index targets need MSAA (2 or more samples)");
-        if (!info.multisampleTexture || !info.sampleShading)
-            throw UnsupportedError("per-sample index targets need multisample textures (GL 3.2 / "
-                                   "ARB_texture_multisample) and sample shading (GL 4.0 / ARB_sample_shading); this "
-                                   "context (GL " + info.version + ") lacks them: use the single-sample front-face "
-                                   "index texture instead");
-        if (o.msaaSamples > info.maxColorTextureSamples)
-            throw UnsupportedError("per-sample index targets: " + std::to_string(o.msaaSamples) +
-                                   " samples asked for, multisample textures allow at most " +
-                                   std::to_string(info.maxColorTextureSamples));
-    } else if (o.msaaSamples > 0 && !isFrontFaceVolumeTest(o.volumeTest)) {
-        throw Error("MSAA takes each edge sample's lights from a front-face index texture: use the sphere-ray or "
-                    "frontface volume test with MSAA (or per-sample index targets where the context has them)");
-    }
-    if (o.perSampleIndices && isShaderVolumeTest(o.volumeTest))
-        throw Error(std::string("the ") + volumeTestName(o.volumeTest) + " volume test reads single-sample depth; "
-                    "per-sample index targets take backface, exact or frontface");
-    if (o.perSampleIndices && !o.depthPrepass)
-        throw Error("per-sample index targets are built against the MSAA pre-pass depth: keep the pre-pass");
+    checkMsaaOptions(info, o);
     checkSamples(info, o.msaaSamples);
     // The shader tests read a depth texture; transparent layers under `sphere` take `sphere-ray`.
     if (isShaderVolumeTest(o.volumeTest) && !info.depthTexture)
@@ -157,6 +170,9 @@ constexpr FramePass kLightVolumes{"light-volumes",
 constexpr FramePass kOverlapProbe{"overlap-probe", "stencil count", "overlap measure (occlusion queries)",
                                   "automatic budget"};
 constexpr FramePass kMsaaDepthPrepass{"msaa-depth-prepass", "scene", "depth (MSAA)"};
+constexpr FramePass kDepthSpans{"depth-spans", "scene, depth copy",
+                                "depth (MSAA), depth spans (the depths each pixel's samples shade)",
+                                "sphere-span (MSAA): the MSAA pre-pass"};
 constexpr FramePass kForward{"forward",
                              "scene, depth, index targets, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kForwardTransparent{"forward-transparent",
@@ -197,9 +213,11 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     bool needsDepthTexture = isShaderVolumeTest(options_.volumeTest);
     if (drawTransparent_ && !isFrontFaceVolumeTest(options_.volumeTest)) {
         // The exact front-face lists in batches go with the sphere test; the stencil tests keep front faces.
-        const VolumeTest front = options_.volumeTest == VolumeTest::Sphere ? VolumeTest::SphereRay : VolumeTest::FrontFace;
+        const bool spans = options_.volumeTest == VolumeTest::SphereSpan;
+        const VolumeTest front =
+            options_.volumeTest == VolumeTest::Sphere || spans ? VolumeTest::SphereRay : VolumeTest::FrontFace;
         transparentVolumePass_ =
-            LightVolumePass(info, front, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits});
+            LightVolumePass(info, front, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}, spans);
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
     const int depthPrecision = options_.emulatedDepthBits != 0 ? options_.emulatedDepthBits : options_.depthBits;
@@ -217,6 +235,11 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             StateCache::current().bindFramebuffer(0);
         }
     }
+    if (options_.volumeTest == VolumeTest::SphereSpan) {
+        depthSpans_ = DepthSpanPass(info, frame_.targets);
+        volumePass_.setDepthSpans(&depthSpans_.texture(), depthSpans_.boundScale());
+        transparentVolumePass_.setDepthSpans(&depthSpans_.texture(), depthSpans_.boundScale());
+    }
     if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && !info.gles) {
         // OpenGL ES 2.0 keeps the volume meshes: it cannot read depth back (glReadPixels takes colour only).
         volumeTiles_ = std::make_unique<VolumeTiles>(width, height, options_.volumeTileSize);
@@ -228,12 +251,13 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
 std::vector<FramePass> LidrRenderer::passes() const {
     std::vector<FramePass> p{pass::kShadowMaps};
     if (options_.depthPrepass) p.push_back(depthTexture_ ? kDepthPrepassCopy : kDepthPrepass);
+    if (depthSpans_) p.push_back(kDepthSpans);
     if (volumeTiles_ && options_.depthPrepass) p.push_back(kVolumeTiles);
     p.push_back(kFramePlan);
     if (transparentIndexTargets_) p.push_back(kLightVolumesTransparent);
     p.push_back(kLightVolumes);
     if (options_.packing.autoBudget()) p.push_back(kOverlapProbe);
-    if (frame_.targets.samples() > 0 && options_.depthPrepass && !options_.perSampleIndices)
+    if (frame_.targets.samples() > 0 && options_.depthPrepass && !options_.perSampleIndices && !depthSpans_)
         p.push_back(kMsaaDepthPrepass);
     p.push_back(kForward);
     if (drawTransparent_) p.push_back(kForwardTransparent);
@@ -360,7 +384,7 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         StateCache::current().clear(clear);
         return;
     }
-    TimedPass depthPrepassTime(frame_.timer, kDepthPrepass.name);
+    TimedPass depthTime(frame_.timer, kDepthPrepass.name);
     frame_.depthPrepass.run(frame_.scene, cam);
     if (!depthTexture_) return;
     // The shader volume tests read the pre-pass depth from a texture that is not attached to the framebuffer
@@ -375,6 +399,12 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, frame_.targets.width(), frame_.targets.height());
         checkGl("depth copy for the volume tests");
     }
+    depthTime.end();
+    if (!depthSpans_) return;
+    // sphere-span: the MSAA pre-pass (the forward pass tests against it) writes the samples' spans as it goes.
+    TimedPass depthSpansTime(frame_.timer, kDepthSpans.name);
+    depthSpans_.run(frame_.scene, cam, depthTexture_);
+    frame_.targets.bindSingleSample();
 }
 
 TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) {
@@ -501,7 +531,7 @@ void LidrRenderer::recordFrame(const TileDecision::Choice& tiles) {
 
 void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& shading, bool lights) {
     const bool multisampled = frame_.targets.samples() > 0;
-    if (multisampled && options_.depthPrepass && !options_.perSampleIndices) {
+    if (multisampled && options_.depthPrepass && !options_.perSampleIndices && !depthSpans_) {
         TimedPass msaaDepthPrepassTime(frame_.timer, kMsaaDepthPrepass.name);
         frame_.targets.bindColor();
         frame_.depthPrepass.run(frame_.scene, cam);

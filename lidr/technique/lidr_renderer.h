@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lidr/technique/auto_configuration.h"
+#include "lidr/technique/depth_span_pass.h"
 #include "lidr/technique/overlap_probe.h"
 #include "lidr/technique/forward_pass.h"
 #include "lidr/technique/frame_plan.h"
@@ -128,6 +129,9 @@ public:
     // was drawn with (LidrOptions::volumeDetail picks coarser volumes for lights small on screen).
     std::vector<float> volumeOutsideRadii(const std::vector<PointLight>& lights) const;
     std::vector<ImageRGBA8> readIndexTargets() const;
+    // sphere-span (MSAA): per pixel, top to bottom, the window depths the samples shade (DepthSpanPass::Span);
+    // empty for the other tests.
+    std::vector<DepthSpanPass::Span> readDepthSpans() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;
@@ -195,6 +199,7 @@ private:
     // sphere test discards what they shadow (its lights carry their tiles); every forward pass looks the listed
     // lights up by index.
     FrameResources frame_;
+    DepthSpanPass depthSpans_;  // sphere-span: what the volume pass reads beside the depth copy
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;
     Variant* currentTransparent_ = nullptr;

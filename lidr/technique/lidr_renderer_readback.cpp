@@ -52,3 +52,12 @@ std::vector<uint8_t> LidrRenderer::readLightCounts() const {
 }
 
 }  // namespace lidr
+
+namespace lidr {
+
+std::vector<DepthSpanPass::Span> LidrRenderer::readDepthSpans() const {
+    if (!depthSpans_) return {};
+    return depthSpans_.readSpans(frame_.targets.readDepth());
+}
+
+}  // namespace lidr

@@ -13,8 +13,10 @@
 
 namespace lidr {
 
-LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth)
-    : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1) {
+LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth,
+                                         bool depthSpans)
+    : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1),
+      readsSpans_(test == VolumeTest::SphereSpan || (test == VolumeTest::SphereRay && depthSpans)) {
     uploadMeshes();
     programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
         ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
@@ -75,9 +77,9 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
     maxVertexUniformVectors_ = info.maxVertexUniformVectors;
     // By value: the geometry moves with its pass.
     const int uniforms = maxVertexUniformVectors_;
-    auto programs = [info, test, depth, batch = batch_, uniforms](bool screenTiles, bool cones,
-                                                                  const ShaderDefines& shadow) {
-        return DrawTargetPrograms(info, [test, depth, batch, uniforms, screenTiles, cones, shadow](int targetCount) {
+    auto programs = [info, test, depth, batch = batch_, uniforms, spans = readsSpans_](bool screenTiles, bool cones,
+                                                                                     const ShaderDefines& shadow) {
+        return DrawTargetPrograms(info, [test, depth, batch, uniforms, spans, screenTiles, cones, shadow](int targetCount) {
             if (targetCount != 1 && targetCount != 2 && targetCount != 4)
                 throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
                             std::to_string(targetCount));
@@ -85,6 +87,7 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
                                   {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
                                                                          !shadow.empty()))}};
             if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
+            if (spans) defs.push_back({"LIDR_DEPTH_SPAN", "1"});
             if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
             if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
             defs.insert(defs.end(), shadow.begin(), shadow.end());
@@ -274,6 +277,13 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepthMargin", kSphereDepthSteps / depthUnits_);  // steps of the pre-pass depth buffer
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
+    if (readsSpans_) {
+        if (!(depthSpans_ && *depthSpans_))
+            throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA depth spans");
+        program.set("uDepthSpan", gl::kUnitDepthSpans);
+        program.set("uSpanBoundScale", spanBoundScale_);
+        depthSpans_->bind(gl::kUnitDepthSpans);
+    }
     lightsUniform_ = program.uniform<glm::vec4>("uLights");
     conesUniform_ = program.uniform<glm::vec4>("uCones");
     colorsUniform_ = program.uniform<glm::vec4>("uIndexColors");

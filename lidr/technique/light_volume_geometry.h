@@ -69,8 +69,9 @@ public:
 class LightVolumeGeometry final : public VolumeGeometry {
 public:
     LightVolumeGeometry() = default;
-    // volumeDetail, depth: see LightVolumePass.
-    LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth = {});
+    // volumeDetail, depth, depthSpans: see LightVolumePass.
+    LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth = {},
+                        bool depthSpans = false);
 
     VolumeLightFacts factsFor(const VolumeLight& light, const CameraMatrices& camera) const override;
     void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;
@@ -91,6 +92,12 @@ public:
     // The precision of the depth the shader tests read (the pre-pass's depth buffer, copied): 24 or 16 bits;
     // kSphereDepthSteps are steps of it.
     void setDepthBits(int bits) { depthUnits_ = float((1u << bits) - 1u); }
+    // sphere-span, and sphere-ray built with depthSpans: the frame's MSAA depth spans (DepthSpanPass::texture(),
+    // outliving the pass) and the factor that turns a stored value into a bound (DepthSpanPass::boundScale()).
+    void setDepthSpans(const gl::Texture* spans, float boundScale) {
+        depthSpans_ = spans;
+        spanBoundScale_ = boundScale;
+    }
 
     // Tile-culled volumes (the sphere test only): with the frame's pre-pass depth per tile (volume_tiles.h; it
     // must outlive the pass), the pass draws each light as screen quads over the tiles of its sphere's screen
@@ -193,6 +200,9 @@ private:
     CameraMatrices camera_;
     glm::ivec2 targetSize_{1};
     const gl::Texture* depth_ = nullptr;
+    bool readsSpans_ = false;  // the batch programs read the depth spans (LIDR_DEPTH_SPAN)
+    const gl::Texture* depthSpans_ = nullptr;
+    float spanBoundScale_ = 0.0f;
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;
     float depthUnits_ = 16777215.0f;  // 2^depthBits - 1

@@ -51,7 +51,10 @@ public:
     // the 320-face one stays under a pixel on screen (lidr-bench: about half the volume pass on many small
     // lights); false: always the 320-face volume. depth: the depth precision the volume shaders emulate
     // (LidrOptions::emulatedDepthBits).
-    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false, DepthEmulation depth = {});
+    // depthSpans: a sphere-ray pass beside a sphere-span one, whose rays end at the far end of the samples' depth
+    // span instead of the pixel centre's surface (setDepthSpans); sphere-span always reads the spans.
+    LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false, DepthEmulation depth = {},
+                    bool depthSpans = false);
 
     // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil. The shader tests
     // read `depth`, a single-sample depth texture of the pre-pass (not attached to the targets).
@@ -76,6 +79,7 @@ public:
     // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
     // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
+    void setDepthSpans(const gl::Texture* spans, float boundScale) { volumes_.setDepthSpans(spans, boundScale); }
     // The sphere test's shadow test (LightVolumeGeometry::setShadows): lights with a VolumeLight::shadowTile are
     // kept only where their maps leave the surface lit. nullptr: none (the front-face tests never have one).
     void setShadows(const ShadowMaps* maps, const ShadowSettings& settings) { volumes_.setShadows(maps, settings); }

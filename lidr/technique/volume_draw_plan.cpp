@@ -15,6 +15,7 @@ const char* volumeTestName(VolumeTest t) {
     case VolumeTest::FrontFace: return "frontface";
     case VolumeTest::Sphere: return "sphere";
     case VolumeTest::SphereRay: return "sphere-ray";
+    case VolumeTest::SphereSpan: return "sphere-span";
     }
     return "?";
 }
@@ -25,7 +26,8 @@ VolumeTest parseVolumeTest(const std::string& name) {
     if (name == "frontface" || name == "front-face") return VolumeTest::FrontFace;
     if (name == "sphere") return VolumeTest::Sphere;
     if (name == "sphere-ray") return VolumeTest::SphereRay;
-    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface, sphere, sphere-ray)");
+    if (name == "sphere-span") return VolumeTest::SphereSpan;
+    throw Error("unknown volume test '" + name + "' (valid: backface, exact, frontface, sphere, sphere-ray, sphere-span)");
 }
 
 const char* volumeStepRoleName(VolumeStepRole r) {
@@ -126,7 +128,7 @@ void planTargets(const VolumeDraw& d, const VolumePlanContext& c, VolumeDrawPlan
     }
 }
 
-// The shader tests (sphere, sphere-ray): lights in batches, one step a batch.
+// The shader tests (sphere, sphere-ray, sphere-span): lights in batches, one step a batch.
 void planShaderTest(const VolumeDraw& d, const VolumePlanContext& c, const std::vector<VolumeLightFacts>& lights,
                     const RankWindow& window, StateTable& table, VolumeDrawPlan& plan) {
     // Back faces of the enclosing mesh cover every pixel whose eye ray meets the sphere past the near plane,
@@ -139,7 +141,8 @@ void planShaderTest(const VolumeDraw& d, const VolumePlanContext& c, const std::
     RenderState& st = table.of(VolumeStepRole::Write);
     st = backFaceState(d, c);
     // Sphere: depth GEQUAL is a cheap pre-test (a surface inside the sphere lies in front of the mesh's back
-    // face), so fragments behind the surface skip the stencil; the ray test needs every fragment.
+    // face), so fragments behind the surface skip the stencil; the ray and span tests need every fragment (a
+    // span's far end may lie behind the single-sample depth the pass tests against).
     st.depthTest = c.test == VolumeTest::Sphere && !c.screenTiles;
     st.stencil.func = window.on ? GL_EQUAL : GL_ALWAYS;
     st.stencil.ref = d.rankFirst;

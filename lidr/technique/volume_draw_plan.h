@@ -23,14 +23,19 @@ enum class VolumeTest {
     // true sphere does not reach, so the stencil sees real marks only; lights go in batches of many per draw.
     Sphere,        // the surface point lies inside the sphere: exactly the lights that shade the pixel
     SphereRay,     // the eye ray between the near plane and the surface meets the sphere: the front-face lists
-                   // of transparent layers and MSAA edge samples, exactly
+                   // of transparent layers (and, before sphere-span, of MSAA edge samples)
+    SphereSpan,    // MSAA: the eye ray between the nearest and the farthest surface the pixel's samples shade
+                   // meets the sphere (DepthSpanPass): `sphere` on interior pixels, the edge samples' surfaces on
+                   // edge pixels
 };
 // True for the tests decided in the fragment shader (they need the pre-pass depth as a texture).
-inline bool isShaderVolumeTest(VolumeTest t) { return t == VolumeTest::Sphere || t == VolumeTest::SphereRay; }
+inline bool isShaderVolumeTest(VolumeTest t) {
+    return t == VolumeTest::Sphere || t == VolumeTest::SphereRay || t == VolumeTest::SphereSpan;
+}
 // True for the tests that mark every light crossing the eye ray before the surface (front-face lists).
 inline bool isFrontFaceVolumeTest(VolumeTest t) { return t == VolumeTest::FrontFace || t == VolumeTest::SphereRay; }
 const char* volumeTestName(VolumeTest t);
-VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface", "sphere", "sphere-ray"
+VolumeTest parseVolumeTest(const std::string& name);  // "backface", "exact", "frontface", "sphere", "sphere-ray", "sphere-span"
 
 // One sub-pass of a packing scheme: which targets, how to blend, and how stencil limits the writes.
 struct VolumeDraw {

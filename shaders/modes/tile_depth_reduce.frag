@@ -5,10 +5,16 @@
 // input's edge (the last row and column of tiles may be partial).
 //   LIDR_INPUT_PACKED   1: input texels hold one packed depth (depth_pack.glsl); 0: float (min, max) in RG
 //   LIDR_OUTPUT_PACKED  1: write one packed depth, the max if LIDR_REDUCE_MAX else the min; 0: float RG
+//   LIDR_INPUT_SPANS    1 (MSAA, first pass, packed input): each pixel counts the depths its samples shade, from
+//                       the centre's packed depth and the MSAA depth spans (lidr/technique/depth_span_pass.h)
 #include "depth_pack.glsl"
 
 uniform sampler2D uInput;
 uniform vec2 uInputSize;
+#if LIDR_INPUT_SPANS
+uniform sampler2D uSpans;
+uniform float uSpanBoundScale;  // DepthSpanPass::boundScale()
+#endif
 
 void main() {
     vec2 cell = floor(gl_FragCoord.xy);
@@ -26,7 +32,18 @@ void main() {
         vec4 texel = texture2D(uInput, (p + 0.5) / uInputSize);
 #if LIDR_INPUT_PACKED
         float v = lidrUnpackDepthUnits(texel);
+#if LIDR_INPUT_SPANS
+        // The pixel's samples shade depths within [lo, hi] (units; one more each side for the packing's rounding);
+        // background where none does.
+        vec2 excess = texture2D(uSpans, (p + 0.5) / uInputSize).rg * (uSpanBoundScale * kLidrDepthUnits);
+        bool centreSurface = v < kLidrDepthUnits;
+        float lo = centreSurface ? v - excess.g : kLidrDepthUnits - excess.g;
+        float hi = centreSurface ? v + excess.r : min(excess.r, kLidrDepthUnits);
+        if (lo > hi) lo = hi = kLidrDepthUnits;
+        range = vec2(min(range.x, max(lo - 1.0, 0.0)), max(range.y, min(hi + 1.0, kLidrDepthUnits)));
+#else
         range = vec2(min(range.x, v), max(range.y, v));
+#endif
 #else
         range = vec2(min(range.x, texel.r), max(range.y, texel.g));
 #endif

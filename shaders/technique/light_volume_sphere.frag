@@ -6,7 +6,10 @@
 // inside its cone, where the shading's cone term is above 0 (opaque lists; the front-face lists keep the sphere).
 //   LIDR_SPHERE_RAY undefined: the surface point lies inside the sphere (opaque lists).
 //   LIDR_SPHERE_RAY defined:   the eye ray between the near plane and the surface meets the sphere (front-face
-//                              lists for transparent layers and MSAA edge samples).
+//                              lists for transparent layers).
+//   LIDR_DEPTH_SPAN (MSAA, sphere-span): the pixel's samples shade surfaces between two depths (DepthSpanPass,
+//                   uDepthSpan); without LIDR_SPHERE_RAY the ray between them must meet the sphere (interior
+//                   pixels: one depth, the sphere test), with it the ray ends at the farther one.
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
 // front of the eye is ray * z. A few operations a fragment, because on a CPU rasteriser this shader runs for
 // every fragment of every volume (discard and stencil writes force the late depth test there).
@@ -25,6 +28,13 @@ uniform vec2 uDepthToDistance; // window depth d -> distance in front of the eye
 uniform float uNearPlane;
 uniform float uRadiusScale;    // a hair over 1: lights are kept up to here (the CPU truth's band lies inside)
 uniform float uDepthMargin;    // the surface lies within this much window depth of the stored depth (a few steps)
+#ifdef LIDR_DEPTH_SPAN
+// Per pixel, what the samples' shaded depths lie above (r) and below (g) an anchor: the centre's depth, or 0 and
+// 1 where the centre sees no surface; resolved (averaged), so times uSpanBoundScale (the sample count, with a
+// rounding margin) each bounds every sample's.
+uniform sampler2D uDepthSpan;
+uniform float uSpanBoundScale;
+#endif
 
 varying vec4 vLightView;
 #ifdef LIDR_SPOT_CONES
@@ -50,10 +60,25 @@ void main() {
     float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
     float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
-#ifdef LIDR_SPHERE_RAY
-    // The closest point to the centre on the ray between the near plane and the surface.
+#ifdef LIDR_DEPTH_SPAN
+    vec2 excess = texture2D(uDepthSpan, gl_FragCoord.xy * uInvTargetSize).rg * uSpanBoundScale;
+    bool centreSurface = depth < 1.0;
+    float spanNear = centreSurface ? depth - excess.g : 1.0 - excess.g;
+    float spanFar = centreSurface ? depth + excess.r : min(excess.r, 1.0);
+#endif
+#if defined(LIDR_SPHERE_RAY)
+    // The closest point to the centre on the ray between the near plane and the surface (the farthest sample's
+    // with LIDR_DEPTH_SPAN; the far plane where the centre sees none).
+#ifdef LIDR_DEPTH_SPAN
+    if (centreSurface) depth = min(spanFar + uDepthMargin, 1.0);
+#endif
     float surface = uDepthToDistance.x / (depth + uDepthToDistance.y);
     float t = clamp(toCentre, uNearPlane, surface);
+#elif defined(LIDR_DEPTH_SPAN)
+    if (spanNear > spanFar) discard;  // no sample shades a surface
+    float surfaceNear = uDepthToDistance.x / (max(spanNear - uDepthMargin, 0.0) + uDepthToDistance.y);
+    float surfaceFar = uDepthToDistance.x / (min(spanFar + uDepthMargin, 1.0) + uDepthToDistance.y);
+    float t = clamp(toCentre, surfaceNear, surfaceFar);
 #else
     if (depth >= 1.0) discard;  // background: nothing to light
     // The surface's distance is known to within the depth buffer's precision: [surfaceNear, surfaceFar] holds
@@ -70,7 +95,14 @@ void main() {
     // The cone: the shading's ramp dot(unit d, axis) x scale + offset is >= 0 at one end of the surface's span
     // (multiplied by |d|: no division, and the apex, |d| = 0, is kept). A point light's (0, 0, 0, 1) always passes.
     vec3 dNear = ray * surfaceNear - vLightView.xyz, dFar = ray * surfaceFar - vLightView.xyz;
-    if (dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) < 0.0 &&
+#ifdef LIDR_DEPTH_SPAN
+    // An edge pixel's span is long: a segment may cross the cone with both ends outside it, so the cone is
+    // tested on interior pixels only (there the span is the surface's, as in the sphere test).
+    if (excess.r + excess.g <= uDepthMargin &&
+#else
+    if (
+#endif
+        dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) < 0.0 &&
         dot(dFar, vConeView.xyz) + vConeView.w * length(dFar) < 0.0)
         discard;
 #endif
