@@ -292,6 +292,10 @@ def run_model_check(args, url):
 
 
 BENCH_MODES = ("lidr", "tiled", "clustered", "forward-multipass", "forward-brute")
+# The deferred modes need WEBGL_draw_buffers and float colour targets: timed where the browser's WebGL 1 has them,
+# else a row that says refused, naming what is missing (doc/deferred.md).
+DEFERRED_MODES = ("deferred", "tiled-deferred")
+DEFERRED_NEEDS = ("draw_buffers", "float", "half")
 
 
 def run_bench_check(args, url):
@@ -318,6 +322,22 @@ def run_bench_check(args, url):
             problems.append(f"mode {mode}: not 2 frames with positive times: {rows[0]!r}")
         elif rows[0].strip() not in log:  # the page printed the table to the console (Chromium's log)
             problems.append(f"mode {mode}: its row is not in the page's console")
+    for mode in DEFERRED_MODES:
+        rows = [line for line in lines[2:] if line.split()[:1] == [mode]]
+        if len(rows) != 1:
+            problems.append(f"{len(rows)} rows for mode {mode}, not 1")
+            continue
+        fields = rows[0].split()
+        if fields[1:2] == ["refused:"]:
+            if not any(need in rows[0] for need in DEFERRED_NEEDS):
+                problems.append(f"mode {mode}: refused without naming what WebGL 1 lacks: {rows[0]!r}")
+            continue
+        try:
+            figures = [float(x) for x in fields[2:7]]
+        except ValueError:
+            figures = []
+        if fields[1:2] != ["2"] or len(figures) != 5 or min(figures) <= 0.0:
+            problems.append(f"mode {mode}: neither 2 frames with positive times nor refused: {rows[0]!r}")
     for problem in problems:
         print(f"FAIL bench: {problem}")
     if problems:
