@@ -62,10 +62,15 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
 std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {
     if (centre.width != width_ || centre.height != height_) throw Error("readSpans: depth image size differs");
     std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
+#ifdef __EMSCRIPTEN__
+    // WebGL 1 has neither glGetTexImage nor MSAA render targets: no spans are drawn there to read.
+    throw Error("readSpans: WebGL 1 has no MSAA, so there are no depth spans to read back");
+#else
     texture().bind(0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
     checkGl("MSAA depth spans read-back");
+#endif
     const float scale = boundScale();
     std::vector<Span> spans(rgba.size() / 4);
     for (int y = 0; y < height_; ++y)
