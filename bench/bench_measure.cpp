@@ -194,18 +194,7 @@ void judgeGridLists(const Renderer& renderer, const Scene& scene, const std::vec
     if (!tiled && !clustered) return;
     const CoverageTruth truth = computeCoverage(renderer.targets().readDepth(),
                                                 cameraMatrices(scene.camera, run.width, run.height), lights);
-    PixelListCheck check;
-    if (clustered) {
-        const ClusterGrid& g = clustered->grid();
-        check = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
-    } else {
-        const LightGrid& g = tiled->grid();
-        std::vector<int> tileOfPixel(size_t(run.width) * size_t(run.height));
-        for (int y = 0; y < run.height; ++y)
-            for (int x = 0; x < run.width; ++x)
-                tileOfPixel[size_t(y) * size_t(run.width) + size_t(x)] = g.tileOf(x, run.height - 1 - y);
-        check = checkPixelLists(truth, tileOfPixel, g.entries(), g.opaqueOffsets(), g.opaqueCounts());
-    }
+    const PixelListCheck check = checkGridLists(renderer, truth, run.width, run.height);
     row.hasPixelLists = true;
     row.droppedLightPixels = check.missingPairs;
     row.pixelsWithDrops = check.pixelsWithMissing;

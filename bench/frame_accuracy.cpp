@@ -1,5 +1,7 @@
 #include "frame_accuracy.h"
 
+#include "lidr/base/error.h"
+
 #include <algorithm>
 
 #include "lidr/eval/frame_evaluation.h"
@@ -89,17 +91,7 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
         return a;
     }
     if (deferred) return judgeLightCounts(a, truth, deferred->gBuffer().readLightCounts());
-    PixelListCheck check;
-    if (clustered) {
-        const ClusterGrid& g = clustered->grid();
-        check = checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
-    } else {
-        const LightGrid& g = tiled ? tiled->grid() : tiledDeferred->grid();
-        std::vector<int> tileOfPixel(size_t(width) * size_t(height));
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) tileOfPixel[size_t(y) * size_t(width) + size_t(x)] = g.tileOf(x, height - 1 - y);
-        check = checkPixelLists(truth, tileOfPixel, g.entries(), g.opaqueOffsets(), g.opaqueCounts());
-    }
+    const PixelListCheck check = checkGridLists(renderer, truth, width, height);
     a.hasLists = true;
     a.droppedLightPixels = check.missingPairs;
     a.pixelsWithDrops = check.pixelsWithMissing;
@@ -107,6 +99,21 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
     a.shadedLightPixels = check.listPairs;
     a.lightingComputations = check.listPairs;  // each surface pixel loops over its tile's or cluster's list
     return a;
+}
+
+PixelListCheck checkGridLists(const Renderer& renderer, const CoverageTruth& truth, int width, int height) {
+    if (const auto* clustered = dynamic_cast<const ClusteredRenderer*>(&renderer)) {
+        const ClusterGrid& g = clustered->grid();
+        return checkPixelLists(truth, clustered->pixelClusters(), g.entries(), g.offsets(), g.counts());
+    }
+    const auto* tiled = dynamic_cast<const TiledRenderer*>(&renderer);
+    const auto* tiledDeferred = dynamic_cast<const TiledDeferredRenderer*>(&renderer);
+    if (!tiled && !tiledDeferred) throw Error("checkGridLists: the mode keeps no tile or cluster lists");
+    const LightGrid& g = tiled ? tiled->grid() : tiledDeferred->grid();
+    std::vector<int> tileOfPixel(size_t(width) * size_t(height));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) tileOfPixel[size_t(y) * size_t(width) + size_t(x)] = g.tileOf(x, height - 1 - y);
+    return checkPixelLists(truth, tileOfPixel, g.entries(), g.opaqueOffsets(), g.opaqueCounts());
 }
 
 long countLightingComputations(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights) {

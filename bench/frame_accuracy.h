@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lidr/eval/image_compare.h"
+#include "lidr/eval/light_coverage.h"
 #include "lidr/render/renderer.h"
 
 namespace lidr::bench {
@@ -35,6 +36,10 @@ FrameAccuracy judgeFrame(Renderer& renderer, const Camera& camera, const std::ve
 
 // The lighting computations of the frame `renderer` drew last (FrameAccuracy::lightingComputations; -1 where not
 // counted). Reads the frame's depth and its lists or counts back: for measuring runs, after the frame's timing.
+// Each pixel's list of a tiled, tiled-deferred or clustered frame (the mode's own grid) against the CPU truth:
+// missing, extra and listed pairs. Throws lidr::Error for a mode without such lists.
+PixelListCheck checkGridLists(const Renderer& renderer, const CoverageTruth& truth, int width, int height);
+
 long countLightingComputations(Renderer& renderer, const Camera& camera, const std::vector<PointLight>& lights);
 
 }  // namespace lidr::bench
