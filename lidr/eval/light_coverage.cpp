@@ -65,6 +65,17 @@ void fillLists(CoverageTruth& t, std::vector<std::pair<uint32_t, uint32_t>>& pai
 
 }  // namespace
 
+namespace {
+// Whether a point `d` from a spot light's apex lies inside its cone by more than `band` of the shader's ramp. At the
+// apex itself the shader's direction is 0, its ramp the offset (below 0: no light).
+bool insideSpotCone(const glm::vec3& d, const glm::dvec4& cone, float band) {
+    const glm::dvec3 fromLight(d);
+    const double length = glm::length(fromLight);
+    const double ramp = (length > 0.0 ? glm::dot(fromLight / length, glm::dvec3(cone)) : 0.0) + cone.w;
+    return ramp > double(band);
+}
+}  // namespace
+
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
                               const std::vector<PointLight>& lights, float band) {
     if (depth.width != camera.width || depth.height != camera.height)
@@ -100,13 +111,7 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
                 if (!t.surface[p]) continue;
                 const glm::vec3 d = world[p] - l.position;
                 if (!(glm::dot(d, d) < inner2)) continue;
-                if (l.isSpot()) {
-                    const glm::dvec3 fromLight(d);
-                    const double length = glm::length(fromLight);
-                    // At the apex itself the shader's direction is 0, its ramp the offset (below 0: no light).
-                    const double ramp = (length > 0.0 ? glm::dot(fromLight / length, glm::dvec3(cone)) : 0.0) + cone.w;
-                    if (!(ramp > double(band))) continue;
-                }
+                if (l.isSpot() && !insideSpotCone(d, cone, band)) continue;
                 pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
             }
     }
@@ -151,12 +156,7 @@ CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat&
                 const float s = len2 > 0.0f ? std::clamp(glm::dot(l.position - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
                 const glm::vec3 d = a + s * ab - l.position;
                 if (!(glm::dot(d, d) < inner * inner)) continue;
-                if (l.isSpot()) {
-                    const glm::dvec3 fromLight(d);
-                    const double length = glm::length(fromLight);
-                    const double ramp = (length > 0.0 ? glm::dot(fromLight / length, glm::dvec3(cone)) : 0.0) + cone.w;
-                    if (!(ramp > double(band))) continue;
-                }
+                if (l.isSpot() && !insideSpotCone(d, cone, band)) continue;
                 pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
             }
     }
