@@ -277,6 +277,26 @@ std::vector<SweepGroup> peersSweep(const SweepGroup& base, bool quick) {
     msaa.msaa = {4};
     msaa.transparency = {false, true};
     groups.push_back(msaa);
+    if (quick) return groups;
+    // Issue 45: where the papers say LIDR or deferred should win: transparency without MSAA (deferred draws its
+    // transparent meshes forward), 64 shadowed lights (every mode reads the same atlas), and 1920x1080 (more pixels
+    // per light: the G-buffer's bandwidth against LIDR's second geometry pass).
+    SweepGroup transparent = g;
+    transparent.scenes = {"hall-255", "room"};
+    transparent.transparency = {true};
+    groups.push_back(transparent);
+    SweepGroup shadowed = g;
+    shadowed.scenes = {"hall-255-shadows-64"};
+    groups.push_back(shadowed);
+    SweepGroup large = g;
+    large.scenes = {"hall-255", "hall-1024"};
+    large.resolutions = {std::make_pair(1920, 1080)};
+    groups.push_back(large);
+    SweepGroup largeMsaa = msaa;
+    largeMsaa.scenes = {"hall-255"};
+    largeMsaa.resolutions = {std::make_pair(1920, 1080)};
+    largeMsaa.transparency = {true};
+    groups.push_back(largeMsaa);
     return groups;
 }
 
