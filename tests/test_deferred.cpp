@@ -277,6 +277,10 @@ TEST_CASE("the RGBA8 G-buffer is the default without float colour buffers: an 8-
     REQUIRE(e.psnr >= kUnorm8SumPsnr);
     TiledDeferredRenderer tiled(noFloat, f.scene, TiledDeferredOptions{}, f.scene.width, f.scene.height);
     CHECK(tiled.gBuffer().format() == GBufferFormat::Unorm8);
+    DeferredOptions half;  // asked for by name, the float layout is refused naming what is missing
+    half.format = GBufferFormat::Half;
+    REQUIRE_THROWS_WITH(DeferredRenderer(noFloat, f.scene, half, f.scene.width, f.scene.height),
+                        Catch::Contains("half-float colour buffers"));
     if (!testGl().readDepthStencil) return;  // the CPU truth reads the depth back
     // Every light touching a pixel's surface ran its shader there: counted in 1/255 steps in the 8-bit sum's alpha.
     Scene scene = firstPersonScene();

@@ -39,7 +39,8 @@ void checkContext(const GlInfo& info, GBufferFormat format) {
         throw UnsupportedError(info.gles ? "an RGBA16F G-buffer needs half-float colour buffers (OES_texture_half_float "
                                            "+ EXT_color_buffer_half_float); --g-buffer rgba8 (or auto) needs none"
                                          : "an RGBA16F G-buffer needs half-float colour buffers (GL 3.0, or "
-                                           "ARB_texture_float + ARB_color_buffer_float)");
+                                           "ARB_texture_float + ARB_color_buffer_float); --g-buffer rgba8 (or auto) "
+                                           "needs none");
     if (format == GBufferFormat::Float && !info.textureFloat)
         throw UnsupportedError("an RGBA32F G-buffer needs float textures (ARB_texture_float / OES_texture_float)");
 }
