@@ -281,6 +281,10 @@ TEST_CASE("the RGBA8 G-buffer is the default without float colour buffers: an 8-
     half.format = GBufferFormat::Half;
     REQUIRE_THROWS_WITH(DeferredRenderer(noFloat, f.scene, half, f.scene.width, f.scene.height),
                         Catch::Contains("half-float colour buffers"));
+    GlInfo mediump = noFloat;  // an ES 2.0 device without GL_FRAGMENT_PRECISION_HIGH cannot unpack the layout
+    mediump.fragmentHighp = false;
+    REQUIRE_THROWS_WITH(DeferredRenderer(mediump, f.scene, DeferredOptions{}, f.scene.width, f.scene.height),
+                        Catch::Contains("highp"));
     if (!testGl().readDepthStencil) return;  // the CPU truth reads the depth back
     // Every light touching a pixel's surface ran its shader there: counted in 1/255 steps in the 8-bit sum's alpha.
     Scene scene = firstPersonScene();

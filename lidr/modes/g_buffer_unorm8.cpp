@@ -31,6 +31,9 @@ void requireComplete(const gl::Framebuffer& fbo, const GlInfo& info) {
 
 GBufferUnorm8::GBufferUnorm8(const GlInfo& info, const RenderTargets& targets)
     : width_(targets.width()), height_(targets.height()) {
+    if (!info.fragmentHighp)  // mediump (fp16) holds integers to 2048 only
+        throw UnsupportedError("the RGBA8 G-buffer packs a 24-bit depth and 12-bit normals, which need highp "
+                               "fragment floats (GL_FRAGMENT_PRECISION_HIGH); this OpenGL ES context has mediump only");
     if (info.maxTextureUnits <= gl::kUnitGBuffer4)
         throw UnsupportedError("the RGBA8 G-buffer's lighting passes sample texture unit " +
                                std::to_string(int(gl::kUnitGBuffer4)) + "; this context has " +

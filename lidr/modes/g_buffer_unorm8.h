@@ -24,8 +24,9 @@ class GBufferUnorm8 {
 public:
     static constexpr int kTargets = 5;
     static constexpr int kBytesPerPixel = 4 * kTargets;
-    // Throws UnsupportedError where the context has too few texture units for the lighting passes (the fifth target
-    // takes unit gl::kUnitGBuffer4) or the driver answers a framebuffer status other than complete.
+    // Throws UnsupportedError where the context has no highp fragment floats (the packing needs integers to 2^24),
+    // too few texture units for the lighting passes (the fifth target takes unit gl::kUnitGBuffer4) or the driver
+    // answers a framebuffer status other than complete.
     GBufferUnorm8(const GlInfo& info, const RenderTargets& targets);
 
     // The geometry pass(es): the targets cleared to 0 (no surface), the opaque meshes drawn with depth EQUAL.
