@@ -22,7 +22,7 @@ const GlInfo& checkedContext(const GlInfo& info, const DeferredOptions& o) {
 }
 
 // Deferred shading's own passes, between FrameResources' (passes(), render()).
-constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets)"};
+constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets; RGBA8: 5)"};
 constexpr FramePass kLightVolumes{"light-volumes", "lights, G-buffer, depth, light table, [shadow atlas]",
                                   "light sum"};
 constexpr FramePass kLightVolumesStencil{"light-volumes",

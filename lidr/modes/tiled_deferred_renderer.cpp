@@ -26,7 +26,7 @@ const GlInfo& checkedContext(const GlInfo& info, const TiledDeferredOptions& o) 
 constexpr FramePass kDepthPrepassWithCopy{"depth-prepass", "scene", "depth, packed depth copy"};
 constexpr FramePass kTileDepthReduce{"tile-depth-reduce", "packed depth copy", "tile depth ranges (read back)"};
 constexpr FramePass kLightGrid{"light-grid", "lights, [tile depth ranges]", "light grid (CPU, uploaded)"};
-constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets)"};
+constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets; RGBA8: 5)"};
 constexpr FramePass kTiledDeferred{"tiled-deferred",
                                    "G-buffer, light grid, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kTransparent{"tiled-transparent",
