@@ -30,7 +30,8 @@ namespace {
 
 // The RGBA8 G-buffer's bounds on the lit floor (doc/deferred.md#accuracy): measured 62.2 dB on llvmpipe and its GL 2.1
 // override, 60.6 on OpenGL ES 2.0 (a half-float light sum); with the 8-bit light sum of a context without half
-// floats, 59.0 and 58.0 dB (max 12 steps where a bright highlight passes 1 and clamps).
+// floats, 59.0 and 58.0 dB (max 12 steps; on the desktop context the half-float sum's frame is off by 1 at most, so
+// the 8-bit sum's clamping and per-light rounding cost the difference).
 constexpr double kUnorm8Psnr = 58.0;
 constexpr double kUnorm8SumPsnr = 55.0;
 

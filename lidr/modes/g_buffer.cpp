@@ -134,8 +134,8 @@ GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat
         requireComplete(accumulationFbo_, std::string("the ") + accumulationFormatName() + " light sum", info);
     }
     if (!unorm8_)
-        program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"), buildShaderSource("g_buffer.frag"),
-                                   geometryAttributes());
+        program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("g_buffer.frag"), geometryAttributes());
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     checkGl("GBuffer");
