@@ -126,6 +126,15 @@ string(JSON gbuffer_bytes GET "${summary}" deferred g_buffer_bytes_per_pixel)
 if(NOT gbuffer_bytes EQUAL 32)
   message(FATAL_ERROR "lidr-demo --mode deferred: G-buffer ${gbuffer_bytes} bytes a pixel")
 endif()
+# The RGBA8 G-buffer (five 8-bit targets, 20 bytes) with the half-float light sum llvmpipe renders: within 8 steps.
+run_demo(deferred-rgba8 "--mode deferred --g-buffer rgba8" --mode deferred --g-buffer rgba8 --width 160 --height 120
+         --frames 1)
+string(JSON gbuffer_bytes GET "${summary}" deferred g_buffer_bytes_per_pixel)
+string(JSON sum_format GET "${summary}" deferred light_sum_format)
+string(JSON max_error GET "${summary}" error whole_image max_abs_error)
+if(NOT gbuffer_bytes EQUAL 20 OR NOT sum_format STREQUAL "rgba16f" OR max_error GREATER 8)
+  message(FATAL_ERROR "lidr-demo --g-buffer rgba8: ${gbuffer_bytes} bytes a pixel, light sum ${sum_format}, max error ${max_error}")
+endif()
 foreach(mode depth16 tiled clustered deferred tiled-deferred forward-brute)
   file(READ ${OUT}/${mode}/summary.json summary)
   string(JSON computations GET "${summary}" lighting computations)
@@ -165,7 +174,7 @@ set(bad_runs
   "--mode|deferred|--msaa|4"
   "--mode|tiled-deferred|--msaa|4"
   "--mode|deferred|--deferred-stencil|maybe"
-  "--mode|deferred|--g-buffer|rgba8"
+  "--mode|deferred|--g-buffer|rgba12"
   "--mode|tiled|--tile-size|0"
   "--mode|tiled|--tile-size|5000"
   "--mode|tiled|--dump|${OUT}/bad-dump")

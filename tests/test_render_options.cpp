@@ -133,10 +133,11 @@ TEST_CASE("the deferred modes' settings are table rows that reach their options"
     CHECK(findRenderOption("tile-size")->usedBy("tiled-deferred"));
     RenderOptionValues v;
     CHECK_THROWS_WITH(setRenderOption(v, "deferred-stencil", "maybe"), "--deferred-stencil must be on or off, got 'maybe'");
-    CHECK_THROWS_WITH(setRenderOption(v, "g-buffer", "rgba8"), "--g-buffer must be rgba16f or rgba32f, got 'rgba8'");
+    CHECK_THROWS_WITH(setRenderOption(v, "g-buffer", "rgba12"),
+                      "--g-buffer must be auto, rgba16f, rgba32f or rgba8, got 'rgba12'");
     const Scene scene = makeDefaultScene();
     CHECK(!renderModeOptionsFrom(v, scene).deferred.stencil);  // the default: off (measured, doc/deferred.md)
-    CHECK(renderModeOptionsFrom(v, scene).deferred.format == GBufferFormat::Half);
+    CHECK(renderModeOptionsFrom(v, scene).deferred.format == GBufferFormat::Auto);  // rgba16f or rgba8 by context
     setRenderOption(v, "mode", "deferred");
     setRenderOption(v, "deferred-stencil", "on");
     setRenderOption(v, "g-buffer", "rgba32f");
@@ -146,4 +147,6 @@ TEST_CASE("the deferred modes' settings are table rows that reach their options"
     CHECK(o.deferred.format == GBufferFormat::Float);
     CHECK(o.tiledDeferred.format == GBufferFormat::Float);
     CHECK(o.tiledDeferred.tileSize == 16);
+    setRenderOption(v, "g-buffer", "rgba8");
+    CHECK(renderModeOptionsFrom(v, scene).tiledDeferred.format == GBufferFormat::Unorm8);
 }

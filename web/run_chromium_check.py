@@ -292,8 +292,9 @@ def run_model_check(args, url):
 
 
 BENCH_MODES = ("lidr", "tiled", "clustered", "forward-multipass", "forward-brute")
-# The deferred modes need WEBGL_draw_buffers and float colour targets: timed where the browser's WebGL 1 has them,
-# else a row that says refused, naming what is missing (doc/deferred.md).
+# The deferred modes' RGBA16F G-buffer needs WEBGL_draw_buffers and half-float colour targets; without them the
+# default G-buffer is RGBA8 (doc/deferred.md). Timed where the mode runs, else a row that says refused, naming what
+# is missing.
 DEFERRED_MODES = ("deferred", "tiled-deferred")
 DEFERRED_NEEDS = ("draw_buffers", "float", "half")
 

@@ -42,6 +42,9 @@ enum TextureUnit : int {
     kUnitMetallicRoughness = 13,
     kUnitOcclusion = 14,
     kUnitNormal = 15,
+    // The RGBA8 G-buffer's fifth target (lidr/modes/g_buffer_unorm8.h): the emissive texture's unit, which the
+    // deferred lighting passes never bind (they read no material texture).
+    kUnitGBuffer4 = kUnitEmissive,
     // Shading passes and LIDR's volume pass with shadows: the shadow atlas (lidr/render/shadow_maps.h), above
     // everything else where the context has more than 16 units; on 16 (WebGL's usual count) shadows need the
     // float light table and take the fixed table's unit (ShadowMaps::unit).

@@ -22,7 +22,7 @@ const GlInfo& checkedContext(const GlInfo& info, const DeferredOptions& o) {
 }
 
 // Deferred shading's own passes, between FrameResources' (passes(), render()).
-constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets)"};
+constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets; RGBA8: 5)"};
 constexpr FramePass kLightVolumes{"light-volumes", "lights, G-buffer, depth, light table, [shadow atlas]",
                                   "light sum"};
 constexpr FramePass kLightVolumesStencil{"light-volumes",
@@ -74,6 +74,7 @@ DeferredRenderer::DeferredRenderer(const GlInfo& info, const Scene& scene, const
       gBuffer_(info, frame_.targets, options.format, true) {
     lightDefines_ = frame_.lightTable.defines();
     lightDefines_.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
+    for (const auto& d : gBuffer_.shaderDefines()) lightDefines_.push_back(d);  // the RGBA8 layout's decoding
     light_ = gl::Program::create("deferred-light", buildShaderSource("deferred_volume.vert"),
                                  buildShaderSource("deferred_light.frag", lightDefines_), geometryAttributes());
     mark_ = gl::Program::create("deferred-stencil-mark", buildShaderSource("deferred_volume.vert"),
@@ -247,11 +248,16 @@ ModeStatistics DeferredRenderer::modeStatistics() const {
     const std::string format = gBufferFormatName(gBuffer_.format());
     m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
                 modeStatistic("light_sum_bytes_per_pixel", gBuffer_.accumulationBytesPerPixel()),
+                modeStatistic("light_sum_format", std::string(gBuffer_.accumulationFormatName())),
+                modeStatistic("geometry_passes", gBuffer_.geometryPasses()),
                 modeStatistic("stencil", options_.stencil), modeStatistic("stencil_lights", stencilLights_),
                 modeStatistic("back_face_lights", backFaceLights_)};
     std::ostringstream s;
     s << "g-buffer   " << format << ", " << gBuffer_.bytesPerPixel() << " bytes a pixel + "
-      << gBuffer_.accumulationBytesPerPixel() << " for the light sum (" << format << "), stencil "
+      << gBuffer_.accumulationBytesPerPixel() << " for the light sum (" << gBuffer_.accumulationFormatName()
+      << (gBuffer_.eightBitAccumulation() ? ", clamped at 1" : "") << "), "
+      << (gBuffer_.geometryPasses() > 1 ? std::to_string(gBuffer_.geometryPasses()) + " geometry passes, " : "")
+      << "stencil "
       << (options_.stencil ? "on" : "off") << " (" << stencilLights_ << " lights the stencil way, " << backFaceLights_
       << " the back-face way)";
     m.line = s.str();

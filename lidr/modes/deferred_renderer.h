@@ -29,7 +29,7 @@ struct DeferredOptions {
     // pass costs more than the shading it saves (light-volumes 0.5-0.8x with it off on hall-255 and many-1024-fp at
     // 320x240, doc/deferred.md); a GPU's early stencil test may decide otherwise (not measured here).
     bool stencil = false;
-    GBufferFormat format = GBufferFormat::Half;
+    GBufferFormat format = GBufferFormat::Auto;  // rgba16f where the context renders to it, else rgba8
     bool transparency = true;  // draw transparent meshes (opacity < 1) after the opaque ones, forward
     int msaaSamples = 0;       // refused above 0 (UnsupportedError)
     bool forceFixedLightTable = false;

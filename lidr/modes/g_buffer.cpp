@@ -1,11 +1,13 @@
 #include "lidr/modes/g_buffer.h"
 #include "lidr/base/gl.h"
 
+#include <cstdint>
 #include <cstdio>
 
 #include "lidr/base/error.h"
 #include "lidr/gl/bindings.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/modes/g_buffer_unorm8.h"
 #include "lidr/render/depth_prepass.h"
 
 namespace lidr {
@@ -27,6 +29,7 @@ void requireComplete(const gl::Framebuffer& fbo, const std::string& what, const 
 
 // What the context must have before any GL object is made.
 void checkContext(const GlInfo& info, GBufferFormat format) {
+    if (format == GBufferFormat::Unorm8) return;  // any context: RGBA8 targets, the geometry pass split as needed
     if (!info.drawBuffers || info.maxDrawBuffers < GBuffer::kTargets)
         throw UnsupportedError(std::string("deferred shading writes 4 G-buffer targets at once: ") +
                                (info.gles ? "this OpenGL ES 2.0 / WebGL 1 context lacks EXT_draw_buffers "
@@ -34,60 +37,112 @@ void checkContext(const GlInfo& info, GBufferFormat format) {
                                           : "this context has fewer than 4 draw buffers (glDrawBuffers)"));
     if (format == GBufferFormat::Half && !info.halfFloatColorBuffer)
         throw UnsupportedError(info.gles ? "an RGBA16F G-buffer needs half-float colour buffers (OES_texture_half_float "
-                                           "+ EXT_color_buffer_half_float); an RGBA8 G-buffer is not implemented"
+                                           "+ EXT_color_buffer_half_float); --g-buffer rgba8 (or auto) needs none"
                                          : "an RGBA16F G-buffer needs half-float colour buffers (GL 3.0, or "
-                                           "ARB_texture_float + ARB_color_buffer_float)");
+                                           "ARB_texture_float + ARB_color_buffer_float); --g-buffer rgba8 (or auto) "
+                                           "needs none");
     if (format == GBufferFormat::Float && !info.textureFloat)
         throw UnsupportedError("an RGBA32F G-buffer needs float textures (ARB_texture_float / OES_texture_float)");
 }
 }  // namespace
 
 const char* gBufferFormatName(GBufferFormat format) {
-    return format == GBufferFormat::Half ? "rgba16f" : "rgba32f";
+    switch (format) {
+    case GBufferFormat::Half: return "rgba16f";
+    case GBufferFormat::Float: return "rgba32f";
+    case GBufferFormat::Unorm8: return "rgba8";
+    case GBufferFormat::Auto: break;
+    }
+    return "auto";
 }
 
 const std::vector<std::string>& gBufferFormatNames() {
-    static const std::vector<std::string> names = {"rgba16f", "rgba32f"};
+    static const std::vector<std::string> names = {"auto", "rgba16f", "rgba32f", "rgba8"};
     return names;
 }
 
 GBufferFormat parseGBufferFormat(const std::string& name) {
-    if (name == "rgba16f") return GBufferFormat::Half;
-    if (name == "rgba32f") return GBufferFormat::Float;
-    throw Error("unknown G-buffer format '" + name + "' (valid: rgba16f, rgba32f)");
+    for (GBufferFormat f : {GBufferFormat::Auto, GBufferFormat::Half, GBufferFormat::Float, GBufferFormat::Unorm8})
+        if (name == gBufferFormatName(f)) return f;
+    throw Error("unknown G-buffer format '" + name + "' (valid: auto, rgba16f, rgba32f, rgba8)");
 }
 
+GBufferFormat resolveGBufferFormat(const GlInfo& info, GBufferFormat format) {
+    if (format != GBufferFormat::Auto) return format;
+    return info.halfFloatColorBuffer ? GBufferFormat::Half : GBufferFormat::Unorm8;
+}
+
+int GBuffer::bytesPerPixel(GBufferFormat format) {
+    switch (format) {
+    case GBufferFormat::Half: return kTargets * 8;
+    case GBufferFormat::Float: return kTargets * 16;
+    case GBufferFormat::Unorm8: return GBufferUnorm8::kBytesPerPixel;
+    case GBufferFormat::Auto: break;
+    }
+    throw Error("GBuffer::bytesPerPixel: the automatic format has no size until a context resolves it");
+}
+
+GBuffer::GBuffer(GBuffer&&) noexcept = default;
+GBuffer& GBuffer::operator=(GBuffer&&) noexcept = default;
+GBuffer::~GBuffer() = default;
+
+const char* GBuffer::accumulationFormatName() const {
+    if (format_ != GBufferFormat::Unorm8) return gBufferFormatName(format_);
+    return accumulationBytes_ == 4 ? "rgba8" : "rgba16f";
+}
+
+ShaderDefines GBuffer::shaderDefines() const {
+    ShaderDefines d;
+    if (unorm8_) d = GBufferUnorm8::shaderDefines();
+    if (eightBitAccumulation()) d.push_back({"LIDR_LIGHT_COUNT_STEP", "(1.0 / 255.0)"});
+    return d;
+}
+
+int GBuffer::geometryPasses() const { return unorm8_ ? unorm8_->geometryPasses() : 1; }
+
 gl::Texture GBuffer::target(const GlInfo& info) const {
+    if (format_ == GBufferFormat::Unorm8)  // the light sum of the RGBA8 layout: half float where renderable
+        return info.halfFloatColorBuffer
+                   ? gl::Texture::create2D(GL_RGBA16F, width_, height_, GL_RGBA, info.gles ? kHalfFloatOes : GL_FLOAT)
+                   : gl::Texture::create2D(GL_RGBA, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE);
     if (format_ == GBufferFormat::Half)
         return gl::Texture::create2D(GL_RGBA16F, width_, height_, GL_RGBA, info.gles ? kHalfFloatOes : GL_FLOAT);
     return gl::Texture::create2D(info.gles ? GL_RGBA : GL_RGBA32F, width_, height_, GL_RGBA, GL_FLOAT);
 }
 
 GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat format, bool accumulation)
-    : format_(format), width_(targets.width()), height_(targets.height()) {
-    checkContext(info, format);
-    fbo_ = gl::Framebuffer::create();
-    for (int i = 0; i < kTargets; ++i) {
-        targets_[i] = target(info);
-        fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
+    : format_(resolveGBufferFormat(info, format)), width_(targets.width()), height_(targets.height()) {
+    checkContext(info, format_);
+    if (format_ == GBufferFormat::Unorm8) {
+        unorm8_ = std::make_unique<GBufferUnorm8>(info, targets);
+    } else {
+        fbo_ = gl::Framebuffer::create();
+        for (int i = 0; i < kTargets; ++i) {
+            targets_[i] = target(info);
+            fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
+        }
+        fbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
+        requireComplete(fbo_, std::string("4 ") + gBufferFormatName(format_) + " targets", info);
     }
-    fbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-    requireComplete(fbo_, std::string("4 ") + gBufferFormatName(format) + " targets", info);
     if (accumulation) {
+        accumulationBytes_ = format_ != GBufferFormat::Unorm8 ? bytesPerPixel(format_) / kTargets
+                                                               : (info.halfFloatColorBuffer ? 8 : 4);
         accumulation_ = target(info);
         accumulationFbo_ = gl::Framebuffer::create();
         accumulationFbo_.attachTexture(GL_COLOR_ATTACHMENT0, accumulation_);
         accumulationFbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-        requireComplete(accumulationFbo_, std::string("the ") + gBufferFormatName(format) + " light sum", info);
+        requireComplete(accumulationFbo_, std::string("the ") + accumulationFormatName() + " light sum", info);
     }
-    program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"), buildShaderSource("g_buffer.frag"),
-                                   geometryAttributes());
+    if (!unorm8_)
+        program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"),
+                                       buildShaderSource("g_buffer.frag"), geometryAttributes());
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
     checkGl("GBuffer");
 }
 
 void GBuffer::draw(const GpuScene& scene, const CameraMatrices& camera) const {
+    if (unorm8_) return unorm8_->draw(scene, camera);
     PassDescription pass{fbo_.id(), glm::ivec4(0, 0, width_, height_),
                          {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3}, {}};
     pass.clear.color = true;
@@ -112,7 +167,8 @@ PassDescription GBuffer::accumulationPass() const {
 }
 
 void GBuffer::bind(const gl::Program& program, const CameraMatrices& camera) const {
-    for (int i = 0; i < kTargets; ++i) {
+    if (unorm8_) unorm8_->bind(program);
+    for (int i = 0; i < kTargets && !unorm8_; ++i) {
         targets_[i].bind(gl::kUnitGBuffer0 + i);
         program.set(kSamplers[i], gl::kUnitGBuffer0 + i);
     }
@@ -126,18 +182,23 @@ void GBuffer::bind(const gl::Program& program, const CameraMatrices& camera) con
 
 void GBuffer::unbind() const {
     StateCache::current().unbindTextures(gl::kUnitGBuffer0, kTargets + 1);  // and the light sum's unit above them
+    if (unorm8_) StateCache::current().unbindTextures(gl::kUnitGBuffer4, 1);
 }
 
 std::vector<float> GBuffer::readLightCounts() const {
     if (!accumulation_) throw Error("GBuffer::readLightCounts: this G-buffer has no accumulation target");
     std::vector<float> rgba(size_t(width_) * height_ * 4);
+    std::vector<uint8_t> bytes(eightBitAccumulation() ? rgba.size() : 0);  // counted in 1/255 (deferred_light.frag)
     StateCache::current().bindFramebuffer(accumulationFbo_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+    if (bytes.empty())
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+    else
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
     StateCache::current().bindFramebuffer(0);
     checkGl("GBuffer::readLightCounts");
     std::vector<float> counts(size_t(width_) * height_);
-    for (size_t i = 0; i < counts.size(); ++i) counts[i] = rgba[i * 4 + 3];
+    for (size_t i = 0; i < counts.size(); ++i) counts[i] = bytes.empty() ? rgba[i * 4 + 3] : float(bytes[i * 4 + 3]);
     return counts;
 }
 

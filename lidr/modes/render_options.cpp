@@ -72,9 +72,10 @@ void addModeRows(std::vector<RenderOption>& o) {
                  "Deferred mode: on (light volumes' back faces mark the stencil, front faces shade where marked) or "
                  "off (default, faster on llvmpipe: back faces shade every surface in front of them; doc/deferred.md)",
                  {"deferred"}});
-    o.push_back({"g-buffer", T::Choice, gBufferFormatNames(), 0, 0, "rgba16f",
+    o.push_back({"g-buffer", T::Choice, gBufferFormatNames(), 0, 0, "auto",
                  "Deferred and tiled-deferred modes: the G-buffer's format, " + joinOr(gBufferFormatNames()) +
-                     " (doc/deferred.md)",
+                     " (default auto: rgba16f where the context renders to half floats, else rgba8, five 8-bit "
+                     "targets; doc/deferred.md)",
                  kDeferred});
     o.push_back({"multipass-accumulation", T::Choice, {"auto", "8-bit"}, 0, 0, "auto",
                  "Multi-pass forward sums its passes in: auto (half float where the context renders to it, else the "

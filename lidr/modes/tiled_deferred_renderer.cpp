@@ -26,7 +26,7 @@ const GlInfo& checkedContext(const GlInfo& info, const TiledDeferredOptions& o) 
 constexpr FramePass kDepthPrepassWithCopy{"depth-prepass", "scene", "depth, packed depth copy"};
 constexpr FramePass kTileDepthReduce{"tile-depth-reduce", "packed depth copy", "tile depth ranges (read back)"};
 constexpr FramePass kLightGrid{"light-grid", "lights, [tile depth ranges]", "light grid (CPU, uploaded)"};
-constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets)"};
+constexpr FramePass kGBuffer{"g-buffer", "scene, depth", "G-buffer (4 targets; RGBA8: 5)"};
 constexpr FramePass kTiledDeferred{"tiled-deferred",
                                    "G-buffer, light grid, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kTransparent{"tiled-transparent",
@@ -53,6 +53,7 @@ void TiledDeferredRenderer::buildPrograms(int loopBound) {
     defines_.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
     defines_.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
     defines_.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
+    for (const auto& d : gBuffer_.shaderDefines()) defines_.push_back(d);  // the RGBA8 layout's decoding
     ShaderDefines tiledDefines = defines_;
     tiledDefines.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
     tiled_ = gl::Program::create("tiled-deferred-" + std::to_string(loopBound),
@@ -166,6 +167,7 @@ ModeStatistics TiledDeferredRenderer::modeStatistics() const {
     m.section = "deferred";
     const std::string format = gBufferFormatName(gBuffer_.format());
     m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
+                modeStatistic("geometry_passes", gBuffer_.geometryPasses()),
                 modeStatistic("tile_size", options_.tileSize), modeStatistic("depth_bounds", depthBoundsUsed()),
                 modeStatistic("loop_bound", loopBound_)};
     std::ostringstream s;

@@ -24,7 +24,7 @@ namespace lidr {
 struct TiledDeferredOptions {
     int tileSize = 32;         // tile edge in pixels; 1..min(width, height)
     bool depthBounds = true;   // per-tile min/max depth prunes the lists (left out on OpenGL ES 2.0)
-    GBufferFormat format = GBufferFormat::Half;
+    GBufferFormat format = GBufferFormat::Auto;  // rgba16f where the context renders to it, else rgba8
     bool transparency = true;  // transparent meshes by tiled forward shading after the opaque ones
     int msaaSamples = 0;       // refused above 0 (UnsupportedError)
     bool forceFixedLightTable = false;

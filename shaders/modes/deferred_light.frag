@@ -7,6 +7,9 @@
 #include "g_buffer.glsl"
 
 uniform float uLightIndex;
+#ifndef LIDR_LIGHT_COUNT_STEP
+#define LIDR_LIGHT_COUNT_STEP 1.0  // an 8-bit light sum (the RGBA8 G-buffer without half floats) counts in 1 / 255
+#endif
 
 void main() {
     LidrSurface s;
@@ -17,5 +20,5 @@ void main() {
 #ifdef LIDR_SHADOWS
     lightColor *= lidrShadowVisibility(s.position, posRadius, spot, lidrFetchShadowTile(uLightIndex));
 #endif
-    gl_FragColor = vec4(lidrShadeLight(s, posRadius, lightColor, spot), 1.0);
+    gl_FragColor = vec4(lidrShadeLight(s, posRadius, lightColor, spot), LIDR_LIGHT_COUNT_STEP);
 }

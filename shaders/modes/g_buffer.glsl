@@ -8,6 +8,7 @@
 // The position comes from the depth: the pixel centre unprojected at the stored window depth. The depth is split
 // into hi = floor(d 2048) / 2048 (exact in a half float) and lo = the remainder x 2048, so a 16-bit float target
 // holds it to about 2^-22 (a 32-bit one holds it whole). A cleared pixel has hi = 2: no surface.
+// LIDR_GBUFFER_UNORM8: the RGBA8 G-buffer's layout and lidrGBufferSurface instead (g_buffer_unorm8.glsl).
 uniform sampler2D uGBuffer0;
 uniform sampler2D uGBuffer1;
 uniform sampler2D uGBuffer2;
@@ -33,6 +34,9 @@ vec2 lidrSplitDepth(float d) {
     return vec2(hi, (d - hi) * 2048.0);
 }
 
+#ifdef LIDR_GBUFFER_UNORM8
+#include "g_buffer_unorm8.glsl"
+#else
 // The surface at this pixel from the G-buffer; false where the pixel has none (the background).
 bool lidrGBufferSurface(out LidrSurface s) {
     vec2 uv = gl_FragCoord.xy * uGBufferInvSize;
@@ -56,3 +60,4 @@ bool lidrGBufferSurface(out LidrSurface s) {
     s.occlusion = t3.a;
     return true;
 }
+#endif
