@@ -193,7 +193,9 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
         const PointLight& l = lights[i];
         const float r = l.radius + reach;
         if (!sphereMayBeVisible(cam, l.position, r * sphere_.outsideRadius)) continue;
-        if (!frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
+        // Lights that touch no opaque mesh's bounds shade nothing, except under MSAA: a sample of an edge pixel
+        // shades its fragment's surface extrapolated to the pixel centre, which may lie outside every mesh's bounds.
+        if (!perSample() && !frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
         const PlacedVolume placed = placeVolume(cam, l, r);
         const VolumeMesh& mesh = *placed.mesh;
         const glm::vec4 volume = placed.posRadius, spot = placed.spot;
