@@ -3,7 +3,8 @@
 // a transparent layer, against the brute-force reference at the same MSAA (RGBA16F >= 50 dB, RGBA32F >= 60 dB), and
 // every sample's surface shaded by every light that touches it (the CPU truth at the depth each sample stores:
 // deferred's per-sample light counts, tiled deferred's tile lists). Where the context has not (GL 2.1 proper,
-// OpenGL ES 2.0), refused before any work, naming what is missing. 128 x 96: small, the suite stays fast.
+// OpenGL ES 2.0), refused before any work, naming what is missing. 128 x 96: small, the suite stays fast. llvmpipe
+// holds 4 samples where 2 are asked (GL_TEXTURE_SAMPLES): its 2x rows run 4x, against a reference that does too.
 #include <algorithm>
 #include <memory>
 
@@ -158,8 +159,10 @@ TEST_CASE("deferred modes under MSAA equal the reference at the same MSAA, every
         CHECK(pairs.truth > 1000);
         CHECK(pairs.missing == 0);
         const ModeStatistics m = r->modeStatistics();
-        CHECK(std::get<long long>(m.at("g_buffer_samples")) == c.samples);
-        CHECK(std::get<long long>(m.at("g_buffer_bytes_per_pixel")) == GBuffer::bytesPerPixel(c.format) * c.samples);
+        // The samples the driver holds, at least those asked (llvmpipe holds 4 for 2).
+        const long long held = std::get<long long>(m.at("g_buffer_samples"));
+        CHECK(held >= c.samples);
+        CHECK(std::get<long long>(m.at("g_buffer_bytes_per_pixel")) == GBuffer::bytesPerPixel(c.format) * held);
         REQUIRE(glGetError() == GL_NO_ERROR);
     }
 }
