@@ -44,9 +44,6 @@ public:
     void bind(const gl::Program& program, const CameraMatrices& camera) const override { g_.bind(program, camera); }
     void unbind() const override { g_.unbind(); }
     void drawFullScreen() const override { g_.drawFullScreen(); }
-    void markEdgePixels() const override {
-        throw Error("a single-sample G-buffer has no edge pixels to mark");
-    }
     std::vector<float> readLightCounts() const override { return g_.readLightCounts(); }
     GBufferSampleReadback readSample(int) const override {
         throw Error("a single-sample G-buffer has no samples to read: readLightCounts");
@@ -109,8 +106,8 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
         targets_[i] = gl::Texture::create2DMultisample(internalFormat, width_, height_, samples_);
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
     }
-    // The driver may hold more samples than asked (llvmpipe makes 2x 4x): the passes that loop over the samples
-    // (markEdgePixels, readSample) take the count the texture has.
+    // The driver may hold more samples than asked (llvmpipe makes 2x 4x): the summary and readSample take the
+    // count the textures have.
     StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, targets_[0].id());
     GLint held = 0;
     glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &held);
@@ -128,12 +125,6 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
         depthProgram_ = gl::Program::create("g-buffer-sample-depth", buildShaderSource("deferred_fullscreen.vert"),
                                             buildShaderSource("g_buffer_sample_depth.frag"), geometryAttributes());
     }
-    edgeMask_ = gl::Texture::create2D(GL_RGBA8, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE);
-    edgeFbo_ = gl::Framebuffer::create();
-    edgeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, edgeMask_);
-    requireComplete(edgeFbo_, "the RGBA8 edge mask", info);
-    edgeProgram_ = gl::Program::create("g-buffer-sample-edges", buildShaderSource("deferred_fullscreen.vert"),
-                                       buildShaderSource("g_buffer_sample_edges.frag"), geometryAttributes());
     // The single-sample geometry pass's shaders: once a fragment, its surface to every covered sample.
     program_ = gl::Program::create("g-buffer-multisample", buildShaderSource("geometry.vert"),
                                    buildShaderSource("g_buffer.frag"), geometryAttributes());
@@ -192,10 +183,6 @@ void GBufferMultisample::bind(const gl::Program& program, const CameraMatrices& 
     }
     program.set("uGBufferInvSize", glm::vec2(1.0f / float(width_), 1.0f / float(height_)));
     program.set("uInverseViewProj", camera.inverseViewProjection);
-    if (program.declares("uEdgePixels")) {
-        edgeMask_.bind(gl::kUnitLightSum);  // the light sum's unit: the passes that split have no light sum
-        program.set("uEdgePixels", int(gl::kUnitLightSum));
-    }
     if (accumulation_ && program.declares("uLightSumSamples")) {
         accumulation_.bind(gl::kUnitLightSum);
         program.set("uLightSumSamples", int(gl::kUnitLightSum));
@@ -207,7 +194,6 @@ void GBufferMultisample::unbind() const {
     for (int unit = gl::kUnitGBuffer0; unit <= gl::kUnitLightSum; ++unit) {
         glActiveTexture(GL_TEXTURE0 + GLenum(unit));
         cache.bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
-        cache.bindTexture(GL_TEXTURE_2D, 0);  // the edge mask's
     }
     glActiveTexture(GL_TEXTURE0);
 }
@@ -219,19 +205,6 @@ void GBufferMultisample::drawFullScreen() const {
     StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
     glDisableVertexAttribArray(gl::kPosition);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-void GBufferMultisample::markEdgePixels() const {
-    StateCache& cache = StateCache::current();
-    cache.beginPass({edgeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
-    cache.apply(RenderState{});
-    edgeProgram_.use();
-    for (int i = 0; i < GBuffer::kTargets; ++i) {
-        targets_[i].bind(gl::kUnitGBuffer0 + i);
-        edgeProgram_.set(kSampleSamplers[i], gl::kUnitGBuffer0 + i);
-    }
-    edgeProgram_.set("uSamples", samples_);
-    drawFullScreen();
 }
 
 std::vector<float> GBufferMultisample::readLightCounts() const {

@@ -43,11 +43,6 @@ public:
     virtual void bind(const gl::Program& program, const CameraMatrices& camera) const = 0;
     virtual void unbind() const = 0;
     virtual void drawFullScreen() const = 0;
-    // Multisampled: the single-sample edge mask (uEdgePixels, bound by bind() for programs that declare it) set to
-    // 1 where a pixel's samples hold different surfaces, 0 elsewhere. A pass compiled with LIDR_EDGE_SPLIT may then
-    // shade the other pixels once a pixel (LIDR_ONCE_A_PIXEL: every sample the same) and the marked ones once a
-    // sample. Single-sample: lidr::Error.
-    virtual void markEdgePixels() const = 0;
     // Single-sample: GBuffer::readLightCounts. Multisampled: lidr::Error (readSample gives each sample's).
     virtual std::vector<float> readLightCounts() const = 0;
     // Multisampled: sample `sample`'s stored depth and light count. Single-sample: lidr::Error.
@@ -89,7 +84,6 @@ public:
     void bind(const gl::Program& program, const CameraMatrices& camera) const override;
     void unbind() const override;
     void drawFullScreen() const override;
-    void markEdgePixels() const override;
     std::vector<float> readLightCounts() const override;
     GBufferSampleReadback readSample(int sample) const override;
     GBufferFormat format() const override { return format_; }
@@ -108,10 +102,8 @@ private:
     gl::Texture targets_[GBuffer::kTargets];
     gl::Texture accumulation_;
     gl::Renderbuffer accumulationDepth_;  // the shaded surfaces' depths (beginAccumulation)
-    gl::Texture edgeMask_;                // markEdgePixels' (RGBA8, single-sample)
-    gl::Framebuffer edgeFbo_;
     gl::Framebuffer fbo_, accumulationFbo_;
-    gl::Program program_, depthProgram_, edgeProgram_;
+    gl::Program program_, depthProgram_;
     gl::Buffer triangle_;
     mutable gl::Program readProgram_;  // readSample's, made on first use
 };

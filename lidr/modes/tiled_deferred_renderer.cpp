@@ -54,13 +54,11 @@ void TiledDeferredRenderer::buildPrograms(int loopBound) {
     defines_.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
     defines_.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
     defines_.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
+    ShaderDefines tiledDefines = defines_;
+    tiledDefines.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
     tiled_ = gl::Program::create("tiled-deferred-" + std::to_string(loopBound),
                                  buildShaderSource("deferred_fullscreen.vert"),
-                                 buildShaderSource(tiledShader_, tiledDefines(false)), geometryAttributes());
-    if (frame_.targets.samples() > 0)  // MSAA: the pixels whose samples hold one surface
-        onceAPixel_ = gl::Program::create("tiled-deferred-once-a-pixel-" + std::to_string(loopBound),
-                                          buildShaderSource("deferred_fullscreen.vert"),
-                                          buildShaderSource(tiledShader_, tiledDefines(true)), geometryAttributes());
+                                 buildShaderSource(tiledShader_, tiledDefines), geometryAttributes());
     transparent_ = gl::Program::create("tiled-deferred-transparent-" + std::to_string(loopBound),
                                        buildShaderSource("geometry.vert"),
                                        buildShaderSource("tiled_forward.frag", defines_), geometryAttributes());
@@ -134,36 +132,19 @@ void TiledDeferredRenderer::buildLightGrid(const CameraMatrices& cam, const std:
 
 void TiledDeferredRenderer::shadeTiles(const CameraMatrices& cam, const ShadingParameters& shading) {
     TimedPass tiledTime(frame_.timer, kTiledDeferred.name);
-    const bool msaa = frame_.targets.samples() > 0;
-    // MSAA: pixels whose samples all hold one surface are shaded once (the same inputs give every sample the same
-    // colour), the edge pixels once a sample.
-    if (msaa) gBuffer_->markEdgePixels();
     beginOpaqueShading(frame_.targets, shading, true);  // cleared to the background
-    RenderState fullScreen;  // no depth test
-    if (msaa) {
-        StateCache::current().apply(fullScreen);
-        shadeFullScreen(onceAPixel_, tiledDefines(true), cam, shading);
-        fullScreen.sampleShading = true;
-    }
+    RenderState fullScreen;  // no depth test; MSAA: once a sample
+    fullScreen.sampleShading = frame_.targets.samples() > 0;
     StateCache::current().apply(fullScreen);
-    shadeFullScreen(tiled_, tiledDefines(false), cam, shading);
-    StateCache::current().apply(RenderState{});
-}
-
-ShaderDefines TiledDeferredRenderer::tiledDefines(bool onceAPixel) const {
-    ShaderDefines d = defines_;
-    d.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
-    if (frame_.targets.samples() > 0) d.push_back({"LIDR_EDGE_SPLIT", "1"});
-    if (onceAPixel) d.push_back({"LIDR_ONCE_A_PIXEL", "1"});
-    return d;
-}
-
-void TiledDeferredRenderer::shadeFullScreen(const gl::Program& base, const ShaderDefines& defines,
-                                            const CameraMatrices& cam, const ShadingParameters& shading) {
     const gl::Program& shadowed =
-        frame_.shadows.active()
-            ? frame_.shadows.program(base.name(), "deferred_fullscreen.vert", tiledShader_, defines, shading.shadows)
-            : base;
+        frame_.shadows.active() ? frame_.shadows.program(tiled_.name(), "deferred_fullscreen.vert",
+                                                         tiledShader_, [&] {
+                                                             ShaderDefines d = defines_;
+                                                             d.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});
+                                                             return d;
+                                                         }(),
+                                                         shading.shadows)
+                                : tiled_;
     const uint32_t key = shadingVariantKey(shadowed, shading, frame_.environment);
     const gl::Program& program = shadowed.variant(key, [&] { return shadingVariantDefines(key); });
     useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);

@@ -9,8 +9,8 @@
 // tile's list, with the ambient, environment, emission and directional terms -> transparent meshes by tiled
 // forward shading from the same grid's transparent lists (Olsson's "simple" way); passes() lists them
 // (lidr-demo --list-passes tiled-deferred). MSAA: the multisampled G-buffer (lidr/modes/g_buffer_multisample.h),
-// the tile ranges covering every sample's surface, the full-screen pass into the MSAA target once a pixel where the
-// pixel's samples hold one surface and once a sample at edges (GBufferMultisample::markEdgePixels), then resolved; refused without multisample textures and per-sample shading (GL 2.1, ES 2.0, WebGL 1).
+// the tile ranges covering every sample's surface, the full-screen pass once a sample into the MSAA target, then
+// resolved; refused without multisample textures and per-sample shading (GL 2.1, ES 2.0, WebGL 1).
 // On OpenGL ES 2.0 the depth bounds are left out (gl_FragCoord.z is mediump there: TiledRenderer's reason).
 #include <memory>
 #include <string>
@@ -61,11 +61,6 @@ private:
     void drawDepthPrepass(const CameraMatrices& cam);
     void buildLightGrid(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool transparent);
     void shadeTiles(const CameraMatrices& cam, const ShadingParameters& shading);
-    // tiled_deferred(_multisample).frag's defines; onceAPixel: MSAA's pixels whose samples hold one surface.
-    ShaderDefines tiledDefines(bool onceAPixel) const;
-    // The full-screen pass with `base` (its shadow and shading variant), in the state the caller applied.
-    void shadeFullScreen(const gl::Program& base, const ShaderDefines& defines, const CameraMatrices& cam,
-                         const ShadingParameters& shading);
     void shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading);
 
     FrameResources frame_;
@@ -76,7 +71,7 @@ private:
     LightGridTextures gridTextures_;
     std::unique_ptr<TileDepthBounds> depthBounds_;
     std::vector<TileDepthRange> tileDepth_;
-    gl::Program tiled_, onceAPixel_, transparent_;
+    gl::Program tiled_, transparent_;
     ShaderDefines defines_;
     int loopBound_ = 0;
 };

@@ -4,18 +4,6 @@
 // pixel centre as the forward modes shade it, to every sample it covered: the position is rebuilt at the pixel
 // centre, whatever gl_FragCoord says under per-sample shading.
 #include "g_buffer.glsl"
-// LIDR_EDGE_SPLIT (GBufferMultisample::markEdgePixels): uEdgePixels marks the pixels whose samples hold different
-// surfaces. With LIDR_ONCE_A_PIXEL the pass runs once a pixel, takes the unmarked pixels and reads sample 0 (naming
-// no gl_SampleID, which would make it run per sample); without, it runs once a sample and takes the marked ones.
-// The other pixels return "no surface" at once: the split saves the lighting, not the invocations.
-#ifdef LIDR_ONCE_A_PIXEL
-#define LIDR_G_BUFFER_SAMPLE 0
-#else
-#define LIDR_G_BUFFER_SAMPLE gl_SampleID
-#endif
-#ifdef LIDR_EDGE_SPLIT
-uniform sampler2D uEdgePixels;
-#endif
 uniform sampler2DMS uGBufferSamples0;
 uniform sampler2DMS uGBufferSamples1;
 uniform sampler2DMS uGBufferSamples2;
@@ -24,19 +12,11 @@ uniform sampler2DMS uGBufferSamples3;
 // This sample's surface from the G-buffer; false where the sample has none (the background).
 bool lidrGBufferSampleSurface(out LidrSurface s) {
     ivec2 texel = ivec2(gl_FragCoord.xy);
-#ifdef LIDR_EDGE_SPLIT
-    bool edge = texelFetch(uEdgePixels, texel, 0).r > 0.5;
-#ifdef LIDR_ONCE_A_PIXEL
-    if (edge) return false;
-#else
-    if (!edge) return false;
-#endif
-#endif
-    vec4 t2 = texelFetch(uGBufferSamples2, texel, LIDR_G_BUFFER_SAMPLE);
+    vec4 t2 = texelFetch(uGBufferSamples2, texel, gl_SampleID);
     if (t2.z > 1.5) return false;
-    vec4 t0 = texelFetch(uGBufferSamples0, texel, LIDR_G_BUFFER_SAMPLE);
-    vec4 t1 = texelFetch(uGBufferSamples1, texel, LIDR_G_BUFFER_SAMPLE);
-    vec4 t3 = texelFetch(uGBufferSamples3, texel, LIDR_G_BUFFER_SAMPLE);
+    vec4 t0 = texelFetch(uGBufferSamples0, texel, gl_SampleID);
+    vec4 t1 = texelFetch(uGBufferSamples1, texel, gl_SampleID);
+    vec4 t3 = texelFetch(uGBufferSamples3, texel, gl_SampleID);
     vec2 uv = (vec2(texel) + 0.5) * uGBufferInvSize;
     float depth = t2.z + t2.w * (1.0 / 2048.0);
     vec4 world = uInverseViewProj * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
