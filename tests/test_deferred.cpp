@@ -3,8 +3,8 @@
 // shadows and a transparent layer; every light that touches a pixel's surface shaded there (CPU truth,
 // lidr/eval/light_coverage.h): deferred's per-pixel count of light shaders run (the accumulation's alpha),
 // tiled deferred's tile lists; the stencil test shading fewer pixels than the back faces alone; the eye inside a
-// light's volume; MSAA refused with its reason; the RGBA8 G-buffer as the default where float colour buffers are
-// missing (an 8-bit light sum, its light counts, its geometry pass split where draw buffers are few).
+// light's volume; the RGBA8 G-buffer as the default where float colour buffers are missing (an 8-bit light sum,
+// its light counts, its geometry pass split where draw buffers are few). MSAA: test_deferred_msaa.cpp.
 #include <algorithm>
 #include <memory>
 
@@ -228,7 +228,7 @@ TEST_CASE("deferred and tiled deferred: a transparent layer forward over the def
     }
 }
 
-TEST_CASE("deferred modes: their passes, G-buffer sizes and MSAA refused with the reason", "[deferred][every-gl]") {
+TEST_CASE("deferred modes: their passes, G-buffer sizes and a context without draw buffers refused", "[deferred][every-gl]") {
     testContext();
     const Scene scene = floorScene();
     DeferredRenderer deferred(testGl(), scene, DeferredOptions{}, scene.width, scene.height);
@@ -239,13 +239,7 @@ TEST_CASE("deferred modes: their passes, G-buffer sizes and MSAA refused with th
     CHECK(deferred.gBuffer().bytesPerPixel() == 32);
     CHECK(GBuffer::bytesPerPixel(GBufferFormat::Float) == 64);
     CHECK(deferred.lightDataBytes() == size_t(scene.width) * scene.height * 40);
-    for (const std::string mode : {"deferred", "tiled-deferred"}) {
-        RenderModeOptions o;
-        o.mode = mode;
-        o.msaaSamples = 4;
-        REQUIRE_THROWS_WITH(createRenderer(o, testGl(), scene, scene.width, scene.height),
-                            Catch::Contains(mode + ": MSAA needs a G-buffer per sample"));
-    }
+    // MSAA: tests/test_deferred_msaa.cpp (shaded per sample where the context can, refused naming why elsewhere).
     CHECK(GBuffer::bytesPerPixel(GBufferFormat::Unorm8) == 20);
     REQUIRE_THROWS_WITH(parseGBufferFormat("rgba12"), Catch::Contains("valid: auto, rgba16f, rgba32f, rgba8"));
     // A context without 4 draw buffers (ES 2.0 / WebGL 1 without EXT_draw_buffers) is refused naming the extension.

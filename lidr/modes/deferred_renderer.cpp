@@ -15,9 +15,8 @@ namespace lidr {
 
 namespace {
 const GlInfo& checkedContext(const GlInfo& info, const DeferredOptions& o) {
-    if (o.msaaSamples > 0)
-        throw UnsupportedError("deferred: MSAA needs a G-buffer per sample, which GL 2.1, OpenGL ES 2.0 and WebGL 1 "
-                               "cannot sample (multisample textures are GL 3.2); use lidr, tiled or clustered");
+    const std::string msaaRefusal = deferredMsaaRefusal(info, o.msaaSamples, "deferred");
+    if (!msaaRefusal.empty()) throw UnsupportedError(msaaRefusal);
     return info;
 }
 
@@ -38,7 +37,7 @@ constexpr FramePass kTransparent{"deferred-transparent",
 struct VolumeStates {
     RenderState backFaces, mark, frontFaces;
 };
-VolumeStates volumeStates() {
+VolumeStates volumeStates(bool perSample) {
     VolumeStates v;
     RenderState& backFaces = v.backFaces;  // shade (or mark) where the surface lies in front of the volume's far side
     backFaces.depthTest = true;
@@ -62,7 +61,7 @@ VolumeStates volumeStates() {
     frontFaces.stencil.func = GL_EQUAL;
     frontFaces.stencil.ref = 1;
     frontFaces.stencil.depthFail = frontFaces.stencil.depthPass = GL_ZERO;
-
+    backFaces.sampleShading = frontFaces.sampleShading = perSample;  // MSAA: each sample's surface (the mark needs none)
     return v;
 }
 }  // namespace
@@ -71,16 +70,18 @@ DeferredRenderer::DeferredRenderer(const GlInfo& info, const Scene& scene, const
                                    int height)
     : frame_(checkedContext(info, options), scene, FrameSetup::of(options, scene, width, height)),
       options_(options),
-      gBuffer_(info, frame_.targets, options.format, true) {
+      gBuffer_(makeDeferredGBuffer(info, frame_.targets, options.format, true)),
+      lightShader_(perSample() ? "deferred_light_multisample.frag" : "deferred_light.frag") {
     lightDefines_ = frame_.lightTable.defines();
     lightDefines_.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
-    for (const auto& d : gBuffer_.shaderDefines()) lightDefines_.push_back(d);  // the RGBA8 layout's decoding
+    for (const auto& d : gBuffer_->shaderDefines()) lightDefines_.push_back(d);  // the RGBA8 layout's decoding
     light_ = gl::Program::create("deferred-light", buildShaderSource("deferred_volume.vert"),
-                                 buildShaderSource("deferred_light.frag", lightDefines_), geometryAttributes());
+                                 buildShaderSource(lightShader_, lightDefines_), geometryAttributes());
     mark_ = gl::Program::create("deferred-stencil-mark", buildShaderSource("deferred_volume.vert"),
                                 buildShaderSource("deferred_stencil_mark.frag"), geometryAttributes());
+    const char* compositeShader = perSample() ? "deferred_composite_multisample.frag" : "deferred_composite.frag";
     composite_ = gl::Program::create("deferred-composite", buildShaderSource("deferred_fullscreen.vert"),
-                                     buildShaderSource("deferred_composite.frag", lightDefines_), geometryAttributes());
+                                     buildShaderSource(compositeShader, lightDefines_), geometryAttributes());
     sphere_ = upload(makeLightVolumeMesh(2));
     cone_ = upload(makeSpotVolumeMesh());
     cone_.outsideRadius = 1.0f;  // its vertices lie on the cap's sphere (radius: the range x the cap's scale)
@@ -106,6 +107,7 @@ std::vector<FramePass> DeferredRenderer::passes() const {
     std::vector<FramePass> p{pass::kShadowMaps, pass::kLightTable, pass::kDepthPrepass, kGBuffer,
                              options_.stencil ? kLightVolumesStencil : kLightVolumes, kComposite};
     if (options_.transparency) p.push_back(kTransparent);
+    if (perSample()) p.push_back(pass::kMsaaResolve);
     return p;
 }
 
@@ -117,13 +119,13 @@ const FrameStats& DeferredRenderer::render(const Camera& camera, const std::vect
     frame_.drawDepthPrepass(cam);
     {
         TimedPass gBufferTime(frame_.timer, kGBuffer.name);
-        gBuffer_.draw(frame_.scene, cam);
+        gBuffer_->draw(frame_.scene, cam);
     }
     drawLightVolumes(cam, lights, shading);
     composite(cam, shading);
     if (options_.transparency && frame_.scene.hasTransparent()) shadeTransparent(cam, lights, shading);
     frame_.resolve();
-    gBuffer_.unbind();
+    gBuffer_->unbind();
     frame_.finishFrame(stats_, "DeferredRenderer::render");
     return stats_;
 }
@@ -138,19 +140,44 @@ bool DeferredRenderer::volumeNearEye(const CameraMatrices& cam, const glm::vec3&
     return glm::length(centre - cam.eye) <= r * 1.01f + nearReach * 1.01f;
 }
 
+DeferredRenderer::PlacedVolume DeferredRenderer::placeVolume(const CameraMatrices& cam, const PointLight& l,
+                                                            float r) const {
+    PlacedVolume v{&sphere_, glm::vec4(l.position, r), glm::vec4(0.0f), r * sphere_.outsideRadius};
+    if (perSample()) {
+        // MSAA: a sample shades the point on its pixel centre's ray, up to 0.71 pixels from the sample's own ray;
+        // the sphere grown by a pixel's width at its far side covers the sample, and passes the depth test against
+        // the stored depths (GBufferMultisample::beginAccumulation), wherever the light reaches that point. Spot
+        // lights take the grown sphere too (the cone mesh does not grow evenly).
+        const float pixelPerDistance =
+            2.0f / std::min(cam.projection[0][0] * float(cam.width), cam.projection[1][1] * float(cam.height));
+        v.posRadius.w = r + (glm::length(l.position - cam.eye) + r) * pixelPerDistance;
+        v.reach = v.posRadius.w * sphere_.outsideRadius;
+        return v;
+    }
+    // A spot light: LIDR's cone mesh around the cone as the light table holds it (lidr::spotCone).
+    const glm::vec4 cone = spotCone(l);
+    const float coneScale = glm::length(glm::vec3(cone));
+    if (!l.isSpot() || coneScale <= 0.0f) return v;
+    const SpotVolumeShape shape = spotVolumeShape(std::acos(std::clamp(-cone.w / coneScale, 0.0f, 1.0f)));
+    v.mesh = &cone_;
+    v.posRadius.w = v.reach = r * shape.capScale;
+    v.spot = glm::vec4(glm::vec3(cone) / coneScale, shape.rimAngle);
+    return v;
+}
+
 void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::vector<PointLight>& lights,
                                         const ShadingParameters& shading) {
     TimedPass lightVolumesTime(frame_.timer, kLightVolumes.name);
     StateCache& cache = StateCache::current();
-    cache.beginPass(gBuffer_.accumulationPass());
+    gBuffer_->beginAccumulation();  // MSAA: with the shaded surfaces' depths
     const gl::Program& program =
         frame_.shadows.active()
-            ? frame_.shadows.program(light_.name(), "deferred_volume.vert", "deferred_light.frag", lightDefines_,
+            ? frame_.shadows.program(light_.name(), "deferred_volume.vert", lightShader_, lightDefines_,
                                      shading.shadows)
             : light_;
     useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
     frame_.shadows.bind(program, shading.shadows);
-    gBuffer_.bind(program, cam);
+    gBuffer_->bind(program, cam);
     if (options_.stencil) {
         mark_.use();
         mark_.set("uViewProj", cam.viewProjection);
@@ -159,7 +186,7 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
     glEnableVertexAttribArray(gl::kPosition);
     const VolumeMesh* bound = nullptr;
 
-    const VolumeStates states = volumeStates();
+    const VolumeStates states = volumeStates(perSample());
 
     const float reach = frame_.lightTable.reachError();
     stencilLights_ = backFaceLights_ = 0;
@@ -167,19 +194,14 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
         const PointLight& l = lights[i];
         const float r = l.radius + reach;
         if (!sphereMayBeVisible(cam, l.position, r * sphere_.outsideRadius)) continue;
-        if (!frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
-        // A spot light: LIDR's cone mesh around the cone as the light table holds it (lidr::spotCone).
-        const glm::vec4 cone = spotCone(l);
-        const float coneScale = glm::length(glm::vec3(cone));
-        const VolumeMesh& mesh = l.isSpot() && coneScale > 0.0f ? cone_ : sphere_;
-        glm::vec4 volume(l.position, r), spot(0.0f);
-        if (&mesh == &cone_) {
-            const SpotVolumeShape shape = spotVolumeShape(std::acos(std::clamp(-cone.w / coneScale, 0.0f, 1.0f)));
-            volume.w = r * shape.capScale;
-            spot = glm::vec4(glm::vec3(cone) / coneScale, shape.rimAngle);
-        }
+        // Lights that touch no opaque mesh's bounds shade nothing, except under MSAA: a sample of an edge pixel
+        // shades its fragment's surface extrapolated to the pixel centre, which may lie outside every mesh's bounds.
+        if (!perSample() && !frame_.scene.batchesTouchSphere(glm::vec4(l.position, r), DrawFilter::Opaque)) continue;
+        const PlacedVolume placed = placeVolume(cam, l, r);
+        const VolumeMesh& mesh = *placed.mesh;
+        const glm::vec4 volume = placed.posRadius, spot = placed.spot;
         if (&mesh != bound) bindVolumeMesh(*(bound = &mesh));
-        const float reachOfVolume = &mesh == &cone_ ? volume.w : r * sphere_.outsideRadius;
+        const float reachOfVolume = placed.reach;
         const bool stenciled = options_.stencil && !volumeNearEye(cam, l.position, reachOfVolume);
         if (stenciled) {
             mark_.use();
@@ -210,13 +232,15 @@ void DeferredRenderer::drawLightVolumes(const CameraMatrices& cam, const std::ve
 void DeferredRenderer::composite(const CameraMatrices& cam, const ShadingParameters& shading) {
     TimedPass compositeTime(frame_.timer, kComposite.name);
     beginOpaqueShading(frame_.targets, shading, true);  // cleared to the background
-    StateCache::current().apply(RenderState{});         // full screen: no depth test
+    RenderState fullScreen;  // no depth test; MSAA: once a sample
+    fullScreen.sampleShading = perSample();
+    StateCache::current().apply(fullScreen);
     const uint32_t key = shadingVariantKey(composite_, shading, frame_.environment);
     const gl::Program& program = composite_.variant(key, [&] { return shadingVariantDefines(key); });
     program.use();
     setShadingUniforms(program, cam, shading, frame_.environment);
-    gBuffer_.bind(program, cam);
-    gBuffer_.drawFullScreen();
+    gBuffer_->bind(program, cam);
+    gBuffer_->drawFullScreen();
 }
 
 void DeferredRenderer::shadeTransparent(const CameraMatrices& cam, const std::vector<PointLight>& lights,
@@ -245,21 +269,21 @@ void DeferredRenderer::shadeTransparent(const CameraMatrices& cam, const std::ve
 ModeStatistics DeferredRenderer::modeStatistics() const {
     ModeStatistics m;
     m.section = "deferred";
-    const std::string format = gBufferFormatName(gBuffer_.format());
-    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
-                modeStatistic("light_sum_bytes_per_pixel", gBuffer_.accumulationBytesPerPixel()),
-                modeStatistic("light_sum_format", std::string(gBuffer_.accumulationFormatName())),
-                modeStatistic("geometry_passes", gBuffer_.geometryPasses()),
+    const std::string format = gBufferFormatName(gBuffer_->format());
+    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_samples", gBuffer_->samples()),
+                modeStatistic("g_buffer_bytes_per_pixel", gBuffer_->bytesPerPixel()),
+                modeStatistic("light_sum_bytes_per_pixel", gBuffer_->accumulationBytesPerPixel()),
+                modeStatistic("light_sum_format", std::string(gBuffer_->accumulationFormatName())),
+                modeStatistic("geometry_passes", gBuffer_->geometryPasses()),
                 modeStatistic("stencil", options_.stencil), modeStatistic("stencil_lights", stencilLights_),
                 modeStatistic("back_face_lights", backFaceLights_)};
     std::ostringstream s;
-    s << "g-buffer   " << format << ", " << gBuffer_.bytesPerPixel() << " bytes a pixel + "
-      << gBuffer_.accumulationBytesPerPixel() << " for the light sum (" << gBuffer_.accumulationFormatName()
-      << (gBuffer_.eightBitAccumulation() ? ", clamped at 1" : "") << "), "
-      << (gBuffer_.geometryPasses() > 1 ? std::to_string(gBuffer_.geometryPasses()) + " geometry passes, " : "")
-      << "stencil "
-      << (options_.stencil ? "on" : "off") << " (" << stencilLights_ << " lights the stencil way, " << backFaceLights_
-      << " the back-face way)";
+    s << "g-buffer   " << gBufferDescription(*gBuffer_) << " + " << gBuffer_->accumulationBytesPerPixel()
+      << " for the light sum (" << gBuffer_->accumulationFormatName()
+      << (gBuffer_->eightBitAccumulation() ? ", clamped at 1" : "") << "), "
+      << (gBuffer_->geometryPasses() > 1 ? std::to_string(gBuffer_->geometryPasses()) + " geometry passes, " : "")
+      << "stencil " << (options_.stencil ? "on" : "off") << " (" << stencilLights_ << " lights the stencil way, "
+      << backFaceLights_ << " the back-face way)";
     m.line = s.str();
     return m;
 }

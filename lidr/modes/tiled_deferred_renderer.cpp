@@ -14,9 +14,8 @@ namespace lidr {
 
 namespace {
 const GlInfo& checkedContext(const GlInfo& info, const TiledDeferredOptions& o) {
-    if (o.msaaSamples > 0)
-        throw UnsupportedError("tiled-deferred: MSAA needs a G-buffer per sample, which GL 2.1, OpenGL ES 2.0 and "
-                               "WebGL 1 cannot sample (multisample textures are GL 3.2); use lidr, tiled or clustered");
+    const std::string msaaRefusal = deferredMsaaRefusal(info, o.msaaSamples, "tiled-deferred");
+    if (!msaaRefusal.empty()) throw UnsupportedError(msaaRefusal);
     if (o.initialLoopBound < 1 || o.initialLoopBound > 65535)
         throw Error("tiled-deferred: initial loop bound must be 1..65535, got " + std::to_string(o.initialLoopBound));
     return info;
@@ -39,12 +38,14 @@ TiledDeferredRenderer::TiledDeferredRenderer(const GlInfo& info, const Scene& sc
                                              const TiledDeferredOptions& options, int width, int height)
     : frame_(checkedContext(info, options), scene, FrameSetup::of(options, scene, width, height)),
       options_(options),
-      gBuffer_(info, frame_.targets, options.format, false),
+      gBuffer_(makeDeferredGBuffer(info, frame_.targets, options.format, false)),
+      tiledShader_(frame_.targets.samples() > 0 ? "tiled_deferred_multisample.frag" : "tiled_deferred.frag"),
       grid_(width, height, options.tileSize),
       gridTextures_(info, grid_.tilesX(), grid_.tilesY()) {
     if (options_.depthBounds && !info.gles)
-        depthBounds_ = std::make_unique<TileDepthBounds>(info, width, height, options_.tileSize,
-                                                         frame_.targets.depthStencil(), options_.forcePackedDepth);
+        depthBounds_ = std::make_unique<TileDepthBounds>(  // MSAA: the ranges cover every sample's surface
+            info, width, height, options_.tileSize, frame_.targets.depthStencil(), options_.forcePackedDepth, false,
+            frame_.targets.samples() > 0 ? &frame_.targets : nullptr);
     buildPrograms(options_.initialLoopBound);
 }
 
@@ -53,12 +54,12 @@ void TiledDeferredRenderer::buildPrograms(int loopBound) {
     defines_.push_back({"LIDR_TILE_SIZE", std::to_string(options_.tileSize)});
     defines_.push_back({"LIDR_LIGHT_LIST_WIDTH", std::to_string(LightGridTextures::kListWidth)});
     defines_.push_back({"LIDR_MAX_TILE_LIGHTS", std::to_string(loopBound)});
-    for (const auto& d : gBuffer_.shaderDefines()) defines_.push_back(d);  // the RGBA8 layout's decoding
+    for (const auto& d : gBuffer_->shaderDefines()) defines_.push_back(d);  // the RGBA8 layout's decoding
     ShaderDefines tiledDefines = defines_;
     tiledDefines.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});  // F90 comes from the G-buffer
     tiled_ = gl::Program::create("tiled-deferred-" + std::to_string(loopBound),
                                  buildShaderSource("deferred_fullscreen.vert"),
-                                 buildShaderSource("tiled_deferred.frag", tiledDefines), geometryAttributes());
+                                 buildShaderSource(tiledShader_, tiledDefines), geometryAttributes());
     transparent_ = gl::Program::create("tiled-deferred-transparent-" + std::to_string(loopBound),
                                        buildShaderSource("geometry.vert"),
                                        buildShaderSource("tiled_forward.frag", defines_), geometryAttributes());
@@ -66,7 +67,7 @@ void TiledDeferredRenderer::buildPrograms(int loopBound) {
 }
 
 size_t TiledDeferredRenderer::lightDataBytes() const {
-    return gBuffer_.bytes() + gridTextures_.bytes() + (depthBounds_ ? depthBounds_->bytes() : 0);
+    return gBuffer_->bytes() + gridTextures_.bytes() + (depthBounds_ ? depthBounds_->bytes() : 0);
 }
 
 std::vector<FramePass> TiledDeferredRenderer::passes() const {
@@ -75,6 +76,7 @@ std::vector<FramePass> TiledDeferredRenderer::passes() const {
     if (depthBounds_) p.push_back(kTileDepthReduce);
     p.insert(p.end(), {kLightGrid, kGBuffer, kTiledDeferred});
     if (options_.transparency) p.push_back(kTransparent);
+    if (frame_.targets.samples() > 0) p.push_back(pass::kMsaaResolve);
     return p;
 }
 
@@ -88,12 +90,12 @@ const FrameStats& TiledDeferredRenderer::render(const Camera& camera, const std:
     buildLightGrid(cam, lights, transparent);
     {
         TimedPass gBufferTime(frame_.timer, kGBuffer.name);
-        gBuffer_.draw(frame_.scene, cam);
+        gBuffer_->draw(frame_.scene, cam);
     }
     shadeTiles(cam, shading);
     if (transparent) shadeTransparent(cam, shading);
     frame_.resolve();
-    gBuffer_.unbind();
+    gBuffer_->unbind();
     StateCache::current().unbindTextures({gl::kUnitTileGrid, gl::kUnitTileList});
     frame_.finishFrame(stats_, "TiledDeferredRenderer::render");
     return stats_;
@@ -108,6 +110,7 @@ void TiledDeferredRenderer::drawDepthPrepass(const CameraMatrices& cam) {
     {
         TimedPass depthPrepassTime(frame_.timer, pass::kDepthPrepass.name);
         depthBounds_->prepass(frame_.scene, cam);
+        if (depthBounds_->coversSamples()) depthBounds_->samples(frame_.scene, cam);  // MSAA: the samples' depth
     }
     TimedPass reduceTime(frame_.timer, kTileDepthReduce.name);
     tileDepth_ = depthBounds_->reduce();
@@ -131,10 +134,12 @@ void TiledDeferredRenderer::buildLightGrid(const CameraMatrices& cam, const std:
 void TiledDeferredRenderer::shadeTiles(const CameraMatrices& cam, const ShadingParameters& shading) {
     TimedPass tiledTime(frame_.timer, kTiledDeferred.name);
     beginOpaqueShading(frame_.targets, shading, true);  // cleared to the background
-    StateCache::current().apply(RenderState{});         // full screen: no depth test
+    RenderState fullScreen;  // no depth test; MSAA: once a sample
+    fullScreen.sampleShading = frame_.targets.samples() > 0;
+    StateCache::current().apply(fullScreen);
     const gl::Program& shadowed =
         frame_.shadows.active() ? frame_.shadows.program(tiled_.name(), "deferred_fullscreen.vert",
-                                                         "tiled_deferred.frag", [&] {
+                                                         tiledShader_, [&] {
                                                              ShaderDefines d = defines_;
                                                              d.push_back({"LIDR_DIELECTRIC_SPECULAR", "1"});
                                                              return d;
@@ -146,8 +151,8 @@ void TiledDeferredRenderer::shadeTiles(const CameraMatrices& cam, const ShadingP
     useShadingProgram(program, cam, shading, frame_.lightTable, frame_.environment);
     frame_.shadows.bind(program, shading.shadows);
     gridTextures_.bind(program, false);
-    gBuffer_.bind(program, cam);
-    gBuffer_.drawFullScreen();
+    gBuffer_->bind(program, cam);
+    gBuffer_->drawFullScreen();
 }
 
 void TiledDeferredRenderer::shadeTransparent(const CameraMatrices& cam, const ShadingParameters& shading) {
@@ -165,14 +170,15 @@ void TiledDeferredRenderer::shadeTransparent(const CameraMatrices& cam, const Sh
 ModeStatistics TiledDeferredRenderer::modeStatistics() const {
     ModeStatistics m;
     m.section = "deferred";
-    const std::string format = gBufferFormatName(gBuffer_.format());
-    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_bytes_per_pixel", gBuffer_.bytesPerPixel()),
-                modeStatistic("geometry_passes", gBuffer_.geometryPasses()),
+    const std::string format = gBufferFormatName(gBuffer_->format());
+    m.values = {modeStatistic("g_buffer_format", format), modeStatistic("g_buffer_samples", gBuffer_->samples()),
+                modeStatistic("g_buffer_bytes_per_pixel", gBuffer_->bytesPerPixel()),
+                modeStatistic("geometry_passes", gBuffer_->geometryPasses()),
                 modeStatistic("tile_size", options_.tileSize), modeStatistic("depth_bounds", depthBoundsUsed()),
                 modeStatistic("loop_bound", loopBound_)};
     std::ostringstream s;
-    s << "g-buffer   " << format << ", " << gBuffer_.bytesPerPixel() << " bytes a pixel; " << options_.tileSize
-      << " px tiles, depth bounds " << (depthBoundsUsed() ? "min/max" : "off") << ", loop bound " << loopBound_;
+    s << "g-buffer   " << gBufferDescription(*gBuffer_) << "; " << options_.tileSize << " px tiles, depth bounds "
+      << (depthBoundsUsed() ? "min/max" : "off") << ", loop bound " << loopBound_;
     m.line = s.str();
     return m;
 }
