@@ -112,6 +112,9 @@ void lidrConfigs(const SweepGroup& g, const ModeConfig& base, Configs& configs) 
                                     // Regions need tiles and the automatic width.
                                     if ((!sphereTiles || scheme != "auto") && regional != g.regionalIndices.front())
                                         continue;
+                                    // Under MSAA (single-sample lists) the library runs `sphere` as sphere-span:
+                                    // the row says what ran.
+                                    if (c.volumeTest == "sphere" && c.msaa > 0 && !c.perSample) c.volumeTest = "sphere-span";
                                     configs.push_back(c);
                                 }
 }

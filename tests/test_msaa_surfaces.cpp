@@ -12,7 +12,9 @@
 #include "lidr/base/error.h"
 #include "lidr/eval/bench_scenes.h"
 #include "lidr/modes/reference_renderer.h"
+#include "lidr/base/shader_float.h"
 #include "lidr/modes/tiled_renderer.h"
+#include "lidr/technique/depth_span_pass.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -29,14 +31,15 @@ bool contextHasMsaa(int samples) {
 // Small sizes: CI runs every case under two contexts.
 Scene deepScene(const std::string& name) {
     if (name == "room") return testRoom();
-    return makeOccludedScene(name == "hall-255" ? OccludedSceneKind::Hall : OccludedSceneKind::City, 255, 192, 144);
+    const int lights = name == "hall-1024" ? 1024 : 255;
+    return makeOccludedScene(name.rfind("hall", 0) == 0 ? OccludedSceneKind::Hall : OccludedSceneKind::City, lights, 192, 144);
 }
 
 long sum(const std::vector<int>& v) { return std::accumulate(v.begin(), v.end(), 0L); }
 }  // namespace
 
 TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep scenes", "[msaa][every-gl]") {
-    const std::string name = GENERATE("hall-255", "city-255", "room");
+    const std::string name = GENERATE("hall-255", "city-255", "room", "hall-1024");
     const int samples = GENERATE(2, 4);
     if (!contextHasMsaa(samples)) return;
     DYNAMIC_SECTION(name << ", " << samples << "x MSAA") {
@@ -46,7 +49,18 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
         const RenderResult r = renderAndEvaluate(scene, o);
         const FrameEvaluation& e = r.evaluation;
         const long pixels = long(scene.width) * scene.height;
-        INFO("edge pixels " << e.edgePixels << " of " << pixels << ", dropped (samples' surfaces) "
+        // Lights are dropped only where more mark a pixel than the largest budget (16) holds, and the frame counts
+        // those pixels (pixelsOverBudget); needMore: pixels whose samples' surfaces themselves need more than 16.
+        long needMore = 0, dropsWithinBudget = 0;
+        for (size_t p = 0; p < size_t(pixels); ++p) {
+            if (e.spanTruth.count(p) > 16) ++needMore;
+            if (e.marked[p] <= 16) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
+        }
+        INFO("pixels needing over 16 lights " << needMore << ", drops within the budget " << dropsWithinBudget);
+        INFO("edge pixels " << e.edgePixels << " of " << pixels << " (" << e.edgePixelsSeveralSurfaces
+                            << " with several depths on one side), lights marked on edge pixels: mean " << e.edgeMarksMean
+                            << ", most " << e.edgeMarksMax << " (the samples' surfaces need at most "
+                            << e.spanTruth.maxOverlap() << "), dropped (samples' surfaces) "
                             << e.spanLists.droppedLightPixels << ", dropped (centres) " << e.lists.droppedLightPixels
                             << ", over budget " << e.pixelsOverBudget << ", budget " << r.stats.autoDecision.budget
                             << ", PSNR " << e.error.psnr << ", max error " << e.error.maxAbsError << ", pixels over 1 "
@@ -55,11 +69,58 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
         REQUIRE(e.edgePixels > 0);
         REQUIRE(e.edgePixels * 4 < pixels);
         REQUIRE(e.lists.invalidSlots == 0);
+        REQUIRE(dropsWithinBudget == 0);
+        REQUIRE(e.error.psnr >= 50.0);
+        if (name == "hall-1024") {
+            // 1,024 lights of 1-4 m: a few edge pixels' nearest, centre and farthest surfaces need more than 16
+            // lights together (up to 21 at 192x144), which no budget holds: counted, and the frame says so.
+            REQUIRE(needMore * 100 < e.edgePixels);
+            REQUIRE(e.pixelsOverBudget * 50 < e.edgePixels);
+            REQUIRE(e.pixelsOverBudget >= needMore);
+            return;
+        }
+        REQUIRE(needMore == 0);
         REQUIRE(e.spanLists.droppedLightPixels == 0);
         REQUIRE(e.lists.droppedLightPixels == 0);
         REQUIRE(e.pixelsOverBudget == 0);
-        REQUIRE(e.error.psnr >= 50.0);
         REQUIRE(glGetError() == GL_NO_ERROR);
+    }
+}
+
+// The side bounds the volume pass takes from a side's count and resolved moments hold every sample, with the
+// moments rounded as a half-float (or float) target would round them at each step, and are a point (within
+// rounding) where the side's samples lie on one surface.
+TEST_CASE("MSAA: Samuelson side bounds hold every sample under rounding", "[msaa]") {
+    uint32_t seed = 12345u;
+    auto next = [&seed] { return float((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0f; };
+    for (const bool half : {true, false}) {
+        const FloatPrecision precision = half ? FloatPrecision::Fp16 : FloatPrecision::Fp32;
+        const glm::vec2 rounding = DepthSpanPass::sideRoundingOf(half);
+        float widestSingle = 0.0f;  // the widest bounds of a side on one surface, relative to its depth
+        for (int trial = 0; trial < 4000; ++trial) {
+            const int n = 2 << (trial % 3), k = 1 + int(next() * float(n) * 0.999f);
+            const bool oneSurface = trial % 2 == 0;
+            const float base = 0.01f + next() * 60.0f;
+            std::vector<double> x(static_cast<size_t>(k));
+            for (double& v : x) v = roundToPrecision(oneSurface ? base : 0.01 + next() * 60.0, precision);
+            // Each sample's value rounded as stored, summed in the target's precision, divided, stored.
+            double m1 = 0.0, m2 = 0.0;
+            for (double v : x) {
+                m1 = roundToPrecision(m1 + v, precision);
+                m2 = roundToPrecision(m2 + roundToPrecision(v * v, precision), precision);
+            }
+            m1 = roundToPrecision(m1 / n, precision);
+            m2 = roundToPrecision(m2 / n, precision);
+            const glm::vec2 b = sideBounds(float(k), float(n), float(m1), float(m2), rounding);
+            for (double v : x) {
+                INFO("n " << n << ", k " << k << ", x " << v << ", bounds [" << b.x << ", " << b.y << "]");
+                REQUIRE(b.x <= v);
+                REQUIRE(v <= b.y);
+            }
+            if (oneSurface) widestSingle = std::max(widestSingle, (b.y - b.x) / float(x[0]));
+        }
+        INFO((half ? "half float" : "float") << ": widest bounds on one surface " << widestSingle << " of the depth");
+        REQUIRE(widestSingle < (half ? 1.0f : 0.02f));  // float: Samuelson's spread of 16 roundings, under 1%
     }
 }
 

@@ -10,18 +10,26 @@ void evaluateSpans(const LidrRenderer& renderer, const CameraMatrices& cam, cons
                    FrameEvaluation& e) {
     const std::vector<DepthSpanPass::Span> spans = renderer.readDepthSpans();
     if (spans.empty()) return;
-    ImageFloat nearDepth(cam.width, cam.height), farDepth(cam.width, cam.height);
+    // The points the samples shade: the nearest sample's surface, the centre's, the farthest sample's.
+    const ImageFloat centre = renderer.targets().readDepth();
+    ImageFloat nearest(cam.width, cam.height), farthest(cam.width, cam.height);
     for (size_t p = 0; p < spans.size(); ++p) {
-        nearDepth.pixels[p] = spans[p].nearDepth;
-        farDepth.pixels[p] = spans[p].farDepth;
-        if (spans[p].edge(kEdgeDepthMargin)) ++e.edgePixels;
+        const DepthSpanPass::Span& s = spans[p];
+        nearest.pixels[p] = s.before.samples > 0 ? s.before.surfaceDepth : 1.0f;
+        farthest.pixels[p] = s.past.samples > 0 ? s.past.surfaceDepth : 1.0f;
+        if (!s.edge(kEdgeDepthMargin)) continue;
+        ++e.edgePixels;
+        if (s.past.severalSurfaces || s.before.severalSurfaces) ++e.edgePixelsSeveralSurfaces;
+        e.edgeMarksMax = std::max(e.edgeMarksMax, e.marked[p]);
+        e.edgeMarksMean += double(e.marked[p]);
     }
-    // The span bounds the samples' depths; the segment between may pass through lights that reach no surface at all
-    // (in the air between two walls): a light touching no opaque mesh's bounds lights no sample (radius 0 here).
+    if (e.edgePixels > 0) e.edgeMarksMean /= double(e.edgePixels);
+    // Where one side's samples lie at several depths, its point (E[x^2] / E[x]) lies between them, maybe in the air:
+    // a light touching no opaque mesh's bounds lights no sample (radius 0 here; the frame plan culls it too).
     std::vector<PointLight> reaching = lights;
     for (PointLight& l : reaching)
         if (!renderer.frame().scene.batchesTouchSphere(glm::vec4(l.position, l.radius), DrawFilter::Opaque)) l.radius = 0.0f;
-    e.spanTruth = computeSpanCoverage(nearDepth, farDepth, cam, reaching);
+    e.spanTruth = computeSpanCoverage({nearest, centre, farthest}, cam, reaching);
     e.spanLists = checkIndexLists(e.spanTruth, renderer.scheme(), renderer.readIndexTargets(),
                                   static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
                                   renderer.frameIndexRegions());
@@ -48,11 +56,11 @@ FrameEvaluation evaluateFrame(const LidrRenderer& renderer, const Camera& camera
     e.lists = checkIndexLists(e.truth, renderer.scheme(), renderer.readIndexTargets(),
                               static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
                               renderer.frameIndexRegions());
-    evaluateSpans(renderer, cam, lights, e);
     const std::vector<uint8_t> counts = renderer.readLightCounts();
     const size_t n = size_t(t.width()) * t.height();
     e.marked.assign(n, 0);
     for (size_t p = 0; p < n; ++p) e.marked[p] = counts.empty() ? e.truth.count(p) : counts[p];
+    evaluateSpans(renderer, cam, lights, e);
     const int budget = renderer.scheme().config().budget;
     const int transparentBudget = renderer.transparentScheme().config().budget;
     const bool wholeLights = !renderer.scheme().keepsFirstMarks();

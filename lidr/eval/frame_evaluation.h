@@ -28,8 +28,12 @@ struct FrameEvaluation {
     std::vector<uint8_t> withinBudget;
     std::vector<int> droppedMarks;  // per pixel: marks the index lists do not hold (GPU count - kept slots)
     // sphere-span (MSAA): pixels whose samples shade more than one depth, and the lists against the lights the
-    // samples' depth span needs (computeSpanCoverage; a superset of `truth`'s). Empty/0 for the other tests.
+    // samples' surfaces need (computeSpanCoverage at the nearest sample's surface, the centre's and the farthest
+    // sample's; a superset of `truth`'s). Empty/0 for the other tests.
     long edgePixels = 0;
+    long edgePixelsSeveralSurfaces = 0;  // ... with samples at more than one depth on one side of the centre
+    int edgeMarksMax = 0;                // lights marked on an edge pixel: the most, the mean
+    double edgeMarksMean = 0.0;
     CoverageTruth spanTruth;
     ListCheck spanLists;
     ImageError error;               // whole image against the reference

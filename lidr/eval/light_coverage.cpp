@@ -119,26 +119,28 @@ CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& cam
     return t;
 }
 
-CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat& farDepth, const CameraMatrices& camera,
+CoverageTruth computeSpanCoverage(const std::vector<ImageFloat>& surfaceDepths, const CameraMatrices& camera,
                                   const std::vector<PointLight>& lights, float band) {
-    if (nearDepth.width != camera.width || nearDepth.height != camera.height || farDepth.width != camera.width ||
-        farDepth.height != camera.height)
-        throw Error("computeSpanCoverage: depth images and camera sizes differ");
+    for (const ImageFloat& depth : surfaceDepths)
+        if (depth.width != camera.width || depth.height != camera.height)
+            throw Error("computeSpanCoverage: depth images and camera sizes differ");
     CoverageTruth t;
     t.width = camera.width;
     t.height = camera.height;
     const size_t n = size_t(t.width) * t.height;
     t.surface.assign(n, 0);
-    std::vector<glm::vec3> nearPoint(n), farPoint(n);
+    // Per pixel, the points its samples shade (a window depth of 1 or more: none).
+    std::vector<std::vector<glm::vec3>> points(n);
     const glm::dmat4 inverseView = glm::inverse(glm::dmat4(camera.view));
     for (int y = 0; y < t.height; ++y)
         for (int x = 0; x < t.width; ++x) {
             const size_t p = size_t(y) * t.width + x;
-            const float dn = std::max(nearDepth.at(x, y), 0.0f), df = std::min(farDepth.at(x, y), 1.0f);
-            if (!(dn <= df)) continue;
-            t.surface[p] = 1;
-            nearPoint[p] = surfacePoint(camera, inverseView, x, y, dn);
-            farPoint[p] = surfacePoint(camera, inverseView, x, y, df);
+            for (const ImageFloat& depth : surfaceDepths) {
+                const float d = depth.at(x, y);
+                if (!(d < 1.0f)) continue;
+                t.surface[p] = 1;
+                points[p].push_back(surfacePoint(camera, inverseView, x, y, std::max(d, 0.0f)));
+            }
         }
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -150,14 +152,13 @@ CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat&
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
                 const size_t p = size_t(y) * t.width + x;
-                if (!t.surface[p]) continue;
-                const glm::vec3 a = nearPoint[p], ab = farPoint[p] - a;  // the closest point of the span to the centre
-                const float len2 = glm::dot(ab, ab);
-                const float s = len2 > 0.0f ? std::clamp(glm::dot(l.position - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-                const glm::vec3 d = a + s * ab - l.position;
-                if (!(glm::dot(d, d) < inner * inner)) continue;
-                if (l.isSpot() && !insideSpotCone(d, cone, band)) continue;
-                pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
+                for (const glm::vec3& point : points[p]) {
+                    const glm::vec3 d = point - l.position;
+                    if (!(glm::dot(d, d) < inner * inner)) continue;
+                    if (l.isSpot() && !insideSpotCone(d, cone, band)) continue;
+                    pairs.emplace_back(uint32_t(p), uint32_t(i + 1));
+                    break;
+                }
             }
     }
     fillLists(t, pairs);

@@ -29,11 +29,12 @@ struct CoverageTruth {
 CoverageTruth computeCoverage(const ImageFloat& depth, const CameraMatrices& camera,
                               const std::vector<PointLight>& lights, float band = 2e-3f);
 
-// MSAA (sphere-span): per pixel, the lights a sample may need: those whose sphere (radius x (1 - band)) meets the
-// pixel centre's eye ray between window depths nearDepth and farDepth (the depths the pixel's samples shade,
-// LidrRenderer::readDepthSpans; near > far: none). A spot light also needs the closest such point inside its
-// cone (ramp above band). Where near == far, computeCoverage's truth.
-CoverageTruth computeSpanCoverage(const ImageFloat& nearDepth, const ImageFloat& farDepth, const CameraMatrices& camera,
+// MSAA (sphere-span): per pixel, the lights a sample needs: those whose sphere (radius x (1 - band)) contains
+// one of the points on the pixel centre's eye ray at the window depths of surfaceDepths (each image one point a
+// pixel, >= 1: none; LidrRenderer::readDepthSpans: the nearest sample's surface, the centre's, the farthest
+// sample's). A spot light also needs that point inside its cone (ramp above band). With the centre's depth alone,
+// computeCoverage's truth.
+CoverageTruth computeSpanCoverage(const std::vector<ImageFloat>& surfaceDepths, const CameraMatrices& camera,
                                   const std::vector<PointLight>& lights, float band = 2e-3f);
 
 // Per pixel, the lights whose sphere scaled by `inflate` crosses the eye ray between the near plane and the

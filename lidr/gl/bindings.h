@@ -14,6 +14,7 @@ enum TextureUnit : int {
     // MSAA samples' depth spans (lidr/technique/depth_span_pass.h), which that pass draws reading the copy.
     kUnitDepthCopy = 0,
     kUnitDepthSpans = 1,
+    kUnitDepthSpanSides = 2,  // sphere-span: the side moments beside the spans
     // Light volume pass drawing pixel lists (tests/pixel_list_geometry.h): the list step and the colour table.
     kUnitPixelListStep = 0,
     kUnitPixelListColors = 1,

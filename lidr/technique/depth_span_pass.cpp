@@ -1,6 +1,7 @@
 #include "lidr/technique/depth_span_pass.h"
 
 #include <algorithm>
+#include <cmath>
 #include "lidr/base/gl.h"
 
 #include "lidr/base/error.h"
@@ -11,27 +12,65 @@
 
 namespace lidr {
 
-DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre)
+glm::vec2 sideBounds(float k, float n, float m1, float m2, glm::vec2 rounding) {
+    const float m1Low = std::max(m1 - rounding.y, 0.0f) / (1.0f + rounding.x);
+    const float m1High = (m1 + rounding.y) / (1.0f - rounding.x);
+    const float m2High = (m2 + rounding.y) / (1.0f - rounding.x);
+    const float perSample = n / k;  // means over all samples -> over the side's
+    const float meanLow = m1Low * perSample, meanHigh = m1High * perSample;
+    const float spread = std::sqrt(std::max((k - 1.0f) * (m2High * perSample - meanLow * meanLow), 0.0f));
+    return {std::max(meanLow - spread, 0.0f), meanHigh + spread};
+}
+
+namespace {
+FloatTargets sideTargets(const GlInfo& info, const RenderTargets& targets) {
+    try {
+        return FloatTargets(info, targets, GL_RGBA32F, 2);  // float: the moments' bounds stay tight
+    } catch (const UnsupportedError&) {
+        return FloatTargets(info, targets, GL_RGBA16F, 2);
+    }
+}
+}  // namespace
+
+glm::vec2 DepthSpanPass::sideRoundingOf(bool halfFloat) {
+    // A resolved mean went through the sample's rounding, the averaging (a sum of up to 16 in the worst order)
+    // and the store: a relative error below 1/128 (16 half-float roundings) or 2^-20 (16 float ones), and half
+    // floats' subnormal steps (2^-25 each, 16 of them).
+    return halfFloat ? glm::vec2(1.0f / 128.0f, 1.0f / 2097152.0f) : glm::vec2(1.0f / 1048576.0f, 0.0f);
+}
+
+glm::vec2 DepthSpanPass::sideRounding() const { return sideRoundingOf(sides_.format() != GL_RGBA32F); }
+
+DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre, bool sideMoments)
     : width_(targets.width()), height_(targets.height()), samples_(targets.samples()) {
     if (samples_ < 2) throw Error("the MSAA depth spans need multisampled targets");
+    if (sideMoments && packedCentre) throw Error("DepthSpanPass: side moments read the centre's depth texture");
     try {
-        target_ = HalfFloatTarget(info, targets);
+        if (sideMoments)
+            sides_ = sideTargets(info, targets);
+        else
+            target_ = HalfFloatTarget(info, targets);
     } catch (const UnsupportedError& e) {
         throw UnsupportedError(std::string("the sphere-span volume test (LIDR under MSAA) resolves depth spans in a "
                                            "half-float target: ") + e.what() +
                                "; use --volume-test sphere-ray (whole-ray lists) on this context");
     }
     // The samples the driver gave (it may round a request up: llvmpipe makes 4 of 2): the resolve averages over them.
-    StateCache::current().beginPass(target_.pass());
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("MSAA depth spans: sample count");
-    samples_ = std::max(samples_, int(samples));
+    if (sides_) {
+        samples_ = sides_.samples();
+    } else {
+        StateCache::current().beginPass(target_.pass());
+        GLint samples = 0;
+        glGetIntegerv(GL_SAMPLES, &samples);
+        StateCache::current().bindFramebuffer(0);
+        checkGl("MSAA depth spans: sample count");
+        samples_ = std::max(samples_, int(samples));
+    }
+    ShaderDefines defines;
+    if (packedCentre) defines.push_back({"LIDR_CENTRE_PACKED", "1"});
+    if (sideMoments) defines.push_back({"LIDR_SPAN_SIDES", "1"});
     program_ = gl::Program::create("depth-span", buildShaderSource("geometry.vert"),
-                                   buildShaderSource("depth_span.frag", packedCentre ? ShaderDefines{{"LIDR_CENTRE_PACKED", "1"}}
-                                                                                     : ShaderDefines{}),
-                                   geometryAttributes());
+                                   buildShaderSource("depth_span.frag", defines), geometryAttributes());
 }
 
 void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const {
@@ -39,7 +78,7 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     clear.color = true;  // 0: a sample no surface covers adds nothing to either bound
     clear.depth = clear.stencil = true;
     StateCache& cache = StateCache::current();
-    cache.beginPass(target_.pass(clear));
+    cache.beginPass(sides_ ? sides_.pass(clear) : target_.pass(clear));
     // The MSAA pre-pass itself (as DepthPrepass, the same vertex shader: the forward pass's EQUAL test holds):
     // the nearest fragment of each sample writes last.
     RenderState s;
@@ -52,10 +91,23 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     program_.set("uDepth", gl::kUnitDepthCopy);
     program_.set("uInvTargetSize", 1.0f / glm::vec2(float(width_), float(height_)));
     program_.set("uStoreScale", kStoreScale);
+    if (sides_) {
+        // Window depth to view distance, as the volume pass converts it (perspective: P[2][3] = -1).
+        const glm::mat4& P = camera.projection;
+        if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the MSAA depth spans need a perspective projection");
+        depthToDistance_ = glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f));
+        momentScale_ = 64.0f / camera.farPlane;  // x <= 64 before the far plane: x^2 fits half floats
+        program_.set("uDepthToDistance", depthToDistance_);
+        program_.set("uMomentScale", momentScale_);
+        program_.set("uSideMargin", kSideMargin);
+    }
     centreDepth.bind(gl::kUnitDepthCopy);
     scene.draw(program_, DrawFilter::Opaque, false, &camera);
     cache.apply(RenderState{});
-    target_.resolve();
+    if (sides_)
+        sides_.resolve();
+    else
+        target_.resolve();
     checkGl("MSAA depth spans");
 }
 
@@ -81,8 +133,49 @@ std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& cent
             Span& s = spans[size_t(y) * size_t(width_) + size_t(x)];
             s.nearDepth = d < 1.0f ? d - before : 1.0f - before;
             s.farDepth = d < 1.0f ? d + past : std::min(past, 1.0f);
+            s.past.samples = int(std::lround(rgba[texel + 2] * float(samples_)));
+            s.before.samples = int(std::lround(rgba[texel + 3] * float(samples_)));
         }
+    if (sides_) readSides(spans, centre);
     return spans;
+}
+
+void DepthSpanPass::readSides(std::vector<Span>& spans, const ImageFloat& centre) const {
+#ifndef __EMSCRIPTEN__
+    std::vector<float> moments(spans.size() * 4);
+    sideTexture().bind(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, moments.data());
+    checkGl("MSAA depth span sides read-back");
+    const glm::vec2 rounding = sideRounding();
+    const float n = float(samples_);
+    auto depthAt = [&](float distance) {  // view distance -> window depth
+        return distance > 0.0f ? std::clamp(depthToDistance_.x / distance - depthToDistance_.y, 0.0f, 1.0f) : 0.0f;
+    };
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const float* m = &moments[(size_t(height_ - 1 - y) * size_t(width_) + size_t(x)) * 4];
+            const float d = centre.at(x, y);
+            const float centreDistance = d < 1.0f ? depthToDistance_.x / (d + depthToDistance_.y) : 0.0f;
+            Span& s = spans[size_t(y) * size_t(width_) + size_t(x)];
+            for (int side = 0; side < 2; ++side) {
+                Side& t = side == 0 ? s.past : s.before;
+                if (t.samples == 0) continue;
+                const float sign = side == 0 ? 1.0f : -1.0f, m1 = m[side * 2], m2 = m[side * 2 + 1];
+                const glm::vec2 b = sideBounds(float(t.samples), n, m1, m2, rounding) / momentScale_;
+                const float extreme = m1 > 0.0f ? m2 / m1 / momentScale_ : 0.0f;
+                const float a = depthAt(centreDistance + sign * b.x), c = depthAt(centreDistance + sign * b.y);
+                t.nearDepth = std::min(a, c);
+                t.farDepth = std::max(a, c);
+                t.surfaceDepth = depthAt(centreDistance + sign * extreme);
+                const float mean = m1 * n / float(t.samples);
+                t.severalSurfaces = m2 * n / float(t.samples) - mean * mean > 1e-4f * mean * mean + rounding.y;
+            }
+        }
+#else
+    (void)spans;
+    (void)centre;
+#endif
 }
 
 }  // namespace lidr

@@ -8,17 +8,28 @@
 // count each bound holds for every sample. The pass is the MSAA depth pre-pass (depth LESS with writes into the
 // targets' multisampled depth-stencil, the forward pass then tests EQUAL) with these colours written, and one
 // resolve; exact, with no neighbourhood guess and no sub-pixel fallback. doc/msaa-transparency.md, "Edge pixels".
+// With side moments (LIDR's lists) a second target holds, per side of the centre (samples past it, samples before
+// it), the first two moments of the samples' distance excess, and the first target's b/a how many samples lie on
+// each side: the resolve then bounds each side's samples between Samuelson's bounds (mean -/+ deviation x
+// sqrt(k - 1) over its k samples), a point (up to rounding) where they lie on one surface.
 #include <vector>
 
 #include "lidr/base/image.h"
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
+#include "lidr/gl/float_targets.h"
 #include "lidr/gl/half_float_target.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/scene/camera.h"
 
 namespace lidr {
+
+// Samuelson's bounds on one side's k samples (k >= 1) from the resolved means over all n samples m1 = E[x] and
+// m2 = E[x^2], first widened by their rounding (relative, absolute): every sample's x lies in the returned
+// [lowest, highest] (mean -/+ deviation x sqrt(k - 1)); a point, up to rounding, where they are all equal. The
+// volume shader (light_volume_sphere.frag, lidrSideBounds) computes the same.
+glm::vec2 sideBounds(float k, float n, float m1, float m2, glm::vec2 rounding);
 
 class DepthSpanPass {
 public:
@@ -31,29 +42,59 @@ public:
     // Throws UnsupportedError where the context has no float colour buffers (GlInfo::halfFloatColorBuffer) or
     // `targets` are not multisampled. packedCentre: run() takes the centre depth packed in RGBA8
     // (shaders/modes/depth_pack.glsl: tiled forward's pre-Z copy) instead of a depth texture.
-    DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre = false);
-    explicit operator bool() const { return bool(target_); }
+    // sideMoments: also the per-side counts and moments (LIDR's volume pass; tiled forward's bounds need none).
+    DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre = false, bool sideMoments = false);
+    explicit operator bool() const { return bool(target_) || bool(sides_); }
 
     // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
     // targets (the MSAA pre-pass) with the spans in colour, and resolves them. Leaves framebuffer 0 bound.
     void run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const;
     // The resolved spans (r: past the anchor, g: before it, times kStoreScale, averaged over the samples).
-    const gl::Texture& texture() const { return target_.texture(); }
+    const gl::Texture& texture() const { return sides_ ? sides_.texture(0) : target_.texture(); }
     // What turns a resolved value into a bound on every sample's depth difference (the driver's sample count).
     float boundScale() const { return float(samples_) * kRoundingMargin / kStoreScale; }
+
+    // Side moments: a sample more than kSideMargin (window depth) past (before) the centre's depth is on the far
+    // (near) side; texture() b/a: the fraction of samples on each; sideTexture(): per side (rg: past, ba: before)
+    // the mean over all samples of x and x^2, x = the sample's distance (view depth) from the centre's times
+    // momentScale() (the centre's distance is 0 where it sees no surface). Half-float (where the context has no
+    // RGBA32F target) or float: sideRounding() = (relative, absolute) error bound of a resolved mean.
+    static constexpr float kSideMargin = 1e-6f;
+    bool hasSides() const { return bool(sides_); }
+    const gl::Texture& sideTexture() const { return sides_.texture(1); }
+    float momentScale() const { return momentScale_; }
+    glm::vec2 sideRounding() const;
+    static glm::vec2 sideRoundingOf(bool halfFloat);
+    int samples() const { return samples_; }
+    // Window depth d -> view distance x / (d + y) of the last run's (perspective) camera.
+    glm::vec2 depthToDistance() const { return depthToDistance_; }
 
     // CPU read-back of the last run (tests, evaluation): per pixel, rows top to bottom, the window depths
     // [near, far] the samples shade, from the centre depth `centre` (RenderTargets::readDepth()); near > far where
     // no sample shades a surface.
+    struct Side {
+        int samples = 0;                          // samples on this side (0: none)
+        float nearDepth = 1.0f, farDepth = 0.0f;  // window depths the volume pass's bounds give its samples
+        // The side's extreme sample as far as the moments tell: the farthest (past side) or nearest (before side)
+        // lies at or beyond it (E[x^2] / E[x]); exactly there where the side's samples lie on one surface.
+        float surfaceDepth = 1.0f;
+        bool severalSurfaces = false;             // the side's samples lie at more than one depth
+    };
     struct Span {
         float nearDepth = 1.0f, farDepth = 0.0f;
+        Side past, before;  // with side moments
         bool edge(float margin) const { return farDepth - nearDepth > margin; }
     };
     std::vector<Span> readSpans(const ImageFloat& centre) const;
 
 private:
+    void readSides(std::vector<Span>& spans, const ImageFloat& centre) const;
+
     int width_ = 0, height_ = 0, samples_ = 0;
-    HalfFloatTarget target_;
+    HalfFloatTarget target_;  // without side moments
+    FloatTargets sides_;      // with them: the spans (0) and the moments (1)
+    mutable float momentScale_ = 1.0f;
+    mutable glm::vec2 depthToDistance_{1.0f, 0.0f};
     gl::Program program_;
 };
 

@@ -199,9 +199,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         }
     }
     if (options_.volumeTest == VolumeTest::SphereSpan) {
-        depthSpans_ = DepthSpanPass(info, frame_.targets);
-        volumePass_.setDepthSpans(&depthSpans_.texture(), depthSpans_.boundScale());
-        transparentVolumePass_.setDepthSpans(&depthSpans_.texture(), depthSpans_.boundScale());
+        depthSpans_ = DepthSpanPass(info, frame_.targets, false, true);
+        volumePass_.setDepthSpans(&depthSpans_);
+        transparentVolumePass_.setDepthSpans(&depthSpans_);
     }
     if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && !info.gles) {
         // OpenGL ES 2.0 keeps the volume meshes: it cannot read depth back (glReadPixels takes colour only).

@@ -278,11 +278,17 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
     if (readsSpans_) {
-        if (!(depthSpans_ && *depthSpans_))
+        if (!(depthSpans_ && *depthSpans_ && depthSpans_->hasSides()))
             throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA depth spans");
         program.set("uDepthSpan", gl::kUnitDepthSpans);
-        program.set("uSpanBoundScale", spanBoundScale_);
-        depthSpans_->bind(gl::kUnitDepthSpans);
+        program.set("uSpanBoundScale", depthSpans_->boundScale());
+        program.set("uSpanSides", gl::kUnitDepthSpanSides);
+        program.set("uSpanSamples", float(depthSpans_->samples()));
+        program.set("uSpanMomentScale", depthSpans_->momentScale());
+        program.set("uSpanRounding", depthSpans_->sideRounding());
+        program.set("uSpanSideMargin", DepthSpanPass::kSideMargin);
+        depthSpans_->texture().bind(gl::kUnitDepthSpans);
+        depthSpans_->sideTexture().bind(gl::kUnitDepthSpanSides);
     }
     lightsUniform_ = program.uniform<glm::vec4>("uLights");
     conesUniform_ = program.uniform<glm::vec4>("uCones");

@@ -19,6 +19,7 @@
 #include "lidr/render/shadow_maps.h"
 #include "lidr/technique/volume_tiles.h"
 #include "lidr/scene/camera.h"
+#include "lidr/technique/depth_span_pass.h"
 #include "lidr/technique/draw_target_programs.h"
 #include "lidr/technique/light_volume_mesh.h"
 #include "lidr/technique/volume_draw_plan.h"
@@ -92,12 +93,9 @@ public:
     // The precision of the depth the shader tests read (the pre-pass's depth buffer, copied): 24 or 16 bits;
     // kSphereDepthSteps are steps of it.
     void setDepthBits(int bits) { depthUnits_ = float((1u << bits) - 1u); }
-    // sphere-span, and sphere-ray built with depthSpans: the frame's MSAA depth spans (DepthSpanPass::texture(),
-    // outliving the pass) and the factor that turns a stored value into a bound (DepthSpanPass::boundScale()).
-    void setDepthSpans(const gl::Texture* spans, float boundScale) {
-        depthSpans_ = spans;
-        spanBoundScale_ = boundScale;
-    }
+    // sphere-span, and sphere-ray built with depthSpans: the frame's MSAA depth spans (with side moments;
+    // outliving the pass), read after each frame's run.
+    void setDepthSpans(const DepthSpanPass* spans) { depthSpans_ = spans; }
 
     // Tile-culled volumes (the sphere test only): with the frame's pre-pass depth per tile (volume_tiles.h; it
     // must outlive the pass), the pass draws each light as screen quads over the tiles of its sphere's screen
@@ -201,8 +199,7 @@ private:
     glm::ivec2 targetSize_{1};
     const gl::Texture* depth_ = nullptr;
     bool readsSpans_ = false;  // the batch programs read the depth spans (LIDR_DEPTH_SPAN)
-    const gl::Texture* depthSpans_ = nullptr;
-    float spanBoundScale_ = 0.0f;
+    const DepthSpanPass* depthSpans_ = nullptr;
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;
     float depthUnits_ = 16777215.0f;  // 2^depthBits - 1

@@ -79,7 +79,7 @@ public:
     // The pre-pass depth precision, 24 (default) or 16 bits (real or emulated): the shader tests' margin is in
     // its steps.
     void setDepthBits(int bits) { volumes_.setDepthBits(bits); }
-    void setDepthSpans(const gl::Texture* spans, float boundScale) { volumes_.setDepthSpans(spans, boundScale); }
+    void setDepthSpans(const DepthSpanPass* spans) { volumes_.setDepthSpans(spans); }
     // The sphere test's shadow test (LightVolumeGeometry::setShadows): lights with a VolumeLight::shadowTile are
     // kept only where their maps leave the surface lit. nullptr: none (the front-face tests never have one).
     void setShadows(const ShadowMaps* maps, const ShadowSettings& settings) { volumes_.setShadows(maps, settings); }

@@ -34,7 +34,32 @@ uniform float uDepthMargin;    // the surface lies within this much window depth
 // rounding margin) each bounds every sample's.
 uniform sampler2D uDepthSpan;
 uniform float uSpanBoundScale;
+// Per side of the centre (its b: samples past it, a: before it, as fractions of the samples), the means over all
+// samples of x and x^2 (rg: past, ba: before), x the sample's view distance from the centre's times
+// uSpanMomentScale: each side's samples lie within Samuelson's bounds, a point where they share one surface.
+uniform sampler2D uSpanSides;
+uniform float uSpanSamples;
+uniform float uSpanMomentScale;
+uniform vec2 uSpanRounding;    // (relative, absolute) rounding of a resolved mean (DepthSpanPass::sideRounding)
+uniform float uSpanSideMargin; // samples within this window depth of the centre's are on neither side
+
+// DepthSpanPass::sideBounds: the [lowest, highest] distance from the centre of a side's k samples.
+vec2 lidrSideBounds(float k, vec2 m) {
+    float m1Low = max(m.x - uSpanRounding.y, 0.0) / (1.0 + uSpanRounding.x);
+    float m1High = (m.x + uSpanRounding.y) / (1.0 - uSpanRounding.x);
+    float m2High = (m.y + uSpanRounding.y) / (1.0 - uSpanRounding.x);
+    float perSample = uSpanSamples / max(k, 1.0);
+    float meanLow = m1Low * perSample;
+    float spread = sqrt(max((k - 1.0) * (m2High * perSample - meanLow * meanLow), 0.0));
+    return vec2(max(meanLow - spread, 0.0), m1High * perSample + spread) / uSpanMomentScale;
+}
 #endif
+
+// Squared distance from the light to the closest point of the pixel's ray between distances a and b.
+float lidrSegmentDistance2(vec3 ray, float toCentre, float a, float b, vec3 light) {
+    vec3 d = ray * clamp(toCentre, a, b) - light;
+    return dot(d, d);
+}
 
 varying vec4 vLightView;
 #ifdef LIDR_SPOT_CONES
@@ -60,37 +85,62 @@ void main() {
     float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
     float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
+    float centreMargin = uDepthMargin;
 #ifdef LIDR_DEPTH_SPAN
-    vec2 excess = texture2D(uDepthSpan, gl_FragCoord.xy * uInvTargetSize).rg * uSpanBoundScale;
+    vec2 uv = gl_FragCoord.xy * uInvTargetSize;
+    vec4 span = texture2D(uDepthSpan, uv);
+    vec2 excess = span.rg * uSpanBoundScale;
     bool centreSurface = depth < 1.0;
-    float spanNear = centreSurface ? depth - excess.g : 1.0 - excess.g;
-    float spanFar = centreSurface ? depth + excess.r : min(excess.r, 1.0);
+    centreMargin = max(uDepthMargin, uSpanSideMargin);
+    // The sides' samples, as distances: each side one segment (a point where its samples share a surface),
+    // widened a hair for the roundings of the two passes' centre distances.
+    vec2 sideCount = floor(span.ba * uSpanSamples + 0.5);
+    vec4 moments = texture2D(uSpanSides, uv);
+    float centreDistance = centreSurface ? uDepthToDistance.x / (depth + uDepthToDistance.y) : 0.0;
+    vec2 pastBounds = lidrSideBounds(sideCount.x, moments.rg), beforeBounds = lidrSideBounds(sideCount.y, moments.ba);
+    float pastNear = (centreDistance + pastBounds.x) * (1.0 - 1.0 / 4096.0);
+    float pastFar = (centreDistance + pastBounds.y) * (1.0 + 1.0 / 4096.0);
+    float beforeNear = max(centreDistance - beforeBounds.y, 0.0) * (1.0 - 1.0 / 4096.0);
+    float beforeFar = (centreDistance - beforeBounds.x) * (1.0 + 1.0 / 4096.0);
 #endif
 #if defined(LIDR_SPHERE_RAY)
     // The closest point to the centre on the ray between the near plane and the surface (the farthest sample's
     // with LIDR_DEPTH_SPAN; the far plane where the centre sees none).
+    float surface = uDepthToDistance.x / (min(depth + centreMargin, 1.0) + uDepthToDistance.y);
 #ifdef LIDR_DEPTH_SPAN
-    if (centreSurface) depth = min(spanFar + uDepthMargin, 1.0);
+    if (centreSurface && sideCount.x > 0.5) surface = max(surface, pastFar);
 #endif
-    float surface = uDepthToDistance.x / (depth + uDepthToDistance.y);
-    float t = clamp(toCentre, uNearPlane, surface);
-#elif defined(LIDR_DEPTH_SPAN)
-    if (spanNear > spanFar) discard;  // no sample shades a surface
-    float surfaceNear = uDepthToDistance.x / (max(spanNear - uDepthMargin, 0.0) + uDepthToDistance.y);
-    float surfaceFar = uDepthToDistance.x / (min(spanFar + uDepthMargin, 1.0) + uDepthToDistance.y);
-    float t = clamp(toCentre, surfaceNear, surfaceFar);
+    float dist2 = lidrSegmentDistance2(ray, toCentre, uNearPlane, surface, vLightView.xyz);
 #else
+#ifndef LIDR_DEPTH_SPAN
     if (depth >= 1.0) discard;  // background: nothing to light
+#endif
     // The surface's distance is known to within the depth buffer's precision: [surfaceNear, surfaceFar] holds
     // the true surface (uDepthMargin), so the test is conservative where depth is coarse (a huge far/near
     // ratio) and marks nothing more elsewhere. The closest point to the centre on the ray where it may be:
-    float surfaceNear = uDepthToDistance.x / (max(depth - uDepthMargin, 0.0) + uDepthToDistance.y);
-    float surfaceFar = uDepthToDistance.x / (min(depth + uDepthMargin, 1.0) + uDepthToDistance.y);
-    float t = clamp(toCentre, surfaceNear, surfaceFar);
+    float surfaceNear = uDepthToDistance.x / (max(depth - centreMargin, 0.0) + uDepthToDistance.y);
+    float surfaceFar = uDepthToDistance.x / (min(depth + centreMargin, 1.0) + uDepthToDistance.y);
+#ifdef LIDR_DEPTH_SPAN
+    // An edge pixel: the centre's surface, and each side's samples (not the air between them).
+    if (!centreSurface) {
+        if (sideCount.x < 0.5) discard;  // no sample shades a surface
+        surfaceNear = pastNear;
+        surfaceFar = pastFar;
+    }
+    float dist2 = lidrSegmentDistance2(ray, toCentre, surfaceNear, surfaceFar, vLightView.xyz);
+    if (centreSurface && sideCount.x > 0.5)
+        dist2 = min(dist2, lidrSegmentDistance2(ray, toCentre, pastNear, pastFar, vLightView.xyz));
+    if (sideCount.y > 0.5)
+        dist2 = min(dist2, lidrSegmentDistance2(ray, toCentre, beforeNear, beforeFar, vLightView.xyz));
+    // The ends of the whole span, for the cone and shadow tests below.
+    if (sideCount.x > 0.5) surfaceFar = max(surfaceFar, pastFar);
+    if (sideCount.y > 0.5) surfaceNear = min(surfaceNear, beforeNear);
+#else
+    float dist2 = lidrSegmentDistance2(ray, toCentre, surfaceNear, surfaceFar, vLightView.xyz);
 #endif
-    vec3 d = ray * t - vLightView.xyz;
+#endif
     float r = vLightView.w * uRadiusScale;
-    if (dot(d, d) > r * r) discard;
+    if (dist2 > r * r) discard;
 #if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
     // The cone: the shading's ramp dot(unit d, axis) x scale + offset is >= 0 at one end of the surface's span
     // (multiplied by |d|: no division, and the apex, |d| = 0, is kept). A point light's (0, 0, 0, 1) always passes.
