@@ -176,6 +176,18 @@ void Framebuffer::checkComplete(const char* name) const {
     }
 }
 
+void Framebuffer::requireComplete(const std::string& what, const std::string& renderer) const {
+    StateCache::current().bindFramebuffer(id_);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    StateCache::current().bindFramebuffer(0);
+    checkGl(what.c_str());
+    if (status == GL_FRAMEBUFFER_COMPLETE) return;
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", status);
+    throw UnsupportedError(what + " is incomplete on " + renderer + " (status " + code +
+                           (status == GL_FRAMEBUFFER_UNSUPPORTED ? ", GL_FRAMEBUFFER_UNSUPPORTED" : "") + ")");
+}
+
 Buffer Buffer::create(GLenum target, const void* data, size_t bytes, GLenum usage) {
     Buffer b;
     static_cast<Object&>(b) = Object(Kind::Buffer);

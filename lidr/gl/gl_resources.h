@@ -92,6 +92,9 @@ public:
     // it as stencil.
     void attachDepthStencil(const Renderbuffer& depth, const Renderbuffer* separateStencil = nullptr);
     void checkComplete(const char* name) const;  // throws GlError naming the status
+    // For optional formats: UnsupportedError "WHAT is incomplete on RENDERER (status 0x...)" unless complete, so the
+    // caller can fall back or refuse by name; leaves framebuffer 0 bound.
+    void requireComplete(const std::string& what, const std::string& renderer) const;
 };
 
 class Buffer : public Object {

@@ -9,19 +9,6 @@ namespace lidr {
 
 namespace {
 constexpr GLenum kHalfFloatOes = 0x8D61;  // OES_texture_half_float's type (desktop GL_HALF_FLOAT is 0x140B)
-
-// Unsupported unless `fbo` with its attachments is complete; leaves framebuffer 0 bound.
-void requireComplete(const gl::Framebuffer& fbo, const char* name, const GlInfo& info) {
-    StateCache::current().bindFramebuffer(fbo.id());
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("half-float target");
-    if (status == GL_FRAMEBUFFER_COMPLETE) return;
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", status);
-    throw UnsupportedError(std::string(name) + " is incomplete on " + info.renderer + " (status " + code +
-                           (status == GL_FRAMEBUFFER_UNSUPPORTED ? ", GL_FRAMEBUFFER_UNSUPPORTED" : "") + ")");
-}
 }  // namespace
 
 HalfFloatTarget::HalfFloatTarget(const GlInfo& info, const RenderTargets& targets)
@@ -37,7 +24,7 @@ HalfFloatTarget::HalfFloatTarget(const GlInfo& info, const RenderTargets& target
     fbo_ = gl::Framebuffer::create();
     fbo_.attachTexture(GL_COLOR_ATTACHMENT0, texture_);
     fbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-    requireComplete(fbo_, "an RGBA16F colour texture with the depth-stencil", info);
+    fbo_.requireComplete("an RGBA16F colour texture with the depth-stencil", info.renderer);
     if (samples_ > 0) {
         const bool perSample =
             info.multisampleTexture && info.sampleShading && samples_ <= info.maxColorTextureSamples;
@@ -50,8 +37,9 @@ HalfFloatTarget::HalfFloatTarget(const GlInfo& info, const RenderTargets& target
             msaaFbo_.attachRenderbuffer(GL_COLOR_ATTACHMENT0, msaaColor_);
         }
         msaaFbo_.attachDepthStencil(targets.multisampleDepthStencil(), targets.multisampleSeparateStencil());
-        requireComplete(msaaFbo_, ("a " + std::to_string(samples_) + "x RGBA16F colour " +
-                                   (perSample ? "texture" : "renderbuffer") + " with the depth-stencil").c_str(), info);
+        msaaFbo_.requireComplete("a " + std::to_string(samples_) + "x RGBA16F colour " +
+                                     (perSample ? "texture" : "renderbuffer") + " with the depth-stencil",
+                                 info.renderer);
     }
 }
 

@@ -16,17 +16,6 @@ namespace {
 constexpr GLenum kHalfFloatOes = 0x8D61;  // OES_texture_half_float's type (ES 2.0)
 constexpr const char* kSamplers[GBuffer::kTargets] = {"uGBuffer0", "uGBuffer1", "uGBuffer2", "uGBuffer3"};
 
-void requireComplete(const gl::Framebuffer& fbo, const std::string& what, const GlInfo& info) {
-    StateCache::current().bindFramebuffer(fbo.id());
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("G-buffer");
-    if (status == GL_FRAMEBUFFER_COMPLETE) return;
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", status);
-    throw UnsupportedError("the G-buffer (" + what + ") is incomplete on " + info.renderer + " (status " + code + ")");
-}
-
 // What the context must have before any GL object is made.
 void checkContext(const GlInfo& info, GBufferFormat format) {
     if (format == GBufferFormat::Unorm8) return;  // any context: RGBA8 targets, the geometry pass split as needed
@@ -122,7 +111,7 @@ GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat
             fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
         }
         fbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-        requireComplete(fbo_, std::string("4 ") + gBufferFormatName(format_) + " targets", info);
+        fbo_.requireComplete(std::string("the G-buffer (4 ") + gBufferFormatName(format_) + " targets)", info.renderer);
     }
     if (accumulation) {
         accumulationBytes_ = format_ != GBufferFormat::Unorm8 ? bytesPerPixel(format_) / kTargets
@@ -131,7 +120,8 @@ GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat
         accumulationFbo_ = gl::Framebuffer::create();
         accumulationFbo_.attachTexture(GL_COLOR_ATTACHMENT0, accumulation_);
         accumulationFbo_.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-        requireComplete(accumulationFbo_, std::string("the ") + accumulationFormatName() + " light sum", info);
+        accumulationFbo_.requireComplete(std::string("the G-buffer (the ") + accumulationFormatName() + " light sum)",
+                                         info.renderer);
     }
     if (!unorm8_)
         program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"),

@@ -14,18 +14,6 @@ namespace {
 constexpr const char* kSampleSamplers[GBuffer::kTargets] = {"uGBufferSamples0", "uGBufferSamples1",
                                                             "uGBufferSamples2", "uGBufferSamples3"};
 
-void requireComplete(const gl::Framebuffer& fbo, const std::string& what, const GlInfo& info) {
-    StateCache::current().bindFramebuffer(fbo.id());
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("multisampled G-buffer");
-    if (status == GL_FRAMEBUFFER_COMPLETE) return;
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", status);
-    throw UnsupportedError("the multisampled G-buffer (" + what + ") is incomplete on " + info.renderer +
-                           " (status " + code + ")");
-}
-
 GLint sampleFormat(GBufferFormat format) {
     if (format == GBufferFormat::Half) return GL_RGBA16F;
     if (format == GBufferFormat::Float) return GL_RGBA32F;
@@ -119,14 +107,14 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
     StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     if (held > samples_) samples_ = held;
     fbo_.attachDepthStencil(targets.multisampleDepthStencil(), targets.multisampleSeparateStencil());
-    requireComplete(fbo_, "4 " + what + " targets", info);
+    fbo_.requireComplete("the multisampled G-buffer (4 " + what + " targets)", info.renderer);
     if (accumulation) {
         accumulation_ = gl::Texture::create2DMultisample(internalFormat, width_, height_, samples_);
         accumulationFbo_ = gl::Framebuffer::create();
         accumulationFbo_.attachTexture(GL_COLOR_ATTACHMENT0, accumulation_);
         accumulationDepth_ = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, width_, height_, samples_);
         accumulationFbo_.attachDepthStencil(accumulationDepth_);
-        requireComplete(accumulationFbo_, "the " + what + " light sum", info);
+        accumulationFbo_.requireComplete("the multisampled G-buffer (the " + what + " light sum)", info.renderer);
         depthProgram_ = gl::Program::create("g-buffer-sample-depth", buildShaderSource("deferred_fullscreen.vert"),
                                             buildShaderSource("g_buffer_sample_depth.frag"), geometryAttributes());
     }

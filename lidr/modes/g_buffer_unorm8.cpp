@@ -17,16 +17,6 @@ constexpr const char* kSamplers[GBufferUnorm8::kTargets] = {"uGBuffer0", "uGBuff
 
 int unitOf(int target) { return target < 4 ? gl::kUnitGBuffer0 + target : gl::kUnitGBuffer4; }
 
-void requireComplete(const gl::Framebuffer& fbo, const GlInfo& info) {
-    StateCache::current().bindFramebuffer(fbo.id());
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("RGBA8 G-buffer");
-    if (status == GL_FRAMEBUFFER_COMPLETE) return;
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", status);
-    throw UnsupportedError("the RGBA8 G-buffer is incomplete on " + info.renderer + " (status " + code + ")");
-}
 }  // namespace
 
 GBufferUnorm8::GBufferUnorm8(const GlInfo& info, const RenderTargets& targets)
@@ -48,7 +38,7 @@ GBufferUnorm8::GBufferUnorm8(const GlInfo& info, const RenderTargets& targets)
         p.fbo = gl::Framebuffer::create();
         for (int i = 0; i < p.count; ++i) p.fbo.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[first + i]);
         p.fbo.attachDepthStencil(targets.depthStencil(), targets.separateStencil());
-        requireComplete(p.fbo, info);
+        p.fbo.requireComplete("the RGBA8 G-buffer", info.renderer);
         const ShaderDefines defines = {{"LIDR_GBUFFER_FIRST_TARGET", std::to_string(p.first)},
                                        {"LIDR_GBUFFER_PASS_TARGETS", std::to_string(p.count)}};
         p.program = gl::Program::create("g-buffer-rgba8-" + std::to_string(first), buildShaderSource("geometry.vert"),
