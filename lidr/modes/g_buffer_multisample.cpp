@@ -100,12 +100,14 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
         fbo_.attachTexture(GL_COLOR_ATTACHMENT0 + i, targets_[i]);
     }
     // The driver may hold more samples than asked (llvmpipe makes 2x 4x): the summary and readSample take the
-    // count the textures have.
+    // count the textures have. (WebGL has no glGetTexLevelParameteriv, and never gets here: refused above.)
+#ifndef __EMSCRIPTEN__
     StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, targets_[0].id());
     GLint held = 0;
     glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &held);
     StateCache::current().bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     if (held > samples_) samples_ = held;
+#endif
     fbo_.attachDepthStencil(targets.multisampleDepthStencil(), targets.multisampleSeparateStencil());
     fbo_.requireComplete("the multisampled G-buffer (4 " + what + " targets)", info.renderer);
     if (accumulation) {
