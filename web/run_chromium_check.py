@@ -176,8 +176,10 @@ def main():
     return 0 if ok else 1
 
 
-def run_page(args, query, profile_name):
-    """Opens url+query in headless Chromium until the page POSTs /result; returns (result or None, seconds, log)."""
+def run_page(args, query, profile_name, console_lines=None):
+    """Opens url+query in headless Chromium until the page POSTs /result; returns (result or None, seconds, log).
+    console_lines(result) names lines the page also printed to its console: Chromium writes the console to its log
+    from another process, after the POST may have arrived, so the log is read until they are there (10 s at most)."""
     Handler.result = None
     Handler.result_ready.clear()
     # Chromium's helper processes may still write into the profile while they exit: cleanup errors are ignored.
@@ -194,6 +196,15 @@ def run_page(args, query, profile_name):
                         break
                     if time.monotonic() - start > args.timeout:
                         break
+                if Handler.result is not None and console_lines is not None:
+                    wanted, waited = console_lines(Handler.result), time.monotonic()
+                    while time.monotonic() - waited < 10.0:
+                        log.flush()
+                        with open(log_path, errors="replace") as so_far:
+                            text = so_far.read()
+                        if all(line in text for line in wanted):
+                            break
+                        time.sleep(0.2)
             finally:
                 # The whole process group: the browser and its renderer, GPU and utility processes.
                 try:
@@ -300,6 +311,7 @@ def run_model_check(args, url):
 
 
 BENCH_MODES = ("lidr", "tiled", "clustered", "forward-multipass", "forward-brute")
+BENCH_ROWS = [[mode] for mode in BENCH_MODES]  # a row's first word
 # The deferred modes' RGBA16F G-buffer needs WEBGL_draw_buffers and half-float colour targets; without them the
 # default G-buffer is RGBA8 (doc/deferred.md). Timed where the mode runs, else a row that says refused, naming what
 # is missing.
@@ -308,7 +320,9 @@ DEFERRED_NEEDS = ("draw_buffers", "float", "half")
 
 
 def run_bench_check(args, url):
-    result, elapsed, log = run_page(args, url + "?bench=2&width=320&height=240", "profile-bench")
+    def bench_rows(result):
+        return [line.strip() for line in result.strip().splitlines()[2:] if line.split()[:1] in BENCH_ROWS]
+    result, elapsed, log = run_page(args, url + "?bench=2&width=320&height=240", "profile-bench", bench_rows)
     if result is None:
         return False
     print(result.rstrip())
