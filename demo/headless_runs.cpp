@@ -23,6 +23,14 @@ namespace lidr::demo {
 
 namespace {
 
+// The volume test, and under MSAA where sphere-span learns the samples' surfaces (auto resolved).
+std::string volumeTestDescription(const LidrRenderer& renderer) {
+    const LidrOptions& o = renderer.options();
+    std::string s = volumeTestName(o.volumeTest);
+    if (o.volumeTest == VolumeTest::SphereSpan) s += std::string(" (") + depthSpanStorageName(o.msaaSpans) + " spans)";
+    return s;
+}
+
 // Renders the warm-up frame (shader compiles, uploads; the automatic mode's trial frames after it), then `frames`
 // timed ones; returns the shadow maps the first frame drew.
 int timeFrames(Renderer& renderer, const Scene& scene, const HeadlessStart& start, int frames, MedianTimes& times) {
@@ -188,6 +196,8 @@ void addLidrSummary(nlohmann::json& summary, const LidrRenderer& renderer, const
     summary["lidr"] = {{"scheme", packingSchemeName(renderer.scheme().config().scheme)}, {"budget", budget},
                        {"index_bits", renderer.scheme().config().indexBits}, {"targets", renderer.scheme().targetCount()},
                        {"volume_test", volumeTestName(options.volumeTest)},
+                       {"msaa_spans", renderer.options().volumeTest == VolumeTest::SphereSpan
+                                          ? depthSpanStorageName(renderer.options().msaaSpans) : "none"},
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexTargets().bytes()},
@@ -336,7 +346,7 @@ int runHeadlessLidr(const Scene& scene, const RenderModeOptions& modeOptions, co
     renderer.setTiming(true, true);
     std::cout << "LIDR: "
               << (options.packing.autoBudget() || options.packing.autoIndexBits() ? "automatic, first frame " : "")
-              << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+              << renderer.scheme().describe() << ", volume test " << volumeTestDescription(renderer)
               << ", light table " << (renderer.frame().lightTable.format() == LightTableFormat::Float ? "float" : "fixed16")
               << "\n";
     MedianTimes lidrTimes;
@@ -360,7 +370,7 @@ int runHeadlessLidr(const Scene& scene, const RenderModeOptions& modeOptions, co
         compareLidrWithReference(summary, info, scene, modeOptions, start, renderer, stats, image, frames, outDir);
     if (!dumpDir.empty()) writeFrameArtefacts(dumpDir, artefacts, renderer.scheme());
 
-    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestName(options.volumeTest)
+    s << "lidr       " << renderer.scheme().describe() << ", volume test " << volumeTestDescription(renderer)
       << ", MSAA " << options.msaaSamples << "x, transparency " << (renderer.drawsTransparency() ? "on" : "off")
       << ", " << stats.drawnLights << " lights in " << stats.volumeDrawCalls << " volume draws\n";
     addShadowSummary(summary, s, shadowChoice, start.shading, firstFrameMaps, stats);

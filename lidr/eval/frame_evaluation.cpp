@@ -1,13 +1,53 @@
 #include "lidr/eval/frame_evaluation.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lidr {
 
 namespace {
+// The lists against the lights the points in `surfaces` need (computeSpanCoverage).
+void checkSpanLists(const LidrRenderer& renderer, const CameraMatrices& cam, const std::vector<PointLight>& lights,
+                    const std::vector<ImageFloat>& surfaces, FrameEvaluation& e) {
+    e.spanTruth = computeSpanCoverage(surfaces, cam, lights);
+    e.spanLists = checkIndexLists(e.spanTruth, renderer.scheme(), renderer.readIndexTargets(),
+                                  static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
+                                  renderer.frameIndexRegions());
+}
+
+// sphere-span with the samples' own distances: every sample's point and the centre's are the truth's points;
+// an edge pixel has a sample off the centre's depth, on several surfaces where two samples off it differ.
+void evaluateSampleSpans(const LidrRenderer& renderer, const CameraMatrices& cam,
+                         const std::vector<PointLight>& lights, FrameEvaluation& e) {
+    std::vector<ImageFloat> surfaces = renderer.readSampleDepths();
+    const ImageFloat centre = renderer.targets().readDepth();
+    for (size_t p = 0; p < centre.pixels.size(); ++p) {
+        float off = -1.0f;  // the first sample depth off the centre's
+        bool edge = false, several = false;
+        for (const ImageFloat& s : surfaces) {
+            if (std::abs(s.pixels[p] - centre.pixels[p]) <= kEdgeDepthMargin) continue;
+            several = several || (edge && std::abs(s.pixels[p] - off) > kEdgeDepthMargin);
+            if (!edge) off = s.pixels[p];
+            edge = true;
+        }
+        if (!edge) continue;
+        ++e.edgePixels;
+        if (several) ++e.edgePixelsSeveralSurfaces;
+        e.edgeMarksMax = std::max(e.edgeMarksMax, e.marked[p]);
+        e.edgeMarksMean += double(e.marked[p]);
+    }
+    if (e.edgePixels > 0) e.edgeMarksMean /= double(e.edgePixels);
+    surfaces.push_back(centre);
+    checkSpanLists(renderer, cam, lights, surfaces, e);
+}
+
 // sphere-span: the edge pixels, and the lists against what every sample's surface needs.
 void evaluateSpans(const LidrRenderer& renderer, const CameraMatrices& cam, const std::vector<PointLight>& lights,
                    FrameEvaluation& e) {
+    if (renderer.options().volumeTest == VolumeTest::SphereSpan && renderer.options().msaaSpans == DepthSpanStorage::Samples) {
+        evaluateSampleSpans(renderer, cam, lights, e);
+        return;
+    }
     const std::vector<DepthSpanPass::Span> spans = renderer.readDepthSpans();
     if (spans.empty()) return;
     // The points the samples shade: the nearest sample's surface, the centre's, the farthest sample's.
@@ -29,10 +69,7 @@ void evaluateSpans(const LidrRenderer& renderer, const CameraMatrices& cam, cons
     std::vector<PointLight> reaching = lights;
     for (PointLight& l : reaching)
         if (!renderer.frame().scene.batchesTouchSphere(glm::vec4(l.position, l.radius), DrawFilter::Opaque)) l.radius = 0.0f;
-    e.spanTruth = computeSpanCoverage({nearest, centre, farthest}, cam, reaching);
-    e.spanLists = checkIndexLists(e.spanTruth, renderer.scheme(), renderer.readIndexTargets(),
-                                  static_cast<uint32_t>(lights.size()), renderer.frameLightIndices(),
-                                  renderer.frameIndexRegions());
+    checkSpanLists(renderer, cam, reaching, {nearest, centre, farthest}, e);
 }
 }  // namespace
 

@@ -167,11 +167,12 @@ std::string glsl120WithExtensions(const std::string& source, ShaderStage stage) 
            source.substr(eol + 1);
 }
 
-std::string perSampleGlsl150(std::string source) {
+std::string perSampleGlsl150(std::string source, bool sampleShading) {
     const std::string v120 = "#version 120";
     const size_t at = source.find(v120);
     if (at == std::string::npos) throw Error("shader without #version 120");
-    return source.replace(at, v120.size(), "#version 150 compatibility\n#extension GL_ARB_sample_shading : require");
+    return source.replace(at, v120.size(), sampleShading ? "#version 150 compatibility\n#extension GL_ARB_sample_shading : require"
+                                                         : "#version 150 compatibility");
 }
 
 std::string shaderSourceStrings(const std::string& source) {

@@ -63,8 +63,9 @@ std::string glsl120WithExtensions(const std::string& source, ShaderStage stage);
 
 // A GLSL 1.20 source (what buildShaderSource makes) as GLSL 1.50 compatibility with ARB_sample_shading, for
 // the per-sample MSAA paths: texelFetch on sampler2DMS and gl_SampleID; the compatibility profile keeps every
-// GLSL 1.20 construct the shaders use. Throws lidr::Error for a source without `#version 120`.
-std::string perSampleGlsl150(std::string source);
+// GLSL 1.20 construct the shaders use. sampleShading false: without the extension (texelFetch on sampler2DMS
+// alone: the sample distances of LIDR's MSAA spans). Throws lidr::Error for a source without `#version 120`.
+std::string perSampleGlsl150(std::string source, bool sampleShading = true);
 
 // "source strings: 0 a.frag, 1 b.glsl" from a source buildShaderSource made; empty for any other source.
 std::string shaderSourceStrings(const std::string& source);

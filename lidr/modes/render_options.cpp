@@ -105,6 +105,12 @@ void addLidrRows(std::vector<RenderOption>& o) {
                  "(exact, in the shader, batched), sphere-span (MSAA: every sample's surface), sphere-ray, backface, "
                  "exact (stencil), frontface",
                  kLidr});
+    o.push_back({"msaa-spans", T::Choice, {"auto", "samples", "moments"}, 0, 0, "auto",
+                 "sphere-span under MSAA, how the volume pass learns each pixel's sample surfaces: auto (samples "
+                 "where the context has multisample textures, GL 3.2; else moments), samples (each sample's shaded "
+                 "distance in a multisample texture, read per sample: exact lists), moments (GL 2.1: per-side moments "
+                 "resolved into two float targets; doc/msaa-transparency.md)",
+                 kLidr});
     o.push_back({"msaa-per-sample", T::Flag, {}, 0, 0, "",
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)", kLidr});
     o.push_back({"volume-detail", T::Flag, {}, 0, 0, "",
@@ -342,6 +348,7 @@ LidrOptions lidrOptionsFrom(const RenderOptionValues& v, const Scene& scene) {
     o.packing.indexBits = autoOrNumber(renderOptionValue(v, "index-bits"));
     checkPacking(o.packing, scheme);
     o.perSampleIndices = on(v, "msaa-per-sample");
+    o.msaaSpans = parseDepthSpanStorage(renderOptionValue(v, "msaa-spans"));
     o.volumeDetail = on(v, "volume-detail");
     o.tileCulledVolumes = on(v, "volume-tiles");
     o.regionalIndices = on(v, "regional-indices");

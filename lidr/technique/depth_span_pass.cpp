@@ -22,6 +22,36 @@ glm::vec2 sideBounds(float k, float n, float m1, float m2, glm::vec2 rounding) {
     return {std::max(meanLow - spread, 0.0f), meanHigh + spread};
 }
 
+const char* depthSpanStorageName(DepthSpanStorage s) {
+    switch (s) {
+        case DepthSpanStorage::Samples: return "samples";
+        case DepthSpanStorage::Moments: return "moments";
+        default: return "auto";
+    }
+}
+
+DepthSpanStorage parseDepthSpanStorage(const std::string& name) {
+    for (DepthSpanStorage s : {DepthSpanStorage::Auto, DepthSpanStorage::Samples, DepthSpanStorage::Moments})
+        if (name == depthSpanStorageName(s)) return s;
+    throw Error("unknown MSAA span storage '" + name + "' (valid: auto, samples, moments)");
+}
+
+DepthSpanStorage resolveDepthSpanStorage(DepthSpanStorage requested, const GlInfo& info, int samples) {
+    if (requested == DepthSpanStorage::Moments) return requested;
+    std::string missing;
+    if (info.gles || !info.multisampleTexture || info.glsl < 150)
+        missing = "multisample textures read in GLSL 1.50 (GL 3.2 / ARB_texture_multisample)";
+    else if (!info.halfFloatColorBuffer)
+        missing = "float colour buffers";
+    else if (samples > info.maxColorTextureSamples)
+        missing = std::to_string(samples) + "-sample textures (the context's most: " +
+                  std::to_string(info.maxColorTextureSamples) + ")";
+    if (missing.empty()) return DepthSpanStorage::Samples;
+    if (requested == DepthSpanStorage::Auto) return DepthSpanStorage::Moments;
+    throw UnsupportedError("--msaa-spans samples stores each sample's distance in a multisample texture; this context "
+                           "(OpenGL " + info.version + ") lacks " + missing + ": use moments (GL 2.1) or auto");
+}
+
 namespace {
 FloatTargets sideTargets(const GlInfo& info, const RenderTargets& targets) {
     try {
@@ -73,12 +103,45 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, b
                                    buildShaderSource("depth_span.frag", defines), geometryAttributes());
 }
 
+DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, DepthSpanStorage storage) {
+    if (storage != DepthSpanStorage::Samples) {
+        *this = DepthSpanPass(info, targets, false, true);
+        return;
+    }
+    width_ = targets.width();
+    height_ = targets.height();
+    samples_ = targets.samples();
+    if (samples_ < 2) throw Error("the MSAA depth spans need multisampled targets");
+    // The same sample count as the depth-stencil renderbuffer (a driver rounds both requests alike; the
+    // completeness check says where it does not).
+    sampleDistances_ = gl::Texture::create2DMultisample(GL_R32F, width_, height_, samples_);
+    sampleFbo_ = gl::Framebuffer::create();
+    sampleFbo_.attachTexture(GL_COLOR_ATTACHMENT0, sampleDistances_);
+    sampleFbo_.attachDepthStencil(targets.multisampleDepthStencil(), targets.multisampleSeparateStencil());
+    sampleFbo_.requireComplete("a multisample R32F texture with the MSAA depth-stencil (--msaa-spans samples)",
+                               info.renderer);
+    StateCache::current().bindFramebuffer(sampleFbo_.id());
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    StateCache::current().bindFramebuffer(0);
+    checkGl("MSAA sample distances: sample count");
+    samples_ = std::max(samples_, int(samples));
+    program_ = gl::Program::create("depth-span-samples", buildShaderSource("geometry.vert"),
+                                   buildShaderSource("depth_span.frag", {{"LIDR_SAMPLE_DISTANCES", "1"}}),
+                                   geometryAttributes());
+    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
+    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+}
+
 void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const {
     ClearAction clear;
-    clear.color = true;  // 0: a sample no surface covers adds nothing to either bound
+    clear.color = true;  // 0: a sample no surface covers adds nothing to either bound (and has no distance)
     clear.depth = clear.stencil = true;
     StateCache& cache = StateCache::current();
-    cache.beginPass(sides_ ? sides_.pass(clear) : target_.pass(clear));
+    if (sampleDistances_)
+        cache.beginPass({sampleFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
+    else
+        cache.beginPass(sides_ ? sides_.pass(clear) : target_.pass(clear));
     // The MSAA pre-pass itself (as DepthPrepass, the same vertex shader: the forward pass's EQUAL test holds):
     // the nearest fragment of each sample writes last.
     RenderState s;
@@ -91,11 +154,11 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     program_.set("uDepth", gl::kUnitDepthCopy);
     program_.set("uInvTargetSize", 1.0f / glm::vec2(float(width_), float(height_)));
     program_.set("uStoreScale", kStoreScale);
+    // Window depth to view distance, as the volume pass converts it (perspective: P[2][3] = -1).
+    const glm::mat4& P = camera.projection;
+    if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the MSAA depth spans need a perspective projection");
+    depthToDistance_ = glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f));
     if (sides_) {
-        // Window depth to view distance, as the volume pass converts it (perspective: P[2][3] = -1).
-        const glm::mat4& P = camera.projection;
-        if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("the MSAA depth spans need a perspective projection");
-        depthToDistance_ = glm::vec2(0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f));
         momentScale_ = 64.0f / camera.farPlane;  // x <= 64 before the far plane: x^2 fits half floats
         program_.set("uDepthToDistance", depthToDistance_);
         program_.set("uMomentScale", momentScale_);
@@ -106,12 +169,62 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     cache.apply(RenderState{});
     if (sides_)
         sides_.resolve();
-    else
+    else if (target_)
         target_.resolve();
+    else
+        cache.bindFramebuffer(0);
     checkGl("MSAA depth spans");
 }
 
+std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
+    if (!sampleDistances_) throw Error("readSampleDepths: the spans are not stored per sample");
+    std::vector<ImageFloat> depths;
+#ifndef __EMSCRIPTEN__
+    if (!readProgram_)
+        readProgram_ = gl::Program::create("depth-span-sample-read", buildShaderSource("fullscreen.vert"),
+                                           perSampleGlsl150(buildShaderSource("depth_span_sample_read.frag"), false),
+                                           {{"aPosition", gl::kPosition}});
+    const gl::Texture out = gl::Texture::create2D(GL_RGBA32F, width_, height_, GL_RGBA, GL_FLOAT);
+    gl::Framebuffer fbo = gl::Framebuffer::create();
+    fbo.attachTexture(GL_COLOR_ATTACHMENT0, out);
+    StateCache& cache = StateCache::current();
+    std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
+    auto depthAt = [&](float distance) {  // view distance -> window depth (1: no surface)
+        return distance > 0.0f ? std::clamp(depthToDistance_.x / distance - depthToDistance_.y, 0.0f, 1.0f) : 1.0f;
+    };
+    for (int first = 0; first < samples_; first += 4) {  // four samples a draw, one per channel
+        cache.beginPass({fbo.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
+        cache.apply(RenderState{});
+        readProgram_.use();
+        sampleDistances_.bind(gl::kUnitDepthSpans);
+        readProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
+        readProgram_.set("uFirstSample", first);
+        readProgram_.set("uSampleCount", samples_);
+        glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
+        glEnableVertexAttribArray(gl::kPosition);
+        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        cache.drawArrays(GL_TRIANGLES, 0, 3);
+        glDisableVertexAttribArray(gl::kPosition);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
+        for (int c = 0; c < 4 && first + c < samples_; ++c) {
+            ImageFloat d(width_, height_);
+            for (int y = 0; y < height_; ++y)
+                for (int x = 0; x < width_; ++x)
+                    d.at(x, y) = depthAt(rgba[(size_t(height_ - 1 - y) * size_t(width_) + size_t(x)) * 4 + size_t(c)]);
+            depths.push_back(std::move(d));
+        }
+    }
+    cache.bindFramebuffer(0);
+    cache.bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    checkGl("MSAA sample distances read-back");
+#endif
+    return depths;
+}
+
 std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {
+    if (sampleDistances_) throw Error("readSpans: the spans are stored per sample (readSampleDepths)");
     if (centre.width != width_ || centre.height != height_) throw Error("readSpans: depth image size differs");
     std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
 #ifdef __EMSCRIPTEN__

@@ -12,6 +12,10 @@
 // it), the first two moments of the samples' distance excess, and the first target's b/a how many samples lie on
 // each side: the resolve then bounds each side's samples between Samuelson's bounds (mean -/+ deviation x
 // sqrt(k - 1) over its k samples), a point (up to rounding) where they lie on one surface.
+// With sample distances (GL 3.2 multisample textures) the pass writes each sample's shaded distance into a
+// multisampled R32F texture and nothing is resolved: the volume pass reads every sample (texelFetch) and tests
+// the light against each sample's point, so an edge pixel's list is exactly its samples' surfaces' lights.
+#include <string>
 #include <vector>
 
 #include "lidr/base/image.h"
@@ -31,6 +35,18 @@ namespace lidr {
 // volume shader (light_volume_sphere.frag, lidrSideBounds) computes the same.
 glm::vec2 sideBounds(float k, float n, float m1, float m2, glm::vec2 rounding);
 
+// How sphere-span learns the surfaces of a pixel's samples (LidrOptions::msaaSpans, --msaa-spans).
+enum class DepthSpanStorage {
+    Auto,     // Samples where the context has them, else Moments
+    Samples,  // each sample's shaded distance in a multisample texture (GL 3.2 / ARB_texture_multisample, GLSL 1.50)
+    Moments,  // GL 2.1: per-side counts and moments, resolved into float targets (Samuelson's bounds)
+};
+const char* depthSpanStorageName(DepthSpanStorage s);  // "auto", "samples", "moments"
+DepthSpanStorage parseDepthSpanStorage(const std::string& name);  // throws lidr::Error naming the choices
+// Auto resolved for a context and sample count; Samples asked for where the context lacks multisample float
+// textures of that many samples or GLSL 1.50 throws UnsupportedError naming what is missing.
+DepthSpanStorage resolveDepthSpanStorage(DepthSpanStorage requested, const GlInfo& info, int samples);
+
 class DepthSpanPass {
 public:
     // Stored values are depth differences times this (half floats keep small values better scaled up).
@@ -44,13 +60,23 @@ public:
     // (shaders/modes/depth_pack.glsl: tiled forward's pre-Z copy) instead of a depth texture.
     // sideMoments: also the per-side counts and moments (LIDR's volume pass; tiled forward's bounds need none).
     DepthSpanPass(const GlInfo& info, const RenderTargets& targets, bool packedCentre = false, bool sideMoments = false);
-    explicit operator bool() const { return bool(target_) || bool(sides_); }
+    // LIDR's lists: Moments (the constructor above with side moments) or Samples (resolved, not Auto); Samples
+    // throws UnsupportedError where the driver does not answer complete for the multisample texture.
+    DepthSpanPass(const GlInfo& info, const RenderTargets& targets, DepthSpanStorage storage);
+    explicit operator bool() const { return bool(target_) || bool(sides_) || bool(sampleDistances_); }
+
+    // Sample distances: per sample the view distance of the point its fragment shades (at the pixel centre,
+    // where the forward pass shades it), 0 where no surface covers it; sampler2DMS, read per sample.
+    bool storesSamples() const { return bool(sampleDistances_); }
+    const gl::Texture& sampleTexture() const { return sampleDistances_; }
+    // CPU read-back (tests, evaluation): per sample an image of window depths, rows top to bottom (1: no surface).
+    std::vector<ImageFloat> readSampleDepths() const;
 
     // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
     // targets (the MSAA pre-pass) with the spans in colour, and resolves them. Leaves framebuffer 0 bound.
     void run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const;
     // The resolved spans (r: past the anchor, g: before it, times kStoreScale, averaged over the samples).
-    const gl::Texture& texture() const { return sides_ ? sides_.texture(0) : target_.texture(); }
+    const gl::Texture& texture() const { return sides_ ? sides_.texture(0) : target_.texture(); }  // not with samples
     // What turns a resolved value into a bound on every sample's depth difference (the driver's sample count).
     float boundScale() const { return float(samples_) * kRoundingMargin / kStoreScale; }
 
@@ -93,6 +119,10 @@ private:
     int width_ = 0, height_ = 0, samples_ = 0;
     HalfFloatTarget target_;  // without side moments
     FloatTargets sides_;      // with them: the spans (0) and the moments (1)
+    gl::Texture sampleDistances_;   // with sample distances: the multisample R32F texture
+    gl::Framebuffer sampleFbo_;     // ... with the targets' multisampled depth-stencil
+    mutable gl::Program readProgram_;  // readSampleDepths: four samples a draw into an RGBA32F texture
+    gl::Buffer triangle_;
     mutable float momentScale_ = 1.0f;
     mutable glm::vec2 depthToDistance_{1.0f, 0.0f};
     gl::Program program_;

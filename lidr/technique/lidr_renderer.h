@@ -37,6 +37,9 @@ struct LidrOptions {
     VolumeTest volumeTest = VolumeTest::Sphere;  // exact, batched (LightVolumePass)
     bool depthPrepass = true;   // may be false only with the front-face test (vertex-bound scenes)
     int msaaSamples = 0;        // 0, or 2..GL_MAX_SAMPLES: MSAA colour, single-sample index texture
+    // sphere-span: how the volume pass learns the surfaces of a pixel's samples (DepthSpanStorage): Auto is
+    // Samples (each sample's distance, read per sample) where the context has multisample textures, else Moments.
+    DepthSpanStorage msaaSpans = DepthSpanStorage::Auto;
     // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
     // a front-face index texture: the main one in front-face mode, else one more volume pass for it alone.
     bool transparency = true;
@@ -131,7 +134,10 @@ public:
     std::vector<ImageRGBA8> readIndexTargets() const;
     // sphere-span (MSAA): per pixel, top to bottom, the window depths the samples shade (DepthSpanPass::Span);
     // empty for the other tests.
+    // Empty too where the spans are stored per sample: readSampleDepths() then (per sample an image of window
+    // depths, top to bottom, 1 where the sample has no surface); empty otherwise.
     std::vector<DepthSpanPass::Span> readDepthSpans() const;
+    std::vector<ImageFloat> readSampleDepths() const;
     // Per-pixel count of lights whose volume test passed (from stencil), top to bottom; empty if the
     // stencil did not keep a count.
     std::vector<uint8_t> readLightCounts() const;

@@ -56,8 +56,13 @@ std::vector<uint8_t> LidrRenderer::readLightCounts() const {
 namespace lidr {
 
 std::vector<DepthSpanPass::Span> LidrRenderer::readDepthSpans() const {
-    if (!depthSpans_) return {};
+    if (!depthSpans_ || depthSpans_.storesSamples()) return {};
     return depthSpans_.readSpans(frame_.targets.readDepth());
+}
+
+std::vector<ImageFloat> LidrRenderer::readSampleDepths() const {
+    if (!depthSpans_.storesSamples()) return {};
+    return depthSpans_.readSampleDepths();
 }
 
 }  // namespace lidr

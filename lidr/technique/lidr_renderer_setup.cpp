@@ -21,6 +21,9 @@ LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
     // The default test lists the lights of the pixel centre's surface; under MSAA that is sphere-span, which
     // lists those of every sample's surface (interior pixels: the same lists; doc/msaa-transparency.md).
     if (o.msaaSamples > 0 && !o.perSampleIndices && o.volumeTest == VolumeTest::Sphere) o.volumeTest = VolumeTest::SphereSpan;
+    // sphere-span reads each sample's distance where the context has multisample textures (GL 3.2), else the
+    // GL 2.1 moments (doc/msaa-transparency.md, "Edge pixels").
+    if (o.volumeTest == VolumeTest::SphereSpan) o.msaaSpans = resolveDepthSpanStorage(o.msaaSpans, info, o.msaaSamples);
     if (info.occlusionQuery || !o.packing.autoBudget()) return o;
     if (o.packing.autoScheme()) o.packing.scheme = PackingSchemeKind::BitShift;
     o.packing.budget = LidrRenderer::kBudgetWithoutOcclusionQueries;
@@ -158,8 +161,21 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     : options_(withContextFallbacks(info, requested)),
       firstPacking_(checkedPacking(info, scene, options_)),
       frame_(info, scene, frameSetup(scene, options_, firstPacking_, width, height)),
-      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}) {
+      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}, false,
+                  options_.volumeTest == VolumeTest::SphereSpan && options_.msaaSpans == DepthSpanStorage::Samples) {
     requestedAutoBudget_ = requested.packing.autoBudget();
+    if (options_.volumeTest == VolumeTest::SphereSpan) {
+        try {
+            depthSpans_ = DepthSpanPass(info, frame_.targets, options_.msaaSpans);
+        } catch (const UnsupportedError&) {
+            if (requested.msaaSpans != DepthSpanStorage::Auto) throw;
+            // The driver refused the multisample texture beside its depth-stencil: GL 2.1's moments.
+            options_.msaaSpans = DepthSpanStorage::Moments;
+            depthSpans_ = DepthSpanPass(info, frame_.targets, options_.msaaSpans);
+            volumePass_ = LightVolumePass(info, options_.volumeTest, options_.volumeDetail,
+                                          DepthEmulation{options_.emulatedDepthBits});
+        }
+    }
     const PackingConfig& first = firstPacking_;
     if (options_.packing.autoBudget()) {
         const int widest = options_.packing.autoIndexBits()
@@ -179,8 +195,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         const bool spans = options_.volumeTest == VolumeTest::SphereSpan;
         const VolumeTest front =
             options_.volumeTest == VolumeTest::Sphere || spans ? VolumeTest::SphereRay : VolumeTest::FrontFace;
-        transparentVolumePass_ =
-            LightVolumePass(info, front, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}, spans);
+        transparentVolumePass_ = LightVolumePass(info, front, options_.volumeDetail,
+                                                 DepthEmulation{options_.emulatedDepthBits}, spans,
+                                                 spans && options_.msaaSpans == DepthSpanStorage::Samples);
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
     const int depthPrecision = options_.emulatedDepthBits != 0 ? options_.emulatedDepthBits : options_.depthBits;
@@ -199,7 +216,6 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         }
     }
     if (options_.volumeTest == VolumeTest::SphereSpan) {
-        depthSpans_ = DepthSpanPass(info, frame_.targets, false, true);
         volumePass_.setDepthSpans(&depthSpans_);
         transparentVolumePass_.setDepthSpans(&depthSpans_);
     }

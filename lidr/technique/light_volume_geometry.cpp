@@ -14,9 +14,10 @@
 namespace lidr {
 
 LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth,
-                                         bool depthSpans)
+                                         bool depthSpans, bool spanSamples)
     : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1),
-      readsSpans_(test == VolumeTest::SphereSpan || (test == VolumeTest::SphereRay && depthSpans)) {
+      readsSpans_(test == VolumeTest::SphereSpan || (test == VolumeTest::SphereRay && depthSpans)),
+      spanSamples_(readsSpans_ && spanSamples) {
     uploadMeshes();
     programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
         ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
@@ -77,9 +78,10 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
     maxVertexUniformVectors_ = info.maxVertexUniformVectors;
     // By value: the geometry moves with its pass.
     const int uniforms = maxVertexUniformVectors_;
-    auto programs = [info, test, depth, batch = batch_, uniforms, spans = readsSpans_](bool screenTiles, bool cones,
-                                                                                     const ShaderDefines& shadow) {
-        return DrawTargetPrograms(info, [test, depth, batch, uniforms, spans, screenTiles, cones, shadow](int targetCount) {
+    auto programs = [info, test, depth, batch = batch_, uniforms, spans = readsSpans_,
+                     samples = spanSamples_](bool screenTiles, bool cones, const ShaderDefines& shadow) {
+        return DrawTargetPrograms(info, [test, depth, batch, uniforms, spans, samples, screenTiles, cones,
+                                         shadow](int targetCount) {
             if (targetCount != 1 && targetCount != 2 && targetCount != 4)
                 throw Error("the sphere volume tests write 1, 2 or 4 index targets per draw, not " +
                             std::to_string(targetCount));
@@ -87,17 +89,18 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
                                   {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
                                                                          !shadow.empty()))}};
             if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-            if (spans) defs.push_back({"LIDR_DEPTH_SPAN", "1"});
+            if (spans) defs.push_back({samples ? "LIDR_SPAN_SAMPLES" : "LIDR_DEPTH_SPAN", "1"});
             if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
             if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
             defs.insert(defs.end(), shadow.begin(), shadow.end());
             const std::string vertex = buildShaderSource("light_volume_batch.vert", defs);
             ShaderIncludes includes;
             depth.apply(defs, includes);
+            const std::string fragment = buildShaderSource("light_volume_sphere.frag", defs, includes);
             return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
                                            (cones ? "cones-" : "") + (shadow.empty() ? "" : "shadows-") +
                                            std::to_string(targetCount),
-                                       vertex, buildShaderSource("light_volume_sphere.frag", defs, includes),
+                                       vertex, samples ? perSampleGlsl150(fragment, false) : fragment,
                                        {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
         });
     };
@@ -277,7 +280,13 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepthMargin", kSphereDepthSteps / depthUnits_);  // steps of the pre-pass depth buffer
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
-    if (readsSpans_) {
+    if (spanSamples_) {
+        if (!(depthSpans_ && depthSpans_->storesSamples()))
+            throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA sample distances");
+        program.set("uSampleDistances", gl::kUnitDepthSpans);
+        program.set("uSampleCount", depthSpans_->samples());
+        depthSpans_->sampleTexture().bind(gl::kUnitDepthSpans);
+    } else if (readsSpans_) {
         if (!(depthSpans_ && *depthSpans_ && depthSpans_->hasSides()))
             throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA depth spans");
         program.set("uDepthSpan", gl::kUnitDepthSpans);

@@ -9,6 +9,8 @@
 //   by more than uSideMargin; the second: per side (rg past, ba before) x and x^2, x = the sample's view distance
 //   from the centre's (0 where it sees none) times uMomentScale, so the resolve gives each side's count and first
 //   two moments, and the volume pass Samuelson's bounds on the side's samples (DepthSpanPass::sideBounds).
+//   LIDR_SAMPLE_DISTANCES (GL 3.2, a multisample R32F texture, nothing resolved): the point's view distance, which
+//   the volume pass reads per sample; no centre depth is needed.
 #ifdef LIDR_ALPHA_MASK  // the material variant of a MASK material: cut out as the pre-pass and the shading do
 #include "output_transform.glsl"
 #include "material.glsl"
@@ -34,6 +36,9 @@ void main() {
     lidrAlphaTest(lidrBaseColor().a);
 #endif
     vec4 clip = uViewProj * vec4(vWorldPos, 1.0);
+#ifdef LIDR_SAMPLE_DISTANCES
+    gl_FragData[0] = vec4(clip.w, 0.0, 0.0, 1.0);
+#else
     float d = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
 #ifdef LIDR_CENTRE_PACKED
     float centre = lidrUnpackDepthUnits(texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize)) / kLidrDepthUnits;
@@ -54,5 +59,6 @@ void main() {
     gl_FragData[1] = vec4(past, before);
 #else
     gl_FragData[0] = vec4(excess * uStoreScale, 0.0, 1.0);
+#endif
 #endif
 }

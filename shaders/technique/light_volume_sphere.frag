@@ -10,6 +10,10 @@
 //   LIDR_DEPTH_SPAN (MSAA, sphere-span): the pixel's samples shade surfaces between two depths (DepthSpanPass,
 //                   uDepthSpan); without LIDR_SPHERE_RAY the ray between them must meet the sphere (interior
 //                   pixels: one depth, the sphere test), with it the ray ends at the farther one.
+//   LIDR_SPAN_SAMPLES (MSAA, sphere-span where the context has multisample textures; compiled as GLSL 1.50): each
+//                   sample's shaded point, read per sample (DepthSpanPass sample distances): the light is kept
+//                   where its sphere (and cone) reaches the centre's surface or any sample's point; with
+//                   LIDR_SPHERE_RAY the ray ends at the farthest of them.
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
 // front of the eye is ray * z. A few operations a fragment, because on a CPU rasteriser this shader runs for
 // every fragment of every volume (discard and stencil writes force the late depth test there).
@@ -65,6 +69,56 @@ varying vec4 vLightView;
 #ifdef LIDR_SPOT_CONES
 varying vec4 vConeView;  // LIDR_SPOT_CONES: a draw with spot lights (a draw of point lights alone goes without)
 #endif
+
+#ifdef LIDR_SPAN_SAMPLES
+uniform sampler2DMS uSampleDistances;  // per sample, the view distance of the point it shades (0: none)
+uniform int uSampleCount;
+
+// Whether the light reaches a surface between distances a and b on the ray: its sphere, and (opaque lists) the
+// cone, whose ramp must be >= 0 at one end (see the cone test in main).
+bool lidrReaches(vec3 ray, float toCentre, float a, float b, float r2) {
+    if (lidrSegmentDistance2(ray, toCentre, a, b, vLightView.xyz) > r2) return false;
+#if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
+    vec3 dNear = ray * a - vLightView.xyz, dFar = ray * b - vLightView.xyz;
+    return dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) >= 0.0 ||
+           dot(dFar, vConeView.xyz) + vConeView.w * length(dFar) >= 0.0;
+#else
+    return true;
+#endif
+}
+
+// The centre's surface and each sample's point (a hair wide for the two passes' roundings): whether the light
+// reaches one (with LIDR_SPHERE_RAY: meets the ray up to the farthest), and the nearest and farthest of them.
+bool lidrSamplesReached(float depth, vec3 ray, float toCentre, out float spanNear, out float spanFar) {
+    float r = vLightView.w * uRadiusScale;
+    bool centreSurface = depth < 1.0;
+    spanNear = centreSurface ? uDepthToDistance.x / (max(depth - uDepthMargin, 0.0) + uDepthToDistance.y) : 1e30;
+    spanFar = uDepthToDistance.x / (min(depth + uDepthMargin, 1.0) + uDepthToDistance.y);  // the far plane: none
+    bool reached = false;
+#ifndef LIDR_SPHERE_RAY
+    reached = centreSurface && lidrReaches(ray, toCentre, spanNear, spanFar, r * r);
+    if (!centreSurface) spanFar = 0.0;
+#ifndef LIDR_SHADOWS
+    if (reached) return true;  // interior pixels end here (the shadow test needs the whole span)
+#endif
+#endif
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    for (int i = 0; i < uSampleCount; ++i) {
+        float x = texelFetch(uSampleDistances, texel, i).r;
+        if (x <= 0.0) continue;
+        float a = x * (1.0 - 1.0 / 4096.0), b = x * (1.0 + 1.0 / 4096.0);
+#ifndef LIDR_SPHERE_RAY
+        reached = reached || lidrReaches(ray, toCentre, a, b, r * r);
+#endif
+        spanNear = min(spanNear, a);
+        spanFar = max(spanFar, b);  // (a ray whose centre sees no surface keeps the far plane)
+    }
+#ifdef LIDR_SPHERE_RAY
+    reached = lidrSegmentDistance2(ray, toCentre, uNearPlane, spanFar, vLightView.xyz) <= r * r;
+#endif
+    return reached;
+}
+#endif
 varying vec3 vViewPos;
 varying vec4 vColor0;
 #if LIDR_DRAW_TARGETS > 1
@@ -85,6 +139,10 @@ void main() {
     float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
     float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
+#ifdef LIDR_SPAN_SAMPLES
+    float surfaceNear, surfaceFar;
+    if (!lidrSamplesReached(depth, ray, toCentre, surfaceNear, surfaceFar)) discard;
+#else
     float centreMargin = uDepthMargin;
 #ifdef LIDR_DEPTH_SPAN
     vec2 uv = gl_FragCoord.xy * uInvTargetSize;
@@ -141,7 +199,8 @@ void main() {
 #endif
     float r = vLightView.w * uRadiusScale;
     if (dist2 > r * r) discard;
-#if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
+#endif
+#if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY) && !defined(LIDR_SPAN_SAMPLES)
     // The cone: the shading's ramp dot(unit d, axis) x scale + offset is >= 0 at one end of the surface's span
     // (multiplied by |d|: no division, and the apex, |d| = 0, is kept). A point light's (0, 0, 0, 1) always passes.
     vec3 dNear = ray * surfaceNear - vLightView.xyz, dFar = ray * surfaceFar - vLightView.xyz;
