@@ -200,12 +200,7 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
         readProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
         readProgram_.set("uFirstSample", first);
         readProgram_.set("uSampleCount", samples_);
-        glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-        glEnableVertexAttribArray(gl::kPosition);
-        glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-        cache.drawArrays(GL_TRIANGLES, 0, 3);
-        glDisableVertexAttribArray(gl::kPosition);
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        drawFullScreen();
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
         for (int c = 0; c < 4 && first + c < samples_; ++c) {
@@ -221,6 +216,58 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
     checkGl("MSAA sample distances read-back");
 #endif
     return depths;
+}
+
+void DepthSpanPass::drawFullScreen() const {
+    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
+    glEnableVertexAttribArray(gl::kPosition);
+    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
+    glDisableVertexAttribArray(gl::kPosition);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void DepthSpanPass::readDepthRanges(const gl::Texture& centreDepth, std::vector<float>& nearDepth,
+                                    std::vector<float>& farDepth) const {
+    if (!sampleDistances_) throw Error("readDepthRanges: the spans are not stored per sample");
+#ifndef __EMSCRIPTEN__
+    if (!rangeProgram_) {
+        rangeProgram_ = gl::Program::create("depth-span-range", buildShaderSource("fullscreen.vert"),
+                                            perSampleGlsl150(buildShaderSource("depth_span_range.frag"), false),
+                                            {{"aPosition", gl::kPosition}});
+        rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
+        rangeFbo_ = gl::Framebuffer::create();
+        rangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
+        rangeFbo_.checkComplete("MSAA depth ranges (RG32F)");
+    }
+    StateCache& cache = StateCache::current();
+    cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
+    cache.apply(RenderState{});
+    rangeProgram_.use();
+    centreDepth.bind(gl::kUnitDepthCopy);
+    sampleDistances_.bind(gl::kUnitDepthSpans);
+    rangeProgram_.set("uDepth", gl::kUnitDepthCopy);
+    rangeProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
+    rangeProgram_.set("uSampleCount", samples_);
+    rangeProgram_.set("uDepthToDistance", depthToDistance_);
+    drawFullScreen();
+    const size_t pixels = size_t(width_) * size_t(height_);
+    rangeReadback_.resize(pixels * 2);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RG, GL_FLOAT, rangeReadback_.data());
+    cache.bindFramebuffer(0);
+    checkGl("MSAA depth ranges read-back");
+    nearDepth.resize(pixels);
+    farDepth.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+        nearDepth[i] = rangeReadback_[2 * i];
+        farDepth[i] = rangeReadback_[2 * i + 1];
+    }
+#else
+    (void)centreDepth;
+    (void)nearDepth;
+    (void)farDepth;
+#endif
 }
 
 std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {

@@ -218,7 +218,14 @@ TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const 
         volumeTiles_ ? tileDecision_.decide(lightRectArea(cam, lights), screenPixels()) : TileDecision::Choice{};
     if (choice.tiles) {
         TimedPass volumeTilesTime(frame_.timer, kVolumeTiles.name);
-        volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, frame_.targets.depthBits() == 24);  // the single-sample pre-pass depth
+        if (depthSpans_.storesSamples()) {
+            // Under MSAA each pixel's range: the centre's surface and every sample's point.
+            depthSpans_.readDepthRanges(depthTexture_, tileNearDepth_, tileFarDepth_);
+            frame_.targets.bindSingleSample();
+            volumeTiles_->buildRanges(tileNearDepth_, tileFarDepth_, volumePass_.tileDepthMargin(), cam);
+        } else {
+            volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, frame_.targets.depthBits() == 24);  // the single-sample pre-pass depth
+        }
         volumePass_.setTiles(volumeTiles_.get(), cam);
     } else {
         volumePass_.setTiles(nullptr, cam);

@@ -206,6 +206,7 @@ private:
     // lights up by index.
     FrameResources frame_;
     DepthSpanPass depthSpans_;  // sphere-span: what the volume pass reads beside the depth copy
+    std::vector<float> tileNearDepth_, tileFarDepth_;  // sphere-span with tiles: each pixel's range (readDepthRanges)
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;
     Variant* currentTransparent_ = nullptr;

@@ -219,7 +219,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         volumePass_.setDepthSpans(&depthSpans_);
         transparentVolumePass_.setDepthSpans(&depthSpans_);
     }
-    if (options_.tileCulledVolumes && options_.volumeTest == VolumeTest::Sphere && !info.gles) {
+    // sphere-span culls by tiles where it reads the samples' distances (the tiles take each pixel's range of them).
+    const bool spanTiles = options_.volumeTest == VolumeTest::SphereSpan && depthSpans_.storesSamples();
+    if (options_.tileCulledVolumes && (options_.volumeTest == VolumeTest::Sphere || spanTiles) && !info.gles) {
         // OpenGL ES 2.0 keeps the volume meshes: it cannot read depth back (glReadPixels takes colour only).
         volumeTiles_ = std::make_unique<VolumeTiles>(width, height, options_.volumeTileSize);
     }

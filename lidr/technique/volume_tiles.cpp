@@ -30,9 +30,15 @@ VolumeTiles::VolumeTiles(int width, int height, int tileSize)
 }
 
 void VolumeTiles::build(const std::vector<float>& depth, float margin, const CameraMatrices& camera) {
-    if (depth.size() != size_t(width_) * size_t(height_))
-        throw Error("light-volume tiles: " + std::to_string(depth.size()) + " depths for a " + std::to_string(width_) +
-                    " x " + std::to_string(height_) + " target");
+    buildRanges(depth, depth, margin, camera);
+}
+
+void VolumeTiles::buildRanges(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin,
+                              const CameraMatrices& camera) {
+    for (const std::vector<float>* depth : {&nearDepth, &farDepth})
+        if (depth->size() != size_t(width_) * size_t(height_))
+            throw Error("light-volume tiles: " + std::to_string(depth->size()) + " depths for a " +
+                        std::to_string(width_) + " x " + std::to_string(height_) + " target");
     const glm::mat4& P = camera.projection;
     if (P[2][3] != -1.0f || P[3][3] != 0.0f) throw Error("light-volume tiles need a perspective projection");
     depthToDistance_ = {0.5f * P[3][2], 0.5f * (P[2][2] - 1.0f)};
@@ -49,27 +55,28 @@ void VolumeTiles::build(const std::vector<float>& depth, float margin, const Cam
     slices_.assign(tiles, 0u);
     sliceSpan_.assign(tiles, 0);
     margin += kDepthSlack;
-    rangeTiles(depth, margin);
-    markSlices(depth, margin);
+    rangeTiles(nearDepth, farDepth, margin);
+    markSlices(nearDepth, farDepth, margin);
     measureSlices();
 }
 
-void VolumeTiles::rangeTiles(const std::vector<float>& depth, float margin) {
+void VolumeTiles::rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin) {
     // Both passes walk each row a tile's span at a time (no division per pixel) with branch-free inner loops
     // the compiler can vectorise: this is the CPU side of every tile-culled frame (doc/benchmarks.md).
     // Pass 1: each tile's range of surface depths, widened by the margin. Rounding is monotonic, so
     // min(d) - margin is min(d - margin), bit for bit.
     for (int y = 0; y < height_; ++y) {
-        const float* row = depth.data() + size_t(y) * size_t(width_);
+        const float* nearRow = nearDepth.data() + size_t(y) * size_t(width_);
+        const float* farRow = farDepth.data() + size_t(y) * size_t(width_);
         const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
         for (int tx = 0; tx < tilesX_; ++tx) {
             const int x0 = tx * tileSize_, x1 = std::min(x0 + tileSize_, width_);
             float lo = 2.0f, hi = -1.0f;
             for (int x = x0; x < x1; ++x) {
-                const float d = row[x];
-                const bool surface = d < 1.0f;  // background (1, or NaN): the sphere test discards it
-                lo = std::min(lo, surface ? d : 2.0f);
-                hi = std::max(hi, surface ? d : -1.0f);
+                const float n = nearRow[x], f = farRow[x];
+                const bool surface = n < 1.0f;  // background (1, or NaN): the sphere test discards it
+                lo = std::min(lo, surface ? n : 2.0f);
+                hi = std::max(hi, surface ? f : -1.0f);
             }
             if (hi < lo) continue;
             const size_t t = tileRow + size_t(tx);
@@ -79,7 +86,7 @@ void VolumeTiles::rangeTiles(const std::vector<float>& depth, float margin) {
     }
 }
 
-void VolumeTiles::markSlices(const std::vector<float>& depth, float margin) {
+void VolumeTiles::markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin) {
     const size_t tiles = size_t(tileCount());
     // Pass 2: the slices each pixel's widened depth overlaps. d - margin >= the tile's minimum, so both slice
     // coordinates are >= 0 and truncation is the floor.
@@ -87,7 +94,8 @@ void VolumeTiles::markSlices(const std::vector<float>& depth, float margin) {
     for (size_t t = 0; t < tiles; ++t)
         if (maxDepth_[t] > minDepth_[t]) scale[t] = float(kSlices) / (maxDepth_[t] - minDepth_[t]);
     for (int y = 0; y < height_; ++y) {
-        const float* row = depth.data() + size_t(y) * size_t(width_);
+        const float* nearRow = nearDepth.data() + size_t(y) * size_t(width_);
+        const float* farRow = farDepth.data() + size_t(y) * size_t(width_);
         const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
         for (int tx = 0; tx < tilesX_; ++tx) {
             const size_t t = tileRow + size_t(tx);
@@ -97,10 +105,10 @@ void VolumeTiles::markSlices(const std::vector<float>& depth, float margin) {
             uint32_t bits = slices_[t];
             int span = sliceSpan_[t];
             for (int x = x0; x < x1; ++x) {
-                const float d = row[x];
-                if (!(d < 1.0f)) continue;
-                const int first = std::min(int((d - margin - base) * s), kSlices - 1);
-                const int last = std::min(int((d + margin - base) * s), kSlices - 1);
+                const float n = nearRow[x], f = farRow[x];
+                if (!(n < 1.0f)) continue;
+                const int first = std::min(int((n - margin - base) * s), kSlices - 1);
+                const int last = std::min(int((f + margin - base) * s), kSlices - 1);
                 bits |= sliceMask(first, last);
                 span = std::max(span, last - first);
             }

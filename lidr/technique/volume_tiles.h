@@ -44,6 +44,10 @@ public:
     // perspective projection). `margin`: each pixel's surface lies within this much window depth of its stored
     // depth (the sphere test's uDepthMargin).
     void build(const std::vector<float>& depth, float margin, const CameraMatrices& camera);
+    // The same from a depth range per pixel (MSAA: the nearest and farthest of the points its samples shade,
+    // DepthSpanPass::readDepthRanges; 1 in nearDepth where it has none): each pixel marks every slice of its range.
+    void buildRanges(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin,
+                     const CameraMatrices& camera);
     // Reads the bound framebuffer's depth (glReadPixels) and builds from it; packedDepthStencil: the depth is a
     // DEPTH24_STENCIL8 buffer, read as GL_UNSIGNED_INT_24_8 (every desktop context lidr runs on has packed
     // depth-stencil: its FBOs need it).
@@ -82,8 +86,8 @@ public:
 private:
     // build()'s three passes over the depth (`margin` with kDepthSlack): each tile's widened depth range, the slices
     // each pixel overlaps, each occupied slice's distances.
-    void rangeTiles(const std::vector<float>& depth, float margin);
-    void markSlices(const std::vector<float>& depth, float margin);
+    void rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin);
+    void markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin);
     void measureSlices();
 
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
