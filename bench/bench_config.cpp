@@ -191,10 +191,12 @@ std::string ModeConfig::label() const {
                                : volumeTileSize != 16  ? " tiles" + std::to_string(volumeTileSize)
                                                        : "";
     const std::string global = volumeTest == "sphere" && volumeTiles && !regionalIndices ? " global-indices" : "";
-    if (mode == "lidr" && scheme == "auto") return "lidr auto " + volumeTest + (volumeDetail ? " detail" : "") + meshes + global;
+    const std::string spans = volumeTest == "sphere-span" && msaaSpans != "auto" ? " " + msaaSpans : "";
+    if (mode == "lidr" && scheme == "auto")
+        return "lidr auto " + volumeTest + spans + (volumeDetail ? " detail" : "") + meshes + global;
     if (mode == "lidr")
         return "lidr " + scheme + " b" + std::to_string(budget) + " " + std::to_string(indexBits) + "-bit " + volumeTest +
-               (volumeDetail ? " detail" : "") + meshes;
+               spans + (volumeDetail ? " detail" : "") + meshes;
     if (mode == "tiled") return tiledDepthBounds ? "tiled min/max" : "tiled no-min/max";
     if (mode == "clustered") {
         if (clusterTileSize == 0 && clusterSlices == 0 && clusterSlicing.empty() && clusterOccupancy < 0) return mode;
@@ -251,6 +253,7 @@ LidrOptions lidrOptionsFor(const ModeConfig& c) {
     o.tileCulledVolumes = c.volumeTiles;
     o.volumeTileSize = c.volumeTileSize;
     o.regionalIndices = c.regionalIndices;
+    o.msaaSpans = parseDepthSpanStorage(c.msaaSpans);
     o.msaaSamples = c.msaa;
     o.perSampleIndices = c.perSample;
     o.transparency = c.transparency;

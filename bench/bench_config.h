@@ -40,6 +40,7 @@ struct ModeConfig {
     bool volumeTiles = true;      // LidrOptions::tileCulledVolumes (the sphere test): false draws volume meshes
     int volumeTileSize = 16;      // LidrOptions::volumeTileSize
     bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
+    std::string msaaSpans = "auto";  // LidrOptions::msaaSpans (sphere-span): auto, samples, moments
     // mode "tiled"
     bool tiledDepthBounds = false;
     // mode "clustered" (ClusteredOptions): 0, "" and -1 leave the library's default
@@ -88,6 +89,7 @@ struct SweepGroup {
     std::vector<std::string> volumeTests;
     std::vector<int> msaa;
     std::vector<bool> perSample;  // per-sample MSAA index lists off/on; used only where MSAA > 0
+    std::vector<std::string> msaaSpans{"auto"};  // sphere-span's storage of the samples' surfaces (LIDR, MSAA)
     std::vector<bool> transparency;
     std::vector<bool> tiledDepthBounds;
     // The clustered grids (cartesian, like the rest); the defaults: the library's one grid.

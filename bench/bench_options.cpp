@@ -27,6 +27,7 @@ std::vector<SweepList> sweepLists() {
             {"--volume-tests", "volume-test", {"sphere,backface,exact,frontface"}},
             {"--msaa", "msaa", {"0"}},
             {"--per-sample", "msaa-per-sample", {"off"}},
+            {"--msaa-spans", "msaa-spans", {"auto"}},
             {"--transparency", "transparency", {"on"}},
             {"--tiled-depth-bounds", "no-depth-bounds", {"on,off"}},  // on: depth bounds (the flag's opposite)
             {"--cluster-tile-sizes", "cluster-tile-size", {}},
@@ -173,6 +174,7 @@ SweepGroup commandLineGroup(const CLI::App& app, const BenchOptions& o) {
     g.msaa = intList(o.listOf("--msaa"), "MSAA sample count");
     for (int samples : g.msaa) checkSampleCount(samples, "--msaa");
     g.perSample = onOffList(o.listOf("--per-sample"));
+    g.msaaSpans = o.listOf("--msaa-spans");
     g.transparency.clear();
     for (const std::string& t : o.listOf("--transparency"))
         if (t == "scene") throw Error("--transparency: on or off (a sweep has no scene's own), got 'scene'");

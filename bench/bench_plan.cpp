@@ -94,8 +94,10 @@ void lidrConfigs(const SweepGroup& g, const ModeConfig& base, Configs& configs) 
                     for (bool detail : g.volumeDetail)
                         for (bool tiles : g.volumeTiles)
                             for (int tileSize : g.volumeTileSizes)
-                                for (bool regional : g.regionalIndices) {
+                                for (bool regional : g.regionalIndices)
+                                  for (const std::string& spans : g.msaaSpans) {
                                     ModeConfig c = base;
+                                    c.msaaSpans = spans;
                                     c.regionalIndices = regional;
                                     c.scheme = scheme;
                                     c.budget = budget;
@@ -115,6 +117,9 @@ void lidrConfigs(const SweepGroup& g, const ModeConfig& base, Configs& configs) 
                                     // Under MSAA (single-sample lists) the library runs `sphere` as sphere-span:
                                     // the row says what ran.
                                     if (c.volumeTest == "sphere" && c.msaa > 0 && !c.perSample) c.volumeTest = "sphere-span";
+                                    // The span storage is sphere-span's alone.
+                                    if (c.volumeTest != "sphere-span" && spans != g.msaaSpans.front()) continue;
+                                    if (c.volumeTest != "sphere-span") c.msaaSpans = "auto";
                                     configs.push_back(c);
                                 }
 }

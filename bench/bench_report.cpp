@@ -192,7 +192,7 @@ nlohmann::json rowJson(const Row& r) {
     j["mode"] = c.mode;
     j["config"] = c.key();
     if (c.mode == "lidr")
-        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}, {"volume_tiles", c.volumeTiles}, {"regional_indices", c.regionalIndices}};
+        j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}, {"volume_tiles", c.volumeTiles}, {"regional_indices", c.regionalIndices}, {"msaa_spans", c.msaaSpans}};
     if (r.autoBudget || r.autoIndexBits)
         j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};

@@ -129,6 +129,9 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, D
     program_ = gl::Program::create("depth-span-samples", buildShaderSource("geometry.vert"),
                                    buildShaderSource("depth_span.frag", {{"LIDR_SAMPLE_DISTANCES", "1"}}),
                                    geometryAttributes());
+    centreProgram_ = gl::Program::create("depth-span-centre", buildShaderSource("fullscreen.vert"),
+                                         perSampleGlsl150(buildShaderSource("depth_span_centre.frag"), false),
+                                         {{"aPosition", gl::kPosition}});
     const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
     triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
 }
@@ -227,13 +230,35 @@ void DepthSpanPass::drawFullScreen() const {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void DepthSpanPass::readDepthRanges(const gl::Texture& centreDepth, std::vector<float>& nearDepth,
-                                    std::vector<float>& farDepth) const {
+void DepthSpanPass::writeCentreDepth() const {
+    if (!sampleDistances_) throw Error("writeCentreDepth: the spans are not stored per sample");
+    StateCache& cache = StateCache::current();
+    ClearAction clear;
+    clear.depth = clear.stencil = true;
+    cache.clear(clear);
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_ALWAYS;
+    s.depthWrite = true;
+    s.colorMask = glm::bvec4(false);
+    cache.apply(s);
+    centreProgram_.use();
+    sampleDistances_.bind(gl::kUnitDepthSpans);
+    centreProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
+    centreProgram_.set("uDepthToDistance", depthToDistance_);
+    drawFullScreen();
+    cache.apply(RenderState{});
+    checkGl("MSAA sample distances: the centre's depth");
+}
+
+void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const {
     if (!sampleDistances_) throw Error("readDepthRanges: the spans are not stored per sample");
 #ifndef __EMSCRIPTEN__
     if (!rangeProgram_) {
         rangeProgram_ = gl::Program::create("depth-span-range", buildShaderSource("fullscreen.vert"),
-                                            perSampleGlsl150(buildShaderSource("depth_span_range.frag"), false),
+                                            perSampleGlsl150(buildShaderSource("depth_span_range.frag",
+                                                                               {{"LIDR_SPAN_SAMPLES", std::to_string(samples_)}}),
+                                                             false),
                                             {{"aPosition", gl::kPosition}});
         rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
         rangeFbo_ = gl::Framebuffer::create();
@@ -244,11 +269,8 @@ void DepthSpanPass::readDepthRanges(const gl::Texture& centreDepth, std::vector<
     cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
     cache.apply(RenderState{});
     rangeProgram_.use();
-    centreDepth.bind(gl::kUnitDepthCopy);
     sampleDistances_.bind(gl::kUnitDepthSpans);
-    rangeProgram_.set("uDepth", gl::kUnitDepthCopy);
     rangeProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
-    rangeProgram_.set("uSampleCount", samples_);
     rangeProgram_.set("uDepthToDistance", depthToDistance_);
     drawFullScreen();
     const size_t pixels = size_t(width_) * size_t(height_);
@@ -264,7 +286,6 @@ void DepthSpanPass::readDepthRanges(const gl::Texture& centreDepth, std::vector<
         farDepth[i] = rangeReadback_[2 * i + 1];
     }
 #else
-    (void)centreDepth;
     (void)nearDepth;
     (void)farDepth;
 #endif

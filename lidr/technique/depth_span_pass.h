@@ -71,10 +71,14 @@ public:
     const gl::Texture& sampleTexture() const { return sampleDistances_; }
     // CPU read-back (tests, evaluation): per sample an image of window depths, rows top to bottom (1: no surface).
     std::vector<ImageFloat> readSampleDepths() const;
+    // With sample distances, after run(): sample 0's point as the single-sample depth of the bound framebuffer
+    // (cleared first, stencil too), the centre the sphere tests read: one full-screen pass in place of the
+    // single-sample depth pre-pass.
+    void writeCentreDepth() const;
     // Tile-culled volumes under MSAA (sample distances, after run()): per pixel, rows bottom to top as glReadPixels
-    // gives them, the nearest and farthest window depth of the centre's surface (centreDepth) and its samples'
-    // points, widened as the volume shader widens them; 1 in both where the pixel has none (VolumeTiles::buildRanges).
-    void readDepthRanges(const gl::Texture& centreDepth, std::vector<float>& nearDepth, std::vector<float>& farDepth) const;
+    // gives them, the nearest and farthest window depth of its samples' points (the centre's is sample 0's),
+    // widened as the volume shader widens them; 1 in both where the pixel has none (VolumeTiles::buildRanges).
+    void readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const;
 
     // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
     // targets (the MSAA pre-pass) with the spans in colour, and resolves them. Leaves framebuffer 0 bound.
@@ -126,6 +130,7 @@ private:
     gl::Texture sampleDistances_;   // with sample distances: the multisample R32F texture
     gl::Framebuffer sampleFbo_;     // ... with the targets' multisampled depth-stencil
     mutable gl::Program readProgram_;  // readSampleDepths: four samples a draw into an RGBA32F texture
+    gl::Program centreProgram_;         // writeCentreDepth
     mutable gl::Program rangeProgram_;  // readDepthRanges: into an RG32F texture, read back every tile frame
     mutable gl::Texture rangeTexture_;
     mutable gl::Framebuffer rangeFbo_;

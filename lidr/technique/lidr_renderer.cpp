@@ -35,6 +35,13 @@ constexpr FramePass kMsaaDepthPrepass{"msaa-depth-prepass", "scene", "depth (MSA
 constexpr FramePass kDepthSpans{"depth-spans", "scene, depth copy",
                                 "depth (MSAA), depth spans (the depths each pixel's samples shade)",
                                 "sphere-span (MSAA): the MSAA pre-pass"};
+// sphere-span with the samples' distances (DepthSpanStorage::Samples): the MSAA pre-pass first, then the
+// single-sample depth from its sample 0.
+constexpr FramePass kDepthSpanSamples{"depth-spans", "scene",
+                                      "depth (MSAA), sample distances (the point each sample shades)",
+                                      "sphere-span (MSAA): the MSAA pre-pass"};
+constexpr FramePass kDepthFromSample{"depth-prepass", "sample distances",
+                                     "depth, stencil, depth copy (sample 0's point: the centre the tests read)"};
 constexpr FramePass kForward{"forward",
                              "scene, depth, index targets, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kForwardTransparent{"forward-transparent",
@@ -55,8 +62,13 @@ unsigned thresholdsToAsk(const AutoConfiguration& a, int budget, bool& narrowing
 
 std::vector<FramePass> LidrRenderer::passes() const {
     std::vector<FramePass> p{pass::kShadowMaps};
-    if (options_.depthPrepass) p.push_back(depthTexture_ ? kDepthPrepassCopy : kDepthPrepass);
-    if (depthSpans_) p.push_back(kDepthSpans);
+    if (depthSpans_.storesSamples()) {
+        p.push_back(kDepthSpanSamples);
+        p.push_back(kDepthFromSample);
+    } else {
+        if (options_.depthPrepass) p.push_back(depthTexture_ ? kDepthPrepassCopy : kDepthPrepass);
+        if (depthSpans_) p.push_back(kDepthSpans);
+    }
     if (volumeTiles_ && options_.depthPrepass) p.push_back(kVolumeTiles);
     p.push_back(kFramePlan);
     if (transparentIndexTargets_) p.push_back(kLightVolumesTransparent);
@@ -189,8 +201,30 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         StateCache::current().clear(clear);
         return;
     }
+    if (depthSpans_.storesSamples()) {
+        // sphere-span with the samples' distances: the MSAA pre-pass first (the forward pass tests against it),
+        // then sample 0's point as the single-sample depth: a full-screen pass, not a second geometry pass.
+        TimedPass depthSpansTime(frame_.timer, kDepthSpans.name);
+        depthSpans_.run(frame_.scene, cam, depthTexture_);
+        depthSpansTime.end();
+        frame_.targets.bindSingleSample();
+        TimedPass depthTime(frame_.timer, kDepthPrepass.name);
+        depthSpans_.writeCentreDepth();
+        copyPrepassDepth(cam);
+        return;
+    }
     TimedPass depthTime(frame_.timer, kDepthPrepass.name);
     frame_.depthPrepass.run(frame_.scene, cam);
+    copyPrepassDepth(cam);
+    depthTime.end();
+    if (!depthSpans_) return;
+    // sphere-span: the MSAA pre-pass (the forward pass tests against it) writes the samples' spans as it goes.
+    TimedPass depthSpansTime(frame_.timer, kDepthSpans.name);
+    depthSpans_.run(frame_.scene, cam, depthTexture_);
+    frame_.targets.bindSingleSample();
+}
+
+void LidrRenderer::copyPrepassDepth(const CameraMatrices& cam) {
     if (!depthTexture_) return;
     // The shader volume tests read the pre-pass depth from a texture that is not attached to the framebuffer
     // they draw into (reading an attached one is a feedback loop).
@@ -204,12 +238,6 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, frame_.targets.width(), frame_.targets.height());
         checkGl("depth copy for the volume tests");
     }
-    depthTime.end();
-    if (!depthSpans_) return;
-    // sphere-span: the MSAA pre-pass (the forward pass tests against it) writes the samples' spans as it goes.
-    TimedPass depthSpansTime(frame_.timer, kDepthSpans.name);
-    depthSpans_.run(frame_.scene, cam, depthTexture_);
-    frame_.targets.bindSingleSample();
 }
 
 TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) {
@@ -220,7 +248,7 @@ TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const 
         TimedPass volumeTilesTime(frame_.timer, kVolumeTiles.name);
         if (depthSpans_.storesSamples()) {
             // Under MSAA each pixel's range: the centre's surface and every sample's point.
-            depthSpans_.readDepthRanges(depthTexture_, tileNearDepth_, tileFarDepth_);
+            depthSpans_.readDepthRanges(tileNearDepth_, tileFarDepth_);
             frame_.targets.bindSingleSample();
             volumeTiles_->buildRanges(tileNearDepth_, tileFarDepth_, volumePass_.tileDepthMargin(), cam);
         } else {

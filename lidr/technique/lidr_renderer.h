@@ -155,8 +155,10 @@ private:
     // 0. After the shadow maps: whether the main sphere test discards what they shadow (the paper's first way,
     // ShadowLookup::VolumePass); sets the volume pass's shadows.
     bool useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading);
-    // 1. The depth pre-pass (and the depth copy the shader volume tests read), or a depth clear without one.
+    // 1. The depth pre-pass (and the depth copy the shader volume tests read), or a depth clear without one; with
+    // sphere-span, the MSAA pre-pass too (with the samples' distances first, the single-sample depth from it).
     void depthPrepass(const CameraMatrices& cam);
+    void copyPrepassDepth(const CameraMatrices& cam);  // the depth copy (OpenGL ES: the pre-pass drawn again into it)
     // 1b. The tile decision (TileDecision) and, where it takes tiles, the pre-pass depth read back per tile and
     // given to the volume pass.
     TileDecision::Choice cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights);

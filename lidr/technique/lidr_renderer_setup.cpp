@@ -161,8 +161,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
     : options_(withContextFallbacks(info, requested)),
       firstPacking_(checkedPacking(info, scene, options_)),
       frame_(info, scene, frameSetup(scene, options_, firstPacking_, width, height)),
-      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}, false,
-                  options_.volumeTest == VolumeTest::SphereSpan && options_.msaaSpans == DepthSpanStorage::Samples) {
+      volumePass_(info, options_.volumeTest, options_.volumeDetail, DepthEmulation{options_.emulatedDepthBits}) {
     requestedAutoBudget_ = requested.packing.autoBudget();
     if (options_.volumeTest == VolumeTest::SphereSpan) {
         try {
@@ -172,9 +171,11 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             // The driver refused the multisample texture beside its depth-stencil: GL 2.1's moments.
             options_.msaaSpans = DepthSpanStorage::Moments;
             depthSpans_ = DepthSpanPass(info, frame_.targets, options_.msaaSpans);
-            volumePass_ = LightVolumePass(info, options_.volumeTest, options_.volumeDetail,
-                                          DepthEmulation{options_.emulatedDepthBits});
         }
+        // The samples' distances: programs that loop over the sample count the driver gave.
+        if (depthSpans_.storesSamples())
+            volumePass_ = LightVolumePass(info, options_.volumeTest, options_.volumeDetail,
+                                          DepthEmulation{options_.emulatedDepthBits}, false, depthSpans_.samples());
     }
     const PackingConfig& first = firstPacking_;
     if (options_.packing.autoBudget()) {
@@ -197,7 +198,7 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             options_.volumeTest == VolumeTest::Sphere || spans ? VolumeTest::SphereRay : VolumeTest::FrontFace;
         transparentVolumePass_ = LightVolumePass(info, front, options_.volumeDetail,
                                                  DepthEmulation{options_.emulatedDepthBits}, spans,
-                                                 spans && options_.msaaSpans == DepthSpanStorage::Samples);
+                                                 spans && depthSpans_.storesSamples() ? depthSpans_.samples() : 0);
         needsDepthTexture = needsDepthTexture || isShaderVolumeTest(front);
     }
     const int depthPrecision = options_.emulatedDepthBits != 0 ? options_.emulatedDepthBits : options_.depthBits;

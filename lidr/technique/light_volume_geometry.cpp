@@ -14,10 +14,10 @@
 namespace lidr {
 
 LightVolumeGeometry::LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth,
-                                         bool depthSpans, bool spanSamples)
+                                         bool depthSpans, int spanSamples)
     : test_(test), coarsest_(volumeDetail ? 0 : kDetailLevels - 1),
       readsSpans_(test == VolumeTest::SphereSpan || (test == VolumeTest::SphereRay && depthSpans)),
-      spanSamples_(readsSpans_ && spanSamples) {
+      spanSamples_(readsSpans_ ? spanSamples : 0) {
     uploadMeshes();
     programs_ = DrawTargetPrograms(info, [depth](int targetCount) {
         ShaderDefines defs = {{"LIDR_DRAW_TARGETS", std::to_string(targetCount)}};
@@ -89,7 +89,8 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
                                   {"LIDR_BATCH", std::to_string(batchFor(batch, uniforms, targetCount,
                                                                          !shadow.empty()))}};
             if (test == VolumeTest::SphereRay) defs.push_back({"LIDR_SPHERE_RAY", "1"});
-            if (spans) defs.push_back({samples ? "LIDR_SPAN_SAMPLES" : "LIDR_DEPTH_SPAN", "1"});
+            if (spans && samples > 0) defs.push_back({"LIDR_SPAN_SAMPLES", std::to_string(samples)});
+            if (spans && samples == 0) defs.push_back({"LIDR_DEPTH_SPAN", "1"});
             if (screenTiles) defs.push_back({"LIDR_SCREEN_TILES", "1"});
             if (cones) defs.push_back({"LIDR_SPOT_CONES", "1"});
             defs.insert(defs.end(), shadow.begin(), shadow.end());
@@ -100,14 +101,14 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
             return gl::Program::create(std::string(volumeTestName(test)) + (screenTiles ? "-tiles-" : "-volumes-") +
                                            (cones ? "cones-" : "") + (shadow.empty() ? "" : "shadows-") +
                                            std::to_string(targetCount),
-                                       vertex, samples ? perSampleGlsl150(fragment, false) : fragment,
+                                       vertex, samples > 0 ? perSampleGlsl150(fragment, false) : fragment,
                                        {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}});
         });
     };
     // Each with and without the cone test: a draw of point lights alone skips its varying and arithmetic
     // (+8 % volume-pass instructions on hall-1024, callgrind). Compiled on first use.
     for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1, {});
-    if (test == VolumeTest::Sphere || (test == VolumeTest::SphereSpan && spanSamples_)) {
+    if (test == VolumeTest::Sphere || (test == VolumeTest::SphereSpan && spanSamples_ > 0)) {
         for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1, {});
         makePrograms_ = programs;
         tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
@@ -281,10 +282,10 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
     program.set("uDepth", gl::kUnitDepthCopy);
     depth_->bind(gl::kUnitDepthCopy);
     if (spanSamples_) {
-        if (!(depthSpans_ && depthSpans_->storesSamples()))
-            throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA sample distances");
+        if (!(depthSpans_ && depthSpans_->storesSamples() && depthSpans_->samples() == spanSamples_))
+            throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA sample "
+                        "distances of " + std::to_string(spanSamples_) + " samples");
         program.set("uSampleDistances", gl::kUnitDepthSpans);
-        program.set("uSampleCount", depthSpans_->samples());
         depthSpans_->sampleTexture().bind(gl::kUnitDepthSpans);
     } else if (readsSpans_) {
         if (!(depthSpans_ && *depthSpans_ && depthSpans_->hasSides()))
@@ -372,7 +373,7 @@ size_t LightVolumeGeometry::SphereHash::operator()(const SphereKey& k) const {
 }
 
 void LightVolumeGeometry::setTiles(const VolumeTiles* tiles, const CameraMatrices& camera) {
-    if (tiles && test_ != VolumeTest::Sphere && !(test_ == VolumeTest::SphereSpan && spanSamples_))
+    if (tiles && test_ != VolumeTest::Sphere && !(test_ == VolumeTest::SphereSpan && spanSamples_ > 0))
         throw Error("tile-culled light volumes are the sphere test's (and sphere-span's with the samples' distances)");
     tiles_ = tiles;
     camera_ = camera;

@@ -72,7 +72,7 @@ public:
     LightVolumeGeometry() = default;
     // volumeDetail, depth, depthSpans: see LightVolumePass.
     LightVolumeGeometry(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth = {},
-                        bool depthSpans = false, bool spanSamples = false);
+                        bool depthSpans = false, int spanSamples = 0);
 
     VolumeLightFacts factsFor(const VolumeLight& light, const CameraMatrices& camera) const override;
     void begin(const CameraMatrices& camera, glm::ivec2 targetSize, const gl::Texture* depth) override;
@@ -199,7 +199,7 @@ private:
     glm::ivec2 targetSize_{1};
     const gl::Texture* depth_ = nullptr;
     bool readsSpans_ = false;  // the batch programs read the depth spans (LIDR_DEPTH_SPAN)
-    bool spanSamples_ = false;  // ... as each sample's distance (LIDR_SPAN_SAMPLES)
+    int spanSamples_ = 0;  // ... as each of this many samples' distance (LIDR_SPAN_SAMPLES); 0: moments
     const DepthSpanPass* depthSpans_ = nullptr;
     VolumeProgram program_ = VolumeProgram::PerLight;
     int targets_ = 1;

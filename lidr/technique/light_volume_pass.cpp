@@ -40,7 +40,7 @@ const gl::Framebuffer& IndexTargets::framebufferFrom(int first) const {
 size_t IndexTargets::bytes() const { return size_t(count()) * width_ * height_ * 4 * std::max(samples_, 1); }
 
 LightVolumePass::LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail, DepthEmulation depth,
-                                 bool depthSpans, bool spanSamples)
+                                 bool depthSpans, int spanSamples)
     : test_(test), depthClamp_(info.depthClamp), gles_(info.gles),
       maxDrawTargets_(maxDrawTargets(info)),
       volumes_(info, test, volumeDetail, depth, depthSpans, spanSamples) {}

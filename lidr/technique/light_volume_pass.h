@@ -53,9 +53,10 @@ public:
     // (LidrOptions::emulatedDepthBits).
     // depthSpans: a sphere-ray pass beside a sphere-span one, whose rays end at the far end of the samples' depth
     // span instead of the pixel centre's surface (setDepthSpans); sphere-span always reads the spans.
-    // spanSamples: the spans are the samples' own distances (DepthSpanStorage::Samples; GLSL 1.50 programs).
+    // spanSamples > 0: the spans are the distances of this many samples (DepthSpanStorage::Samples, the driver's
+    // count; GLSL 1.50 programs that loop over them unrolled).
     LightVolumePass(const GlInfo& info, VolumeTest test, bool volumeDetail = false, DepthEmulation depth = {},
-                    bool depthSpans = false, bool spanSamples = false);
+                    bool depthSpans = false, int spanSamples = 0);
 
     // Binds the targets, clears them to 0 (the null light everywhere) and clears stencil. The shader tests
     // read `depth`, a single-sample depth texture of the pre-pass (not attached to the targets).

@@ -10,7 +10,7 @@
 //   LIDR_DEPTH_SPAN (MSAA, sphere-span): the pixel's samples shade surfaces between two depths (DepthSpanPass,
 //                   uDepthSpan); without LIDR_SPHERE_RAY the ray between them must meet the sphere (interior
 //                   pixels: one depth, the sphere test), with it the ray ends at the farther one.
-//   LIDR_SPAN_SAMPLES (MSAA, sphere-span where the context has multisample textures; compiled as GLSL 1.50): each
+//   LIDR_SPAN_SAMPLES N (MSAA, sphere-span where the context has multisample textures; GLSL 1.50): each of the N
 //                   sample's shaded point, read per sample (DepthSpanPass sample distances): the light is kept
 //                   where its sphere (and cone) reaches the centre's surface or any sample's point; with
 //                   LIDR_SPHERE_RAY the ray ends at the farthest of them.
@@ -72,7 +72,6 @@ varying vec4 vConeView;  // LIDR_SPOT_CONES: a draw with spot lights (a draw of 
 
 #ifdef LIDR_SPAN_SAMPLES
 uniform sampler2DMS uSampleDistances;  // per sample, the view distance of the point it shades (0: none)
-uniform int uSampleCount;
 
 // Whether the light reaches a surface between distances a and b on the ray: its sphere, and (opaque lists) the
 // cone, whose ramp must be >= 0 at one end (see the cone test in main).
@@ -103,7 +102,7 @@ bool lidrSamplesReached(float depth, vec3 ray, float toCentre, out float spanNea
 #endif
 #endif
     ivec2 texel = ivec2(gl_FragCoord.xy);
-    for (int i = 0; i < uSampleCount; ++i) {
+    for (int i = 0; i < LIDR_SPAN_SAMPLES; ++i) {  // a constant: the loop unrolls
         float x = texelFetch(uSampleDistances, texel, i).r;
         if (x <= 0.0) continue;
         float a = x * (1.0 - 1.0 / 4096.0), b = x * (1.0 + 1.0 / 4096.0);
