@@ -219,3 +219,40 @@ TEST_CASE("tiled forward under MSAA bounds its tiles by every sample's surface",
     REQUIRE(msaa * 10 <= single * 15);
     REQUIRE(msaa < flat);
 }
+
+TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices, the same lists and image as 16-bit global ones",
+          "[msaa][regions][every-gl]") {
+    // hall-1024 at 384 x 288: about 700 lights reach the view. With the samples' distances the volumes are culled
+    // by tiles, and those tiles number the lights per screen region as without MSAA (half the index targets).
+    if (!contextHasMsaa(4)) return;
+    if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
+        WARN("skipped: the moments (GL 2.1) draw volume meshes: no tiles, no regions");
+        return;
+    }
+    Scene scene;
+    REQUIRE(makeOccludedSceneByName("hall-1024", scene));
+    scene.width = 384;
+    scene.height = 288;
+    LidrOptions o;
+    o.msaaSamples = 4;
+    const RenderResult regional = renderAndEvaluate(scene, o);
+    o.regionalIndices = false;
+    const RenderResult global = renderAndEvaluate(scene, o);
+    const FrameEvaluation& e = regional.evaluation;
+    long dropsWithinBudget = 0;
+    for (size_t p = 0; p < e.marked.size(); ++p)
+        if (e.marked[p] <= 16) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
+    INFO("regions " << regional.stats.autoDecision.indexRegions << ", index bits " << regional.stats.autoDecision.indexBits
+                    << " / " << global.stats.autoDecision.indexBits << ", dropped within the budget " << dropsWithinBudget
+                    << ", over budget " << e.pixelsOverBudget << ", PSNR " << e.error.psnr);
+    REQUIRE(global.stats.drawnLights > 255);
+    REQUIRE(regional.stats.autoDecision.indexRegions > 0);
+    CHECK(regional.stats.autoDecision.indexBits == 8);
+    CHECK(global.stats.autoDecision.indexBits == 16);
+    CHECK(regional.indexTargets.size() * 2 == global.indexTargets.size());
+    CHECK(e.spanLists.invalidSlots == 0);
+    CHECK(dropsWithinBudget == 0);
+    CHECK(regional.stats.drawnLights == global.stats.drawnLights);
+    CHECK(regional.lidr.pixels == global.lidr.pixels);
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}

@@ -269,9 +269,11 @@ FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointL
     s.transparentLists = drawTransparent_;
     s.autoWidth = options_.packing.autoIndexBits() ? &auto_ : nullptr;
     s.fixedIndexBits = options_.packing.indexBits;
-    // Regions need an opaque, single-sampled frame (one list per pixel, read at its own tile) and exact small
-    // integers in the light table (its tile map).
-    s.regionalIndices = options_.regionalIndices && !drawTransparent_ && frame_.targets.samples() == 0 &&
+    // Regions need an opaque frame with one list per pixel, read at its own tile (single-sampled, or MSAA's
+    // sphere-span lists with the tiles of the samples' depths), and exact small integers in the light table (its
+    // tile map).
+    s.regionalIndices = options_.regionalIndices && !drawTransparent_ &&
+                        (frame_.targets.samples() == 0 || depthSpans_.storesSamples()) &&
                         !options_.perSampleIndices && frame_.lightTable.format() == LightTableFormat::Float;
     s.maxRegions = kMaxIndexRegions;
     if (volumeTiles_) {

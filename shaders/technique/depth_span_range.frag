@@ -12,12 +12,14 @@ float lidrWindowDepth(float distance) {
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
-    float lo = 2.0, hi = -1.0;
+    // The nearest and farthest distance first (depth falls with 1 / distance), then two conversions.
+    float nearest = 1e30, farthest = 0.0;
     for (int i = 0; i < LIDR_SPAN_SAMPLES; ++i) {  // a constant: unrolled (llvmpipe: 10 -> 7 ms at 1024x768 4x)
         float x = texelFetch(uSampleDistances, texel, i).r;
-        if (x <= 0.0) continue;
-        lo = min(lo, lidrWindowDepth(x * (1.0 - 1.0 / 4096.0)));
-        hi = max(hi, lidrWindowDepth(x * (1.0 + 1.0 / 4096.0)));
+        nearest = x > 0.0 ? min(nearest, x) : nearest;
+        farthest = max(farthest, x);
     }
-    gl_FragColor = hi < lo ? vec4(1.0, 1.0, 0.0, 1.0) : vec4(lo, hi, 0.0, 1.0);
+    gl_FragColor = farthest <= 0.0 ? vec4(1.0, 1.0, 0.0, 1.0)
+                                   : vec4(lidrWindowDepth(nearest * (1.0 - 1.0 / 4096.0)),
+                                          lidrWindowDepth(farthest * (1.0 + 1.0 / 4096.0)), 0.0, 1.0);
 }

@@ -11,9 +11,9 @@
 //                   uDepthSpan); without LIDR_SPHERE_RAY the ray between them must meet the sphere (interior
 //                   pixels: one depth, the sphere test), with it the ray ends at the farther one.
 //   LIDR_SPAN_SAMPLES N (MSAA, sphere-span where the context has multisample textures; GLSL 1.50): each of the N
-//                   sample's shaded point, read per sample (DepthSpanPass sample distances): the light is kept
-//                   where its sphere (and cone) reaches the centre's surface or any sample's point; with
-//                   LIDR_SPHERE_RAY the ray ends at the farthest of them.
+//                   samples' shaded points, read per sample (DepthSpanPass sample distances): the light is kept
+//                   where its sphere (and cone) reaches any of them (the centre's is sample 0's); with
+//                   LIDR_SPHERE_RAY the ray ends at the farthest of them (the far plane where one sees none).
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
 // front of the eye is ray * z. A few operations a fragment, because on a CPU rasteriser this shader runs for
 // every fragment of every volume (discard and stencil writes force the late depth test there).
@@ -86,34 +86,33 @@ bool lidrReaches(vec3 ray, float toCentre, float a, float b, float r2) {
 #endif
 }
 
-// The centre's surface and each sample's point (a hair wide for the two passes' roundings): whether the light
-// reaches one (with LIDR_SPHERE_RAY: meets the ray up to the farthest), and the nearest and farthest of them.
-bool lidrSamplesReached(float depth, vec3 ray, float toCentre, out float spanNear, out float spanFar) {
-    float r = vLightView.w * uRadiusScale;
-    bool centreSurface = depth < 1.0;
-    spanNear = centreSurface ? uDepthToDistance.x / (max(depth - uDepthMargin, 0.0) + uDepthToDistance.y) : 1e30;
-    spanFar = uDepthToDistance.x / (min(depth + uDepthMargin, 1.0) + uDepthToDistance.y);  // the far plane: none
-    bool reached = false;
-#ifndef LIDR_SPHERE_RAY
-    reached = centreSurface && lidrReaches(ray, toCentre, spanNear, spanFar, r * r);
-    if (!centreSurface) spanFar = 0.0;
-#ifndef LIDR_SHADOWS
-    if (reached) return true;  // interior pixels end here (the shadow test needs the whole span)
-#endif
-#endif
+// Each sample's point (a hair wide for the rounding of its stored distance; the centre's surface is sample 0's,
+// DepthSpanPass::writeCentreDepth, so the depth copy is not read): whether the light reaches one (with
+// LIDR_SPHERE_RAY: meets the ray up to the farthest, or the far plane where a sample sees no surface), and the
+// nearest and farthest of them. Sample 0 first: an interior pixel whose light reaches it ends there.
+bool lidrSamplesReached(vec3 ray, float toCentre, out float spanNear, out float spanFar) {
+    float r2 = vLightView.w * uRadiusScale * vLightView.w * uRadiusScale;
+    spanNear = 1e30;
+    spanFar = 0.0;
+    bool reached = false, empty = false;
     ivec2 texel = ivec2(gl_FragCoord.xy);
     for (int i = 0; i < LIDR_SPAN_SAMPLES; ++i) {  // a constant: the loop unrolls
         float x = texelFetch(uSampleDistances, texel, i).r;
+        empty = empty || x <= 0.0;
         if (x <= 0.0) continue;
         float a = x * (1.0 - 1.0 / 4096.0), b = x * (1.0 + 1.0 / 4096.0);
 #ifndef LIDR_SPHERE_RAY
-        reached = reached || lidrReaches(ray, toCentre, a, b, r * r);
+        reached = reached || lidrReaches(ray, toCentre, a, b, r2);
+#ifndef LIDR_SHADOWS
+        if (reached) return true;  // (the shadow test needs the whole span)
+#endif
 #endif
         spanNear = min(spanNear, a);
-        spanFar = max(spanFar, b);  // (a ray whose centre sees no surface keeps the far plane)
+        spanFar = max(spanFar, b);
     }
 #ifdef LIDR_SPHERE_RAY
-    reached = lidrSegmentDistance2(ray, toCentre, uNearPlane, spanFar, vLightView.xyz) <= r * r;
+    if (empty) spanFar = uDepthToDistance.x / (1.0 + uDepthToDistance.y);  // the far plane
+    reached = lidrSegmentDistance2(ray, toCentre, uNearPlane, spanFar, vLightView.xyz) <= r2;
 #endif
     return reached;
 }
@@ -135,13 +134,13 @@ vec4 lidrExactBytes(vec4 c) {
 
 void main() {
     lidrWriteDepth();
-    float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     vec3 ray = vViewPos * (-1.0 / vViewPos.z);
     float toCentre = dot(vLightView.xyz, ray) / dot(ray, ray);
 #ifdef LIDR_SPAN_SAMPLES
     float surfaceNear, surfaceFar;
-    if (!lidrSamplesReached(depth, ray, toCentre, surfaceNear, surfaceFar)) discard;
+    if (!lidrSamplesReached(ray, toCentre, surfaceNear, surfaceFar)) discard;
 #else
+    float depth = texture2D(uDepth, gl_FragCoord.xy * uInvTargetSize).r;
     float centreMargin = uDepthMargin;
 #ifdef LIDR_DEPTH_SPAN
     vec2 uv = gl_FragCoord.xy * uInvTargetSize;
