@@ -44,6 +44,7 @@ AutoModeRenderer::AutoModeRenderer(const GlInfo& info, const Scene& scene, const
     bestMs_.assign(candidates_.size(), 0.0);
     measured_.assign(candidates_.size(), false);
     dropped_.assign(candidates_.size(), false);
+    overBudget_.assign(candidates_.size(), 0);
 }
 
 const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vector<PointLight>& lights,
@@ -81,6 +82,10 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
     glFinish();
     const double ms = nowMilliseconds() - start;
     if (turn == 1 || (turn > 1 && ms < bestMs_[size_t(candidate)])) bestMs_[size_t(candidate)] = ms;
+    // A frame that says it dropped lights (LIDR: pixels over its largest budget) is not chosen while another
+    // candidate draws the scene exactly.
+    if (turn == 0) overBudget_[size_t(candidate)] = 0;
+    overBudget_[size_t(candidate)] = std::max(overBudget_[size_t(candidate)], stats_.autoDecision.overflowPixels);
     if (turn >= 1) {
         measured_[size_t(candidate)] = true;
         double fastest = 0.0;
@@ -95,12 +100,19 @@ const FrameStats& AutoModeRenderer::render(const Camera& camera, const std::vect
         trial_ = 0;
         std::fill(dropped_.begin(), dropped_.end(), false);
         std::fill(measured_.begin(), measured_.end(), false);
-        chosen_ = int(std::min_element(bestMs_.begin(), bestMs_.end()) - bestMs_.begin());
+        const bool anyExact = std::find(overBudget_.begin(), overBudget_.end(), 0L) != overBudget_.end();
+        chosen_ = -1;
+        for (int c = 0; c < n; ++c)
+            if ((!anyExact || overBudget_[size_t(c)] == 0) && (chosen_ < 0 || bestMs_[size_t(c)] < bestMs_[size_t(chosen_)]))
+                chosen_ = c;
         framesSinceChoice_ = 0;
         lightsAtChoice_ = visible;
         std::ostringstream why;
-        why << candidates_[size_t(chosen_)] << " fastest in trial frames:";
-        for (size_t c = 0; c < candidates_.size(); ++c) why << " " << candidates_[c] << " " << bestMs_[c] << " ms";
+        why << candidates_[size_t(chosen_)] << " fastest" << (anyExact ? " exact" : "") << " in trial frames:";
+        for (size_t c = 0; c < candidates_.size(); ++c) {
+            why << " " << candidates_[c] << " " << bestMs_[c] << " ms";
+            if (overBudget_[c] > 0) why << " (" << overBudget_[c] << " pixels over its light budget)";
+        }
         why << " (" << visible << " lights in view)";
         reason_ = why.str();
     }

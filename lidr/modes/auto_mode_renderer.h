@@ -1,7 +1,8 @@
 #pragma once
 // --mode auto: picks, by measuring, the fastest of the modes that draw this scene the same way (LIDR with its
 // automatic configuration, tiled forward, clustered forward, and multi-pass forward where nothing transparent is
-// drawn), and measures again when the frame changes enough to move the answer (doc/auto.md).
+// drawn), and measures again when the frame changes enough to move the answer (doc/auto.md). A candidate whose
+// trial frames report dropped lights (LIDR's pixels over its largest budget) is chosen only if every one does.
 //
 // A cost model calibrated once would be wrong on the next machine (llvmpipe and a discrete GPU rank the modes
 // differently, doc/benchmarks.md), so the model is the machine itself: each candidate renders a few trial
@@ -59,6 +60,7 @@ private:
     std::vector<std::unique_ptr<Renderer>> renderers_;
     std::vector<double> bestMs_;
     std::vector<bool> measured_, dropped_;  // this measurement: measured after its warm-up; sitting out
+    std::vector<long> overBudget_;          // ... the most pixels over its light budget a trial frame reported
     static constexpr double kDropFactor = 2.0;
     int chosen_ = -1, last_ = 0;
     int trial_ = 0;  // trial frames drawn in this measurement (candidates in turn)

@@ -60,7 +60,7 @@ struct LidrOptions {
     bool tileCulledVolumes = true;
     int volumeTileSize = 16;
     // With tile-culled volumes and more than 255 lights reaching the view (automatic index width, opaque
-    // frame, single-sampled): the screen is split into the fewest regions (a grid of tiles, at most
+    // frame, single-sampled or MSAA's sphere-span with the samples' distances): the screen is split into the fewest regions (a grid of tiles, at most
     // kMaxIndexRegions) in which at most 255 lights each reach a tile, and each region numbers its own lights in its
     // own row of the light table, so indices stay 8-bit: half the index targets, written and read, of 16-bit
     // global numbering. The lists hold the same lights (frameLightIndices, frameIndexRegions). false: global.
