@@ -133,7 +133,12 @@ GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat
 
 void GBuffer::draw(const GpuScene& scene, const CameraMatrices& camera) const {
     if (unorm8_) return unorm8_->draw(scene, camera);
-    PassDescription pass{fbo_.id(), glm::ivec4(0, 0, width_, height_),
+    drawGBufferGeometry(fbo_.id(), width_, height_, program_, scene, camera);
+}
+
+void drawGBufferGeometry(GLuint fbo, int width, int height, const gl::Program& program, const GpuScene& scene,
+                         const CameraMatrices& camera) {
+    PassDescription pass{fbo, glm::ivec4(0, 0, width, height),
                          {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3}, {}};
     pass.clear.color = true;
     pass.clear.colorValue = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);  // depth hi 2: no surface (g_buffer.glsl)
@@ -141,13 +146,13 @@ void GBuffer::draw(const GpuScene& scene, const CameraMatrices& camera) const {
     cache.beginPass(pass);
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = GL_EQUAL;  // one fragment a pixel: the pre-pass's
+    s.depthFunc = GL_EQUAL;  // one fragment a pixel (each sample's, multisampled): the pre-pass's
     cache.apply(s);
-    program_.use();
-    program_.set("uViewProj", camera.viewProjection);
-    program_.setIfDeclared("uEyePosition", camera.eye);
-    program_.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
-    scene.draw(program_, DrawFilter::Opaque, true, &camera, 0);
+    program.use();
+    program.set("uViewProj", camera.viewProjection);
+    program.setIfDeclared("uEyePosition", camera.eye);
+    program.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
+    scene.draw(program, DrawFilter::Opaque, true, &camera, 0);
 }
 
 PassDescription GBuffer::accumulationPass() const {

@@ -33,6 +33,11 @@ GBufferFormat parseGBufferFormat(const std::string& name);
 // The format a G-buffer of `format` has on this context (Auto resolved; the others as they are).
 GBufferFormat resolveGBufferFormat(const GlInfo& info, GBufferFormat format);
 
+// The geometry pass of the four-target layout (g_buffer.glsl), single-sampled or multisampled alike: `fbo`'s four
+// targets cleared to "no surface", the opaque meshes drawn with `program` where the pre-pass depth is EQUAL.
+void drawGBufferGeometry(GLuint fbo, int width, int height, const gl::Program& program, const GpuScene& scene,
+                         const CameraMatrices& camera);
+
 class GBuffer {
 public:
     static constexpr int kTargets = 4;

@@ -129,21 +129,7 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
 }
 
 void GBufferMultisample::draw(const GpuScene& scene, const CameraMatrices& camera) const {
-    PassDescription pass{fbo_.id(), glm::ivec4(0, 0, width_, height_),
-                         {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3}, {}};
-    pass.clear.color = true;
-    pass.clear.colorValue = glm::vec4(0.0f, 0.0f, 2.0f, 0.0f);  // depth hi 2: no surface (g_buffer.glsl)
-    StateCache& cache = StateCache::current();
-    cache.beginPass(pass);
-    RenderState s;
-    s.depthTest = true;
-    s.depthFunc = GL_EQUAL;  // each sample's pre-pass depth
-    cache.apply(s);
-    program_.use();
-    program_.set("uViewProj", camera.viewProjection);
-    program_.setIfDeclared("uEyePosition", camera.eye);
-    program_.setIfDeclared("uMaterialTexture", int(gl::kUnitMaterial));
-    scene.draw(program_, DrawFilter::Opaque, true, &camera, 0);
+    drawGBufferGeometry(fbo_.id(), width_, height_, program_, scene, camera);
 }
 
 PassDescription GBufferMultisample::accumulationPass() const {

@@ -37,14 +37,9 @@ vec2 lidrSplitDepth(float d) {
 #ifdef LIDR_GBUFFER_UNORM8
 #include "g_buffer_unorm8.glsl"
 #else
-// The surface at this pixel from the G-buffer; false where the pixel has none (the background).
-bool lidrGBufferSurface(out LidrSurface s) {
-    vec2 uv = gl_FragCoord.xy * uGBufferInvSize;
-    vec4 t2 = texture2D(uGBuffer2, uv);
-    if (t2.z > 1.5) return false;
-    vec4 t0 = texture2D(uGBuffer0, uv);
-    vec4 t1 = texture2D(uGBuffer1, uv);
-    vec4 t3 = texture2D(uGBuffer3, uv);
+// The surface from the four targets' texels at a pixel whose centre is at `uv` (0..1): the one decoding of this
+// layout, for the single-sample read below and the multisampled one (g_buffer_multisample.glsl).
+void lidrGBufferDecode(vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec2 uv, out LidrSurface s) {
     float depth = t2.z + t2.w * (1.0 / 2048.0);
     vec4 world = uInverseViewProj * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
     s.position = world.xyz / world.w;
@@ -58,6 +53,14 @@ bool lidrGBufferSurface(out LidrSurface s) {
 #endif
     s.emission = t3.rgb;
     s.occlusion = t3.a;
+}
+
+// The surface at this pixel from the G-buffer; false where the pixel has none (the background).
+bool lidrGBufferSurface(out LidrSurface s) {
+    vec2 uv = gl_FragCoord.xy * uGBufferInvSize;
+    vec4 t2 = texture2D(uGBuffer2, uv);
+    if (t2.z > 1.5) return false;
+    lidrGBufferDecode(texture2D(uGBuffer0, uv), texture2D(uGBuffer1, uv), t2, texture2D(uGBuffer3, uv), uv, s);
     return true;
 }
 #endif

@@ -14,22 +14,7 @@ bool lidrGBufferSampleSurface(out LidrSurface s) {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 t2 = texelFetch(uGBufferSamples2, texel, gl_SampleID);
     if (t2.z > 1.5) return false;
-    vec4 t0 = texelFetch(uGBufferSamples0, texel, gl_SampleID);
-    vec4 t1 = texelFetch(uGBufferSamples1, texel, gl_SampleID);
-    vec4 t3 = texelFetch(uGBufferSamples3, texel, gl_SampleID);
-    vec2 uv = (vec2(texel) + 0.5) * uGBufferInvSize;
-    float depth = t2.z + t2.w * (1.0 / 2048.0);
-    vec4 world = uInverseViewProj * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-    s.position = world.xyz / world.w;
-    s.normal = lidrOctahedralDecode(t2.xy);
-    s.toEye = normalize(uEyePosition - s.position);
-    s.albedo = t0.rgb;
-    s.alpha = t0.a;
-    s.f0 = t1.rgb;
-#ifdef LIDR_DIELECTRIC_SPECULAR
-    s.f90 = t1.a;
-#endif
-    s.emission = t3.rgb;
-    s.occlusion = t3.a;
+    lidrGBufferDecode(texelFetch(uGBufferSamples0, texel, gl_SampleID), texelFetch(uGBufferSamples1, texel, gl_SampleID),
+                      t2, texelFetch(uGBufferSamples3, texel, gl_SampleID), (vec2(texel) + 0.5) * uGBufferInvSize, s);
     return true;
 }
