@@ -45,12 +45,7 @@ FloatTargets::FloatTargets(const GlInfo& info, const RenderTargets& targets, GLe
                                " colour targets with the depth-stencil are incomplete on " + info.renderer +
                                " (status " + code + ")");
     }
-    StateCache::current().bindFramebuffer(msaaFbo_.id());
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("float targets: sample count");
-    samples_ = std::max(samples_, int(samples));
+    samples_ = std::max(samples_, msaaFbo_.samples());
 }
 
 PassDescription FloatTargets::pass(const ClearAction& clear) const {

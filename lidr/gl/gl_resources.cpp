@@ -188,6 +188,15 @@ void Framebuffer::requireComplete(const std::string& what, const std::string& re
                            (status == GL_FRAMEBUFFER_UNSUPPORTED ? ", GL_FRAMEBUFFER_UNSUPPORTED" : "") + ")");
 }
 
+int Framebuffer::samplesOf(GLuint framebuffer) {
+    StateCache::current().bindFramebuffer(framebuffer);
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    StateCache::current().bindFramebuffer(0);
+    checkGl("framebuffer sample count");
+    return int(samples);
+}
+
 Buffer Buffer::create(GLenum target, const void* data, size_t bytes, GLenum usage) {
     Buffer b;
     static_cast<Object&>(b) = Object(Kind::Buffer);

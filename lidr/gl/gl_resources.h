@@ -95,6 +95,10 @@ public:
     // For optional formats: UnsupportedError "WHAT is incomplete on RENDERER (status 0x...)" unless complete, so the
     // caller can fall back or refuse by name; leaves framebuffer 0 bound.
     void requireComplete(const std::string& what, const std::string& renderer) const;
+    // The samples the driver gave its attachments (GL_SAMPLES; it may round a request up: llvmpipe makes 4 of 2);
+    // leaves framebuffer 0 bound.
+    int samples() const { return samplesOf(id_); }
+    static int samplesOf(GLuint framebuffer);
 };
 
 class Buffer : public Object {

@@ -126,8 +126,7 @@ GBuffer::GBuffer(const GlInfo& info, const RenderTargets& targets, GBufferFormat
     if (!unorm8_)
         program_ = gl::Program::create("g-buffer", buildShaderSource("geometry.vert"),
                                        buildShaderSource("g_buffer.frag"), geometryAttributes());
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    triangle_ = FullScreenTriangle::create();
     checkGl("GBuffer");
 }
 
@@ -197,13 +196,6 @@ std::vector<float> GBuffer::readLightCounts() const {
     return counts;
 }
 
-void GBuffer::drawFullScreen() const {
-    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
+void GBuffer::drawFullScreen() const { triangle_.draw(); }
 
 }  // namespace lidr

@@ -17,6 +17,7 @@
 #include "lidr/gl/gl_state.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/gl/shader_source.h"
+#include "lidr/gl/full_screen_triangle.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/scene/camera.h"
 
@@ -90,7 +91,7 @@ private:
     gl::Texture accumulation_;
     gl::Framebuffer fbo_, accumulationFbo_;
     gl::Program program_;
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
 };
 
 }  // namespace lidr

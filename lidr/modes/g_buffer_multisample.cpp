@@ -123,8 +123,7 @@ GBufferMultisample::GBufferMultisample(const GlInfo& info, const RenderTargets& 
     // The single-sample geometry pass's shaders: once a fragment, its surface to every covered sample.
     program_ = gl::Program::create("g-buffer-multisample", buildShaderSource("geometry.vert"),
                                    buildShaderSource("g_buffer.frag"), geometryAttributes());
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    triangle_ = FullScreenTriangle::create();
     checkGl("GBufferMultisample");
 }
 
@@ -179,14 +178,7 @@ void GBufferMultisample::unbind() const {
     glActiveTexture(GL_TEXTURE0);
 }
 
-void GBufferMultisample::drawFullScreen() const {
-    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
+void GBufferMultisample::drawFullScreen() const { triangle_.draw(); }
 
 std::vector<float> GBufferMultisample::readLightCounts() const {
     throw Error("GBufferMultisample::readLightCounts: the light counts are per sample (readSample)");

@@ -116,7 +116,7 @@ private:
     gl::Renderbuffer accumulationDepth_;  // the shaded surfaces' depths (beginAccumulation)
     gl::Framebuffer fbo_, accumulationFbo_;
     gl::Program program_, depthProgram_;
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
     mutable gl::Program readProgram_;  // readSample's, made on first use
 };
 

@@ -95,8 +95,7 @@ TileDepthBounds::TileDepthBounds(const GlInfo& info, int width, int height, int 
                                                      buildShaderSource("tile_depth_reduce.frag", v),
                                                      {{"aPosition", gl::kPosition}}));
     }
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    triangle_ = FullScreenTriangle::create();
     checkGl("TileDepthBounds");
 }
 
@@ -186,9 +185,7 @@ std::vector<float> TileDepthBounds::readChain(const Chain& chain, int component)
 
 std::vector<TileDepthRange> TileDepthBounds::reduce() const {
     StateCache::current().apply(RenderState{});
-    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    triangle_.bind();
     for (size_t c = 0; c < chains_.size(); ++c) {
         if (spans_) {
             horizontal_[c].use();
@@ -212,8 +209,7 @@ std::vector<TileDepthRange> TileDepthBounds::reduce() const {
         runPass(p, depthCopy_, splitChains_[c].columnsFbo, tilesX_, height_);
         runPass(splitVertical_[c], splitChains_[c].columns, splitChains_[c].tilesFbo, tilesX_, tilesY_);
     }
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    triangle_.unbind();
     StateCache::current().unbindTextures({gl::kUnitTileDepthMax, gl::kUnitTileDepthMin, gl::kUnitReductionInput});
 
     // Read back with GL's bottom-up rows: tile (x, y) lands at y * tilesX + x, as LightGrid counts tiles.

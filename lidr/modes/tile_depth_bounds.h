@@ -16,6 +16,7 @@
 
 #include "lidr/scene/camera.h"
 #include "lidr/gl/gl_info.h"
+#include "lidr/gl/full_screen_triangle.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/render/gpu_scene.h"
 #include "lidr/modes/light_grid.h"
@@ -72,7 +73,7 @@ private:
     std::vector<gl::Program> splitHorizontal_, splitVertical_;  // per split chain
     bool halfZ_ = false;
     std::unique_ptr<DepthSpanPass> spans_;  // MSAA
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
 };
 
 }  // namespace lidr

@@ -89,12 +89,7 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, b
     if (sides_) {
         samples_ = sides_.samples();
     } else {
-        StateCache::current().beginPass(target_.pass());
-        GLint samples = 0;
-        glGetIntegerv(GL_SAMPLES, &samples);
-        StateCache::current().bindFramebuffer(0);
-        checkGl("MSAA depth spans: sample count");
-        samples_ = std::max(samples_, int(samples));
+        samples_ = std::max(samples_, gl::Framebuffer::samplesOf(target_.pass().framebuffer));
     }
     ShaderDefines defines;
     if (packedCentre) defines.push_back({"LIDR_CENTRE_PACKED", "1"});
@@ -120,20 +115,14 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, D
     sampleFbo_.attachDepthStencil(targets.multisampleDepthStencil(), targets.multisampleSeparateStencil());
     sampleFbo_.requireComplete("a multisample R32F texture with the MSAA depth-stencil (--msaa-spans samples)",
                                info.renderer);
-    StateCache::current().bindFramebuffer(sampleFbo_.id());
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    StateCache::current().bindFramebuffer(0);
-    checkGl("MSAA sample distances: sample count");
-    samples_ = std::max(samples_, int(samples));
+    samples_ = std::max(samples_, sampleFbo_.samples());
     program_ = gl::Program::create("depth-span-samples", buildShaderSource("geometry.vert"),
                                    buildShaderSource("depth_span.frag", {{"LIDR_SAMPLE_DISTANCES", "1"}}),
                                    geometryAttributes());
     centreProgram_ = gl::Program::create("depth-span-centre", buildShaderSource("fullscreen.vert"),
                                          perSampleGlsl150(buildShaderSource("depth_span_centre.frag"), false),
                                          {{"aPosition", gl::kPosition}});
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    triangle_ = FullScreenTriangle::create();
 }
 
 void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, const gl::Texture& centreDepth) const {
@@ -203,7 +192,7 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
         readProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
         readProgram_.set("uFirstSample", first);
         readProgram_.set("uSampleCount", samples_);
-        drawFullScreen();
+        triangle_.draw();
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
         for (int c = 0; c < 4 && first + c < samples_; ++c) {
@@ -219,15 +208,6 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
     checkGl("MSAA sample distances read-back");
 #endif
     return depths;
-}
-
-void DepthSpanPass::drawFullScreen() const {
-    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void DepthSpanPass::writeCentreDepth() const {
@@ -246,7 +226,7 @@ void DepthSpanPass::writeCentreDepth() const {
     sampleDistances_.bind(gl::kUnitDepthSpans);
     centreProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
     centreProgram_.set("uDepthToDistance", depthToDistance_);
-    drawFullScreen();
+    triangle_.draw();
     cache.apply(RenderState{});
     checkGl("MSAA sample distances: the centre's depth");
 }
@@ -272,7 +252,7 @@ void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<f
     sampleDistances_.bind(gl::kUnitDepthSpans);
     rangeProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
     rangeProgram_.set("uDepthToDistance", depthToDistance_);
-    drawFullScreen();
+    triangle_.draw();
     const size_t pixels = size_t(width_) * size_t(height_);
     rangeReadback_.resize(pixels * 2);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

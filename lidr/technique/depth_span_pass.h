@@ -22,6 +22,7 @@
 #include "lidr/gl/gl_info.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/float_targets.h"
+#include "lidr/gl/full_screen_triangle.h"
 #include "lidr/gl/half_float_target.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/gpu_scene.h"
@@ -135,8 +136,7 @@ private:
     mutable gl::Texture rangeTexture_;
     mutable gl::Framebuffer rangeFbo_;
     mutable std::vector<float> rangeReadback_;
-    gl::Buffer triangle_;
-    void drawFullScreen() const;
+    FullScreenTriangle triangle_;
     mutable float momentScale_ = 1.0f;
     mutable glm::vec2 depthToDistance_{1.0f, 0.0f};
     gl::Program program_;

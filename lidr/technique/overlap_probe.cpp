@@ -19,8 +19,7 @@ OverlapProbe::OverlapProbe(const GlInfo&, DepthEmulation depth) {
     meshProgram_ = gl::Program::create("overlap-probe-meshes", buildShaderSource("geometry.vert"),
                                        buildShaderSource("overlap_probe.frag", defines, includes),
                                        geometryAttributes());
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    triangle_ = gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
+    triangle_ = FullScreenTriangle::create();
     for (gl::Object& q : queries_) q = gl::Object(gl::Kind::Query);
     checkGl("OverlapProbe");
 }
@@ -93,9 +92,7 @@ void OverlapProbe::issue(unsigned which, const glm::ivec4* scissor) {
 void OverlapProbe::issue(unsigned which, const Areas& areas) {
     RenderState s = stateFor(nullptr);
     program_.use();
-    glBindBuffer(GL_ARRAY_BUFFER, triangle_.id());
-    glEnableVertexAttribArray(gl::kPosition);
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    triangle_.bind();
     knownZero_ = 0;
     for (int i = 0; i < kThresholds; ++i) {
         if (!(which & (1u << i))) continue;
@@ -113,8 +110,7 @@ void OverlapProbe::issue(unsigned which, const Areas& areas) {
         glEndQuery(GL_SAMPLES_PASSED);
         ++drawCalls_;
     }
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    triangle_.unbind();
     issued_ = which;
     checkGl("OverlapProbe::issue");
 }

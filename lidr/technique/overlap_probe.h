@@ -6,6 +6,7 @@
 #include <array>
 
 #include "lidr/gl/gl_info.h"
+#include "lidr/gl/full_screen_triangle.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/render/depth_prepass.h"
@@ -57,7 +58,7 @@ public:
 private:
     RenderState stateFor(const glm::ivec4* scissor) const;
     gl::Program program_, meshProgram_;
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
     std::array<gl::Object, kThresholds> queries_;
     unsigned issued_ = 0;
     unsigned knownZero_ = 0;  // thresholds issued without a draw: no pixel can exceed them
