@@ -56,12 +56,13 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
         const RenderResult r = renderAndEvaluate(scene, o);
         const FrameEvaluation& e = r.evaluation;
         const long pixels = long(scene.width) * scene.height;
-        // Lights are dropped only where more mark a pixel than the largest budget (16) holds, and the frame counts
-        // those pixels (pixelsOverBudget); needMore: pixels whose samples' surfaces themselves need more than 16.
+        // Lights are dropped only where more mark a pixel than the frame's budget holds, and the frame counts those
+        // pixels (pixelsOverBudget); needMore: pixels whose samples' surfaces themselves need more than 16.
+        const int budget = r.stats.autoDecision.budget;
         long needMore = 0, dropsWithinBudget = 0;
         for (size_t p = 0; p < size_t(pixels); ++p) {
             if (e.spanTruth.count(p) > 16) ++needMore;
-            if (e.marked[p] <= 16) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
+            if (e.marked[p] <= budget) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
         }
         INFO("pixels needing over 16 lights " << needMore << ", drops within the budget " << dropsWithinBudget);
         INFO("edge pixels " << e.edgePixels << " of " << pixels << " (" << e.edgePixelsSeveralSurfaces
@@ -88,13 +89,21 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
         if (name == "hall-1024") {
             // 1,024 lights of 1-4 m: a few edge pixels' surfaces need more than 16 lights together (up to 21 at
             // 192x144; 32 pixels of 2,805 edge pixels by the samples' own points, 20 by the moments' nearest, centre
-            // and farthest), which no budget holds: counted, and the frame says so.
+            // and farthest). Where the lists use 8-bit indices (region-local, at 384 x 288 and up: the regions test)
+            // the automatic budget widens to 32, which holds them. Here they are numbered globally in 16 bits,
+            // where 32 slots would need 16 targets: budget 16, and the pixels over it are counted and reported.
+            REQUIRE(needMore > 0);
             REQUIRE(needMore * 50 < e.edgePixels);
-            REQUIRE(e.pixelsOverBudget * 50 < e.edgePixels);
-            REQUIRE(e.pixelsOverBudget >= needMore);
-            return;
+            if (r.stats.autoDecision.indexBits == 16) {  // too small a frame for regions, or no tiles (moments)
+                REQUIRE(budget == 16);
+                REQUIRE(e.pixelsOverBudget * 50 < e.edgePixels);
+                REQUIRE(e.pixelsOverBudget >= needMore);
+                return;
+            }
+            REQUIRE(budget == 32);
+        } else {
+            REQUIRE(needMore == 0);
         }
-        REQUIRE(needMore == 0);
         REQUIRE(e.spanLists.droppedLightPixels == 0);
         REQUIRE(e.lists.droppedLightPixels == 0);
         REQUIRE(e.pixelsOverBudget == 0);
@@ -220,10 +229,14 @@ TEST_CASE("tiled forward under MSAA bounds its tiles by every sample's surface",
     REQUIRE(msaa < flat);
 }
 
-TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices, the same lists and image as 16-bit global ones",
+TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices hold every list (budget 32), 16-bit global "
+          "ones all within budget 16",
           "[msaa][regions][every-gl]") {
     // hall-1024 at 384 x 288: about 700 lights reach the view. With the samples' distances the volumes are culled
-    // by tiles, and those tiles number the lights per screen region as without MSAA (half the index targets).
+    // by tiles, and those tiles number the lights per screen region as without MSAA (one byte a slot, not two).
+    // A few edge pixels need more than 16 lights: the regional frame widens to budget 32 (8 targets of 8-bit
+    // slots) and drops nothing; the global one cannot (32 slots of 16 bits would need 16 targets), so it packs 16
+    // and reports those pixels.
     if (!contextHasMsaa(4)) return;
     if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
         WARN("skipped: the moments (GL 2.1) draw volume meshes: no tiles, no regions");
@@ -249,10 +262,16 @@ TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices, the sam
     REQUIRE(regional.stats.autoDecision.indexRegions > 0);
     CHECK(regional.stats.autoDecision.indexBits == 8);
     CHECK(global.stats.autoDecision.indexBits == 16);
-    CHECK(regional.indexTargets.size() * 2 == global.indexTargets.size());
+    const int budget = regional.stats.autoDecision.budget, globalBudget = global.stats.autoDecision.budget;
+    CHECK(budget == 32);
+    CHECK(globalBudget == 16);
+    CHECK(regional.indexTargets.size() * 2 * size_t(globalBudget) == global.indexTargets.size() * size_t(budget));
     CHECK(e.spanLists.invalidSlots == 0);
     CHECK(dropsWithinBudget == 0);
+    CHECK(e.spanLists.droppedLightPixels == 0);
+    CHECK(e.pixelsOverBudget == 0);
+    CHECK(e.error.psnr >= 50.0);
+    CHECK(global.evaluation.pixelsOverBudget > 0);
     CHECK(regional.stats.drawnLights == global.stats.drawnLights);
-    CHECK(regional.lidr.pixels == global.lidr.pixels);
     REQUIRE(glGetError() == GL_NO_ERROR);
 }

@@ -418,8 +418,17 @@ TEST_CASE("configurations: targets, passes, memory per pixel, and refusal of wha
     CHECK(CpuSortedScheme({PackingSchemeKind::CpuSorted, 16, 16}, full).targetCount() == 8);
 
     for (PackingSchemeKind scheme : packingSchemes()) {
-        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 3, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
-        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 32, 8}, full), Catch::Contains("1, 2, 4, 8 or 16"));
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 3, 8}, full), Catch::Contains("1, 2, 4, 8, 16 or 32"));
+        if (scheme == PackingSchemeKind::BitShift) {
+            // Budget 32: bit-shift's four rank windows, 4- and 8-bit indices only (16 bits would need 16 targets).
+            REQUIRE(createPackingScheme({scheme, 32, 8}, full)->targetCount() == 8);
+            REQUIRE(createPackingScheme({scheme, 32, 8}, full)->geometryPasses() == 4);
+            REQUIRE(createPackingScheme({scheme, 32, 4}, full)->targetCount() == 4);
+            REQUIRE_THROWS_WITH(createPackingScheme({scheme, 32, 16}, full), Catch::Contains("16 index targets"));
+        } else {
+            REQUIRE_THROWS_WITH(createPackingScheme({scheme, 32, 8}, full), Catch::Contains("budget 32 is bit-shift"));
+        }
+        REQUIRE_THROWS_WITH(createPackingScheme({scheme, 64, 8}, full), Catch::Contains("1, 2, 4, 8, 16 or 32"));
         REQUIRE_THROWS_WITH(createPackingScheme({scheme, 4, 12}, full), Catch::Contains("4, 8 or 16"));
         GlInfo fewAttachments = full;
         fewAttachments.maxColorAttachments = 4;

@@ -428,3 +428,22 @@ TEST_CASE("shader unpack: a million seeded random lists per deep configuration, 
                     "1,048,576 random lists, lengths 0..budget+4");
     }
 }
+
+TEST_CASE("shader unpack: bit-shift budget 32 (four rank windows, the automatic budget's widest) at 4- and 8-bit "
+          "indices: every index in every slot, random lists up to 36 lights", "[unpack][gpu][every-gl]") {
+    const ConfigCase c = GENERATE(from_range(packingCasesFor({{4, 32}, {8, 32}}, {PackingSchemeKind::BitShift})));
+    DYNAMIC_SECTION(c.name) {
+        std::unique_ptr<PackingScheme> scheme;
+        try {
+            scheme = createPackingScheme(c.packing, testGl());
+        } catch (const UnsupportedError& e) {  // OpenGL ES 2.0 without enough draw buffers
+            WARN("skipped: " << e.what());
+            return;
+        }
+        REQUIRE(scheme->geometryPasses() == 4);
+        runAndCheck(*scheme, VolumeTest::BackFace, everyIndexInEverySlotThinned(*scheme), "every index in every slot");
+        // Lists past 16 read the third and fourth windows; past 32 they overflow (kept: the first 32 drawn).
+        runAndCheck(*scheme, VolumeTest::BackFace, randomLists(*scheme, isSoftpipe() ? 300 : 4000, 36, 32u + uint32_t(c.packing.indexBits)),
+                    "random lists, lengths 0..36");
+    }
+}

@@ -142,6 +142,7 @@ void RenderTargets::bindColor() const { StateCache::current().beginPass(colorPas
 void RenderTargets::bindSingleSample() const { StateCache::current().beginPass(singleSamplePass()); }
 
 void resolveColor(const gl::Framebuffer& from, const gl::Framebuffer& to, int width, int height, const char* what) {
+    StateCache::current().apply(RenderState{});  // a blit is scissored (and colour-masked) like a draw
     glBindFramebuffer(GL_READ_FRAMEBUFFER, from.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to.id());
     readFromColorAttachment0();

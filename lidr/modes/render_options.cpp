@@ -93,8 +93,9 @@ void addLidrRows(std::vector<RenderOption>& o) {
                      " (bitshift: CONSTANT_COLOR bit shifting; max-stencil: MAX blend + stencil rank windows; "
                      "cpu-sorted: CPU overlap sorting into colour-masked groups; see doc/packing.md)",
                  kLidr});
-    o.push_back({"budget", T::Choice, {"auto", "1", "2", "4", "8", "16"}, 0, 0, "auto",
-                 "Light slots per pixel: auto (measured per frame; bitshift) or 1, 2, 4, 8, 16 (with a named scheme)",
+    o.push_back({"budget", T::Choice, {"auto", "1", "2", "4", "8", "16", "32"}, 0, 0, "auto",
+                 "Light slots per pixel: auto (measured per frame; bitshift, up to 32) or 1, 2, 4, 8, 16 (with a named "
+                 "scheme), 32 (bitshift at 4- or 8-bit indices)",
                  kLidr});
     o.push_back({"index-bits", T::Choice, {"auto", "4", "8", "16"}, 0, 0, "auto",
                  "Light index width: auto (the narrowest for the visible lights) or 4, 8, 16 (with a named scheme)",

@@ -8,11 +8,21 @@ namespace lidr {
 
 AutoConfiguration::AutoConfiguration(int maxBudget, int holdFrames, int narrowingInterval)
     : maxBudget_(maxBudget), holdFrames_(holdFrames), narrowingInterval_(narrowingInterval) {
-    if (maxBudget < 1 || maxBudget > 16 || (maxBudget & (maxBudget - 1)) != 0)
-        throw Error("automatic budget: the largest budget must be 1, 2, 4, 8 or 16, got " + std::to_string(maxBudget));
+    checkMaxBudget(maxBudget);
     if (holdFrames < 0) throw Error("automatic configuration: hold frames must be >= 0");
     if (narrowingInterval < 1) throw Error("automatic configuration: the narrowing interval must be >= 1 frame");
     budget_ = std::min(kInitialBudget, maxBudget_);
+}
+
+void AutoConfiguration::checkMaxBudget(int maxBudget) {
+    if (maxBudget < 1 || maxBudget > 32 || (maxBudget & (maxBudget - 1)) != 0)
+        throw Error("automatic budget: the largest budget must be 1, 2, 4, 8, 16 or 32, got " + std::to_string(maxBudget));
+}
+
+void AutoConfiguration::setMaxBudget(int maxBudget) {
+    checkMaxBudget(maxBudget);
+    maxBudget_ = maxBudget;
+    budget_ = std::min(budget_, maxBudget_);
 }
 
 int AutoConfiguration::indexBitsFor(int visibleLights) {

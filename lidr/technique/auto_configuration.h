@@ -2,7 +2,7 @@
 // The automatic configuration of LIDR (doc/auto.md): what each frame needs, decided from what it holds.
 // - Index width: the narrowest (4, 8 or 16 bits) that holds the frame's visible lights, which are numbered
 //   compactly in draw order (the light table holds only them).
-// - Budget: the smallest of 1, 2, 4, 8, 16 that drops nothing, measured on the GPU after the volume pass
+// - Budget: the smallest of 1, 2, 4, 8, 16, 32 (at most maxBudget) that drops nothing, measured on the GPU after the volume pass
 //   (OverlapProbe). A frame that needs more than it was packed with is packed again at once, the same frame.
 // Both widen at once and narrow only after `holdFrames` frames in a row that would all fit the narrower
 // choice, so a camera moving through the scene does not flip them every frame. The first measurement is
@@ -39,6 +39,11 @@ public:
     // 0 when the frame stands as packed.
     int observeNeed(int need, bool narrowingAsked = true);
     int maxBudget() const { return maxBudget_; }
+    // The largest budget this frame may take (its index width decides how many targets a budget needs: 32 fits
+    // 4- and 8-bit indices, 16 the 16-bit ones); a budget above it is lowered to it now. Throws lidr::Error for a
+    // value other than 1, 2, 4, 8, 16 or 32.
+    void setMaxBudget(int maxBudget);
+    static void checkMaxBudget(int maxBudget);
     bool measured() const { return measured_; }  // a first measurement was taken
     int holdFrames() const { return holdFrames_; }
     int narrowingInterval() const { return narrowingInterval_; }

@@ -22,8 +22,12 @@ BitShiftScheme::BitShiftScheme(const PackingConfig& config, const GlInfo& info)
 }
 
 std::string BitShiftScheme::stencilUse() const {
-    return windows_ > 1 ? "rank windows 0-7 and 8-15 (restarted count) + light count"
-                        : "rank window 0-" + std::to_string(windowSlots_ - 1) + " + light count";
+    if (windows_ == 1) return "rank window 0-" + std::to_string(windowSlots_ - 1) + " + light count";
+    std::string s = "rank windows";
+    for (int w = 0; w < windows_; ++w)
+        s += (w == 0 ? " " : w + 1 == windows_ ? " and " : ", ") + std::to_string(w * windowSlots_) + "-" +
+             std::to_string((w + 1) * windowSlots_ - 1);
+    return s + " (restarted count) + light count";
 }
 
 IndexColors BitShiftScheme::colorsFor(uint32_t index) const {

@@ -10,6 +10,7 @@
 // lights (in draw order, i.e. highest priority) write, and counts every light, so drops are known. Budget 16
 // needs two windows of 8 (ranks 0..7, then 8..15 after a stencil restart) in two passes of the light volumes,
 // each into its own set of targets: the paper's "use the stencil buffer when 8 overlaps have been reached".
+// Budget 32 (the automatic budget's widest, 4- and 8-bit indices: 4 or 8 targets) takes four windows the same way.
 #include "lidr/technique/packing_scheme.h"
 
 namespace lidr {

@@ -313,6 +313,14 @@ void LidrRenderer::loadPlan(const std::vector<PointLight>& lights, const std::ve
 
 void LidrRenderer::selectPacking() {
     const PackingConfig& fixed = options_.packing;
+    if (fixed.autoBudget()) {
+        // The frame's index width decides the widest budget: 32 (8 targets) holds 4- and 8-bit indices only.
+        const int largest = largestAutoBudget_[plan_.indexBits == 4 ? 0 : plan_.indexBits == 8 ? 1 : 2];
+        if (largest > 0) {
+            auto_.setMaxBudget(largest);
+            autoTransparent_.setMaxBudget(largest);
+        }
+    }
     selectVariant(fixed.autoBudget() ? auto_.budget() : fixed.budget, plan_.indexBits);
     selectTransparentVariant(fixed.autoBudget() ? autoTransparent_.budget() : fixed.budget, plan_.indexBits);
 }

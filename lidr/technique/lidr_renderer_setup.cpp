@@ -120,10 +120,10 @@ PackingConfig checkedPacking(const GlInfo& info, const Scene& scene, const LidrO
     return c;
 }
 
-// The largest budget an automatic configuration may use: 16 where the context can bind its targets at the
-// widest index the frame may need.
+// The largest budget an automatic configuration may use at an index width: 32 where the context can bind its
+// targets (4- and 8-bit indices, bit-shift), 16 at 16 bits.
 int largestBudget(const GlInfo& info, const PackingConfig& c, int widestBits) {
-    for (int b : {16, 8, 4, 2, 1}) {
+    for (int b : {32, 16, 8, 4, 2, 1}) {
         try {
             createPackingScheme({c.scheme, b, widestBits}, info);
             return b;
@@ -182,6 +182,11 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         const int widest = options_.packing.autoIndexBits()
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
                                : first.indexBits;
+        // Per width up to the widest (a frame's width, and so its largest budget, is chosen per frame).
+        for (size_t i = 0; i < largestAutoBudget_.size(); ++i) {
+            const int bits = 4 << i;
+            largestAutoBudget_[i] = bits <= widest ? largestBudget(info, first, bits) : 0;
+        }
         auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames,
                                   options_.autoNarrowingInterval);
         autoTransparent_ = auto_;

@@ -111,6 +111,8 @@ void OverlapProbe::issue(unsigned which, const Areas& areas) {
         ++drawCalls_;
     }
     triangle_.unbind();
+    // The default state again (scissor off): a blit after it, such as the MSAA resolve, is scissored too.
+    StateCache::current().apply(RenderState{});
     issued_ = which;
     checkGl("OverlapProbe::issue");
 }

@@ -17,8 +17,8 @@ namespace lidr {
 
 class OverlapProbe {
 public:
-    static constexpr int kThresholds = 5;
-    static constexpr std::array<int, kThresholds> kThreshold = {1, 2, 4, 8, 16};  // the budgets lidr has
+    static constexpr int kThresholds = 6;
+    static constexpr std::array<int, kThresholds> kThreshold = {1, 2, 4, 8, 16, 32};  // the budgets lidr has
 
     OverlapProbe() = default;
     // depth: the depth precision the probe over transparent meshes emulates (LidrOptions::emulatedDepthBits).
@@ -47,7 +47,7 @@ public:
     // Pixels whose count exceeds kThreshold[i] for the thresholds last issued, -1 for the others; waits for the GPU.
     std::array<long, kThresholds> pixelsAbove() const;
     // From counts where -1 means "not measured": the smallest measured threshold no pixel exceeds (the frame
-    // needs at most that budget); 0 when the largest, 16, is exceeded; -1 when every measured threshold is
+    // needs at most that budget); 0 when the largest, 32, is exceeded; -1 when every measured threshold is
     // exceeded but larger ones were not measured.
     static int smallestBudget(const std::array<long, kThresholds>& above);
     // The thresholds a later measurement `more` took (not -1) written over `into`'s (an overflowing frame's

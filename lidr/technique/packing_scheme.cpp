@@ -89,8 +89,12 @@ void checkPackingConfig(const PackingConfig& c) {
     const std::string scheme = packingSchemeName(c.scheme);
     if (w != 4 && w != 8 && w != 16)
         throw UnsupportedError(scheme + ": index width must be 4, 8 or 16 bits, got " + std::to_string(w));
-    if (b != 1 && b != 2 && b != 4 && b != 8 && b != 16)
-        throw UnsupportedError(scheme + ": budget must be 1, 2, 4, 8 or 16 lights per pixel, got " + std::to_string(b));
+    if (b == 32 && c.scheme != PackingSchemeKind::BitShift)
+        throw UnsupportedError(scheme + ": budget 32 is bit-shift packing's only (four rank windows); " + scheme +
+                               " takes 1, 2, 4, 8 or 16 lights per pixel");
+    if (b != 1 && b != 2 && b != 4 && b != 8 && b != 16 && b != 32)
+        throw UnsupportedError(scheme + ": budget must be 1, 2, 4, 8, 16 or 32 (bitshift) lights per pixel, got " +
+                               std::to_string(b));
 }
 
 void checkContextFor(const std::string& what, const GlInfo& info, int targets, int drawTargets) {

@@ -122,7 +122,7 @@ protected:
 // no kAuto): LidrRenderer resolves those per frame.
 std::unique_ptr<PackingScheme> createPackingScheme(const PackingConfig& config, const GlInfo& info);
 
-// Common checks: budget in {1,2,4,8,16}, width in {4,8,16}; and that the context can bind `targets` index
+// Common checks: budget in {1,2,4,8,16} (and 32 for bit-shift), width in {4,8,16}; and that the context can bind `targets` index
 // textures (colour attachments, texture units next to the light table) and draw `drawTargets` at once.
 void checkPackingConfig(const PackingConfig& config);
 void checkContextFor(const std::string& what, const GlInfo& info, int targets, int drawTargets);

@@ -1,12 +1,13 @@
 // Unpack for the CONSTANT_COLOR bit-shift scheme (lidr/technique/bitshift_scheme.h). A window of LIDR_WINDOW_TARGETS
 // targets holds LIDR_WINDOW_SLOTS lights; in it, channel c holds bits [c*k, c*k + k) of each index, the most
-// recently drawn light's group on top. Budget 16 has two windows (ranks 0-7, then 8-15), read in turn.
+// recently drawn light's group on top. Budget 16 has two windows (ranks 0-7, then 8-15), read in turn; budget 32
+// (4- and 8-bit indices) four, the third and fourth read only by a pixel whose list runs past 16.
 // Bytes are rebuilt exactly by lidrBytes() (any read within +-0.45 step, fp16 and up); after that every value
 // is an integer below 256, and so are the index's two bytes: the channel groups are weighted into the low byte
 // (LIDR_WEIGHTS_LOWt, groups below bit 8) and the high byte (LIDR_WEIGHTS_HIGHt, groups from bit 8, weight / 256)
 // separately, so every width is exact in fp16 too (an index above 2048 never exists as one fp16 value).
 // No integer or bit operations: GLSL 1.20.
-//   LIDR_SLOTS, LIDR_INDEX_TARGETS, LIDR_WINDOWS (1 or 2), LIDR_WINDOW_TARGETS (1, 2, 4), LIDR_WINDOW_SLOTS
+//   LIDR_SLOTS, LIDR_INDEX_TARGETS, LIDR_WINDOWS (1, 2 or 4), LIDR_WINDOW_TARGETS (1, 2, 4), LIDR_WINDOW_SLOTS
 //   LIDR_GROUP_SCALE   2^(8-k): dividing by it takes the top k bits
 //   LIDR_GROUP_VALUES  2^k: multiplying by it shifts the remaining bits up by k
 //   LIDR_WEIGHTS_LOWt  weights 2^(c*k) of target t's channels c = 4t..4t+3 in a window whose group lies below
@@ -18,8 +19,30 @@
 vec4 lidrP0, lidrP1, lidrP2, lidrP3;  // the current window's bytes not yet unpacked, as integers
 vec4 lidrQ0, lidrQ1, lidrQ2, lidrQ3;  // the second window's
 float lidrLeft;                       // slots left in the current window
+#if LIDR_WINDOWS > 2
+vec2 lidrUv;         // the index texel, for the third and fourth windows
+float lidrWindow;    // the current window, 0-based
+
+// Budget 32: windows 2 and 3 into P and Q, read once a list runs past window 1 (few pixels ever do). The
+// coordinate was computed for every fragment at the start, so the fetch in this branch is well defined.
+void lidrFetchLastWindows() {
+#if LIDR_WINDOW_TARGETS == 1
+    lidrP0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex2, lidrUv));
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex3, lidrUv));
+#else
+    lidrP0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex4, lidrUv));
+    lidrP1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex5, lidrUv));
+    lidrQ0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex6, lidrUv));
+    lidrQ1 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex7, lidrUv));
+#endif
+}
+#endif
 
 void lidrUnpackBegin(vec2 uv) {
+#if LIDR_WINDOWS > 2
+    lidrUv = uv;
+    lidrWindow = 0.0;
+#endif
     lidrP1 = lidrP2 = lidrP3 = lidrQ0 = lidrQ1 = lidrQ2 = lidrQ3 = vec4(0.0);
     lidrP0 = lidrBytes(LIDR_FETCH_INDEX(uIndexTex0, uv));
 #if LIDR_WINDOW_TARGETS == 1 && LIDR_WINDOWS > 1
@@ -62,10 +85,18 @@ vec2 lidrHalves(inout vec4 bytes, vec4 low, vec4 high) {
 vec2 lidrUnpackNext() {
 #if LIDR_WINDOWS > 1
     if (lidrLeft < 0.5) {
-        lidrP0 = lidrQ0;
-        lidrP1 = lidrQ1;
-        lidrP2 = lidrQ2;
-        lidrP3 = lidrQ3;
+#if LIDR_WINDOWS > 2
+        lidrWindow += 1.0;
+        if (lidrWindow > 1.5 && lidrWindow < 2.5) {
+            lidrFetchLastWindows();
+        } else
+#endif
+        {
+            lidrP0 = lidrQ0;
+            lidrP1 = lidrQ1;
+            lidrP2 = lidrQ2;
+            lidrP3 = lidrQ3;
+        }
         lidrLeft = LIDR_WINDOW_SLOTS;
     }
 #endif
