@@ -231,28 +231,81 @@ void DepthSpanPass::writeCentreDepth() const {
     checkGl("MSAA sample distances: the centre's depth");
 }
 
+void DepthSpanPass::createRangeTarget() const {
+    if (rangeTexture_) return;
+    rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
+    rangeFbo_ = gl::Framebuffer::create();
+    rangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
+    rangeFbo_.checkComplete("MSAA depth ranges (RG32F)");
+}
+
+gl::Program DepthSpanPass::rangeProgram(bool centreDepth) const {
+    ShaderDefines defines = {{"LIDR_SPAN_SAMPLES", std::to_string(samples_)}};
+    if (centreDepth) defines.push_back({"LIDR_WRITE_CENTRE_DEPTH", "1"});
+    return gl::Program::create(centreDepth ? "depth-span-centre-range" : "depth-span-range",
+                               buildShaderSource("fullscreen.vert"),
+                               perSampleGlsl150(buildShaderSource("depth_span_range.frag", defines), false),
+                               {{"aPosition", gl::kPosition}});
+}
+
+void DepthSpanPass::drawRanges(const gl::Program& program) const {
+    program.use();
+    sampleDistances_.bind(gl::kUnitDepthSpans);
+    program.set("uSampleDistances", gl::kUnitDepthSpans);
+    program.set("uDepthToDistance", depthToDistance_);
+    triangle_.draw();
+}
+
+void DepthSpanPass::writeCentreDepthAndRanges(const gl::Renderbuffer& depthStencil,
+                                             const gl::Renderbuffer* separateStencil) const {
+    if (!sampleDistances_) throw Error("writeCentreDepthAndRanges: the spans are not stored per sample");
+#ifndef __EMSCRIPTEN__
+    if (!centreRangeProgram_) {
+        createRangeTarget();
+        centreRangeProgram_ = rangeProgram(true);
+        centreRangeFbo_ = gl::Framebuffer::create();
+        centreRangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
+        centreRangeFbo_.attachDepthStencil(depthStencil, separateStencil);
+        centreRangeFbo_.checkComplete("MSAA depth ranges (RG32F) with the single-sample depth-stencil");
+    }
+    // (1, 1) where no sample has a surface; the depth and stencil cleared as writeCentreDepth clears them.
+    ClearAction clear;
+    clear.color = clear.depth = clear.stencil = true;
+    clear.colorValue = glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
+    StateCache& cache = StateCache::current();
+    cache.beginPass({centreRangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
+    RenderState s;
+    s.depthTest = true;
+    s.depthFunc = GL_ALWAYS;
+    s.depthWrite = true;
+    cache.apply(s);
+    drawRanges(centreRangeProgram_);
+    cache.apply(RenderState{});
+    cache.bindFramebuffer(0);
+    rangesWritten_ = true;
+    checkGl("MSAA sample distances: the centre's depth and the depth ranges");
+#else
+    (void)depthStencil;
+    (void)separateStencil;
+#endif
+}
+
 void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const {
     if (!sampleDistances_) throw Error("readDepthRanges: the spans are not stored per sample");
 #ifndef __EMSCRIPTEN__
-    if (!rangeProgram_) {
-        rangeProgram_ = gl::Program::create("depth-span-range", buildShaderSource("fullscreen.vert"),
-                                            perSampleGlsl150(buildShaderSource("depth_span_range.frag",
-                                                                               {{"LIDR_SPAN_SAMPLES", std::to_string(samples_)}}),
-                                                             false),
-                                            {{"aPosition", gl::kPosition}});
-        rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
-        rangeFbo_ = gl::Framebuffer::create();
-        rangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
-        rangeFbo_.checkComplete("MSAA depth ranges (RG32F)");
-    }
     StateCache& cache = StateCache::current();
-    cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
-    cache.apply(RenderState{});
-    rangeProgram_.use();
-    sampleDistances_.bind(gl::kUnitDepthSpans);
-    rangeProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
-    rangeProgram_.set("uDepthToDistance", depthToDistance_);
-    triangle_.draw();
+    if (!rangesWritten_) {
+        if (!rangeProgram_) {
+            createRangeTarget();
+            rangeProgram_ = rangeProgram(false);
+        }
+        cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
+        cache.apply(RenderState{});
+        drawRanges(rangeProgram_);
+    } else {
+        cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
+    }
+    rangesWritten_ = false;
     const size_t pixels = size_t(width_) * size_t(height_);
     rangeReadback_.resize(pixels * 2);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

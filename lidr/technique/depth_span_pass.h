@@ -76,6 +76,10 @@ public:
     // (cleared first, stencil too), the centre the sphere tests read: one full-screen pass in place of the
     // single-sample depth pre-pass.
     void writeCentreDepth() const;
+    // The same, into `depthStencil` (the targets' single-sample depth-stencil, RenderTargets::depthStencil()), and in
+    // the same pass each pixel's depth range for readDepthRanges (tile-culled frames: one full-screen pass over the
+    // samples, not two). Leaves framebuffer 0 bound.
+    void writeCentreDepthAndRanges(const gl::Renderbuffer& depthStencil, const gl::Renderbuffer* separateStencil) const;
     // Tile-culled volumes under MSAA (sample distances, after run()): per pixel, rows bottom to top as glReadPixels
     // gives them, the nearest and farthest window depth of its samples' points (the centre's is sample 0's),
     // widened as the volume shader widens them; 1 in both where the pixel has none (VolumeTiles::buildRanges).
@@ -124,6 +128,9 @@ public:
 
 private:
     void readSides(std::vector<Span>& spans, const ImageFloat& centre) const;
+    void createRangeTarget() const;
+    gl::Program rangeProgram(bool centreDepth) const;
+    void drawRanges(const gl::Program& program) const;
 
     int width_ = 0, height_ = 0, samples_ = 0;
     HalfFloatTarget target_;  // without side moments
@@ -133,6 +140,9 @@ private:
     mutable gl::Program readProgram_;  // readSampleDepths: four samples a draw into an RGBA32F texture
     gl::Program centreProgram_;         // writeCentreDepth
     mutable gl::Program rangeProgram_;  // readDepthRanges: into an RG32F texture, read back every tile frame
+    mutable gl::Program centreRangeProgram_;  // writeCentreDepthAndRanges
+    mutable gl::Framebuffer centreRangeFbo_;  // the range texture with the single-sample depth-stencil
+    mutable bool rangesWritten_ = false;      // writeCentreDepthAndRanges ran since the last readDepthRanges
     mutable gl::Texture rangeTexture_;
     mutable gl::Framebuffer rangeFbo_;
     mutable std::vector<float> rangeReadback_;

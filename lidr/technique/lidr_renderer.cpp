@@ -145,8 +145,9 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     const bool volumeShadows = useVolumeShadows(shadowTiles, shading);
     // 1. depth-prepass, and the tile decision: whether the light volumes are culled by its depth per tile
     //    (volume-tiles).
-    depthPrepass(cam);
-    const TileDecision::Choice tiles = cullByTiles(cam, lights);
+    const TileDecision::Choice tiles = decideTiles(cam, lights);
+    depthPrepass(cam, tiles.tiles);
+    cullByTiles(cam, tiles);
     // 2. The frame plan (the light-table pass): which lights get an index, their numbers, regions and index width;
     //    the light table and the packing follow it.
     TimedPass lightTableTime(frame_.timer, kFramePlan.name);
@@ -189,7 +190,7 @@ bool LidrRenderer::useVolumeShadows(const std::vector<int>& shadowTiles, const S
     return on;
 }
 
-void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
+void LidrRenderer::depthPrepass(const CameraMatrices& cam, bool tiles) {
     // The pre-pass the volume tests compare against: the MSAA one on the per-sample path.
     if (options_.perSampleIndices)
         frame_.targets.bindColor();
@@ -209,7 +210,12 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam) {
         depthSpansTime.end();
         frame_.targets.bindSingleSample();
         TimedPass depthTime(frame_.timer, kDepthPrepass.name);
-        depthSpans_.writeCentreDepth();
+        if (tiles) {  // the tiles' depth ranges in the same pass (readDepthRanges reads them)
+            depthSpans_.writeCentreDepthAndRanges(frame_.targets.depthStencil(), frame_.targets.separateStencil());
+            frame_.targets.bindSingleSample();
+        } else {
+            depthSpans_.writeCentreDepth();
+        }
         copyPrepassDepth(cam);
         return;
     }
@@ -240,10 +246,12 @@ void LidrRenderer::copyPrepassDepth(const CameraMatrices& cam) {
     }
 }
 
-TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) {
-    if (!options_.depthPrepass) return {};  // no depth to cull by: volume meshes
-    const TileDecision::Choice choice =
-        volumeTiles_ ? tileDecision_.decide(lightRectArea(cam, lights), screenPixels()) : TileDecision::Choice{};
+TileDecision::Choice LidrRenderer::decideTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) const {
+    if (!options_.depthPrepass || !volumeTiles_) return {};  // no depth to cull by: volume meshes
+    return tileDecision_.decide(lightRectArea(cam, lights), screenPixels());
+}
+
+void LidrRenderer::cullByTiles(const CameraMatrices& cam, const TileDecision::Choice& choice) {
     if (choice.tiles) {
         TimedPass volumeTilesTime(frame_.timer, kVolumeTiles.name);
         if (depthSpans_.storesSamples()) {
@@ -258,7 +266,6 @@ TileDecision::Choice LidrRenderer::cullByTiles(const CameraMatrices& cam, const 
     } else {
         volumePass_.setTiles(nullptr, cam);
     }
-    return choice;
 }
 
 FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool tiles,

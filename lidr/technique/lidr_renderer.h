@@ -155,13 +155,15 @@ private:
     // 0. After the shadow maps: whether the main sphere test discards what they shadow (the paper's first way,
     // ShadowLookup::VolumePass); sets the volume pass's shadows.
     bool useVolumeShadows(const std::vector<int>& shadowTiles, const ShadingParameters& shading);
+    // 1a. The tile decision (TileDecision): whether this frame's volumes are culled by the pre-pass depth per tile.
+    TileDecision::Choice decideTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights) const;
     // 1. The depth pre-pass (and the depth copy the shader volume tests read), or a depth clear without one; with
-    // sphere-span, the MSAA pre-pass too (with the samples' distances first, the single-sample depth from it).
-    void depthPrepass(const CameraMatrices& cam);
+    // sphere-span, the MSAA pre-pass too (with the samples' distances first, the single-sample depth from it, and
+    // with `tiles` each pixel's depth range in the same full-screen pass).
+    void depthPrepass(const CameraMatrices& cam, bool tiles);
     void copyPrepassDepth(const CameraMatrices& cam);  // the depth copy (OpenGL ES: the pre-pass drawn again into it)
-    // 1b. The tile decision (TileDecision) and, where it takes tiles, the pre-pass depth read back per tile and
-    // given to the volume pass.
-    TileDecision::Choice cullByTiles(const CameraMatrices& cam, const std::vector<PointLight>& lights);
+    // 1b. Where the decision takes tiles, the pre-pass depth read back per tile and given to the volume pass.
+    void cullByTiles(const CameraMatrices& cam, const TileDecision::Choice& choice);
     // 2. The frame plan (frame_plan.h) from this renderer's options, meshes and tiles; then its regions to the volume
     // pass and its lights into the light table, and the packing variants for its index width.
     FramePlan plan(const CameraMatrices& cam, const std::vector<PointLight>& lights, bool tiles,

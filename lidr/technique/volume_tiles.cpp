@@ -2,6 +2,7 @@
 #include "lidr/base/gl.h"
 
 #include <algorithm>
+#include <thread>
 #include <cmath>
 #include <string>
 
@@ -55,17 +56,33 @@ void VolumeTiles::buildRanges(const std::vector<float>& nearDepth, const std::ve
     slices_.assign(tiles, 0u);
     sliceSpan_.assign(tiles, 0);
     margin += kDepthSlack;
-    rangeTiles(nearDepth, farDepth, margin);
-    markSlices(nearDepth, farDepth, margin);
-    measureSlices();
+    sliceDistances_.resize(tiles * size_t(kSlices));
+    // The CPU side of every tile-culled frame, run while the GPU waits for its result: the lower half of the tile
+    // rows on a second thread.
+    const int half = tilesY_ / 2;
+    if (half < 2) {
+        buildRows(nearDepth, farDepth, margin, 0, tilesY_);
+        return;
+    }
+    std::thread lower([&] { buildRows(nearDepth, farDepth, margin, 0, half); });
+    buildRows(nearDepth, farDepth, margin, half, tilesY_);
+    lower.join();
 }
 
-void VolumeTiles::rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin) {
+void VolumeTiles::buildRows(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin,
+                            int firstRow, int endRow) {
+    rangeTiles(nearDepth, farDepth, margin, firstRow, endRow);
+    markSlices(nearDepth, farDepth, margin, firstRow, endRow);
+    measureSlices(firstRow, endRow);
+}
+
+void VolumeTiles::rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin,
+                             int firstRow, int endRow) {
     // Both passes walk each row a tile's span at a time (no division per pixel) with branch-free inner loops
     // the compiler can vectorise: this is the CPU side of every tile-culled frame (doc/benchmarks.md).
     // Pass 1: each tile's range of surface depths, widened by the margin. Rounding is monotonic, so
     // min(d) - margin is min(d - margin), bit for bit.
-    for (int y = 0; y < height_; ++y) {
+    for (int y = firstRow * tileSize_, yEnd = std::min(endRow * tileSize_, height_); y < yEnd; ++y) {
         const float* nearRow = nearDepth.data() + size_t(y) * size_t(width_);
         const float* farRow = farDepth.data() + size_t(y) * size_t(width_);
         const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
@@ -86,14 +103,15 @@ void VolumeTiles::rangeTiles(const std::vector<float>& nearDepth, const std::vec
     }
 }
 
-void VolumeTiles::markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin) {
-    const size_t tiles = size_t(tileCount());
+void VolumeTiles::markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin,
+                             int firstRow, int endRow) {
     // Pass 2: the slices each pixel's widened depth overlaps. d - margin >= the tile's minimum, so both slice
     // coordinates are >= 0 and truncation is the floor.
-    std::vector<float> scale(tiles, 0.0f);
-    for (size_t t = 0; t < tiles; ++t)
+    const size_t firstTile = size_t(firstRow) * size_t(tilesX_), endTile = size_t(endRow) * size_t(tilesX_);
+    std::vector<float> scale(size_t(tileCount()), 0.0f);
+    for (size_t t = firstTile; t < endTile; ++t)
         if (maxDepth_[t] > minDepth_[t]) scale[t] = float(kSlices) / (maxDepth_[t] - minDepth_[t]);
-    for (int y = 0; y < height_; ++y) {
+    for (int y = firstRow * tileSize_, yEnd = std::min(endRow * tileSize_, height_); y < yEnd; ++y) {
         const float* nearRow = nearDepth.data() + size_t(y) * size_t(width_);
         const float* farRow = farDepth.data() + size_t(y) * size_t(width_);
         const size_t tileRow = size_t(y / tileSize_) * size_t(tilesX_);
@@ -118,13 +136,11 @@ void VolumeTiles::markSlices(const std::vector<float>& nearDepth, const std::vec
     }
 }
 
-void VolumeTiles::measureSlices() {
-    const size_t tiles = size_t(tileCount());
+void VolumeTiles::measureSlices(int firstRow, int endRow) {
     // Pass 3: each occupied slice's distances, widened by a tenth of a slice (rounding in the floors above) and
     // by relative slack, computed once here rather than for every light that reaches the tile.
-    sliceDistances_.resize(tiles * size_t(kSlices));
     auto distance = [&](float d) { return depthToDistance_.x / (d + depthToDistance_.y); };
-    for (size_t t = 0; t < tiles; ++t) {
+    for (size_t t = size_t(firstRow) * size_t(tilesX_), end = size_t(endRow) * size_t(tilesX_); t < end; ++t) {
         const float lo = minDepth_[t], width = (maxDepth_[t] - lo) / float(kSlices);
         for (uint32_t bits = slices_[t]; bits != 0; bits &= bits - 1) {
             const int s = __builtin_ctz(bits);

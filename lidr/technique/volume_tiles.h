@@ -84,11 +84,16 @@ public:
     uint32_t tileSlices(int tile) const { return slices_[size_t(tile)]; }
 
 private:
-    // build()'s three passes over the depth (`margin` with kDepthSlack): each tile's widened depth range, the slices
-    // each pixel overlaps, each occupied slice's distances.
-    void rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin);
-    void markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin);
-    void measureSlices();
+    // build()'s three passes over the depth (`margin` with kDepthSlack), for the tile rows [firstRow, endRow): each
+    // tile's widened depth range, the slices each pixel overlaps, each occupied slice's distances. Bands of tile
+    // rows share nothing, so build() runs two of them at once.
+    void buildRows(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin, int firstRow,
+                   int endRow);
+    void rangeTiles(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin, int firstRow,
+                    int endRow);
+    void markSlices(const std::vector<float>& nearDepth, const std::vector<float>& farDepth, float margin, int firstRow,
+                    int endRow);
+    void measureSlices(int firstRow, int endRow);
 
     int width_ = 0, height_ = 0, tileSize_ = 0, tilesX_ = 0, tilesY_ = 0;
     std::vector<float> minDepth_, maxDepth_;  // per tile; min > max: no surface

@@ -3,6 +3,8 @@
 // farthest window depth of the points its samples shade (the centre's is sample 0's), each widened
 // as the volume shader widens it (1/4096 of its distance), so the tiles hold whatever that test keeps; (1, 1)
 // where the pixel has no surface. LIDR_SPAN_SAMPLES: the sample count. Compiled as GLSL 1.50 (perSampleGlsl150).
+// LIDR_WRITE_CENTRE_DEPTH (DepthSpanPass::writeCentreDepthAndRanges): also sample 0's point as the single-sample
+// depth, as depth_span_centre.frag writes it (the far plane, as cleared, where sample 0 has no surface).
 uniform sampler2DMS uSampleDistances;  // per sample, the view distance of the point it shades (0: none)
 uniform vec2 uDepthToDistance;         // window depth d -> view distance x / (d + y); so d = x / distance - y
 
@@ -19,6 +21,10 @@ void main() {
         nearest = x > 0.0 ? min(nearest, x) : nearest;
         farthest = max(farthest, x);
     }
+#ifdef LIDR_WRITE_CENTRE_DEPTH
+    float centre = texelFetch(uSampleDistances, texel, 0).r;
+    gl_FragDepth = centre > 0.0 ? clamp(uDepthToDistance.x / centre - uDepthToDistance.y, 0.0, 1.0) : 1.0;
+#endif
     gl_FragColor = farthest <= 0.0 ? vec4(1.0, 1.0, 0.0, 1.0)
                                    : vec4(lidrWindowDepth(nearest * (1.0 - 1.0 / 4096.0)),
                                           lidrWindowDepth(farthest * (1.0 + 1.0 / 4096.0)), 0.0, 1.0);
