@@ -293,9 +293,11 @@ void addAutoDecisionLine(std::ostream& s, const LidrRenderer& renderer, const Fr
           << (decision.indexRegions > 0 ? " numbered in " + std::to_string(decision.indexRegions) + " screen regions" : "")
           << ", budget " << decision.budget;
         if (decision.autoBudget)
-            s << " (measured: " << (decision.measuredBudget ? "overlap fits " + std::to_string(decision.measuredBudget)
-                                                            : "overlap above 16, " + std::to_string(decision.overflowPixels) +
-                                                                  " pixels over")
+            // measuredBudget 0: over every budget lidr has (32); one above the frame's budget: its largest at this
+            // index width (16 at 16 bits). Either way the pixels over it are counted.
+            s << " (measured: "
+              << (decision.measuredBudget ? "overlap fits " + std::to_string(decision.measuredBudget) : std::string("overlap above 32"))
+              << (decision.overflowPixels > 0 ? ", " + std::to_string(decision.overflowPixels) + " pixels over" : std::string())
               << ", repacked " << decision.repacks << "x)";
         else if (*decision.budgetFallback)
             s << " (" << decision.budgetFallback << ")";

@@ -187,7 +187,7 @@ void Viewer::uiStats() {
         const PackingConfig& c = lidrRenderer->scheme().config();
         if (d.autoBudget || d.autoIndexBits)
             ImGui::TextWrapped("automatic: budget %d%s, %d-bit indices for %d visible lights, re-packed %d times", c.budget,
-                               d.autoBudget ? (d.measuredBudget ? " (measured)" : " (overlap above 16)") : " (fixed)",
+                               d.autoBudget ? (d.overflowPixels > 0 ? " (overlap above it)" : " (measured)") : " (fixed)",
                                c.indexBits, d.visibleLights, d.repacks);
     }
     if (const auto* autoMode = dynamic_cast<const AutoModeRenderer*>(renderer_.get()))

@@ -60,7 +60,8 @@ struct AutoDecision {
     int visibleLights = 0;   // lights given an index this frame
     int indexRegions = 0;    // screen regions numbering their own lights (LidrOptions::regionalIndices); 0: one numbering
     int measuredBudget = 0;  // the smallest budget that dropped nothing, measured (0: more than 16 overlap)
-    long overflowPixels = 0; // pixels whose overlap exceeded the final budget (nonzero only above 16)
+    long overflowPixels = 0; // pixels whose overlap exceeded the final budget (nonzero only above the largest:
+                             // 32 at 4- and 8-bit indices, 16 at 16-bit)
     int repacks = 0;         // volume passes drawn again this frame with a larger budget
     // The transparent layers' own front-face lists (0: none drawn this frame)
     int transparentBudget = 0, measuredTransparentBudget = 0;

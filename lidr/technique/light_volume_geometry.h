@@ -226,7 +226,7 @@ private:
     // Per tile: at most this many lights mark one of its pixels (the most spheres reaching one run of slices a
     // pixel's depth span may cover, VolumeTiles::candidateWindows).
     std::vector<int> tileCandidates_;
-    std::vector<uint8_t> sliceCounts_;  // per tile and run start, saturating at 255 (a bound above 16 is as good)
+    std::vector<uint8_t> sliceCounts_;  // per tile and run start, saturating at 255 (a bound above 32 is as good)
     int skipTilesUpTo_ = 0;  // the current draw's tiles with at most this many candidates are skipped
     long tileQuadPixels_ = 0;
     long tileStepLights_ = 0;
