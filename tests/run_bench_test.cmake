@@ -116,7 +116,7 @@ run_bench(1 "--volume-tests: --volume-test must be auto, sphere, sphere-span, sp
 run_bench(1 "bad scene name 'hall-0'.*hall-N with N lights" --scenes hall-0 --out ${OUT}/bad)
 # --list names every volume test, the default (sphere) first.
 run_bench(0 "volume tests: +sphere \\(the library's default; sphere-span under MSAA\\), sphere-span, sphere-ray, backface, exact, frontface" --list)
-run_bench(1 "--budgets: --budget must be auto, 1, 2, 4, 8 or 16, got '3'" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
+run_bench(1 "--budgets: --budget must be auto, 1, 2, 4, 8, 16 or 32, got '3'" --scenes overlap-1 --modes lidr --budgets 3 --index-bits 8 --out ${OUT}/bad)
 run_bench(1 "no configuration the library can run:.*frontface" --scenes overlap-1 --modes lidr --budgets 4 --index-bits 8
           --volume-tests backface --msaa 4 --out ${OUT}/bad)
 run_bench(1 "unknown sweep 'nope'.*valid: lights, triangles" --sweep nope --out ${OUT}/bad)

@@ -38,7 +38,7 @@ TEST_CASE("setRenderOption checks type, range and choices, naming the option", "
     setRenderOption(v, "exposure", "-1.5");
     CHECK(v.at("tile-size") == "16");
     CHECK(v.at("half-z") == "on");
-    CHECK_THROWS_WITH(setRenderOption(v, "budget", "3"), "--budget must be auto, 1, 2, 4, 8 or 16, got '3'");
+    CHECK_THROWS_WITH(setRenderOption(v, "budget", "3"), "--budget must be auto, 1, 2, 4, 8, 16 or 32, got '3'");
     CHECK_THROWS_WITH(setRenderOption(v, "cluster-slices", "65"), "--cluster-slices must be 1..64, got 65");
     CHECK_THROWS_WITH(setRenderOption(v, "cluster-tile-size", "x"), "--cluster-tile-size must be a whole number, got 'x'");
     CHECK_THROWS_WITH(setRenderOption(v, "exposure", "nan"), Catch::Contains("--exposure must be a finite number"));
