@@ -119,9 +119,6 @@ DepthSpanPass::DepthSpanPass(const GlInfo& info, const RenderTargets& targets, D
     program_ = gl::Program::create("depth-span-samples", buildShaderSource("geometry.vert"),
                                    buildShaderSource("depth_span.frag", {{"LIDR_SAMPLE_DISTANCES", "1"}}),
                                    geometryAttributes());
-    centreProgram_ = gl::Program::create("depth-span-centre", buildShaderSource("fullscreen.vert"),
-                                         perSampleGlsl150(buildShaderSource("depth_span_centre.frag"), false),
-                                         {{"aPosition", gl::kPosition}});
     triangle_ = FullScreenTriangle::create();
 }
 
@@ -210,102 +207,64 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
     return depths;
 }
 
-void DepthSpanPass::writeCentreDepth() const {
+gl::Program DepthSpanPass::centreProgram(bool ranges) const {
+    ShaderDefines defines = {{"LIDR_SPAN_SAMPLES", std::to_string(samples_)}};
+    if (ranges) defines.push_back({"LIDR_SPAN_RANGES", "1"});
+    return gl::Program::create(ranges ? "depth-span-centre-ranges" : "depth-span-centre",
+                               buildShaderSource("fullscreen.vert"),
+                               perSampleGlsl150(buildShaderSource("depth_span_centre.frag", defines), false),
+                               {{"aPosition", gl::kPosition}});
+}
+
+void DepthSpanPass::writeCentreDepth(const gl::Renderbuffer& depthStencil, const gl::Renderbuffer* separateStencil,
+                                     bool ranges) const {
     if (!sampleDistances_) throw Error("writeCentreDepth: the spans are not stored per sample");
-    StateCache& cache = StateCache::current();
+#ifndef __EMSCRIPTEN__
+    if (!centreFbo_) {
+        // The ranges' RG32F texture with the targets' single-sample depth-stencil: one pass writes both.
+        rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
+        centreFbo_ = gl::Framebuffer::create();
+        centreFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
+        centreFbo_.attachDepthStencil(depthStencil, separateStencil);
+        centreFbo_.checkComplete("MSAA depth ranges (RG32F) with the single-sample depth-stencil");
+    }
+    gl::Program& program = ranges ? centreRangeProgram_ : centreProgram_;
+    if (!program) program = centreProgram(ranges);
+    // (1, 1) in the ranges where no sample has a surface; depth and stencil cleared as a pre-pass clears them.
     ClearAction clear;
+    clear.color = ranges;
     clear.depth = clear.stencil = true;
-    cache.clear(clear);
+    clear.colorValue = glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
+    StateCache& cache = StateCache::current();
+    cache.beginPass({centreFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_ALWAYS;
     s.depthWrite = true;
-    s.colorMask = glm::bvec4(false);
+    s.colorMask = glm::bvec4(ranges);
     cache.apply(s);
-    centreProgram_.use();
-    sampleDistances_.bind(gl::kUnitDepthSpans);
-    centreProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
-    centreProgram_.set("uDepthToDistance", depthToDistance_);
-    triangle_.draw();
-    cache.apply(RenderState{});
-    checkGl("MSAA sample distances: the centre's depth");
-}
-
-void DepthSpanPass::createRangeTarget() const {
-    if (rangeTexture_) return;
-    rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
-    rangeFbo_ = gl::Framebuffer::create();
-    rangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
-    rangeFbo_.checkComplete("MSAA depth ranges (RG32F)");
-}
-
-gl::Program DepthSpanPass::rangeProgram(bool centreDepth) const {
-    ShaderDefines defines = {{"LIDR_SPAN_SAMPLES", std::to_string(samples_)}};
-    if (centreDepth) defines.push_back({"LIDR_WRITE_CENTRE_DEPTH", "1"});
-    return gl::Program::create(centreDepth ? "depth-span-centre-range" : "depth-span-range",
-                               buildShaderSource("fullscreen.vert"),
-                               perSampleGlsl150(buildShaderSource("depth_span_range.frag", defines), false),
-                               {{"aPosition", gl::kPosition}});
-}
-
-void DepthSpanPass::drawRanges(const gl::Program& program) const {
     program.use();
     sampleDistances_.bind(gl::kUnitDepthSpans);
     program.set("uSampleDistances", gl::kUnitDepthSpans);
     program.set("uDepthToDistance", depthToDistance_);
     triangle_.draw();
-}
-
-void DepthSpanPass::writeCentreDepthAndRanges(const gl::Renderbuffer& depthStencil,
-                                             const gl::Renderbuffer* separateStencil) const {
-    if (!sampleDistances_) throw Error("writeCentreDepthAndRanges: the spans are not stored per sample");
-#ifndef __EMSCRIPTEN__
-    if (!centreRangeProgram_) {
-        createRangeTarget();
-        centreRangeProgram_ = rangeProgram(true);
-        centreRangeFbo_ = gl::Framebuffer::create();
-        centreRangeFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
-        centreRangeFbo_.attachDepthStencil(depthStencil, separateStencil);
-        centreRangeFbo_.checkComplete("MSAA depth ranges (RG32F) with the single-sample depth-stencil");
-    }
-    // (1, 1) where no sample has a surface; the depth and stencil cleared as writeCentreDepth clears them.
-    ClearAction clear;
-    clear.color = clear.depth = clear.stencil = true;
-    clear.colorValue = glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
-    StateCache& cache = StateCache::current();
-    cache.beginPass({centreRangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
-    RenderState s;
-    s.depthTest = true;
-    s.depthFunc = GL_ALWAYS;
-    s.depthWrite = true;
-    cache.apply(s);
-    drawRanges(centreRangeProgram_);
     cache.apply(RenderState{});
     cache.bindFramebuffer(0);
-    rangesWritten_ = true;
-    checkGl("MSAA sample distances: the centre's depth and the depth ranges");
+    rangesWritten_ = ranges;
+    checkGl("MSAA sample distances: the centre's depth");
 #else
     (void)depthStencil;
     (void)separateStencil;
+    (void)ranges;
 #endif
 }
 
 void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const {
-    if (!sampleDistances_) throw Error("readDepthRanges: the spans are not stored per sample");
+    if (!rangesWritten_) throw Error("readDepthRanges: writeCentreDepth did not write this frame's ranges");
 #ifndef __EMSCRIPTEN__
-    StateCache& cache = StateCache::current();
-    if (!rangesWritten_) {
-        if (!rangeProgram_) {
-            createRangeTarget();
-            rangeProgram_ = rangeProgram(false);
-        }
-        cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
-        cache.apply(RenderState{});
-        drawRanges(rangeProgram_);
-    } else {
-        cache.beginPass({rangeFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
-    }
     rangesWritten_ = false;
+    StateCache& cache = StateCache::current();
+    cache.bindFramebuffer(centreFbo_.id());
     const size_t pixels = size_t(width_) * size_t(height_);
     rangeReadback_.resize(pixels * 2);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

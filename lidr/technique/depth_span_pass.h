@@ -72,17 +72,17 @@ public:
     const gl::Texture& sampleTexture() const { return sampleDistances_; }
     // CPU read-back (tests, evaluation): per sample an image of window depths, rows top to bottom (1: no surface).
     std::vector<ImageFloat> readSampleDepths() const;
-    // With sample distances, after run(): sample 0's point as the single-sample depth of the bound framebuffer
-    // (cleared first, stencil too), the centre the sphere tests read: one full-screen pass in place of the
-    // single-sample depth pre-pass.
-    void writeCentreDepth() const;
-    // The same, into `depthStencil` (the targets' single-sample depth-stencil, RenderTargets::depthStencil()), and in
-    // the same pass each pixel's depth range for readDepthRanges (tile-culled frames: one full-screen pass over the
-    // samples, not two). Leaves framebuffer 0 bound.
-    void writeCentreDepthAndRanges(const gl::Renderbuffer& depthStencil, const gl::Renderbuffer* separateStencil) const;
-    // Tile-culled volumes under MSAA (sample distances, after run()): per pixel, rows bottom to top as glReadPixels
-    // gives them, the nearest and farthest window depth of its samples' points (the centre's is sample 0's),
-    // widened as the volume shader widens them; 1 in both where the pixel has none (VolumeTiles::buildRanges).
+    // With sample distances, after run(): sample 0's point as the single-sample depth, the centre the sphere tests
+    // read, into `depthStencil` (the targets' single-sample depth-stencil, RenderTargets::depthStencil(); cleared
+    // first, stencil too): one full-screen pass in place of the single-sample depth pre-pass. With `ranges`
+    // (tile-culled frames) the same pass also keeps each pixel's depth range for readDepthRanges. Leaves
+    // framebuffer 0 bound.
+    void writeCentreDepth(const gl::Renderbuffer& depthStencil, const gl::Renderbuffer* separateStencil,
+                          bool ranges) const;
+    // Tile-culled volumes under MSAA (after writeCentreDepth with ranges, this frame): per pixel, rows bottom to top
+    // as glReadPixels gives them, the nearest and farthest window depth of its samples' points (the centre's is
+    // sample 0's), widened as the volume shader widens them; 1 in both where the pixel has none
+    // (VolumeTiles::buildRanges).
     void readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const;
 
     // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
@@ -128,9 +128,7 @@ public:
 
 private:
     void readSides(std::vector<Span>& spans, const ImageFloat& centre) const;
-    void createRangeTarget() const;
-    gl::Program rangeProgram(bool centreDepth) const;
-    void drawRanges(const gl::Program& program) const;
+    gl::Program centreProgram(bool ranges) const;
 
     int width_ = 0, height_ = 0, samples_ = 0;
     HalfFloatTarget target_;  // without side moments
@@ -138,13 +136,10 @@ private:
     gl::Texture sampleDistances_;   // with sample distances: the multisample R32F texture
     gl::Framebuffer sampleFbo_;     // ... with the targets' multisampled depth-stencil
     mutable gl::Program readProgram_;  // readSampleDepths: four samples a draw into an RGBA32F texture
-    gl::Program centreProgram_;         // writeCentreDepth
-    mutable gl::Program rangeProgram_;  // readDepthRanges: into an RG32F texture, read back every tile frame
-    mutable gl::Program centreRangeProgram_;  // writeCentreDepthAndRanges
-    mutable gl::Framebuffer centreRangeFbo_;  // the range texture with the single-sample depth-stencil
-    mutable bool rangesWritten_ = false;      // writeCentreDepthAndRanges ran since the last readDepthRanges
+    mutable gl::Program centreProgram_, centreRangeProgram_;  // writeCentreDepth without and with ranges
+    mutable gl::Framebuffer centreFbo_;  // the ranges' RG32F texture with the single-sample depth-stencil
+    mutable bool rangesWritten_ = false;  // writeCentreDepth wrote ranges since the last readDepthRanges
     mutable gl::Texture rangeTexture_;
-    mutable gl::Framebuffer rangeFbo_;
     mutable std::vector<float> rangeReadback_;
     FullScreenTriangle triangle_;
     mutable float momentScale_ = 1.0f;

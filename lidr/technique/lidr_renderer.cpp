@@ -143,8 +143,8 @@ const FrameStats& LidrRenderer::render(const Camera& camera, const std::vector<P
     // 0. shadow-maps first (they draw into the atlas): the lights' first tiles by scene index (empty: none cast).
     const std::vector<int>& shadowTiles = frame_.drawShadowMaps(lights, shading, stats_);
     const bool volumeShadows = useVolumeShadows(shadowTiles, shading);
-    // 1. depth-prepass, and the tile decision: whether the light volumes are culled by its depth per tile
-    //    (volume-tiles).
+    // 1. The tile decision (whether the light volumes are culled by the pre-pass depth per tile), depth-prepass,
+    //    and volume-tiles.
     const TileDecision::Choice tiles = decideTiles(cam, lights);
     depthPrepass(cam, tiles.tiles);
     cullByTiles(cam, tiles);
@@ -210,12 +210,9 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam, bool tiles) {
         depthSpansTime.end();
         frame_.targets.bindSingleSample();
         TimedPass depthTime(frame_.timer, kDepthPrepass.name);
-        if (tiles) {  // the tiles' depth ranges in the same pass (readDepthRanges reads them)
-            depthSpans_.writeCentreDepthAndRanges(frame_.targets.depthStencil(), frame_.targets.separateStencil());
-            frame_.targets.bindSingleSample();
-        } else {
-            depthSpans_.writeCentreDepth();
-        }
+        // With tiles, each pixel's depth range in the same pass (cullByTiles reads them back).
+        depthSpans_.writeCentreDepth(frame_.targets.depthStencil(), frame_.targets.separateStencil(), tiles);
+        frame_.targets.bindSingleSample();
         copyPrepassDepth(cam);
         return;
     }
@@ -322,7 +319,7 @@ void LidrRenderer::selectPacking() {
     const PackingConfig& fixed = options_.packing;
     if (fixed.autoBudget()) {
         // The frame's index width decides the widest budget: 32 (8 targets) holds 4- and 8-bit indices only.
-        const int largest = largestAutoBudget_[plan_.indexBits == 4 ? 0 : plan_.indexBits == 8 ? 1 : 2];
+        const int largest = largestAutoBudget_[widthSlot(plan_.indexBits)];
         if (largest > 0) {
             auto_.setMaxBudget(largest);
             autoTransparent_.setMaxBudget(largest);

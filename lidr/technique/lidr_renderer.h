@@ -215,7 +215,8 @@ private:
     Variant* current_ = nullptr;
     Variant* currentTransparent_ = nullptr;
     AutoConfiguration auto_, autoTransparent_;
-    std::array<int, 3> largestAutoBudget_{};  // the automatic budget's largest at 4-, 8- and 16-bit indices
+    std::array<int, 3> largestAutoBudget_{};  // the automatic budget's largest at 4-, 8- and 16-bit indices (0: unused)
+    static size_t widthSlot(int indexBits) { return indexBits == 4 ? 0 : indexBits == 8 ? 1 : 2; }
     OverlapProbe probe_;
     std::array<long, OverlapProbe::kThresholds> pixelsAbove_{};  // the last measurement, both passes
     bool narrowingAsked_ = true, narrowingAskedTransparent_ = true;  // the last measurement asked below the budget

@@ -183,11 +183,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
                                ? AutoConfiguration::indexBitsFor(std::max<int>(1, int(scene.lights.size())))
                                : first.indexBits;
         // Per width up to the widest (a frame's width, and so its largest budget, is chosen per frame).
-        for (size_t i = 0; i < largestAutoBudget_.size(); ++i) {
-            const int bits = 4 << i;
-            largestAutoBudget_[i] = bits <= widest ? largestBudget(info, first, bits) : 0;
-        }
-        auto_ = AutoConfiguration(largestBudget(info, first, widest), options_.autoHoldFrames,
+        for (int bits : {4, 8, 16})
+            largestAutoBudget_[widthSlot(bits)] = bits <= widest ? largestBudget(info, first, bits) : 0;
+        auto_ = AutoConfiguration(largestAutoBudget_[widthSlot(widest)], options_.autoHoldFrames,
                                   options_.autoNarrowingInterval);
         autoTransparent_ = auto_;
         probe_ = OverlapProbe(info, DepthEmulation{options_.emulatedDepthBits});
