@@ -27,7 +27,9 @@ namespace {
 std::string volumeTestDescription(const LidrRenderer& renderer) {
     const LidrOptions& o = renderer.options();
     std::string s = volumeTestName(o.volumeTest);
-    if (o.volumeTest == VolumeTest::SphereSpan) s += std::string(" (") + depthSpanStorageName(o.msaaSpans) + " spans)";
+    if (o.volumeTest == VolumeTest::SphereSpan)
+        s += std::string(" (") + depthSpanStorageName(o.msaaSpans) + " spans" +
+             (renderer.skippedHiddenFragments() ? ", hidden fragments skip their lists)" : ")");
     return s;
 }
 
@@ -198,6 +200,7 @@ void addLidrSummary(nlohmann::json& summary, const LidrRenderer& renderer, const
                        {"volume_test", volumeTestName(options.volumeTest)},
                        {"msaa_spans", renderer.options().volumeTest == VolumeTest::SphereSpan
                                           ? depthSpanStorageName(renderer.options().msaaSpans) : "none"},
+                       {"msaa_skip_hidden", renderer.skippedHiddenFragments()},
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexTargets().bytes()},

@@ -60,6 +60,9 @@ enum TextureUnit : int {
     kUnitEnvironmentSplitSum = 18,
     kUnitEnvironmentSpecularLow = 6,
     kUnitEnvironmentSplitSumLow = 7,
+    // LIDR's opaque pass under MSAA: the pre-pass's per-sample distances (VisibleSamples), above the environment;
+    // only where the context has more units than that (desktop GL 3.2+, where the distances exist at all).
+    kUnitSampleDistances = 19,
     // FramePresenter: the frame.
     kUnitPresentedFrame = 0,
     // The highest unit a shading pass binds (capability checks).

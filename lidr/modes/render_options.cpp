@@ -112,6 +112,11 @@ void addLidrRows(std::vector<RenderOption>& o) {
                  "distance in a multisample texture, read per sample: exact lists), moments (GL 2.1: per-side moments "
                  "resolved into two float targets; doc/msaa-transparency.md)",
                  kLidr});
+    o.push_back({"msaa-skip-hidden", T::Choice, {"auto", "on", "off"}, 0, 0, "auto",
+                 "Under MSAA with samples spans, LIDR's opaque pass skips the light lists of fragments that keep no "
+                 "sample (the same image): auto (where the context shades fragments its depth test rejected, counted "
+                 "once, and the frame's budget is 8 or more), on, off",
+                 kLidr});
     o.push_back({"msaa-per-sample", T::Flag, {}, 0, 0, "",
                  "MSAA with multisample index targets read per sample (GL 3.2 + sample shading; optional path)", kLidr});
     o.push_back({"volume-detail", T::Flag, {}, 0, 0, "",
@@ -349,6 +354,7 @@ LidrOptions lidrOptionsFrom(const RenderOptionValues& v, const Scene& scene) {
     o.packing.indexBits = autoOrNumber(renderOptionValue(v, "index-bits"));
     checkPacking(o.packing, scheme);
     o.perSampleIndices = on(v, "msaa-per-sample");
+    o.hiddenFragmentSkip = parseHiddenFragmentSkip(renderOptionValue(v, "msaa-skip-hidden"));
     o.msaaSpans = parseDepthSpanStorage(renderOptionValue(v, "msaa-spans"));
     o.volumeDetail = on(v, "volume-detail");
     o.tileCulledVolumes = on(v, "volume-tiles");

@@ -81,6 +81,9 @@ struct AutoDecision {
     // volume meshes because that saving, scaled to this frame's lights, was under kTileCullingMinSaving.
     double tileSavingScreens = -1.0;
     bool tilesSkippedForSaving = false;
+    // MSAA with the samples' distances: the opaque pass skipped the light lists of fragments that keep no sample
+    // (LidrOptions::hiddenFragmentSkip).
+    bool hiddenFragmentSkip = false;
 };
 
 struct FrameStats {

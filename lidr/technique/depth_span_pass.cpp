@@ -132,10 +132,11 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     else
         cache.beginPass(sides_ ? sides_.pass(clear) : target_.pass(clear));
     // The MSAA pre-pass itself (as DepthPrepass, the same vertex shader: the forward pass's EQUAL test holds):
-    // the nearest fragment of each sample writes last.
+    // the nearest fragment of each sample writes last. LEQUAL: at a depth tie the last fragment drawn writes, the
+    // one whose colour the forward pass's EQUAL test keeps, so a sample's value is that of the surface it shows.
     RenderState s;
     s.depthTest = true;
-    s.depthFunc = GL_LESS;
+    s.depthFunc = GL_LEQUAL;
     s.depthWrite = true;
     cache.apply(s);
     program_.use();

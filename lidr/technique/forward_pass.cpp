@@ -1,4 +1,6 @@
 #include "lidr/technique/forward_pass.h"
+
+#include <algorithm>
 #include "lidr/base/gl.h"
 
 #include "lidr/render/depth_prepass.h"
@@ -18,6 +20,20 @@ uint32_t variantKey(const gl::Program& program, const LightTable& table, const S
            regionMapVariantKey(program, lights && table.regionMapUniform().w > 0.5f);
 }
 }  // namespace
+
+const char* hiddenFragmentSkipName(HiddenFragmentSkip s) {
+    switch (s) {
+        case HiddenFragmentSkip::On: return "on";
+        case HiddenFragmentSkip::Off: return "off";
+        default: return "auto";
+    }
+}
+
+HiddenFragmentSkip parseHiddenFragmentSkip(const std::string& name) {
+    for (HiddenFragmentSkip s : {HiddenFragmentSkip::Auto, HiddenFragmentSkip::On, HiddenFragmentSkip::Off})
+        if (name == hiddenFragmentSkipName(s)) return s;
+    throw Error("unknown --msaa-skip-hidden '" + name + "' (valid: auto, on, off)");
+}
 
 ForwardPass::ForwardPass(const PackingScheme& scheme, const LightTable& table, bool perSample,
                          const std::string& materialShader, DepthEmulation depth)
@@ -62,17 +78,36 @@ gl::Program ForwardPass::build(const ShaderDefines& extra) const {
     std::string fragment = materialShader_.empty()
                                ? buildShaderSource("lidr_forward.frag", defines, unpack)
                                : buildShaderSourceFromText("material shader", materialShader_, defines, unpack);
-    if (perSample_) {
-        vertex = perSampleGlsl150(vertex);
-        fragment = perSampleGlsl150(fragment);
+    const bool visibleSamples =
+        std::any_of(extra.begin(), extra.end(), [](const auto& d) { return d.first == "LIDR_VISIBLE_SAMPLES"; });
+    if (perSample_ || visibleSamples) {
+        vertex = perSampleGlsl150(vertex, perSample_);
+        fragment = perSampleGlsl150(fragment, perSample_);
     }
-    return gl::Program::create(name_ + (extra.empty() ? "" : "-shadowed"), vertex, fragment, geometryAttributes());
+    std::string name = name_;
+    for (const auto& d : extra)
+        if (d.first == "LIDR_SHADOWS") name += "-shadowed";
+    if (visibleSamples) name += "-visible-samples";
+    return gl::Program::create(name, vertex, fragment, geometryAttributes());
+}
+
+const gl::Program& ForwardPass::litProgram(const ShadowMaps* shadows, const ShadingParameters& shading,
+                                           VisibleSamples visible) const {
+    ShaderDefines extra;
+    if (shadows && shadows->active()) extra = shadows->defines(shading.shadows);
+    if (visible) extra.push_back({"LIDR_VISIBLE_SAMPLES", std::to_string(visible.samples)});
+    if (extra.empty()) return program_;
+    std::string key;
+    for (const auto& d : extra) key += d.first + "=" + d.second + " ";
+    auto found = twins_.find(key);
+    if (found == twins_.end()) found = twins_.emplace(key, build(extra)).first;
+    return found->second;
 }
 
 const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const IndexTargets& indices,
                                            const LightTable& table, const CameraMatrices& camera,
                                            const ShadingParameters& shading, const EnvironmentMaps& environment,
-                                           bool lights, const ShadowMaps* shadows) const {
+                                           bool lights, const ShadowMaps* shadows, VisibleSamples visible) const {
     if (!lights) {
         if (!lightless_)
             lightless_ = gl::Program::create(lightlessName_, lightlessVertex_, lightlessFragment_, geometryAttributes());
@@ -80,16 +115,7 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
         setShadingUniforms(lightless_, camera, shading, environment);
         return lightless_;
     }
-    const gl::Program* chosen = &program_;
-    if (shadows && shadows->active()) {
-        const ShaderDefines extra = shadows->defines(shading.shadows);
-        std::string key;
-        for (const auto& d : extra) key += d.first + "=" + d.second + " ";
-        auto found = shadowed_.find(key);
-        if (found == shadowed_.end()) found = shadowed_.emplace(key, build(extra)).first;
-        chosen = &found->second;
-    }
-    const gl::Program& program = *chosen;
+    const gl::Program& program = litProgram(shadows, shading, visible);
     useShadingProgram(program, camera, shading, table, environment);
     if (shadows && shadows->active()) shadows->bind(program, shading.shadows);
     program.setIfDeclared("uLidrMaxLights", maxLights_);
@@ -99,24 +125,32 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
         indices.texture(i).bind(gl::kUnitIndexTarget0 + i);
         program.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
+    if (visible) {
+        visible.distances->bind(gl::kUnitSampleDistances);
+        program.set("uLidrSampleDistances", gl::kUnitSampleDistances);
+    }
     return program;
 }
 
-void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights) const {
+void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights, VisibleSamples visible) const {
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});
     cache.unbindTextures(gl::kUnitIndexTarget0, lights ? indices.count() : 0);
+    if (visible) cache.unbindTextures(gl::kUnitSampleDistances, 1);
 }
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
                       const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
-                      const EnvironmentMaps& environment, bool afterPrepass, bool lights, const ShadowMaps* shadows) const {
+                      const EnvironmentMaps& environment, bool afterPrepass, bool lights, const ShadowMaps* shadows,
+                      VisibleSamples visible) const {
     // Without a pre-pass there is no depth to test against here: the MSAA target never had one, the
     // single-sample one holds the volume pass's cleared depth. Either way this pass writes its own.
     beginOpaqueShading(targets, shading, afterPrepass, perSample_);
-    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, environment, lights, shadows);
+    // The skip needs the pre-pass's distances (and compares them with the depth this pass tests EQUAL against).
+    if (!lights || !afterPrepass || perSample_ || depth_.bits != 0) visible = {};
+    const gl::Program& program = bindInputs(targets, indices, table, camera, shading, environment, lights, shadows, visible);
     scene.draw(program, DrawFilter::Opaque, true, &camera, variantKey(program, table, shading, environment, lights));
-    unbindInputs(indices, lights);
+    unbindInputs(indices, lights, visible);
     checkGl("LIDR forward pass");
 }
 

@@ -18,6 +18,21 @@
 
 namespace lidr {
 
+// The MSAA pre-pass's view distance per sample (DepthSpanPass::sampleTexture, drawn depth LEQUAL): with it the
+// opaque pass skips the light list of every fragment that keeps no sample (LIDR_VISIBLE_SAMPLES in
+// lidr_lights.glsl). Needs GLSL 1.50 and texture unit gl::kUnitSampleDistances.
+struct VisibleSamples {
+    const gl::Texture* distances = nullptr;
+    int samples = 0;
+    explicit operator bool() const { return distances != nullptr && samples > 0; }
+};
+
+// When LIDR's opaque pass under MSAA skips hidden fragments' lists (LidrOptions::hiddenFragmentSkip,
+// --msaa-skip-hidden).
+enum class HiddenFragmentSkip { Auto, On, Off };
+const char* hiddenFragmentSkipName(HiddenFragmentSkip s);           // "auto", "on", "off"
+HiddenFragmentSkip parseHiddenFragmentSkip(const std::string& name);  // throws lidr::Error naming the choices
+
 class ForwardPass {
 public:
     // perSample: the index targets are multisample textures read per sample (GLSL 1.50 compatibility +
@@ -38,10 +53,12 @@ public:
     // defines, built on first use) looks each listed light's shadow up by its index (the paper's second way;
     // lidrLightShadow in lidr_lights.glsl), the table holding the lights' tiles (LightTable::update).
     // environment: the frame's environment light, prepared for `indices` (EnvironmentMaps::prepare).
+    // visible (after an MSAA pre-pass that stored them): fragments that keep no sample skip their list; the image
+    // is the same (the twin with LIDR_VISIBLE_SAMPLES, built on first use).
     void run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
              const LightTable& table, const CameraMatrices& camera, const ShadingParameters& shading,
              const EnvironmentMaps& environment, bool afterPrepass = true, bool lights = true,
-             const ShadowMaps* shadows = nullptr) const;
+             const ShadowMaps* shadows = nullptr, VisibleSamples visible = {}) const;
     // Transparent geometry over the opaque image, back to front, alpha blended, depth-tested against the
     // opaque depth without writing it; `indices` must come from a front-face volume pass.
     void runTransparent(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,
@@ -52,12 +69,16 @@ private:
     // The program for this frame (lights or not) with its inputs bound.
     const gl::Program& bindInputs(const RenderTargets& targets, const IndexTargets& indices, const LightTable& table,
                                   const CameraMatrices& camera, const ShadingParameters& shading,
-                                  const EnvironmentMaps& environment, bool lights, const ShadowMaps* shadows) const;
-    // The lit program with `extra` defines (the shadowed twins).
+                                  const EnvironmentMaps& environment, bool lights, const ShadowMaps* shadows,
+                                  VisibleSamples visible = {}) const;
+    // The lit program of the frame: program_, or its twin with the shadow and visible-sample defines.
+    const gl::Program& litProgram(const ShadowMaps* shadows, const ShadingParameters& shading,
+                                  VisibleSamples visible) const;
+    // The lit program with `extra` defines (the twins; LIDR_VISIBLE_SAMPLES compiles as GLSL 1.50).
     gl::Program build(const ShaderDefines& extra) const;
-    void unbindInputs(const IndexTargets& indices, bool lights) const;
+    void unbindInputs(const IndexTargets& indices, bool lights, VisibleSamples visible = {}) const;
     gl::Program program_;
-    mutable std::map<std::string, gl::Program> shadowed_;  // by the shadow defines, built on first use
+    mutable std::map<std::string, gl::Program> twins_;  // by their extra defines, built on first use
     ShaderDefines defines_;
     std::string unpackFile_, materialShader_, name_;
     DepthEmulation depth_;

@@ -394,8 +394,11 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     TimedPass forwardTime(frame_.timer, kForward.name);
     const ShadowMaps* shadows = lights && frame_.shadows.active() ? &frame_.shadows : nullptr;
     frame_.prepareEnvironment(shading, stats_, lights ? indexTargets_->count() : 0);
+    VisibleSamples visible;
+    stats_.autoDecision.hiddenFragmentSkip = skipHiddenFragments();
+    if (stats_.autoDecision.hiddenFragmentSkip) visible = {&depthSpans_.sampleTexture(), depthSpans_.samples()};
     current_->forward->run(frame_.targets, *indexTargets_, frame_.scene, frame_.lightTable, cam, shading, frame_.environment,
-                           options_.depthPrepass, lights, shadows);
+                           options_.depthPrepass, lights, shadows, visible);
     forwardTime.end();
 
     if (drawTransparent_) {
@@ -404,6 +407,15 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
         frame_.environment.prepare(shading.environment, lights ? transparentTargets.count() : 0);
         currentTransparent_->forward->runTransparent(frame_.targets, transparentTargets, frame_.scene, frame_.lightTable, cam, shading,
                                                      frame_.environment, lights, shadows);
+    }
+}
+
+bool LidrRenderer::skipHiddenFragments() const {
+    if (!depthSpans_.storesSamples() || frame_.info.maxTextureUnits <= gl::kUnitSampleDistances) return false;
+    switch (options_.hiddenFragmentSkip) {
+        case HiddenFragmentSkip::On: return true;
+        case HiddenFragmentSkip::Off: return false;
+        default: return shadesRejectedFragments_ && current_->scheme->config().budget >= kHiddenSkipBudget;
     }
 }
 

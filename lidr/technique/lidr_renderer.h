@@ -40,6 +40,12 @@ struct LidrOptions {
     // sphere-span: how the volume pass learns the surfaces of a pixel's samples (DepthSpanStorage): Auto is
     // Samples (each sample's distance, read per sample) where the context has multisample textures, else Moments.
     DepthSpanStorage msaaSpans = DepthSpanStorage::Auto;
+    // With the samples' distances (msaaSpans Samples): the opaque forward pass skips the light list of every
+    // fragment that keeps no sample (hidden at all of them; ForwardPass, VisibleSamples). The image is the same.
+    // Auto: where the context shades fragments its depth test rejected (counted once, early_depth_probe.h:
+    // llvmpipe) and the frame's budget is 8 or more (shorter lists save less than the test costs; measured in
+    // doc/msaa-transparency.md). On: whenever the distances exist. Off: never.
+    HiddenFragmentSkip hiddenFragmentSkip = HiddenFragmentSkip::Auto;
     // Transparent geometry (Material.opacity < 1) is drawn after the opaque, back to front. It is lit from
     // a front-face index texture: the main one in front-face mode, else one more volume pass for it alone.
     bool transparency = true;
@@ -114,6 +120,12 @@ public:
     // of a surface meets more lights than the surface does); scheme() where they read the main lists.
     const PackingScheme& transparentScheme() const { return *currentTransparent_->scheme; }
     const LidrOptions& options() const { return options_; }
+    // Whether the last frame's opaque pass skipped the light lists of fragments that keep no sample (MSAA,
+    // samples spans; LidrOptions::hiddenFragmentSkip; also the frame's AutoDecision::hiddenFragmentSkip).
+    bool skippedHiddenFragments() const { return stats_.autoDecision.hiddenFragmentSkip; }
+    // Auto's smallest budget for the skip: at budget 4 (the room) it saved nothing, at 2 (city-255) it cost the
+    // forward pass 17 %, at 8 (hall-255) it saved 17 %, at 32 (hall-1024) 40 % (doc/msaa-transparency.md).
+    static constexpr int kHiddenSkipBudget = 8;
     const FrameResources& frame() const override { return frame_; }
     std::vector<FramePass> passes() const override;
     const IndexTargets& indexTargets() const { return *indexTargets_; }
@@ -197,6 +209,8 @@ private:
     IndexTargets& indexTargetsFor(std::map<int, IndexTargets>& cache, int count);
     // The main volume pass's smallest budget that drops nothing, from its probe (asking how far over if over).
     int measuredNeed();
+    // This frame's opaque pass skips hidden fragments' lists (LidrOptions::hiddenFragmentSkip).
+    bool skipHiddenFragments() const;
     // Where the main pass's probe draws each threshold (OverlapProbe::Areas), from the tiles' candidate bounds.
     OverlapProbe::Areas probeAreas() const;
 
@@ -210,6 +224,7 @@ private:
     // lights up by index.
     FrameResources frame_;
     DepthSpanPass depthSpans_;  // sphere-span: what the volume pass reads beside the depth copy
+    bool shadesRejectedFragments_ = false;  // with the samples' distances: counted once (early_depth_probe.h)
     std::vector<float> tileNearDepth_, tileFarDepth_;  // sphere-span with tiles: each pixel's range (readDepthRanges)
     std::map<std::pair<int, int>, Variant> variants_;  // by (budget, index bits)
     Variant* current_ = nullptr;

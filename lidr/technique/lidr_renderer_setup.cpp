@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "lidr/base/error.h"
+#include "lidr/gl/early_depth_probe.h"
 #include "lidr/gl/gl_state.h"
 #include "lidr/render/shading_pass.h"
 #include "lidr/scene/sphere_bounds.h"
@@ -173,9 +174,11 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
             depthSpans_ = DepthSpanPass(info, frame_.targets, options_.msaaSpans);
         }
         // The samples' distances: programs that loop over the sample count the driver gave.
-        if (depthSpans_.storesSamples())
+        if (depthSpans_.storesSamples()) {
             volumePass_ = LightVolumePass(info, options_.volumeTest, options_.volumeDetail,
                                           DepthEmulation{options_.emulatedDepthBits}, false, depthSpans_.samples());
+            shadesRejectedFragments_ = shadesRejectedMultisampleFragments(info, depthSpans_.samples());
+        }
     }
     const PackingConfig& first = firstPacking_;
     if (options_.packing.autoBudget()) {

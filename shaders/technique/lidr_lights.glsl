@@ -89,9 +89,32 @@ float lidrRegionRowOfPixel() {
 }
 #endif
 
+#ifdef LIDR_VISIBLE_SAMPLES
+// LIDR_VISIBLE_SAMPLES n (the opaque pass under MSAA with the samples' distances, GLSL 1.50 compatibility;
+// ForwardPass::run): the MSAA pre-pass (depth LEQUAL, so at a depth tie the last fragment drawn writes, as the
+// EQUAL test here keeps the last one) left in every sample the view distance, at the pixel centre, of the fragment
+// whose colour that sample keeps. A fragment whose own distance matches none of them keeps no sample: its colour
+// is overwritten or discarded, so it skips the list. A SIMD rasteriser that runs the shader of fragments its early
+// depth test rejected (llvmpipe under MSAA) then pays nothing for hidden surfaces. The match allows 2^-12 of the
+// distance (the pre-pass took it from vWorldPos, this from gl_FragCoord.w: rounding apart, the same number): a
+// hidden fragment that close is shaded for nothing, never the reverse.
+uniform sampler2DMS uLidrSampleDistances;
+bool lidrKeepsASample() {
+    float distance = 1.0 / gl_FragCoord.w;
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    bool keeps = false;
+    for (int i = 0; i < LIDR_VISIBLE_SAMPLES; ++i)  // unrolled: cheaper on llvmpipe than a loop that ends early
+        keeps = keeps || abs(texelFetch(uLidrSampleDistances, pixel, i).r - distance) <= distance * (1.0 / 4096.0);
+    return keeps;
+}
+#endif
+
 void lidrBeginLights() {
     lidrUnpackBegin(gl_FragCoord.xy * uInvViewportSize);  // pixel centre -> index texel centre
     lidrSlotsLeft = float(LIDR_SLOTS);
+#ifdef LIDR_VISIBLE_SAMPLES
+    if (!lidrKeepsASample()) lidrSlotsLeft = 0.0;
+#endif
     lidrRegionRow = 0.0;
 #ifndef GL_ES
 #ifdef LIDR_REGION_MAP  // the frame's shading variant (lidr/render/shading_variants.h): regions compiled in or out
