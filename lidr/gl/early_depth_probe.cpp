@@ -19,7 +19,7 @@ bool shadesRejectedMultisampleFragments(const GlInfo& info, int samples) {
     (void)samples;
     return false;  // WebGL has no pipeline statistics
 #else
-    if (!info.pipelineStatistics || !info.multisampleFbo || samples < 2) return false;
+    if (!info.pipelineStatistics || !info.multisampleFbo || samples < 2 || samples > info.maxSamples) return false;
     const int size = 16;
     const gl::Renderbuffer color = gl::Renderbuffer::create(GL_RGBA8, size, size, samples);
     const gl::Renderbuffer depth = gl::Renderbuffer::create(GL_DEPTH24_STENCIL8, size, size, samples);

@@ -5,7 +5,7 @@
 // saved (ForwardPass, VisibleSamples); a GPU that culls them before shading would only pay for the test.
 // Counted, not guessed from the renderer's name: one full-screen draw behind a cleared depth of 0 into a small
 // MSAA target, its fragment shader invocations read with ARB_pipeline_statistics_query. Without the query (or
-// without multisample framebuffers) it answers false: nothing measured, nothing skipped.
+// without multisample framebuffers of that many samples) it answers false: nothing measured, nothing skipped.
 #include "lidr/gl/gl_info.h"
 
 namespace lidr {
