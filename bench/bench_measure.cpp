@@ -149,6 +149,7 @@ void fillTiming(Row& row, const Measured& m) {
     row.drawnLights = m.frames.back().drawnLights;
     row.glCalls = m.frames.back().glCalls;
     const AutoDecision& decision = m.frames.back().autoDecision;
+    if (decision.budget > 0) row.hiddenSkip = decision.hiddenFragmentSkip ? 1 : 0;  // a LIDR frame
     if (decision.autoBudget || decision.autoIndexBits) {
         row.autoBudget = decision.budget;
         row.autoIndexBits = decision.indexBits;

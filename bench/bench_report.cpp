@@ -91,7 +91,7 @@ const std::vector<std::string>& resultColumns() {
         "volume_fragments", "volume_fragments_per_light_pixel", "shadow_casters", "shadow_maps_first_frame",
         "shadow_maps_first_frame_ms", "shadow_maps_later_frames", "cluster_tile_size", "cluster_slices",
         "cluster_slicing", "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair", "lighting_computations",
-        "lighting_computations_per_true_pair"};
+        "lighting_computations_per_true_pair", "hidden_skip"};
     return c;
 }
 
@@ -174,7 +174,8 @@ std::vector<std::string> csvCells(const Row& r) {
             r.hasPixelLists ? std::to_string(r.extraLightPixels) : "",
             r.hasPixelLists ? num(r.extraPerTruePair(), 3) : "",
             r.lightingComputations >= 0 ? std::to_string(r.lightingComputations) : "",
-            r.lightingPerTruePair() >= 0 ? num(r.lightingPerTruePair(), 3) : ""};
+            r.lightingPerTruePair() >= 0 ? num(r.lightingPerTruePair(), 3) : "",
+            r.hiddenSkip >= 0 ? std::to_string(r.hiddenSkip) : ""};
 }
 
 nlohmann::json statJson(const Stat& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
@@ -194,7 +195,8 @@ nlohmann::json rowJson(const Row& r) {
     if (c.mode == "lidr")
         j["lidr"] = {{"scheme", c.scheme}, {"budget", c.budget}, {"index_bits", c.indexBits}, {"volume_test", c.volumeTest}, {"volume_detail", c.volumeDetail}, {"volume_tiles", c.volumeTiles}, {"regional_indices", c.regionalIndices}, {"msaa_spans", c.msaaSpans}};
     if (r.autoBudget || r.autoIndexBits)
-        j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks}};
+        j["auto"] = {{"budget", r.autoBudget}, {"index_bits", r.autoIndexBits}, {"repacks", r.autoRepacks},
+                     {"hidden_skip", r.hiddenSkip > 0}};
     if (c.mode == "tiled") j["tiled"] = {{"depth_bounds", c.tiledDepthBounds}};
     if (c.mode == "clustered") {  // the grid it ran with (the library's defaults where the run left them)
         const ModeConfig grid = c.withClusterDefaults();

@@ -44,6 +44,9 @@ struct Row {
     GlCallCounters glCalls;            // the last measured frame's, through the state cache (lidr/gl/gl_state.h)
     // LIDR's automatic configuration, last measured frame: budget and width chosen, re-packs over all frames.
     int autoBudget = 0, autoIndexBits = 0, autoRepacks = 0;
+    // LIDR frames: 1 where the last measured frame's opaque pass skipped hidden fragments' lists (MSAA with the
+    // samples' distances, AutoDecision::hiddenFragmentSkip), 0 where not; -1 for other modes.
+    int hiddenSkip = -1;
     bool hasError = true;              // false: a timing-only sweep (SweepGroup::reference), no error columns
     ImageError error;                  // against forward-brute with the same MSAA and transparency
     // LIDR only: the decoded index lists against the CPU truth.

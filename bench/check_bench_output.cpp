@@ -116,7 +116,7 @@ void checkResultRow(const std::vector<std::string>& row, RowSets& sets) {
                 "auto_index_bits", "auto_repacks", "true_light_pixels", "volume_fragments",
                 "volume_fragments_per_light_pixel", "cluster_tile_size", "cluster_slices", "cluster_slicing",
                 "cluster_occupancy", "extra_light_pixels", "extra_per_true_pair", "lighting_computations",
-                "lighting_computations_per_true_pair"};
+                "lighting_computations_per_true_pair", "hidden_skip"};
             if (!optional.count(columns[c])) problem("results.csv row " + row[0] + ": empty " + columns[c]);
             continue;
         }

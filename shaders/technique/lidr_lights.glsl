@@ -25,6 +25,9 @@
 // unpack files.
 // LIDR_NO_LIGHTS (a frame where no light reaches a visible surface): the same API over an empty list; no index
 // texture or light table is declared or read.
+// LIDR_VISIBLE_SAMPLES (the opaque pass under MSAA, doc/msaa-transparency.md): lidrBeginLights() gives a fragment
+// hidden at every sample an empty list; the program, a material shader's too, is then compiled as GLSL 1.50
+// compatibility.
 struct LidrLight {
     vec3 position;
     float radius;
@@ -94,10 +97,10 @@ float lidrRegionRowOfPixel() {
 // ForwardPass::run): the MSAA pre-pass (depth LEQUAL, so at a depth tie the last fragment drawn writes, as the
 // EQUAL test here keeps the last one) left in every sample the view distance, at the pixel centre, of the fragment
 // whose colour that sample keeps. A fragment whose own distance matches none of them keeps no sample: its colour
-// is overwritten or discarded, so it skips the list. A SIMD rasteriser that runs the shader of fragments its early
-// depth test rejected (llvmpipe under MSAA) then pays nothing for hidden surfaces. The match allows 2^-12 of the
-// distance (the pre-pass took it from vWorldPos, this from gl_FragCoord.w: rounding apart, the same number): a
-// hidden fragment that close is shaded for nothing, never the reverse.
+// is rejected by the depth test or overwritten, so its list is empty. A SIMD rasteriser that runs the shader of
+// fragments its early depth test rejected (llvmpipe under MSAA) then pays no lights for hidden surfaces. The match
+// allows 2^-12 of the distance (the pre-pass took it from vWorldPos, this from gl_FragCoord.w: the same number but
+// for rounding, far below that): a hidden fragment that close is shaded for nothing; a visible one is not skipped.
 uniform sampler2DMS uLidrSampleDistances;
 bool lidrKeepsASample() {
     float distance = 1.0 / gl_FragCoord.w;
