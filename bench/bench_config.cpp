@@ -188,7 +188,7 @@ Scene loadBenchScene(const std::string& name, uint32_t seed, int camera) {
 std::string ModeConfig::label() const {
     const std::string meshes = volumeTest != "sphere" ? ""
                                : !volumeTiles          ? " meshes"
-                               : volumeTileSize != 0   ? " tiles" + std::to_string(volumeTileSize)
+                               : volumeTileSize != 16  ? " tiles" + std::to_string(volumeTileSize)
                                                        : "";
     const std::string global = volumeTest == "sphere" && volumeTiles && !regionalIndices ? " global-indices" : "";
     const std::string spans = volumeTest == "sphere-span" && msaaSpans != "auto" ? " " + msaaSpans : "";

@@ -38,7 +38,7 @@ struct ModeConfig {
     std::string volumeTest;       // backface, exact, frontface
     bool volumeDetail = false;    // LidrOptions::volumeDetail: coarse volumes for lights small on screen
     bool volumeTiles = true;      // LidrOptions::tileCulledVolumes (the sphere test): false draws volume meshes
-    int volumeTileSize = 0;       // LidrOptions::volumeTileSize (0: auto)
+    int volumeTileSize = 16;      // LidrOptions::volumeTileSize
     bool regionalIndices = true;  // LidrOptions::regionalIndices (automatic width, tiles, over 255 lights)
     std::string msaaSpans = "auto";  // LidrOptions::msaaSpans (sphere-span): auto, samples, moments
     // mode "tiled"
@@ -100,7 +100,7 @@ struct SweepGroup {
     std::vector<bool> deferredStencil{false};
     std::vector<bool> volumeDetail{false};
     std::vector<bool> volumeTiles{true};
-    std::vector<int> volumeTileSizes{0};  // 0: auto
+    std::vector<int> volumeTileSizes{16};
     std::vector<bool> regionalIndices{true};
     // Dimensions whose list a person typed ("mode", "scheme", "budget", "index width", "volume test",
     // "MSAA", "transparency"): a typed value that no combination can use is an error. Lists left at their

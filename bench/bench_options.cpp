@@ -39,7 +39,7 @@ std::vector<SweepList> sweepLists() {
             {"--volume-detail", "volume-detail", {"off"}},
             {"--volume-tiles", "volume-tiles", {"on"}},
             {"--regional-indices", "regional-indices", {"on"}},
-            {"--volume-tile-size", "volume-tile-size", {"auto"}}};
+            {"--volume-tile-size", "volume-tile-size", {"16"}}};
 }
 
 std::vector<int> intList(const std::vector<std::string>& items, const char* what) {
@@ -185,9 +185,7 @@ SweepGroup commandLineGroup(const CLI::App& app, const BenchOptions& o) {
     g.deferredStencil = onOffList(o.listOf("--deferred-stencil"));
     g.volumeDetail = onOffList(o.listOf("--volume-detail"));
     g.volumeTiles = onOffList(o.listOf("--volume-tiles"));
-    g.volumeTileSizes.clear();
-    for (const std::string& size : o.listOf("--volume-tile-size"))  // checked: auto or 4..256
-        g.volumeTileSizes.push_back(size == "auto" ? 0 : intList({size}, "--volume-tile-size value").front());
+    g.volumeTileSizes = intList(o.listOf("--volume-tile-size"), "--volume-tile-size value");
     g.regionalIndices = onOffList(o.listOf("--regional-indices"));
     if (!o.listOf("--cluster-tile-sizes").empty())
         g.clusterTileSizes = intList(o.listOf("--cluster-tile-sizes"), "--cluster-tile-sizes value");

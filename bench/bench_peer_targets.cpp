@@ -32,7 +32,7 @@ int peerOf(const ModeConfig& c) {
 
 // LIDR's default configuration: the automatic scheme with the sphere test (sphere-span under MSAA), default tiles.
 bool isLidrDefault(const ModeConfig& c) {
-    return c.mode == "lidr" && c.scheme == "auto" && !c.volumeDetail && c.volumeTiles && c.volumeTileSize == 0 &&
+    return c.mode == "lidr" && c.scheme == "auto" && !c.volumeDetail && c.volumeTiles && c.volumeTileSize == 16 &&
            c.regionalIndices && c.msaaSpans == "auto" &&
            (c.volumeTest == "sphere" || c.volumeTest == "sphere-span" || c.volumeTest == "auto");
 }

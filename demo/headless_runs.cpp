@@ -201,7 +201,6 @@ void addLidrSummary(nlohmann::json& summary, const LidrRenderer& renderer, const
                        {"msaa_spans", renderer.options().volumeTest == VolumeTest::SphereSpan
                                           ? depthSpanStorageName(renderer.options().msaaSpans) : "none"},
                        {"msaa_skip_hidden", renderer.skippedHiddenFragments()},
-                       {"volume_tile_size", renderer.options().tileCulledVolumes ? renderer.options().volumeTileSize : 0},
                        {"msaa_samples", options.msaaSamples},
                        {"transparency", renderer.drawsTransparency()},
                        {"index_memory_bytes", renderer.indexTargets().bytes()},

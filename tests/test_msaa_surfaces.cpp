@@ -331,21 +331,3 @@ TEST_CASE("the early-depth probe counts rejected multisampled fragments", "[msaa
     if (info.pipelineStatistics && info.multisampleFbo && info.renderer.find("llvmpipe") != std::string::npos)
         REQUIRE(shades);
 }
-
-// The automatic tile size (LidrOptions::volumeTileSize 0): 8 under MSAA with the samples' distances, where an edge
-// pixel's range widens its tile, else 16; a size asked for is kept.
-TEST_CASE("the volume tiles' automatic size is 8 under MSAA with the samples' distances, else 16", "[msaa][volume-tiles][every-gl]") {
-    const Scene scene = deepScene("hall-255");
-    LidrOptions o;
-    REQUIRE(o.volumeTileSize == 0);
-    REQUIRE(LidrRenderer(testGl(), scene, o, scene.width, scene.height).options().volumeTileSize == 16);
-    if (!contextHasMsaa(4)) return;
-    o.msaaSamples = 4;
-    const bool samples = resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) == DepthSpanStorage::Samples;
-    REQUIRE(LidrRenderer(testGl(), scene, o, scene.width, scene.height).options().volumeTileSize == (samples ? 8 : 16));
-    o.volumeTileSize = 32;
-    REQUIRE(LidrRenderer(testGl(), scene, o, scene.width, scene.height).options().volumeTileSize == 32);
-    o.volumeTileSize = 0;
-    o.msaaSpans = DepthSpanStorage::Moments;
-    REQUIRE(LidrRenderer(testGl(), scene, o, scene.width, scene.height).options().volumeTileSize == 16);
-}

@@ -125,10 +125,7 @@ void addLidrRows(std::vector<RenderOption>& o) {
                  "Sphere test over depth-culled screen tiles: on (default; desktop GL) or off (volume meshes) "
                  "(LidrOptions::tileCulledVolumes, doc/architecture.md)",
                  kLidr});
-    o.push_back({"volume-tile-size", T::Int, {}, 4, 256, "auto",
-                 "Tile size of --volume-tiles in pixels, 4..256, or auto (8 under MSAA with the samples' distances, "
-                 "where an edge pixel's depth range widens fewer tiles; else 16)",
-                 kLidr});
+    o.push_back({"volume-tile-size", T::Int, {}, 4, 256, "16", "Tile size of --volume-tiles in pixels, 4..256", kLidr});
     o.push_back({"regional-indices", T::Choice, kOnOff, 0, 0, "on",
                  "Over 255 lights with --volume-tiles: 8-bit indices numbered per screen region (on, default) or "
                  "16-bit global ones (off) (LidrOptions::regionalIndices, doc/architecture.md)",
@@ -220,7 +217,6 @@ void checkRenderOption(const RenderOption& option, const std::string& value) {
                 throw Error(what + " must be on or off, got '" + value + "'");
             return;
         case RenderOptionType::Int: {
-            if (value == "auto" && option.defaultValue == "auto") return;  // chosen by the library
             if (!isWholeNumber(value)) throw Error(what + " must be a whole number, got '" + value + "'");
             const long v = std::strtol(value.c_str(), nullptr, 10);
             if (option.max > option.min && (v < option.min || v > option.max))
@@ -363,8 +359,7 @@ LidrOptions lidrOptionsFrom(const RenderOptionValues& v, const Scene& scene) {
     o.volumeDetail = on(v, "volume-detail");
     o.tileCulledVolumes = on(v, "volume-tiles");
     o.regionalIndices = on(v, "regional-indices");
-    const std::string tileSize = renderOptionValue(v, "volume-tile-size");
-    o.volumeTileSize = tileSize == "auto" ? 0 : std::stoi(tileSize);
+    o.volumeTileSize = std::stoi(renderOptionValue(v, "volume-tile-size"));
     const std::string depthBits = renderOptionValue(v, "depth-bits");
     if (depthBits == "16") o.depthBits = 16;
     if (depthBits == "16-emulated") o.emulatedDepthBits = 16;

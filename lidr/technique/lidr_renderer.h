@@ -64,10 +64,7 @@ struct LidrOptions {
     // rank window (budget 16) touches only tiles with more than 8 candidate lights. The lists are the same (the
     // shader's test is); false: volume meshes.
     bool tileCulledVolumes = true;
-    // 0: automatic, 8 under MSAA with the samples' distances (an edge pixel's range, nearest to farthest sample,
-    // widens its whole tile: smaller tiles widen less; hall-1024's MSAA volume pass 151 -> 104 ms), else 16
-    // (without MSAA 8 and 16 measure the same). LidrRenderer::options() holds the size it took.
-    int volumeTileSize = 0;
+    int volumeTileSize = 16;
     // With tile-culled volumes and more than 255 lights reaching the view (automatic index width, opaque
     // frame, single-sampled or MSAA's sphere-span with the samples' distances): the screen is split into the fewest regions (a grid of tiles, at most
     // kMaxIndexRegions) in which at most 255 lights each reach a tile, and each region numbers its own lights in its
@@ -139,8 +136,6 @@ public:
     const std::vector<uint32_t>& frameLightIndices() const { return plan_.frameLights; }
     const IndexRegions& frameIndexRegions() const { return plan_.regions; }
     static constexpr int kMaxIndexRegions = 32;
-    // LidrOptions::volumeTileSize's automatic sizes: without and under MSAA with the samples' distances.
-    static constexpr int kVolumeTileSize = 16, kMsaaVolumeTileSize = 8;
     // The index targets transparent layers read: the main ones in front-face mode.
     const IndexTargets& transparentIndexTargets() const;
     bool drawsTransparency() const { return drawTransparent_; }

@@ -25,10 +25,6 @@ LidrOptions withContextFallbacks(const GlInfo& info, LidrOptions o) {
     // sphere-span reads each sample's distance where the context has multisample textures (GL 3.2), else the
     // GL 2.1 moments (doc/msaa-transparency.md, "Edge pixels").
     if (o.volumeTest == VolumeTest::SphereSpan) o.msaaSpans = resolveDepthSpanStorage(o.msaaSpans, info, o.msaaSamples);
-    if (o.volumeTileSize == 0)
-        o.volumeTileSize = o.volumeTest == VolumeTest::SphereSpan && o.msaaSpans == DepthSpanStorage::Samples
-                               ? LidrRenderer::kMsaaVolumeTileSize
-                               : LidrRenderer::kVolumeTileSize;
     if (info.occlusionQuery || !o.packing.autoBudget()) return o;
     if (o.packing.autoScheme()) o.packing.scheme = PackingSchemeKind::BitShift;
     o.packing.budget = LidrRenderer::kBudgetWithoutOcclusionQueries;
