@@ -41,7 +41,7 @@ constexpr FramePass kDepthSpanSamples{"depth-spans", "scene",
                                       "depth (MSAA), sample distances (the point each sample shades)",
                                       "sphere-span (MSAA): the MSAA pre-pass"};
 constexpr FramePass kDepthFromSample{"depth-prepass", "sample distances",
-                                     "depth, stencil, depth copy (sample 0's point: the centre the tests read)"};
+                                     "depth, stencil (sample 0's point: the centre the tests read)"};
 constexpr FramePass kForward{"forward",
                              "scene, depth, index targets, light table, [shadow atlas], [environment]", "colour"};
 constexpr FramePass kForwardTransparent{"forward-transparent",
@@ -213,8 +213,7 @@ void LidrRenderer::depthPrepass(const CameraMatrices& cam, bool tiles) {
         // With tiles, each pixel's depth range in the same pass (cullByTiles reads them back).
         depthSpans_.writeCentreDepth(frame_.targets.depthStencil(), frame_.targets.separateStencil(), tiles);
         frame_.targets.bindSingleSample();
-        copyPrepassDepth(cam);
-        return;
+        return;  // no depth copy: the volume shaders read the samples' distances instead
     }
     TimedPass depthTime(frame_.timer, kDepthPrepass.name);
     frame_.depthPrepass.run(frame_.scene, cam);
