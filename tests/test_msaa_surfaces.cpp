@@ -315,6 +315,53 @@ TEST_CASE("MSAA: skipping hidden fragments' lights leaves the image unchanged", 
     }
 }
 
+// A material shader of the program's own gets the skip too (its lidrBeginLights(); compiled as GLSL 1.50
+// compatibility then): a band count like a toon shader's, the same image with the skip on and off.
+TEST_CASE("MSAA: a material shader's image is unchanged by the hidden-fragment skip", "[msaa][embed][every-gl]") {
+    if (!contextHasMsaa(4)) return;
+    if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
+        WARN("skipped: the skip needs the samples' distances (" << testGl().summary() << ")");
+        return;
+    }
+    const Scene scene = deepScene("hall-255");
+    LidrOptions o;
+    o.msaaSamples = 4;
+    o.transparency = false;
+    o.materialShader = R"(#version 120
+#include "shading.glsl"
+#include "lidr_lights.glsl"
+void main() {
+    LidrSurface s = lidrSurface();
+    float band = 0.0;
+    LidrLight light;
+    lidrBeginLights();
+    for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
+        if (!lidrNextLight(light)) break;
+        vec3 d = light.position - s.position;
+        band += clamp(1.0 - dot(d, d) / (light.radius * light.radius), 0.0, 1.0) > 0.5 ? 2.0 : 1.0;
+    }
+    gl_FragColor = vec4(band * 16.0 / 255.0, 0.0, 0.0, 1.0);
+}
+)";
+    std::vector<ImageRGBA8> images;
+    for (const HiddenFragmentSkip skip : {HiddenFragmentSkip::On, HiddenFragmentSkip::Off}) {
+        o.hiddenFragmentSkip = skip;
+        LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);
+        renderer.render(scene.camera, scene.lightsAt(0.0f), {scene.ambient, scene.backgroundColor});
+        REQUIRE(renderer.skippedHiddenFragments() == (skip == HiddenFragmentSkip::On));
+        images.push_back(renderer.targets().readColor());
+    }
+    long differing = 0, lit = 0;
+    for (size_t i = 0; i < images[0].pixels.size(); i += 4) {
+        differing += images[0].pixels[i] != images[1].pixels[i];
+        lit += images[1].pixels[i] > 0;
+    }
+    INFO("pixels differing " << differing << ", lit " << lit);
+    REQUIRE(lit > 0);
+    REQUIRE(differing == 0);
+    REQUIRE(glGetError() == GL_NO_ERROR);
+}
+
 // The probe behind auto's choice counts, with ARB_pipeline_statistics_query, the fragment shader invocations of
 // a draw its depth test rejects everywhere. llvmpipe shades them (doc/contexts.md); the probe leaves no object.
 TEST_CASE("the early-depth probe counts rejected multisampled fragments", "[msaa][every-gl]") {

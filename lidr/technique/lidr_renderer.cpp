@@ -394,7 +394,7 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     const ShadowMaps* shadows = lights && frame_.shadows.active() ? &frame_.shadows : nullptr;
     frame_.prepareEnvironment(shading, stats_, lights ? indexTargets_->count() : 0);
     VisibleSamples visible;
-    stats_.autoDecision.hiddenFragmentSkip = skipHiddenFragments();
+    stats_.autoDecision.hiddenFragmentSkip = lights && skipHiddenFragments();
     if (stats_.autoDecision.hiddenFragmentSkip) visible = {&depthSpans_.sampleTexture(), depthSpans_.samples()};
     current_->forward->run(frame_.targets, *indexTargets_, frame_.scene, frame_.lightTable, cam, shading, frame_.environment,
                            options_.depthPrepass, lights, shadows, visible);
@@ -410,7 +410,10 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
 }
 
 bool LidrRenderer::skipHiddenFragments() const {
-    if (!depthSpans_.storesSamples() || frame_.info.maxTextureUnits <= gl::kUnitSampleDistances) return false;
+    // As ForwardPass::run takes it: after the MSAA pre-pass that stored the distances, at the buffer's own depth.
+    if (!depthSpans_.storesSamples() || options_.emulatedDepthBits != 0 ||
+        frame_.info.maxTextureUnits <= gl::kUnitSampleDistances)
+        return false;
     switch (options_.hiddenFragmentSkip) {
         case HiddenFragmentSkip::On: return true;
         case HiddenFragmentSkip::Off: return false;
