@@ -284,6 +284,7 @@ TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices hold eve
 // of hall-255's image and 9 of hall-1024's changed.
 TEST_CASE("MSAA: skipping hidden fragments' lights leaves the image unchanged", "[msaa][every-gl]") {
     const std::string name = GENERATE("room", "hall-255", "hall-1024", "city-255");
+    if (!takeRow(name == "hall-255")) return;  // representative: a scene with ties
     if (!contextHasMsaa(4)) return;
     if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
         WARN("skipped: the skip needs the samples' distances (" << testGl().summary() << ")");
