@@ -83,6 +83,26 @@ SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFl
     return c;
 }
 
+std::string toonMaterialShader(int step) {
+    return R"(#version 120
+#include "shading.glsl"
+#include "lidr_lights.glsl"
+void main() {
+    LidrSurface s = lidrSurface();
+    float band = 0.0;
+    LidrLight light;
+    lidrBeginLights();
+    for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
+        if (!lidrNextLight(light)) break;
+        vec3 d = light.position - s.position;
+        float a = clamp(1.0 - dot(d, d) / (light.radius * light.radius), 0.0, 1.0);
+        band += a > 0.5 ? 2.0 : (a > 0.0 ? 1.0 : 0.0);  // two toon steps
+    }
+    gl_FragColor = vec4(band * )" + std::to_string(step) + R"(.0 / 255.0, 0.0, 0.0, 1.0);
+}
+)";
+}
+
 Scene testRoom(float time) {
     DefaultSceneOptions o;
     o.width = testWidth();

@@ -52,6 +52,9 @@ SweepCheck checkSweep(const Scene& scene, const ImageRGBA8& image, const ImageFl
                       double brightLevel);
 // lidr's default room (255 lights) at testWidth() x testHeight(), at `time` seconds.
 Scene testRoom(float time = 0.0f);
+// A toon material shader of the program's own (lidr_lights.glsl): per listed light 2 steps where its attenuation
+// exceeds 0.5, 1 where it is above 0; red = steps x `step` / 255.
+std::string toonMaterialShader(int step);
 
 struct RenderResult {
     ImageRGBA8 lidr, reference;

@@ -497,23 +497,7 @@ TEST_CASE("a toon material through lidr_lights.glsl matches the CPU on the lit f
     // distance to the light alone, which the CPU computes from the depth buffer.
     Scene scene = floorScene();
     scene.lights.push_back(light({1.0f, 0.5f, 3.0f}, 4.0f, glm::vec3(1.0f)));
-    const std::string toon = R"(#version 120
-#include "shading.glsl"
-#include "lidr_lights.glsl"
-void main() {
-    LidrSurface s = lidrSurface();
-    float band = 0.0;
-    LidrLight light;
-    lidrBeginLights();
-    for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
-        if (!lidrNextLight(light)) break;
-        vec3 d = light.position - s.position;
-        float a = clamp(1.0 - dot(d, d) / (light.radius * light.radius), 0.0, 1.0);
-        band += a > 0.5 ? 2.0 : (a > 0.0 ? 1.0 : 0.0);  // two toon steps
-    }
-    gl_FragColor = vec4(band * 100.0 / 255.0, 0.0, 0.0, 1.0);
-}
-)";
+    const std::string toon = toonMaterialShader(100);
     LidrOptions o;
     o.materialShader = toon;
     LidrRenderer renderer(testGl(), scene, o, scene.width, scene.height);

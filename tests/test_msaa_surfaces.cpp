@@ -317,7 +317,7 @@ TEST_CASE("MSAA: skipping hidden fragments' lights leaves the image unchanged", 
 }
 
 // A material shader of the program's own gets the skip too (its lidrBeginLights(); compiled as GLSL 1.50
-// compatibility then): a band count like a toon shader's, the same image with the skip on and off.
+// compatibility then): the toon material of the embedding tests, the same image with the skip on and off.
 TEST_CASE("MSAA: a material shader's image is unchanged by the hidden-fragment skip", "[msaa][embed][every-gl]") {
     if (!contextHasMsaa(4)) return;
     if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
@@ -328,22 +328,7 @@ TEST_CASE("MSAA: a material shader's image is unchanged by the hidden-fragment s
     LidrOptions o;
     o.msaaSamples = 4;
     o.transparency = false;
-    o.materialShader = R"(#version 120
-#include "shading.glsl"
-#include "lidr_lights.glsl"
-void main() {
-    LidrSurface s = lidrSurface();
-    float band = 0.0;
-    LidrLight light;
-    lidrBeginLights();
-    for (int i = 0; i < LIDR_MAX_LIGHTS; ++i) {
-        if (!lidrNextLight(light)) break;
-        vec3 d = light.position - s.position;
-        band += clamp(1.0 - dot(d, d) / (light.radius * light.radius), 0.0, 1.0) > 0.5 ? 2.0 : 1.0;
-    }
-    gl_FragColor = vec4(band * 16.0 / 255.0, 0.0, 0.0, 1.0);
-}
-)";
+    o.materialShader = toonMaterialShader(16);
     std::vector<ImageRGBA8> images;
     for (const HiddenFragmentSkip skip : {HiddenFragmentSkip::On, HiddenFragmentSkip::Off}) {
         o.hiddenFragmentSkip = skip;
