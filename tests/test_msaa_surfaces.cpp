@@ -17,6 +17,9 @@
 #include "lidr/modes/tiled_renderer.h"
 #include "lidr/technique/depth_span_pass.h"
 #include "lidr/gl/early_depth_probe.h"
+#include "lidr/gl/bindings.h"
+#include "lidr/gl/gl_resources.h"
+#include "lidr/gl/shader_source.h"
 #include "render_helpers.h"
 
 using namespace lidr;
@@ -363,4 +366,41 @@ TEST_CASE("the early-depth probe counts rejected multisampled fragments", "[msaa
     INFO(info.summary());
     if (info.pipelineStatistics && info.multisampleFbo && info.renderer.find("llvmpipe") != std::string::npos)
         REQUIRE(shades);
+}
+
+TEST_CASE("the samples path packs at most 8 samples' distances: more take the moments, or are refused by name",
+          "[msaa][bad-input][cpu]") {
+    GlInfo info;  // a GL 4.5 context with 16-sample float textures
+    info.multisampleTexture = info.halfFloatColorBuffer = true;
+    info.glsl = 450;
+    info.maxColorTextureSamples = 16;
+    REQUIRE(resolveDepthSpanStorage(DepthSpanStorage::Auto, info, 8) == DepthSpanStorage::Samples);
+    REQUIRE(resolveDepthSpanStorage(DepthSpanStorage::Samples, info, 8) == DepthSpanStorage::Samples);
+    REQUIRE(resolveDepthSpanStorage(DepthSpanStorage::Auto, info, 16) == DepthSpanStorage::Moments);
+    REQUIRE_THROWS_AS(resolveDepthSpanStorage(DepthSpanStorage::Samples, info, 16), UnsupportedError);
+    REQUIRE_THROWS_WITH(resolveDepthSpanStorage(DepthSpanStorage::Samples, info, 16),
+                        Catch::Contains("at most 8") && Catch::Contains("not 16") && Catch::Contains("moments"));
+}
+
+TEST_CASE("MSAA samples path: the programs for 8 samples (two packed texels a pixel) compile", "[msaa][every-gl]") {
+    // llvmpipe stops at 4x, so the second texel of DepthSpanPass's packed distances is drawn on other drivers only:
+    // at least its programs must build where the samples path can run at all.
+    const GlInfo& info = testGl();
+    if (info.gles || !info.multisampleTexture || info.glsl < 150) {
+        WARN("skipped: no multisample textures in GLSL 1.50 here (" << info.summary() << ")");
+        return;
+    }
+    const ShaderDefines samples8 = {{"LIDR_SPAN_SAMPLES", "8"}, {"LIDR_SPAN_RANGES", "1"}};
+    CHECK_NOTHROW(gl::Program::create("centre-8", buildShaderSource("fullscreen.vert"),
+                                      perSampleGlsl150(buildShaderSource("depth_span_centre.frag", samples8), false),
+                                      {{"aPosition", gl::kPosition}}));
+    for (const char* ray : {"0", "1"}) {
+        ShaderDefines volume = {{"LIDR_DRAW_TARGETS", "1"}, {"LIDR_BATCH", "16"}, {"LIDR_SPAN_SAMPLES", "8"},
+                                {"LIDR_SCREEN_TILES", "1"}, {"LIDR_SPOT_CONES", "1"}};
+        if (std::string(ray) == "1") volume.push_back({"LIDR_SPHERE_RAY", "1"});
+        INFO("sphere-ray " << ray);
+        CHECK_NOTHROW(gl::Program::create("volume-8", buildShaderSource("light_volume_batch.vert", volume),
+                                          perSampleGlsl150(buildShaderSource("light_volume_sphere.frag", volume), false),
+                                          {{"aPosition", gl::kPosition}, {"aSlot", gl::kVolumeSlot}}));
+    }
 }

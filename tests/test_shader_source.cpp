@@ -38,13 +38,13 @@ TEST_CASE("buildShaderSource: after #version, every line is where #line says, in
         {"lidr_forward.frag", {}, {{"lidr_unpack.glsl", "unpack_max_stencil.glsl"}},
          {"lidr_forward.frag", "lidr_depth.glsl", "shading.glsl", "output_transform.glsl", "material.glsl", "lidr_lights.glsl", "light_table.glsl",
           "unpack_max_stencil.glsl", "lidr_channel_stream.glsl", "lidr_bytes.glsl", "lidr_index_samplers.glsl",
-          "shadow_lookup.glsl"}},
+          "sample_distances.glsl", "shadow_lookup.glsl"}},
         // Emulated 16-bit depth (LidrOptions::emulatedDepthBits): a second substitution, the same line mapping.
         {"lidr_forward.frag", {{"LIDR_DEPTH_STEPS", "65535.0"}},
          {{"lidr_unpack.glsl", "unpack_max_stencil.glsl"}, {"lidr_depth.glsl", "lidr_depth_emulated.glsl"}},
          {"lidr_forward.frag", "lidr_depth_emulated.glsl", "shading.glsl", "output_transform.glsl", "material.glsl", "lidr_lights.glsl", "light_table.glsl",
           "unpack_max_stencil.glsl", "lidr_channel_stream.glsl", "lidr_bytes.glsl", "lidr_index_samplers.glsl",
-          "shadow_lookup.glsl"}},
+          "sample_distances.glsl", "shadow_lookup.glsl"}},
         {"geometry.vert", {}, {}, {"geometry.vert"}},
     };
     for (const Case& c : cases) {

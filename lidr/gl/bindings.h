@@ -60,8 +60,9 @@ enum TextureUnit : int {
     kUnitEnvironmentSplitSum = 18,
     kUnitEnvironmentSpecularLow = 6,
     kUnitEnvironmentSplitSumLow = 7,
-    // LIDR's opaque pass under MSAA: the pre-pass's per-sample distances (VisibleSamples), above the environment;
-    // only where the context has more units than that (desktop GL 3.2+, where the distances exist at all).
+    // LIDR's opaque pass under MSAA: the pre-pass's per-sample distances, four samples a texel (VisibleSamples: 19
+    // samples 0-3, 20 samples 4-7), above the environment; only where the context has more units than that
+    // (desktop GL 3.2+, where the distances exist at all).
     kUnitSampleDistances = 19,
     // FramePresenter: the frame.
     kUnitPresentedFrame = 0,

@@ -46,13 +46,20 @@ DepthSpanStorage resolveDepthSpanStorage(DepthSpanStorage requested, const GlInf
     else if (samples > info.maxColorTextureSamples)
         missing = std::to_string(samples) + "-sample textures (the context's most: " +
                   std::to_string(info.maxColorTextureSamples) + ")";
-    if (missing.empty()) return DepthSpanStorage::Samples;
+    if (missing.empty() && samples <= DepthSpanPass::kMaxPackedSamples) return DepthSpanStorage::Samples;
     if (requested == DepthSpanStorage::Auto) return DepthSpanStorage::Moments;
+    if (missing.empty())
+        throw UnsupportedError("--msaa-spans samples packs at most " +
+                               std::to_string(DepthSpanPass::kMaxPackedSamples) + " samples' distances a pixel, not " +
+                               std::to_string(samples) + ": use moments or auto (which takes moments there)");
     throw UnsupportedError("--msaa-spans samples stores each sample's distance in a multisample texture; this context "
                            "(OpenGL " + info.version + ") lacks " + missing + ": use moments (GL 2.1) or auto");
 }
 
 namespace {
+// writeCentreDepth's targets: the ranges' near and far (0, 1), then the packed distances.
+constexpr GLenum kPackedAttachment = GL_COLOR_ATTACHMENT2;
+
 FloatTargets sideTargets(const GlInfo& info, const RenderTargets& targets) {
     try {
         return FloatTargets(info, targets, GL_RGBA32F, 2);  // float: the moments' bounds stay tight
@@ -127,6 +134,7 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
     clear.color = true;  // 0: a sample no surface covers adds nothing to either bound (and has no distance)
     clear.depth = clear.stencil = true;
     StateCache& cache = StateCache::current();
+    packedWritten_ = false;
     if (sampleDistances_)
         cache.beginPass({sampleFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
     else
@@ -168,32 +176,20 @@ void DepthSpanPass::run(const GpuScene& scene, const CameraMatrices& camera, con
 
 std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
     if (!sampleDistances_) throw Error("readSampleDepths: the spans are not stored per sample");
+    if (!packedWritten_) throw Error("readSampleDepths: writeCentreDepth did not run after this frame's MSAA pre-pass");
     std::vector<ImageFloat> depths;
 #ifndef __EMSCRIPTEN__
-    if (!readProgram_)
-        readProgram_ = gl::Program::create("depth-span-sample-read", buildShaderSource("fullscreen.vert"),
-                                           perSampleGlsl150(buildShaderSource("depth_span_sample_read.frag"), false),
-                                           {{"aPosition", gl::kPosition}});
-    const gl::Texture out = gl::Texture::create2D(GL_RGBA32F, width_, height_, GL_RGBA, GL_FLOAT);
-    gl::Framebuffer fbo = gl::Framebuffer::create();
-    fbo.attachTexture(GL_COLOR_ATTACHMENT0, out);
     StateCache& cache = StateCache::current();
+    cache.bindFramebuffer(centreFbo_.id());
     std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
     auto depthAt = [&](float distance) {  // view distance -> window depth (1: no surface)
         return distance > 0.0f ? std::clamp(depthToDistance_.x / distance - depthToDistance_.y, 0.0f, 1.0f) : 1.0f;
     };
-    for (int first = 0; first < samples_; first += 4) {  // four samples a draw, one per channel
-        cache.beginPass({fbo.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, {}});
-        cache.apply(RenderState{});
-        readProgram_.use();
-        sampleDistances_.bind(gl::kUnitDepthSpans);
-        readProgram_.set("uSampleDistances", gl::kUnitDepthSpans);
-        readProgram_.set("uFirstSample", first);
-        readProgram_.set("uSampleCount", samples_);
-        triangle_.draw();
+    for (int t = 0; t < packedTextureCount(); ++t) {  // four samples a texel, one per channel
+        glReadBuffer(GLenum(kPackedAttachment + t));
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rgba.data());
-        for (int c = 0; c < 4 && first + c < samples_; ++c) {
+        for (int c = 0; c < 4 && 4 * t + c < samples_; ++c) {
             ImageFloat d(width_, height_);
             for (int y = 0; y < height_; ++y)
                 for (int x = 0; x < width_; ++x)
@@ -201,8 +197,8 @@ std::vector<ImageFloat> DepthSpanPass::readSampleDepths() const {
             depths.push_back(std::move(d));
         }
     }
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
     cache.bindFramebuffer(0);
-    cache.bindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     checkGl("MSAA sample distances read-back");
 #endif
     return depths;
@@ -222,27 +218,36 @@ void DepthSpanPass::writeCentreDepth(const gl::Renderbuffer& depthStencil, const
     if (!sampleDistances_) throw Error("writeCentreDepth: the spans are not stored per sample");
 #ifndef __EMSCRIPTEN__
     if (!centreFbo_) {
-        // The ranges' RG32F texture with the targets' single-sample depth-stencil: one pass writes both.
-        rangeTexture_ = gl::Texture::create2D(GL_RG32F, width_, height_, GL_RG, GL_FLOAT);
+        // The ranges' two R32F textures (read back straight into the two arrays VolumeTiles takes) and the packed
+        // distances with the targets' single-sample depth-stencil: one pass writes them all.
         centreFbo_ = gl::Framebuffer::create();
-        centreFbo_.attachTexture(GL_COLOR_ATTACHMENT0, rangeTexture_);
+        for (int i = 0; i < 2; ++i) {
+            rangeTextures_[i] = gl::Texture::create2D(GL_R32F, width_, height_, GL_RED, GL_FLOAT);
+            centreFbo_.attachTexture(GLenum(GL_COLOR_ATTACHMENT0 + i), rangeTextures_[i]);
+        }
+        for (int t = 0; t < packedTextureCount(); ++t) {
+            packedDistances_[t] = gl::Texture::create2D(GL_RGBA32F, width_, height_, GL_RGBA, GL_FLOAT);
+            centreFbo_.attachTexture(GLenum(kPackedAttachment + t), packedDistances_[t]);
+        }
         centreFbo_.attachDepthStencil(depthStencil, separateStencil);
-        centreFbo_.checkComplete("MSAA depth ranges (RG32F) with the single-sample depth-stencil");
+        centreFbo_.checkComplete("MSAA depth ranges (R32F) and packed sample distances (RGBA32F) with the "
+                                 "single-sample depth-stencil");
     }
     gl::Program& program = ranges ? centreRangeProgram_ : centreProgram_;
     if (!program) program = centreProgram(ranges);
-    // (1, 1) in the ranges where no sample has a surface; depth and stencil cleared as a pre-pass clears them.
+    // Depth and stencil cleared as a pre-pass clears them; the colour targets need no clear: the pass writes every
+    // pixel ((1, 1) in the ranges where no sample has a surface).
     ClearAction clear;
-    clear.color = ranges;
     clear.depth = clear.stencil = true;
-    clear.colorValue = glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
+    std::vector<GLenum> buffers(2, GLenum(GL_NONE));
+    if (ranges) buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    for (int t = 0; t < packedTextureCount(); ++t) buffers.push_back(GLenum(kPackedAttachment + t));
     StateCache& cache = StateCache::current();
-    cache.beginPass({centreFbo_.id(), glm::ivec4(0, 0, width_, height_), {GL_COLOR_ATTACHMENT0}, clear});
+    cache.beginPass({centreFbo_.id(), glm::ivec4(0, 0, width_, height_), buffers, clear});
     RenderState s;
     s.depthTest = true;
     s.depthFunc = GL_ALWAYS;
     s.depthWrite = true;
-    s.colorMask = glm::bvec4(ranges);
     cache.apply(s);
     program.use();
     sampleDistances_.bind(gl::kUnitDepthSpans);
@@ -252,6 +257,7 @@ void DepthSpanPass::writeCentreDepth(const gl::Renderbuffer& depthStencil, const
     cache.apply(RenderState{});
     cache.bindFramebuffer(0);
     rangesWritten_ = ranges;
+    packedWritten_ = true;
     checkGl("MSAA sample distances: the centre's depth");
 #else
     (void)depthStencil;
@@ -267,17 +273,16 @@ void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<f
     StateCache& cache = StateCache::current();
     cache.bindFramebuffer(centreFbo_.id());
     const size_t pixels = size_t(width_) * size_t(height_);
-    rangeReadback_.resize(pixels * 2);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width_, height_, GL_RG, GL_FLOAT, rangeReadback_.data());
+    for (int i = 0; i < 2; ++i) {
+        std::vector<float>& out = i == 0 ? nearDepth : farDepth;
+        out.resize(pixels);
+        glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + i));
+        glReadPixels(0, 0, width_, height_, GL_RED, GL_FLOAT, out.data());
+    }
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
     cache.bindFramebuffer(0);
     checkGl("MSAA depth ranges read-back");
-    nearDepth.resize(pixels);
-    farDepth.resize(pixels);
-    for (size_t i = 0; i < pixels; ++i) {
-        nearDepth[i] = rangeReadback_[2 * i];
-        farDepth[i] = rangeReadback_[2 * i + 1];
-    }
 #else
     (void)nearDepth;
     (void)farDepth;

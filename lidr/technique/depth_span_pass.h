@@ -13,8 +13,10 @@
 // each side: the resolve then bounds each side's samples between Samuelson's bounds (mean -/+ deviation x
 // sqrt(k - 1) over its k samples), a point (up to rounding) where they lie on one surface.
 // With sample distances (GL 3.2 multisample textures) the pass writes each sample's shaded distance into a
-// multisampled R32F texture and nothing is resolved: the volume pass reads every sample (texelFetch) and tests
-// the light against each sample's point, so an edge pixel's list is exactly its samples' surfaces' lights.
+// multisampled R32F texture and nothing is resolved; the full-screen centre pass then copies them, four samples a
+// texel, into one or two single-sample RGBA32F textures, which the volume pass (one fetch instead of one per
+// sample) and the forward pass's hidden-fragment skip read: the light is tested against each sample's point, so an
+// edge pixel's list is exactly its samples' surfaces' lights.
 #include <string>
 #include <vector>
 
@@ -67,16 +69,22 @@ public:
     explicit operator bool() const { return bool(target_) || bool(sides_) || bool(sampleDistances_); }
 
     // Sample distances: per sample the view distance of the point its fragment shades (at the pixel centre,
-    // where the forward pass shades it), 0 where no surface covers it; sampler2DMS, read per sample.
+    // where the forward pass shades it), 0 where no surface covers it. At most kMaxPackedSamples samples (the
+    // packed copies below): more take the moments (resolveDepthSpanStorage).
+    static constexpr int kMaxPackedSamples = 8;
     bool storesSamples() const { return bool(sampleDistances_); }
-    const gl::Texture& sampleTexture() const { return sampleDistances_; }
-    // CPU read-back (tests, evaluation): per sample an image of window depths, rows top to bottom (1: no surface).
+    // After writeCentreDepth: the same distances four samples a texel (samples 4i .. 4i + 3 in texture i, 0 beyond
+    // the sample count), single-sample RGBA32F, read with one texelFetch (shaders/technique/sample_distances.glsl).
+    int packedTextureCount() const { return (samples_ + 3) / 4; }
+    const gl::Texture& packedTexture(int i) const { return packedDistances_[size_t(i)]; }
+    // CPU read-back (tests, evaluation) after writeCentreDepth: per sample an image of window depths, rows top to
+    // bottom (1: no surface).
     std::vector<ImageFloat> readSampleDepths() const;
     // With sample distances, after run(): sample 0's point as the single-sample depth, the centre the sphere tests
     // read, into `depthStencil` (the targets' single-sample depth-stencil, RenderTargets::depthStencil(); cleared
-    // first, stencil too): one full-screen pass in place of the single-sample depth pre-pass. With `ranges`
-    // (tile-culled frames) the same pass also keeps each pixel's depth range for readDepthRanges. Leaves
-    // framebuffer 0 bound.
+    // first, stencil too): one full-screen pass in place of the single-sample depth pre-pass, which also writes
+    // the packed distances. With `ranges` (tile-culled frames) the same pass also keeps each pixel's depth range
+    // for readDepthRanges. Leaves framebuffer 0 bound.
     void writeCentreDepth(const gl::Renderbuffer& depthStencil, const gl::Renderbuffer* separateStencil,
                           bool ranges) const;
     // Tile-culled volumes under MSAA (after writeCentreDepth with ranges, this frame): per pixel, rows bottom to top
@@ -135,12 +143,14 @@ private:
     FloatTargets sides_;      // with them: the spans (0) and the moments (1)
     gl::Texture sampleDistances_;   // with sample distances: the multisample R32F texture
     gl::Framebuffer sampleFbo_;     // ... with the targets' multisampled depth-stencil
-    mutable gl::Program readProgram_;  // readSampleDepths: four samples a draw into an RGBA32F texture
     mutable gl::Program centreProgram_, centreRangeProgram_;  // writeCentreDepth without and with ranges
-    mutable gl::Framebuffer centreFbo_;  // the ranges' RG32F texture with the single-sample depth-stencil
+    // The ranges' near and far R32F textures (attachments 0, 1) and the packed distances (2, 3) with the
+    // single-sample depth-stencil.
+    mutable gl::Framebuffer centreFbo_;
     mutable bool rangesWritten_ = false;  // writeCentreDepth wrote ranges since the last readDepthRanges
-    mutable gl::Texture rangeTexture_;
-    mutable std::vector<float> rangeReadback_;
+    mutable bool packedWritten_ = false;  // writeCentreDepth ran since run()
+    mutable gl::Texture rangeTextures_[2];
+    mutable gl::Texture packedDistances_[2];
     FullScreenTriangle triangle_;
     mutable float momentScale_ = 1.0f;
     mutable glm::vec2 depthToDistance_{1.0f, 0.0f};

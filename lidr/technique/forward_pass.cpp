@@ -126,8 +126,10 @@ const gl::Program& ForwardPass::bindInputs(const RenderTargets& targets, const I
         program.set(("uIndexTex" + std::to_string(i)).c_str(), gl::kUnitIndexTarget0 + i);
     }
     if (visible) {
-        visible.distances->bind(gl::kUnitSampleDistances);
-        program.set("uLidrSampleDistances", gl::kUnitSampleDistances);
+        for (int t = 0; t < visible.textureCount(); ++t) {
+            visible.distances[t]->bind(gl::kUnitSampleDistances + t);
+            program.set(("uLidrSampleDistances" + std::to_string(t)).c_str(), gl::kUnitSampleDistances + t);
+        }
     }
     return program;
 }
@@ -136,7 +138,7 @@ void ForwardPass::unbindInputs(const IndexTargets& indices, bool lights, Visible
     StateCache& cache = StateCache::current();
     cache.apply(RenderState{});
     cache.unbindTextures(gl::kUnitIndexTarget0, lights ? indices.count() : 0);
-    if (visible) cache.unbindTextures(gl::kUnitSampleDistances, 1);
+    if (visible) cache.unbindTextures(gl::kUnitSampleDistances, visible.textureCount());
 }
 
 void ForwardPass::run(const RenderTargets& targets, const IndexTargets& indices, const GpuScene& scene,

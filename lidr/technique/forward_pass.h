@@ -18,13 +18,15 @@
 
 namespace lidr {
 
-// The MSAA pre-pass's view distance per sample (DepthSpanPass::sampleTexture, drawn depth LEQUAL): with it the
-// opaque pass skips the light list of every fragment that keeps no sample (LIDR_VISIBLE_SAMPLES in
-// lidr_lights.glsl). Needs GLSL 1.50 and texture unit gl::kUnitSampleDistances.
+// The MSAA pre-pass's view distance per sample (drawn depth LEQUAL), four samples a texel
+// (DepthSpanPass::packedTexture: samples 0-3, then 4-7): with it the opaque pass skips the light list of every
+// fragment that keeps no sample (LIDR_VISIBLE_SAMPLES in lidr_lights.glsl). Needs GLSL 1.50 and texture units
+// gl::kUnitSampleDistances and up, one a texture.
 struct VisibleSamples {
-    const gl::Texture* distances = nullptr;
+    const gl::Texture* distances[2] = {nullptr, nullptr};
     int samples = 0;
-    explicit operator bool() const { return distances != nullptr && samples > 0; }
+    int textureCount() const { return (samples + 3) / 4; }
+    explicit operator bool() const { return distances[0] != nullptr && samples > 0; }
 };
 
 // When LIDR's opaque pass under MSAA skips hidden fragments' lists (LidrOptions::hiddenFragmentSkip,

@@ -395,7 +395,10 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
     frame_.prepareEnvironment(shading, stats_, lights ? indexTargets_->count() : 0);
     VisibleSamples visible;
     stats_.autoDecision.hiddenFragmentSkip = lights && skipHiddenFragments();
-    if (stats_.autoDecision.hiddenFragmentSkip) visible = {&depthSpans_.sampleTexture(), depthSpans_.samples()};
+    if (stats_.autoDecision.hiddenFragmentSkip) {
+        visible.samples = depthSpans_.samples();
+        for (int t = 0; t < depthSpans_.packedTextureCount(); ++t) visible.distances[t] = &depthSpans_.packedTexture(t);
+    }
     current_->forward->run(frame_.targets, *indexTargets_, frame_.scene, frame_.lightTable, cam, shading, frame_.environment,
                            options_.depthPrepass, lights, shadows, visible);
     forwardTime.end();
@@ -412,7 +415,7 @@ void LidrRenderer::shade(const CameraMatrices& cam, const ShadingParameters& sha
 bool LidrRenderer::skipHiddenFragments() const {
     // As ForwardPass::run takes it: after the MSAA pre-pass that stored the distances, at the buffer's own depth.
     if (!depthSpans_.storesSamples() || options_.emulatedDepthBits != 0 ||
-        frame_.info.maxTextureUnits <= gl::kUnitSampleDistances)
+        frame_.info.maxTextureUnits < gl::kUnitSampleDistances + depthSpans_.packedTextureCount())
         return false;
     switch (options_.hiddenFragmentSkip) {
         case HiddenFragmentSkip::On: return true;

@@ -285,8 +285,12 @@ void LightVolumeGeometry::beginSteps(const VolumeDraw& d, const VolumeDrawPlan& 
         if (!(depthSpans_ && depthSpans_->storesSamples() && depthSpans_->samples() == spanSamples_))
             throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA sample "
                         "distances of " + std::to_string(spanSamples_) + " samples");
-        program.set("uSampleDistances", gl::kUnitDepthSpans);
-        depthSpans_->sampleTexture().bind(gl::kUnitDepthSpans);
+        // Four samples a texel: units kUnitDepthSpans and the one after it (the moments' side unit, unused here).
+        static_assert(gl::kUnitDepthSpanSides == gl::kUnitDepthSpans + 1);
+        for (int t = 0; t < depthSpans_->packedTextureCount(); ++t) {
+            program.set(("uLidrSampleDistances" + std::to_string(t)).c_str(), gl::kUnitDepthSpans + t);
+            depthSpans_->packedTexture(t).bind(gl::kUnitDepthSpans + t);
+        }
     } else if (readsSpans_) {
         if (!(depthSpans_ && *depthSpans_ && depthSpans_->hasSides()))
             throw Error(std::string("the ") + volumeTestName(test_) + " volume test needs the frame's MSAA depth spans");

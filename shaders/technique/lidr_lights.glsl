@@ -101,13 +101,14 @@ float lidrRegionRowOfPixel() {
 // fragments its early depth test rejected (llvmpipe under MSAA) then pays no lights for hidden surfaces. The match
 // allows 2^-12 of the distance (the pre-pass took it from vWorldPos, this from gl_FragCoord.w: the same number but
 // for rounding, far below that): a hidden fragment that close is shaded for nothing; a visible one is not skipped.
-uniform sampler2DMS uLidrSampleDistances;
+#define LIDR_SAMPLE_DISTANCE_COUNT LIDR_VISIBLE_SAMPLES
+#include "sample_distances.glsl"
 bool lidrKeepsASample() {
     float distance = 1.0 / gl_FragCoord.w;
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    LidrSampleDistances samples = lidrReadSampleDistances(ivec2(gl_FragCoord.xy));
     bool keeps = false;
     for (int i = 0; i < LIDR_VISIBLE_SAMPLES; ++i)  // unrolled: cheaper on llvmpipe than a loop that ends early
-        keeps = keeps || abs(texelFetch(uLidrSampleDistances, pixel, i).r - distance) <= distance * (1.0 / 4096.0);
+        keeps = keeps || abs(lidrSampleDistance(samples, i) - distance) <= distance * (1.0 / 4096.0);
     return keeps;
 }
 #endif

@@ -11,7 +11,7 @@
 //                   uDepthSpan); without LIDR_SPHERE_RAY the ray between them must meet the sphere (interior
 //                   pixels: one depth, the sphere test), with it the ray ends at the farther one.
 //   LIDR_SPAN_SAMPLES N (MSAA, sphere-span where the context has multisample textures; GLSL 1.50): each of the N
-//                   samples' shaded points, read per sample (DepthSpanPass sample distances): the light is kept
+//                   samples' shaded points (DepthSpanPass sample distances, four a texel): the light is kept
 //                   where its sphere (and cone) reaches any of them (the centre's is sample 0's); with
 //                   LIDR_SPHERE_RAY the ray ends at the farthest of them (the far plane where one sees none).
 // Everything is in view space along the pixel's ray, scaled so that its z is -1: a point at distance z in
@@ -71,12 +71,14 @@ varying vec4 vConeView;  // LIDR_SPOT_CONES: a draw with spot lights (a draw of 
 #endif
 
 #ifdef LIDR_SPAN_SAMPLES
-uniform sampler2DMS uSampleDistances;  // per sample, the view distance of the point it shades (0: none)
+#define LIDR_SAMPLE_DISTANCE_COUNT LIDR_SPAN_SAMPLES
+#include "sample_distances.glsl"  // per sample, the view distance of the point it shades (0: none), four a texel
 
-// Whether the light reaches a surface between distances a and b on the ray: its sphere, and (opaque lists) the
-// cone, whose ramp must be >= 0 at one end (see the cone test in main).
-bool lidrReaches(vec3 ray, float toCentre, float a, float b, float r2) {
-    if (lidrSegmentDistance2(ray, toCentre, a, b, vLightView.xyz) > r2) return false;
+// Whether the light reaches a surface between distances a and b on the ray: the segment overlaps the stretch of
+// the ray inside the sphere, [enter, exit] (lidrSamplesReached), and (opaque lists) lies in the cone, whose ramp
+// must be >= 0 at one end (see the cone test in main).
+bool lidrReaches(vec3 ray, float a, float b, float enter, float exit) {
+    if (a > exit || b < enter) return false;
 #if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
     vec3 dNear = ray * a - vLightView.xyz, dFar = ray * b - vLightView.xyz;
     return dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) >= 0.0 ||
@@ -89,20 +91,28 @@ bool lidrReaches(vec3 ray, float toCentre, float a, float b, float r2) {
 // Each sample's point (a hair wide for the rounding of its stored distance; the centre's surface is sample 0's,
 // DepthSpanPass::writeCentreDepth, so the depth copy is not read): whether the light reaches one (with
 // LIDR_SPHERE_RAY: meets the ray up to the farthest, or the far plane where a sample sees no surface), and the
-// nearest and farthest of them. Sample 0 first: an interior pixel whose light reaches it ends there.
+// nearest and farthest of them. The ray runs inside the sphere between distances toCentre -/+ the half chord
+// (nowhere where it passes outside): one square root a fragment, then two compares a sample instead of a
+// distance to the light (the radius's hair, 1.0005, dwarfs the rounding of either).
 bool lidrSamplesReached(vec3 ray, float toCentre, out float spanNear, out float spanFar) {
     float r2 = vLightView.w * uRadiusScale * vLightView.w * uRadiusScale;
     spanNear = 1e30;
     spanFar = 0.0;
     bool reached = false, empty = false;
-    ivec2 texel = ivec2(gl_FragCoord.xy);
+#ifndef LIDR_SPHERE_RAY
+    vec3 closest = ray * toCentre - vLightView.xyz;
+    float halfChord2 = (r2 - dot(closest, closest)) / dot(ray, ray);
+    float halfChord = sqrt(max(halfChord2, 0.0));
+    float enter = halfChord2 >= 0.0 ? toCentre - halfChord : 1e30, exit = toCentre + halfChord;
+#endif
+    LidrSampleDistances distances = lidrReadSampleDistances(ivec2(gl_FragCoord.xy));
     for (int i = 0; i < LIDR_SPAN_SAMPLES; ++i) {  // a constant: the loop unrolls
-        float x = texelFetch(uSampleDistances, texel, i).r;
+        float x = lidrSampleDistance(distances, i);
         empty = empty || x <= 0.0;
         if (x <= 0.0) continue;
         float a = x * (1.0 - 1.0 / 4096.0), b = x * (1.0 + 1.0 / 4096.0);
 #ifndef LIDR_SPHERE_RAY
-        reached = reached || lidrReaches(ray, toCentre, a, b, r2);
+        reached = reached || lidrReaches(ray, a, b, enter, exit);
 #ifndef LIDR_SHADOWS
         if (reached) return true;  // (the shadow test needs the whole span)
 #endif
