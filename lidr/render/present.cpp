@@ -17,26 +17,18 @@ gl::Program fullScreenProgram(const char* name, const char* fragmentShader) {
                                {{"aPosition", gl::kPosition}});
 }
 
-gl::Buffer fullScreenTriangle() {
-    const float triangle[] = {-1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f};
-    return gl::Buffer::create(GL_ARRAY_BUFFER, triangle, sizeof triangle);
-}
-
 // Draws `frame` over the current pass's viewport with `program` (in use), no state of its own.
-void drawFullScreen(const gl::Program& program, const gl::Buffer& triangle, const gl::Texture& frame) {
+void drawFullScreen(const gl::Program& program, const FullScreenTriangle& triangle, const gl::Texture& frame) {
     frame.bind(gl::kUnitPresentedFrame);
     program.set("uFrame", gl::kUnitPresentedFrame);
-    glBindBuffer(GL_ARRAY_BUFFER, triangle.id());
-    glVertexAttribPointer(gl::kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(gl::kPosition);
-    StateCache::current().drawArrays(GL_TRIANGLES, 0, 3);
+    triangle.draw();
 }
 }  // namespace
 
 FramePresenter::FramePresenter() {
     SavedGlState saved;
     program_ = fullScreenProgram("present", "present.frag");
-    triangle_ = fullScreenTriangle();
+    triangle_ = FullScreenTriangle::create();
     checkGl("FramePresenter");
 }
 
@@ -56,7 +48,7 @@ void FramePresenter::present(const RenderTargets& targets, GLuint framebuffer, i
 OutputEncodePass::OutputEncodePass() {
     SavedGlState saved;
     program_ = fullScreenProgram("output-encode", "output_encode.frag");
-    triangle_ = fullScreenTriangle();
+    triangle_ = FullScreenTriangle::create();
     checkGl("OutputEncodePass");
 }
 
@@ -93,8 +85,6 @@ void OutputEncodePass::run(const RenderTargets& targets, const OutputTransform& 
     setOutputUniforms(program, output);
     drawFullScreen(program, triangle_, linearFrame);
     if (perSample) cache.apply(RenderState{});
-    glDisableVertexAttribArray(gl::kPosition);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
     checkGl("OutputEncodePass");
 }
 

@@ -4,6 +4,7 @@
 // index targets); FramePresenter then draws that colour image over a rectangle of the caller's framebuffer
 // with one textured triangle (GL 2.1, no blit extension needed), leaving every piece of GL state as found.
 #include "lidr/base/gl_types.h"
+#include "lidr/gl/full_screen_triangle.h"
 #include "lidr/gl/gl_resources.h"
 #include "lidr/gl/render_targets.h"
 #include "lidr/render/output_transform.h"
@@ -25,7 +26,7 @@ public:
 
 private:
     gl::Program program_;
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
 };
 
 // The output transform (exposure, tone map, sRGB) applied to a frame of linear light: multi-pass forward sums
@@ -47,7 +48,7 @@ public:
 private:
     gl::Program program_;
     gl::Program perSampleProgram_;  // compiled on first use
-    gl::Buffer triangle_;
+    FullScreenTriangle triangle_;
     gl::Texture scratch_;
 };
 
