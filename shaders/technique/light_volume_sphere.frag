@@ -74,12 +74,13 @@ varying vec4 vConeView;  // LIDR_SPOT_CONES: a draw with spot lights (a draw of 
 #define LIDR_SAMPLE_DISTANCE_COUNT LIDR_SPAN_SAMPLES
 #include "sample_distances.glsl"  // per sample, the view distance of the point it shades (0: none), four a texel
 
-// Whether the light reaches a surface between distances a and b on the ray: the segment overlaps the stretch of
-// the ray inside the sphere, [enter, exit] (lidrSamplesReached), and (opaque lists) lies in the cone, whose ramp
+#ifndef LIDR_SPHERE_RAY
+// Whether the light reaches a surface between distances a and b on the ray (opaque lists): the segment overlaps
+// the stretch of the ray inside the sphere, [enter, exit] (lidrSamplesReached), and lies in the cone, whose ramp
 // must be >= 0 at one end (see the cone test in main).
 bool lidrReaches(vec3 ray, float a, float b, float enter, float exit) {
     if (a > exit || b < enter) return false;
-#if defined(LIDR_SPOT_CONES) && !defined(LIDR_SPHERE_RAY)
+#ifdef LIDR_SPOT_CONES
     vec3 dNear = ray * a - vLightView.xyz, dFar = ray * b - vLightView.xyz;
     return dot(dNear, vConeView.xyz) + vConeView.w * length(dNear) >= 0.0 ||
            dot(dFar, vConeView.xyz) + vConeView.w * length(dFar) >= 0.0;
@@ -87,6 +88,7 @@ bool lidrReaches(vec3 ray, float a, float b, float enter, float exit) {
     return true;
 #endif
 }
+#endif
 
 // Each sample's point (a hair wide for the rounding of its stored distance; the centre's surface is sample 0's,
 // DepthSpanPass::writeCentreDepth, so the depth copy is not read): whether the light reaches one (with
