@@ -80,13 +80,13 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
                             << ", over budget " << e.pixelsOverBudget << ", budget " << r.stats.autoDecision.budget
                             << ", PSNR " << e.error.psnr << ", max error " << e.error.maxAbsError << ", pixels over 1 "
                             << e.error.pixelsOverThreshold);
-        // With the samples' distances the volumes are culled by tiles of each pixel's range (the deep halls'
-        // lights cover screens of rectangles; the tile decision takes tiles there).
+        // The volumes are culled by tiles of each pixel's range, from the samples' distances or the moments' spans
+        // (the deep halls' lights cover screens of rectangles; the tile decision takes tiles there).
         const bool samplesRead = resolveDepthSpanStorage(spans, testGl(), samples) == DepthSpanStorage::Samples;
         const double tileArea = r.stats.autoDecision.volumeAreaPerPixel;
         INFO("spans " << (samplesRead ? "samples" : "moments") << ", volume pixels per pixel " << tileArea
                       << " (-1: volume meshes)");
-        if (samplesRead && name.rfind("hall", 0) == 0) REQUIRE(tileArea >= 0.0);
+        if (name.rfind("hall", 0) == 0) REQUIRE(tileArea >= 0.0);
         // sphere-span ran (it alone reads spans) and found edges, a minority of the pixels.
         REQUIRE(e.edgePixels > 0);
         REQUIRE(e.edgePixels * 4 < pixels);
@@ -299,49 +299,57 @@ TEST_CASE("tiled forward under MSAA bounds its tiles by every sample's surface",
     REQUIRE(msaa < flat);
 }
 
-TEST_CASE("MSAA with the samples' distances: region-local 8-bit indices hold every list (budget 32), 16-bit global "
-          "ones all within budget 16",
+TEST_CASE("MSAA: region-local 8-bit indices hold every list (budget 32), 16-bit global ones all within budget 16",
           "[msaa][regions][every-gl]") {
-    // hall-1024 at 384 x 288: about 700 lights reach the view. With the samples' distances the volumes are culled
-    // by tiles, and those tiles number the lights per screen region as without MSAA (one byte a slot, not two).
-    // A few edge pixels need more than 16 lights: the regional frame widens to budget 32 (8 targets of 8-bit
-    // slots) and drops nothing; the global one cannot (32 slots of 16 bits would need 16 targets), so it packs 16
-    // and reports those pixels.
+    // hall-1024 at 384 x 288: about 700 lights reach the view. The volumes are culled by tiles of each pixel's
+    // range of its samples' points (their distances, or the GL 2.1 moments' resolved spans), and those tiles
+    // number the lights per screen region as without MSAA (one byte a slot, not two). A few edge pixels need more
+    // than 16 lights: the regional frame widens to budget 32 (8 targets of 8-bit slots) and drops nothing; the
+    // global one cannot (32 slots of 16 bits would need 16 targets), so it packs 16 and reports those pixels.
+    const DepthSpanStorage spans = GENERATE(DepthSpanStorage::Auto, DepthSpanStorage::Moments);
     if (!contextHasMsaa(4)) return;
-    if (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) != DepthSpanStorage::Samples) {
-        WARN("skipped: the moments (GL 2.1) draw volume meshes: no tiles, no regions");
+    if (spans == DepthSpanStorage::Moments &&
+        resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), 4) == DepthSpanStorage::Moments)
         return;
-    }
+    INFO(depthSpanStorageName(resolveDepthSpanStorage(spans, testGl(), 4)) << " spans");
     Scene scene;
     REQUIRE(makeOccludedSceneByName("hall-1024", scene));
     scene.width = 384;
     scene.height = 288;
     LidrOptions o;
     o.msaaSamples = 4;
+    o.msaaSpans = spans;
     const RenderResult regional = renderAndEvaluate(scene, o);
     o.regionalIndices = false;
     const RenderResult global = renderAndEvaluate(scene, o);
     const FrameEvaluation& e = regional.evaluation;
+    const int budget = regional.stats.autoDecision.budget, globalBudget = global.stats.autoDecision.budget;
     long dropsWithinBudget = 0;
     for (size_t p = 0; p < e.marked.size(); ++p)
-        if (e.marked[p] <= 16) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
+        if (e.marked[p] <= budget) dropsWithinBudget += e.spanLists.droppedPerPixel[p];
     INFO("regions " << regional.stats.autoDecision.indexRegions << ", index bits " << regional.stats.autoDecision.indexBits
                     << " / " << global.stats.autoDecision.indexBits << ", dropped within the budget " << dropsWithinBudget
-                    << ", over budget " << e.pixelsOverBudget << ", PSNR " << e.error.psnr);
+                    << ", over budget " << e.pixelsOverBudget << " (global: " << global.evaluation.pixelsOverBudget
+                    << "), the samples' surfaces need at most " << e.spanTruth.maxOverlap() << ", PSNR " << e.error.psnr);
     REQUIRE(global.stats.drawnLights > 255);
     REQUIRE(regional.stats.autoDecision.indexRegions > 0);
     CHECK(regional.stats.autoDecision.indexBits == 8);
     CHECK(global.stats.autoDecision.indexBits == 16);
-    const int budget = regional.stats.autoDecision.budget, globalBudget = global.stats.autoDecision.budget;
     CHECK(budget == 32);
     CHECK(globalBudget == 16);
     CHECK(regional.indexTargets.size() * 2 * size_t(globalBudget) == global.indexTargets.size() * size_t(budget));
     CHECK(e.spanLists.invalidSlots == 0);
     CHECK(dropsWithinBudget == 0);
-    CHECK(e.spanLists.droppedLightPixels == 0);
-    CHECK(e.pixelsOverBudget == 0);
     CHECK(e.error.psnr >= 50.0);
     CHECK(global.evaluation.pixelsOverBudget > 0);
+    if (resolveDepthSpanStorage(spans, testGl(), 4) == DepthSpanStorage::Samples) {
+        CHECK(e.spanLists.droppedLightPixels == 0);
+        CHECK(e.pixelsOverBudget == 0);
+    } else {
+        // The moments bound each side's samples, not each sample: a pixel's marks may pass its samples' need
+        // (up to 21 here) and, at a very few pixels, 32; those are counted, and lights are dropped only there.
+        CHECK(e.pixelsOverBudget * 10 <= global.evaluation.pixelsOverBudget);
+    }
     CHECK(regional.stats.drawnLights == global.stats.drawnLights);
     REQUIRE(glGetError() == GL_NO_ERROR);
 }

@@ -289,6 +289,40 @@ void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<f
 #endif
 }
 
+void DepthSpanPass::readMomentRanges(const std::vector<float>& centre, std::vector<float>& nearDepth,
+                                     std::vector<float>& farDepth) const {
+    if (sampleDistances_) throw Error("readMomentRanges: the spans are stored per sample (readDepthRanges)");
+    const size_t pixels = size_t(width_) * size_t(height_);
+    if (centre.size() != pixels) throw Error("readMomentRanges: the centre depth's size differs from the spans'");
+#ifndef __EMSCRIPTEN__
+    spansReadback_.resize(pixels * 4);
+    texture().bind(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, spansReadback_.data());
+    checkGl("MSAA depth spans read-back for the volume tiles");
+#endif
+    nearDepth.resize(pixels);
+    farDepth.resize(pixels);
+    const float scale = boundScale();
+    const glm::vec2 toDistance = depthToDistance_;  // d -> x / (d + y); back: x / distance - y
+    auto widened = [&](float d, float factor) {
+        const float distance = toDistance.x / (d + toDistance.y) * factor;
+        return std::clamp(toDistance.x / distance - toDistance.y, 0.0f, 1.0f);
+    };
+    for (size_t i = 0; i < pixels; ++i) {
+        const float past = spansReadback_[i * 4] * scale, before = spansReadback_[i * 4 + 1] * scale;
+        const float d = centre[i];
+        const bool centreSurface = d < 1.0f;
+        if (!centreSurface && past <= 0.0f) {  // no sample shades a surface
+            nearDepth[i] = farDepth[i] = 1.0f;
+            continue;
+        }
+        const float lo = centreSurface ? d - before : 1.0f - before, hi = centreSurface ? d + past : past;
+        nearDepth[i] = widened(std::clamp(lo, 0.0f, 1.0f), 1.0f - 1.0f / 4096.0f);
+        farDepth[i] = widened(std::clamp(hi, 0.0f, 1.0f), 1.0f + 1.0f / 4096.0f);
+    }
+}
+
 std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {
     if (sampleDistances_) throw Error("readSpans: the spans are stored per sample (readSampleDepths)");
     if (centre.width != width_ || centre.height != height_) throw Error("readSpans: depth image size differs");

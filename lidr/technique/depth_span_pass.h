@@ -92,6 +92,13 @@ public:
     // sample 0's), widened as the volume shader widens them; 1 in both where the pixel has none
     // (VolumeTiles::buildRanges).
     void readDepthRanges(std::vector<float>& nearDepth, std::vector<float>& farDepth) const;
+    // The same with the moments (GL 2.1), after run(): from the pixel centres' window depths `centre` (rows bottom
+    // to top, 1 where the centre sees no surface: the single-sample pre-pass, VolumeTiles::readBoundDepth) and the
+    // resolved spans, each pixel's [centre - before, centre + past] (from 0 past and 1 before where the centre
+    // sees none), which holds every sample's point, widened by 1/4096 of its distance as the volume shader widens
+    // its sides; 1 in both where no sample has a surface.
+    void readMomentRanges(const std::vector<float>& centre, std::vector<float>& nearDepth,
+                          std::vector<float>& farDepth) const;
 
     // After the single-sample pre-pass (centreDepth: its copy): clears and draws the MSAA depth-stencil of the
     // targets (the MSAA pre-pass) with the spans in colour, and resolves them. Leaves framebuffer 0 bound.
@@ -151,6 +158,7 @@ private:
     mutable bool packedWritten_ = false;  // writeCentreDepth ran since run()
     mutable gl::Texture rangeTextures_[2];
     mutable gl::Texture packedDistances_[2];
+    mutable std::vector<float> spansReadback_;  // readMomentRanges' read of the resolved spans
     FullScreenTriangle triangle_;
     mutable float momentScale_ = 1.0f;
     mutable glm::vec2 depthToDistance_{1.0f, 0.0f};

@@ -255,6 +255,12 @@ void LidrRenderer::cullByTiles(const CameraMatrices& cam, const TileDecision::Ch
             depthSpans_.readDepthRanges(tileNearDepth_, tileFarDepth_);
             frame_.targets.bindSingleSample();
             volumeTiles_->buildRanges(tileNearDepth_, tileFarDepth_, volumePass_.tileDepthMargin(), cam);
+        } else if (depthSpans_) {
+            // The GL 2.1 moments: each pixel's range from the centre's depth (bound) and the resolved spans.
+            const std::vector<float>& centre = volumeTiles_->readBoundDepth(frame_.targets.depthBits() == 24);
+            depthSpans_.readMomentRanges(centre, tileNearDepth_, tileFarDepth_);
+            frame_.targets.bindSingleSample();
+            volumeTiles_->buildRanges(tileNearDepth_, tileFarDepth_, volumePass_.tileDepthMargin(), cam);
         } else {
             volumeTiles_->buildFromBoundDepth(volumePass_.tileDepthMargin(), cam, frame_.targets.depthBits() == 24);  // the single-sample pre-pass depth
         }
@@ -275,8 +281,7 @@ FramePlan LidrRenderer::plan(const CameraMatrices& cam, const std::vector<PointL
     // Regions need an opaque frame with one list per pixel, read at its own tile (single-sampled, or MSAA's
     // sphere-span lists with the tiles of the samples' depths), and exact small integers in the light table (its
     // tile map).
-    s.regionalIndices = options_.regionalIndices && !drawTransparent_ &&
-                        (frame_.targets.samples() == 0 || depthSpans_.storesSamples()) &&
+    s.regionalIndices = options_.regionalIndices && !drawTransparent_ && (frame_.targets.samples() == 0 || depthSpans_) &&
                         !options_.perSampleIndices && frame_.lightTable.format() == LightTableFormat::Float;
     s.maxRegions = kMaxIndexRegions;
     if (volumeTiles_) {

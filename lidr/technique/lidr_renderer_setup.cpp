@@ -226,8 +226,9 @@ LidrRenderer::LidrRenderer(const GlInfo& info, const Scene& scene, const LidrOpt
         volumePass_.setDepthSpans(&depthSpans_);
         transparentVolumePass_.setDepthSpans(&depthSpans_);
     }
-    // sphere-span culls by tiles where it reads the samples' distances (the tiles take each pixel's range of them).
-    const bool spanTiles = options_.volumeTest == VolumeTest::SphereSpan && depthSpans_.storesSamples();
+    // sphere-span culls by tiles of each pixel's range of its samples' points (their distances, or on GL 2.1 the
+    // centre's depth and the resolved spans).
+    const bool spanTiles = options_.volumeTest == VolumeTest::SphereSpan && bool(depthSpans_);
     if (options_.tileCulledVolumes && (options_.volumeTest == VolumeTest::Sphere || spanTiles) && !info.gles) {
         // OpenGL ES 2.0 keeps the volume meshes: it cannot read depth back (glReadPixels takes colour only).
         volumeTiles_ = std::make_unique<VolumeTiles>(width, height, options_.volumeTileSize);

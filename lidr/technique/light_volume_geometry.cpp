@@ -108,7 +108,7 @@ void LightVolumeGeometry::setUpBatches(const GlInfo& info, VolumeTest test, Dept
     // Each with and without the cone test: a draw of point lights alone skips its varying and arithmetic
     // (+8 % volume-pass instructions on hall-1024, callgrind). Compiled on first use.
     for (int cones = 0; cones < 2; ++cones) batchPrograms_[cones] = programs(false, cones == 1, {});
-    if (test == VolumeTest::Sphere || (test == VolumeTest::SphereSpan && spanSamples_ > 0)) {
+    if (test == VolumeTest::Sphere || test == VolumeTest::SphereSpan) {
         for (int cones = 0; cones < 2; ++cones) tilePrograms_[cones] = programs(true, cones == 1, {});
         makePrograms_ = programs;
         tileQuads_ = gl::Buffer::create(GL_ARRAY_BUFFER, nullptr, 0, GL_STREAM_DRAW);
@@ -377,8 +377,8 @@ size_t LightVolumeGeometry::SphereHash::operator()(const SphereKey& k) const {
 }
 
 void LightVolumeGeometry::setTiles(const VolumeTiles* tiles, const CameraMatrices& camera) {
-    if (tiles && test_ != VolumeTest::Sphere && !(test_ == VolumeTest::SphereSpan && spanSamples_ > 0))
-        throw Error("tile-culled light volumes are the sphere test's (and sphere-span's with the samples' distances)");
+    if (tiles && test_ != VolumeTest::Sphere && test_ != VolumeTest::SphereSpan)
+        throw Error("tile-culled light volumes are the sphere and sphere-span tests'");
     tiles_ = tiles;
     camera_ = camera;
     sphereTiles_.clear();  // a new frame's tiles

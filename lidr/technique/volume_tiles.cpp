@@ -152,6 +152,10 @@ void VolumeTiles::measureSlices(int firstRow, int endRow) {
 }
 
 void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera, bool packedDepthStencil) {
+    build(readBoundDepth(packedDepthStencil), margin, camera);
+}
+
+const std::vector<float>& VolumeTiles::readBoundDepth(bool packedDepthStencil) {
     const size_t pixels = size_t(width_) * size_t(height_);
     readback_.resize(pixels);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -168,7 +172,7 @@ void VolumeTiles::buildFromBoundDepth(float margin, const CameraMatrices& camera
         glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, readback_.data());
         checkGl("light-volume tiles: depth read-back");
     }
-    build(readback_, margin, camera);
+    return readback_;
 }
 
 uint32_t VolumeTiles::slicesReached(int tile, const glm::vec3& c, float radius, float nearDepth, float farDepth) const {

@@ -52,6 +52,9 @@ public:
     // DEPTH24_STENCIL8 buffer, read as GL_UNSIGNED_INT_24_8 (every desktop context lidr runs on has packed
     // depth-stencil: its FBOs need it).
     void buildFromBoundDepth(float margin, const CameraMatrices& camera, bool packedDepthStencil);
+    // The read-back alone: the bound framebuffer's window depths, rows bottom to top (valid until the next read or
+    // build from the bound depth).
+    const std::vector<float>& readBoundDepth(bool packedDepthStencil);
 
     // The occupied depth slices of `tile` (bit s: slice s) whose cell the sphere (centre in view space, radius)
     // meets, its window-depth span being [nearDepth, farDepth] (sphereDepthSpan); 0: no surface of the tile can
