@@ -23,7 +23,7 @@ for scene in "$root"/media/scenes/*.gltf "$root"/media/scenes/*.json "$root"/med
     for transparency in off on; do
       log="$("$demo" --scene "$scene" --msaa "$samples" --transparency "$transparency" --width "$width" \
              --height "$height" --frames 1 --out "$out" 2>&1)" || { echo "$log" >&2; exit 1; }
-      lights="$(grep -E '^lights ' <<<"$log" | sed 's/^lights *//')"
+      lights="$(grep -E '^lights +visible' <<<"$log" | sed 's/^lights *//')"
       error="$(grep -E '^error ' <<<"$log" | sed 's/^error *//')"
       spans="$(grep -E '^lidr ' <<<"$log" | grep -o 'budget [0-9]*\|volume test [a-z-]* ([a-z]* spans' | tr '\n' ' ')"
       echo "$(basename "$scene") ${samples}x transparency $transparency | $lights | $error | $spans"
