@@ -289,63 +289,62 @@ void DepthSpanPass::readDepthRanges(std::vector<float>& nearDepth, std::vector<f
 #endif
 }
 
-void DepthSpanPass::readMomentRanges(const std::vector<float>& centre, std::vector<float>& nearDepth,
-                                     std::vector<float>& farDepth) const {
-    if (sampleDistances_) throw Error("readMomentRanges: the spans are stored per sample (readDepthRanges)");
-    const size_t pixels = size_t(width_) * size_t(height_);
-    if (centre.size() != pixels) throw Error("readMomentRanges: the centre depth's size differs from the spans'");
-#ifndef __EMSCRIPTEN__
-    spansReadback_.resize(pixels * 4);
-    texture().bind(0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, spansReadback_.data());
-    checkGl("MSAA depth spans read-back for the volume tiles");
-#endif
-    nearDepth.resize(pixels);
-    farDepth.resize(pixels);
-    const float scale = boundScale();
-    const glm::vec2 toDistance = depthToDistance_;  // d -> x / (d + y); back: x / distance - y
-    auto widened = [&](float d, float factor) {
-        const float distance = toDistance.x / (d + toDistance.y) * factor;
-        return std::clamp(toDistance.x / distance - toDistance.y, 0.0f, 1.0f);
-    };
-    for (size_t i = 0; i < pixels; ++i) {
-        const float past = spansReadback_[i * 4] * scale, before = spansReadback_[i * 4 + 1] * scale;
-        const float d = centre[i];
-        const bool centreSurface = d < 1.0f;
-        if (!centreSurface && past <= 0.0f) {  // no sample shades a surface
-            nearDepth[i] = farDepth[i] = 1.0f;
-            continue;
-        }
-        const float lo = centreSurface ? d - before : 1.0f - before, hi = centreSurface ? d + past : past;
-        nearDepth[i] = widened(std::clamp(lo, 0.0f, 1.0f), 1.0f - 1.0f / 4096.0f);
-        farDepth[i] = widened(std::clamp(hi, 0.0f, 1.0f), 1.0f + 1.0f / 4096.0f);
-    }
-}
-
-std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {
-    if (sampleDistances_) throw Error("readSpans: the spans are stored per sample (readSampleDepths)");
-    if (centre.width != width_ || centre.height != height_) throw Error("readSpans: depth image size differs");
-    std::vector<float> rgba(size_t(width_) * size_t(height_) * 4);
+void DepthSpanPass::readResolvedSpans(std::vector<float>& rgba) const {
+    rgba.resize(size_t(width_) * size_t(height_) * 4);
 #ifdef __EMSCRIPTEN__
     // WebGL 1 has neither glGetTexImage nor MSAA render targets: no spans are drawn there to read.
-    throw Error("readSpans: WebGL 1 has no MSAA, so there are no depth spans to read back");
+    throw Error("DepthSpanPass: WebGL 1 has no MSAA, so there are no depth spans to read back");
 #else
     texture().bind(0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
     checkGl("MSAA depth spans read-back");
 #endif
-    const float scale = boundScale();
+}
+
+glm::vec2 DepthSpanPass::spanEnds(float centre, const float* texel) const {
+    const float past = texel[0] * boundScale(), before = texel[1] * boundScale();
+    // Anchored at the centre's depth, or at 0 (past) and 1 (before) where the centre sees no surface.
+    return centre < 1.0f ? glm::vec2(centre - before, centre + past) : glm::vec2(1.0f - before, std::min(past, 1.0f));
+}
+
+void DepthSpanPass::readMomentRanges(const std::vector<float>& centre, std::vector<float>& nearDepth,
+                                     std::vector<float>& farDepth) const {
+    if (sampleDistances_) throw Error("readMomentRanges: the spans are stored per sample (readDepthRanges)");
+    const size_t pixels = size_t(width_) * size_t(height_);
+    if (centre.size() != pixels) throw Error("readMomentRanges: the centre depth's size differs from the spans'");
+    readResolvedSpans(spansReadback_);
+    nearDepth.resize(pixels);
+    farDepth.resize(pixels);
+    const glm::vec2 toDistance = depthToDistance_;  // d -> x / (d + y); back: x / distance - y
+    auto widened = [&](float d, float factor) {
+        const float distance = toDistance.x / (std::clamp(d, 0.0f, 1.0f) + toDistance.y) * factor;
+        return std::clamp(toDistance.x / distance - toDistance.y, 0.0f, 1.0f);
+    };
+    for (size_t i = 0; i < pixels; ++i) {
+        const glm::vec2 ends = spanEnds(centre[i], &spansReadback_[i * 4]);
+        if (centre[i] >= 1.0f && ends.y <= 0.0f) {  // no sample shades a surface
+            nearDepth[i] = farDepth[i] = 1.0f;
+            continue;
+        }
+        nearDepth[i] = widened(ends.x, 1.0f - 1.0f / 4096.0f);
+        farDepth[i] = widened(ends.y, 1.0f + 1.0f / 4096.0f);
+    }
+}
+
+std::vector<DepthSpanPass::Span> DepthSpanPass::readSpans(const ImageFloat& centre) const {
+    if (sampleDistances_) throw Error("readSpans: the spans are stored per sample (readSampleDepths)");
+    if (centre.width != width_ || centre.height != height_) throw Error("readSpans: depth image size differs");
+    std::vector<float> rgba;
+    readResolvedSpans(rgba);
     std::vector<Span> spans(rgba.size() / 4);
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
             const size_t texel = (size_t(height_ - 1 - y) * size_t(width_) + size_t(x)) * 4;  // bottom to top
-            const float past = rgba[texel] * scale, before = rgba[texel + 1] * scale;
-            const float d = centre.at(x, y);
+            const glm::vec2 ends = spanEnds(centre.at(x, y), &rgba[texel]);
             Span& s = spans[size_t(y) * size_t(width_) + size_t(x)];
-            s.nearDepth = d < 1.0f ? d - before : 1.0f - before;
-            s.farDepth = d < 1.0f ? d + past : std::min(past, 1.0f);
+            s.nearDepth = ends.x;
+            s.farDepth = ends.y;
             s.past.samples = int(std::lround(rgba[texel + 2] * float(samples_)));
             s.before.samples = int(std::lround(rgba[texel + 3] * float(samples_)));
         }

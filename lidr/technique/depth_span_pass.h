@@ -143,6 +143,10 @@ public:
 
 private:
     void readSides(std::vector<Span>& spans, const ImageFloat& centre) const;
+    // The resolved spans texture, RGBA floats, rows bottom to top (readSpans, readMomentRanges).
+    void readResolvedSpans(std::vector<float>& rgba) const;
+    // A pixel's [near, far] window depths from its centre's depth and its resolved texel (r: past, g: before).
+    glm::vec2 spanEnds(float centre, const float* texel) const;
     gl::Program centreProgram(bool ranges) const;
 
     int width_ = 0, height_ = 0, samples_ = 0;
