@@ -23,7 +23,7 @@ int significandBits(FloatPrecision p) {
     return 24;
 }
 
-double roundToPrecision(double v, FloatPrecision p) {
+double roundToReducedPrecision(double v, FloatPrecision p) {
     if (p == FloatPrecision::Fp32) return static_cast<double>(static_cast<float>(v));
     if (v == 0.0 || !std::isfinite(v)) return v;
     int e = 0;
@@ -34,7 +34,6 @@ double roundToPrecision(double v, FloatPrecision p) {
     return r;
 }
 
-ShaderFloat floorOf(ShaderFloat x) { return {std::floor(x.v), x.p}; }
 ShaderFloat stepOf(double edge, ShaderFloat x) { return {x.v < roundToPrecision(edge, x.p) ? 0.0 : 1.0, x.p}; }
 
 namespace {

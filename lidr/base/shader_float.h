@@ -3,6 +3,7 @@
 // fp32 (IEEE single), fp24 (17-bit significand, as on R300-class hardware) and fp16 (11-bit significand,
 // half precision). Every operation rounds its exact result to nearest-even in the chosen precision; ranges
 // are not modelled except fp16's overflow past 65504 (to infinity).
+#include <cmath>
 #include <string>
 
 namespace lidr {
@@ -10,7 +11,11 @@ namespace lidr {
 enum class FloatPrecision { Fp16, Fp24, Fp32 };
 const char* floatPrecisionName(FloatPrecision p);
 int significandBits(FloatPrecision p);  // 11, 17, 24
-double roundToPrecision(double v, FloatPrecision p);
+double roundToReducedPrecision(double v, FloatPrecision p);  // fp16 and fp24
+// Inline for fp32, what every desktop GPU runs: the CPU models decode every pixel of every test frame with it.
+inline double roundToPrecision(double v, FloatPrecision p) {
+    return p == FloatPrecision::Fp32 ? static_cast<double>(static_cast<float>(v)) : roundToReducedPrecision(v, p);
+}
 
 // A shader float in precision p: each operation rounds. Comparisons and floor are exact.
 struct ShaderFloat {
@@ -23,7 +28,7 @@ struct ShaderFloat {
     ShaderFloat operator*(ShaderFloat o) const { return {v * o.v, p}; }
     ShaderFloat constant(double c) const { return {c, p}; }  // a literal, as the compiler would round it
 };
-ShaderFloat floorOf(ShaderFloat x);
+inline ShaderFloat floorOf(ShaderFloat x) { return {std::floor(x.v), x.p}; }
 ShaderFloat stepOf(double edge, ShaderFloat x);  // GLSL step(edge, x): 0 if x < edge, else 1
 
 // shaders/technique/lidr_bytes.glsl, step for step: the byte behind a texel read. lidrBytes is the bit-by-bit

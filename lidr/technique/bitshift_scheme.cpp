@@ -103,6 +103,7 @@ std::vector<uint32_t> BitShiftScheme::decodeBytes(const std::vector<ShaderFloat>
     const ShaderFloat invScale(1.0 / double(1 << (8 - groupBits_)), p), scale(double(1 << (8 - groupBits_)), p),
         values(double(1 << groupBits_), p);
     std::vector<uint32_t> slots;
+    slots.reserve(size_t(windows_) * size_t(windowSlots_));
     for (int w = 0; w < windows_; ++w) {
         std::vector<ShaderFloat> packed(bytes.begin() + w * windowTargets_ * 4,
                                         bytes.begin() + (w + 1) * windowTargets_ * 4);

@@ -179,6 +179,7 @@ uint32_t indexFromHalves(ShaderFloat low, ShaderFloat high) {
 
 std::vector<uint32_t> PackingScheme::decodeReads(const float* reads, FloatPrecision p) const {
     std::vector<ShaderFloat> bytes;
+    bytes.reserve(size_t(targetCount()) * 4);
     for (int i = 0; i < targetCount() * 4; ++i) bytes.push_back(lidrBytesFor(ShaderFloat(reads[i], p)));
     return decodeBytes(bytes);
 }
@@ -186,6 +187,7 @@ std::vector<uint32_t> PackingScheme::decodeReads(const float* reads, FloatPrecis
 std::vector<uint32_t> PackingScheme::decodePixel(const uint8_t* texels) const {
     // lidrBytes(byte / 255) == byte in every precision (proven in tests), so the exact bytes go straight in.
     std::vector<ShaderFloat> bytes;
+    bytes.reserve(size_t(targetCount()) * 4);
     for (int i = 0; i < targetCount() * 4; ++i) bytes.emplace_back(double(texels[i]), FloatPrecision::Fp32);
     return decodeBytes(bytes);
 }
