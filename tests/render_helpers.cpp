@@ -176,8 +176,9 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options) {
     return renderAndEvaluate(scene, options, testGl());
 }
 
-RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info,
-                               const OutputTransform& output) {
+namespace {
+RenderResult renderAndEvaluateWith(const Scene& scene, const LidrOptions& options, const GlInfo& info,
+                                   const OutputTransform& output, const ImageRGBA8* reference) {
     testContext();
     const std::vector<PointLight> lights = scene.lightsAt(scene.time);
     const ShadingParameters shading = sceneShading(scene, output);
@@ -186,13 +187,34 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
     r.stats = renderer.render(scene.camera, lights, shading);
     r.lidr = renderer.targets().readColor();
     if (!options.perSampleIndices) r.indexTargets = renderer.readIndexTargets();  // multisample: not readable
-    ReferenceRenderer reference(info, scene, scene.width, scene.height, static_cast<int>(std::max<size_t>(lights.size(), 1)),
+    if (reference) {
+        REQUIRE(reference->width == r.lidr.width);
+        REQUIRE(reference->height == r.lidr.height);
+        r.reference = *reference;
+    } else {
+        ReferenceRenderer brute(info, scene, scene.width, scene.height, static_cast<int>(std::max<size_t>(lights.size(), 1)),
                                 options.forceFixedLightTable, options.msaaSamples, options.transparency,
                                 options.perSampleIndices);
-    reference.render(scene.camera, lights, shading);
-    r.reference = reference.targets().readColor();
+        brute.render(scene.camera, lights, shading);
+        r.reference = brute.targets().readColor();
+    }
     r.evaluation = evaluateFrame(renderer, scene.camera, lights, r.lidr, r.reference);
     return r;
+}
+}  // namespace
+
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const GlInfo& info,
+                               const OutputTransform& output) {
+    return renderAndEvaluateWith(scene, options, info, output, nullptr);
+}
+
+RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const ImageRGBA8& reference) {
+    return renderAndEvaluateWith(scene, options, testGl(), OutputTransform{}, &reference);
+}
+
+void PixelChecks::require() const {
+    INFO(failures_ << " failed pixel conditions; the first: " << first_);
+    REQUIRE(failures_ == 0);
 }
 
 void requireExactWithinBudget(const FrameEvaluation& e, const std::string& what) {

@@ -183,18 +183,21 @@ TEST_CASE("ES 2.0: bit-shift at budgets 1, 2, 4 in one RGBA8 target keeps exactl
         REQUIRE(e.lists.invalidSlots == 0);
         REQUIRE(e.errorWithinBudget.maxAbsError <= 1);
         long clusterPixels = 0;
+        PixelChecks checks("ES 2.0 controlled overlap");
         for (size_t p = 0; p < e.marked.size(); ++p) {
             const int touching = e.truth.count(p);
             if (touching == 0) continue;
             ++clusterPixels;
-            INFO("pixel " << p);
-            REQUIRE(touching == k);
-            REQUIRE(e.marked[p] == k);  // GPU stencil count = CPU truth
+            checks.expect(touching == k, p, "k lights touch");
+            checks.expect(e.marked[p] == k, p, "GPU stencil count = CPU truth");
             const int kept = std::min(k, budget);
-            REQUIRE(int(e.lists.decoded[p].size()) == kept);  // exact lists: the kept highest priorities
-            for (uint32_t index : e.lists.decoded[p]) REQUIRE(scene.lights[index - 1].priority >= float(k - kept));
-            REQUIRE(e.lists.droppedPerPixel[p] == k - kept);
+            checks.expect(int(e.lists.decoded[p].size()) == kept, p, "min(k, budget) lights listed");  // exact lists
+            for (uint32_t index : e.lists.decoded[p])
+                checks.expect(index >= 1 && index <= scene.lights.size() && scene.lights[index - 1].priority >= float(k - kept),
+                              p, "a listed light among the kept highest priorities");
+            checks.expect(e.lists.droppedPerPixel[p] == k - kept, p, "k - kept dropped");
         }
+        checks.require();
         CHECK(clusterPixels > 40);
     }
 }

@@ -153,7 +153,7 @@ TEST_CASE("LIDR matches the reference on the default room with the exact stencil
     cheap.volumeTest = VolumeTest::BackFace;
     exact.volumeTest = VolumeTest::ExactStencil;
     const RenderResult rc = renderAndEvaluate(scene, cheap);
-    const RenderResult re = renderAndEvaluate(scene, exact);
+    const RenderResult re = renderAndEvaluate(scene, exact, rc.reference);
     requireMatchesReference(re);
     // The exact test marks only lights that contain the surface: never more than the cheap test, and in this
     // room (pillars in front of lights) strictly fewer slots in total.
@@ -174,19 +174,20 @@ TEST_CASE("the sphere test marks exactly the lights that reach each surface poin
     sphere.transparency = stencil.transparency = false;
     stencil.volumeTest = VolumeTest::ExactStencil;
     const RenderResult rs = renderAndEvaluate(scene, sphere);
-    const RenderResult re = renderAndEvaluate(scene, stencil);
+    const RenderResult re = renderAndEvaluate(scene, stencil, rs.reference);
     requireMatchesReference(rs);
     // CPU truth (lights within 0.998 of their radius) <= sphere marks (within 1.0005) <= stencil-exact marks
     // (inside the 320-face mesh, up to 1.02): on all but a sliver of boundary pixels the three agree.
     long equalToTruth = 0, surfacePixels = 0;
+    PixelChecks checks("the sphere test against the CPU truth and the stencil test");
     for (size_t p = 0; p < rs.evaluation.marked.size(); ++p) {
         if (!rs.evaluation.truth.surface[p]) continue;
         ++surfacePixels;
-        INFO("pixel " << p);
-        REQUIRE(rs.evaluation.marked[p] >= rs.evaluation.truth.count(p));
-        REQUIRE(rs.evaluation.marked[p] <= re.evaluation.marked[p]);
+        checks.expect(rs.evaluation.marked[p] >= rs.evaluation.truth.count(p), p, "sphere marks >= CPU truth");
+        checks.expect(rs.evaluation.marked[p] <= re.evaluation.marked[p], p, "sphere marks <= stencil marks");
         equalToTruth += rs.evaluation.marked[p] == rs.evaluation.truth.count(p);
     }
+    checks.require();
     CHECK(equalToTruth >= surfacePixels * 995 / 1000);
     // Budget 4 windows need no count draw: one draw per batch of lights.
     const int batch = LightVolumePass(testGl(), VolumeTest::Sphere).batchSize();
@@ -518,7 +519,7 @@ TEST_CASE("emulated 16-bit depth: every depth the passes keep is a 16-bit level,
         o.volumeTest = test;
         const RenderResult exact24 = renderAndEvaluate(scene, o);
         o.emulatedDepthBits = 16;
-        const RenderResult r = renderAndEvaluate(scene, o);
+        const RenderResult r = renderAndEvaluate(scene, o, exact24.reference);
         requireExactWithinBudget(r.evaluation, std::string("emulated 16-bit depth, ") + volumeTestName(test));
         REQUIRE(r.evaluation.lists.droppedLightPixels == 0);  // the automatic budget holds every list
         REQUIRE(r.evaluation.error.maxAbsError <= 1);
@@ -611,7 +612,7 @@ TEST_CASE("volume detail on many small lights: same results within the budget", 
         LidrOptions fine = o;
         o.volumeDetail = true;
         const RenderResult coarse = renderAndEvaluate(many, o);
-        const RenderResult reference = renderAndEvaluate(many, fine);
+        const RenderResult reference = renderAndEvaluate(many, fine, coarse.reference);
         requireMatchesReference(coarse);
         const auto& m = coarse.evaluation.marked;
         const auto& f = reference.evaluation.marked;

@@ -50,10 +50,15 @@ TEST_CASE("MSAA by default: every sample's surface finds its lights on the deep 
     const std::string name = GENERATE("hall-255", "city-255", "room", "hall-1024");
     const int samples = GENERATE(2, 4);
     const DepthSpanStorage spans = GENERATE(DepthSpanStorage::Auto, DepthSpanStorage::Moments);
+    // Representative: hall-255 at 4x (both spans) and hall-1024 at 2x, whose 16-bit frame counts its pixels over 16.
+    if (!takeRow((name == "hall-255" && samples == 4) || (name == "hall-1024" && samples == 2 && spans == DepthSpanStorage::Auto)))
+        return;
     if (!contextHasMsaa(samples)) return;
-    // Moments again only where the default is not already them (the GL 2.1 override).
+    // The moments are the GL 2.1 override's default, so suite.gl21 runs them on every row; where the default is the
+    // samples, one row (hall-255, 4x) keeps the moments path under the other contexts and the sanitizers.
     if (spans == DepthSpanStorage::Moments &&
-        resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), samples) == DepthSpanStorage::Moments)
+        (resolveDepthSpanStorage(DepthSpanStorage::Auto, testGl(), samples) == DepthSpanStorage::Moments ||
+         name != "hall-255" || samples != 4))
         return;
     DYNAMIC_SECTION(name << ", " << samples << "x MSAA, " << depthSpanStorageName(spans) << " spans") {
         const Scene scene = deepScene(name);
@@ -224,7 +229,7 @@ TEST_CASE("MSAA: sphere-span lists are far shorter than whole-ray lists on the h
     o.transparency = false;
     const RenderResult span = renderAndEvaluate(scene, o);
     o.volumeTest = VolumeTest::SphereRay;
-    const RenderResult ray = renderAndEvaluate(scene, o);
+    const RenderResult ray = renderAndEvaluate(scene, o, span.reference);
     o.msaaSamples = 0;
     o.volumeTest = VolumeTest::Sphere;
     const RenderResult single = renderAndEvaluate(scene, o);
@@ -316,7 +321,7 @@ TEST_CASE("MSAA: region-local 8-bit indices hold every list (budget 32), 16-bit 
     o.msaaSamples = 4;
     const RenderResult regional = renderAndEvaluate(scene, o);
     o.regionalIndices = false;
-    const RenderResult global = renderAndEvaluate(scene, o);
+    const RenderResult global = renderAndEvaluate(scene, o, regional.reference);  // the same frame's reference
     const FrameEvaluation& e = regional.evaluation;
     const int budget = regional.stats.autoDecision.budget, globalBudget = global.stats.autoDecision.budget;
     long dropsWithinBudget = 0;
@@ -369,9 +374,9 @@ TEST_CASE("MSAA: skipping hidden fragments' lights leaves the image unchanged", 
         o.hiddenFragmentSkip = HiddenFragmentSkip::On;
         const RenderResult skipped = renderAndEvaluate(scene, o);
         o.hiddenFragmentSkip = HiddenFragmentSkip::Off;
-        const RenderResult shaded = renderAndEvaluate(scene, o);
+        const RenderResult shaded = renderAndEvaluate(scene, o, skipped.reference);  // the same frame's reference
         o.hiddenFragmentSkip = HiddenFragmentSkip::Auto;
-        const RenderResult automatic = renderAndEvaluate(scene, o);
+        const RenderResult automatic = renderAndEvaluate(scene, o, skipped.reference);
         REQUIRE(skipped.stats.autoDecision.hiddenFragmentSkip);
         REQUIRE_FALSE(shaded.stats.autoDecision.hiddenFragmentSkip);
         long differing = 0;

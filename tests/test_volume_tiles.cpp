@@ -275,7 +275,7 @@ TEST_CASE("tile-culled volumes mark the same lists as the volume meshes", "[volu
         o.transparency = false;
         const RenderResult tiled = renderAndEvaluate(scene, o);
         o.tileCulledVolumes = false;
-        const RenderResult meshes = renderAndEvaluate(scene, o);
+        const RenderResult meshes = renderAndEvaluate(scene, o, tiled.reference);
         REQUIRE(tiled.indexTargets.size() == meshes.indexTargets.size());
         for (size_t t = 0; t < tiled.indexTargets.size(); ++t) CHECK(tiled.indexTargets[t].pixels == meshes.indexTargets[t].pixels);
         CHECK(tiled.lidr.pixels == meshes.lidr.pixels);
@@ -341,7 +341,7 @@ TEST_CASE("the overlap probe over the tiles' candidate bounds measures what it m
         o.transparency = false;
         const RenderResult tiled = renderAndEvaluate(scene, o);
         o.tileCulledVolumes = false;
-        const RenderResult meshes = renderAndEvaluate(scene, o);
+        const RenderResult meshes = renderAndEvaluate(scene, o, tiled.reference);
         REQUIRE(tiled.stats.autoDecision.volumeAreaPerPixel >= 0.0);
         CHECK(tiled.stats.autoDecision.measuredBudget == meshes.stats.autoDecision.measuredBudget);
         CHECK(tiled.stats.autoDecision.overflowPixels == meshes.stats.autoDecision.overflowPixels);
@@ -428,7 +428,7 @@ TEST_CASE("region-local indices: 8-bit lists of over 255 lights, the same lists 
         o.transparency = false;
         const RenderResult regional = renderAndEvaluate(scene, o);
         o.regionalIndices = false;
-        const RenderResult global = renderAndEvaluate(scene, o);
+        const RenderResult global = renderAndEvaluate(scene, o, regional.reference);
         requireExactWithinBudget(regional.evaluation, name);
         CHECK(regional.evaluation.lists.droppedLightPixels == 0);
         CHECK(regional.evaluation.lists.invalidSlots == 0);
