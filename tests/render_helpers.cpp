@@ -212,6 +212,14 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
     return renderAndEvaluateWith(scene, options, testGl(), OutputTransform{}, &reference);
 }
 
+RenderResult SharedReferences::renderAndEvaluate(const std::string& key, const Scene& scene, const LidrOptions& options) {
+    const auto known = images_.find(key);
+    if (known != images_.end()) return lidr::test::renderAndEvaluate(scene, options, known->second);
+    RenderResult r = lidr::test::renderAndEvaluate(scene, options);
+    images_.emplace(key, r.reference);
+    return r;
+}
+
 void PixelChecks::require() const {
     INFO(failures_ << " failed pixel conditions; the first: " << first_);
     REQUIRE(failures_ == 0);

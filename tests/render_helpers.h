@@ -2,6 +2,7 @@
 // Shared by the GL tests: small controlled scenes, and "render with LIDR and with the brute-force reference,
 // then evaluate" in one call.
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,18 @@ RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, c
 // size with the same MSAA, transparency, per-sample shading and light table: the brute-force reference is most of
 // a deep scene's time (hall-1024 at 384 x 288, 4x MSAA: 7.8 s against LIDR's 0.08 s on llvmpipe).
 RenderResult renderAndEvaluate(const Scene& scene, const LidrOptions& options, const ImageRGBA8& reference);
+
+// The references of a table whose rows differ only in what the reference does not take (scheme, budget, width,
+// volume test, tiles): each rendered by the first row that names its key (what the reference does take: the
+// scene's own parameters) and passed on to the rest. One per case, a function-local static: the rows are the
+// case's runs in one process and one context.
+class SharedReferences {
+public:
+    RenderResult renderAndEvaluate(const std::string& key, const Scene& scene, const LidrOptions& options);
+
+private:
+    std::map<std::string, ImageRGBA8> images_;
+};
 
 // Per-pixel conditions checked without a Catch assertion per pixel and condition (the controlled-overlap table made
 // 21 million of them, more time than its frames): expect() records a failure, the first one named; require()

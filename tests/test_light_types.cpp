@@ -463,33 +463,27 @@ TEST_CASE("the sphere test indexes a spot light by its cone: lists equal the CPU
         options.packing = c.packing;
         options.volumeTest = VolumeTest::Sphere;
         options.tileCulledVolumes = tiles;
-        // The reference image and the truths below depend on the scene alone, not on the row's scheme, budget,
-        // width or tiles: computed once a scene for the rows that share it.
-        struct SceneTruth {
-            ImageRGBA8 reference;
-            CoverageTruth touching, sphereTruth;
-        };
-        static std::map<bool, SceneTruth> truths;
-        const auto known = truths.find(floor);
-        const RenderResult r =
-            known == truths.end() ? renderAndEvaluate(scene, options) : renderAndEvaluate(scene, options, known->second.reference);
+        // The reference and the truths below depend on the scene alone, not on the row's scheme, budget, width or
+        // tiles: computed once a scene for the rows that share it.
+        static SharedReferences references;
+        const RenderResult r = references.renderAndEvaluate(floor ? "floor" : "street", scene, options);
         const FrameEvaluation& e = r.evaluation;
         requireExactWithinBudget(e, c.name);
 
-        if (known == truths.end()) {
+        static std::map<bool, std::pair<CoverageTruth, CoverageTruth>> truths;  // (touching, the spheres') a scene
+        if (!truths.count(floor)) {
             const std::vector<PointLight> lights = scene.lightsAt(scene.time);
             ReferenceRenderer reference(testGl(), scene, scene.width, scene.height, int(lights.size()), false, 0, false);
             reference.render(scene.camera, lights, sceneShading(scene));
             const ImageFloat depth = reference.targets().readDepth();
             const CameraMatrices cam = cameraMatrices(scene.camera, scene.width, scene.height);
-            SceneTruth t{r.reference, computeCoverage(depth, cam, lights, -2e-3f), {}};  // touching: the band outside
             std::vector<PointLight> spheres = lights;  // the same lights as points: what bounding spheres would mark
             for (PointLight& l : spheres) l.outerConeAngle = 0.0f;
-            t.sphereTruth = computeCoverage(depth, cam, spheres, 2e-3f);
-            truths.emplace(floor, std::move(t));
+            truths.emplace(floor, std::make_pair(computeCoverage(depth, cam, lights, -2e-3f),  // the band outside
+                                                 computeCoverage(depth, cam, spheres, 2e-3f)));
         }
-        const CoverageTruth& touching = truths.at(floor).touching;
-        const CoverageTruth& sphereTruth = truths.at(floor).sphereTruth;
+        const CoverageTruth& touching = truths.at(floor).first;
+        const CoverageTruth& sphereTruth = truths.at(floor).second;
         long listedOutside = 0, countedOutside = 0, countNotTruth = 0, marks = 0, spherePairs = 0;
         const int budget = c.packing.budget;
         for (size_t p = 0; p < e.marked.size(); ++p) {

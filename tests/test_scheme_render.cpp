@@ -62,13 +62,8 @@ TEST_CASE("controlled overlap k = 1, 2, 4, 8, 16: every scheme x budget x width 
         LidrOptions options;
         options.packing = c.packing;
         options.volumeTest = c.volumeTest;
-        // The reference depends on the scene (k and the width's light count), not on the scheme, budget or volume
-        // test: rendered once for the rows that share it.
-        static std::map<std::pair<int, int>, ImageRGBA8> references;
-        const auto known = references.find({c.overlap, bits});
-        const RenderResult r =
-            known == references.end() ? renderAndEvaluate(scene, options) : renderAndEvaluate(scene, options, known->second);
-        references.emplace(std::make_pair(c.overlap, bits), r.reference);
+        static SharedReferences references;  // the scene is k and the width's light count
+        const RenderResult r = references.renderAndEvaluate(std::to_string(c.overlap) + " " + std::to_string(bits), scene, options);
         const std::string what = c.name + " (k " + std::to_string(kk) + " lights)";
         requireCorrectFrame(r, what);
         const FrameEvaluation& e = r.evaluation;
@@ -164,13 +159,9 @@ TEST_CASE("the default room: every scheme x budget x width", "[render][schemes][
         LidrOptions options;
         options.packing = c.packing;
         options.transparency = c.packing.scheme != PackingSchemeKind::CpuSorted;  // see the test above
-        // The reference depends on the lights (15 at 4-bit indices) and transparency, not on the scheme or budget.
-        static std::map<std::pair<bool, bool>, ImageRGBA8> references;
-        const std::pair<bool, bool> key{c.packing.indexBits == 4, options.transparency};
-        const auto known = references.find(key);
-        const RenderResult r =
-            known == references.end() ? renderAndEvaluate(s, options) : renderAndEvaluate(s, options, known->second);
-        references.emplace(key, r.reference);
+        static SharedReferences references;  // the reference takes the lights (15 at 4-bit indices) and transparency
+        const RenderResult r = references.renderAndEvaluate(
+            std::string(c.packing.indexBits == 4 ? "15 lights" : "every light") + (options.transparency ? ", glass" : ""), s, options);
         requireCorrectFrame(r, c.name);
         if (c.packing.budget == 16 && c.packing.scheme != PackingSchemeKind::CpuSorted) CHECK(r.evaluation.pixelsOverBudget == 0);
     }

@@ -24,7 +24,6 @@ int significandBits(FloatPrecision p) {
 }
 
 double roundToReducedPrecision(double v, FloatPrecision p) {
-    if (p == FloatPrecision::Fp32) return static_cast<double>(static_cast<float>(v));
     if (v == 0.0 || !std::isfinite(v)) return v;
     int e = 0;
     const double m = std::frexp(v, &e);  // v = m * 2^e, 0.5 <= |m| < 1

@@ -11,7 +11,7 @@ namespace lidr {
 enum class FloatPrecision { Fp16, Fp24, Fp32 };
 const char* floatPrecisionName(FloatPrecision p);
 int significandBits(FloatPrecision p);  // 11, 17, 24
-double roundToReducedPrecision(double v, FloatPrecision p);  // fp16 and fp24
+double roundToReducedPrecision(double v, FloatPrecision p);  // by the significand's bits (fp16 and fp24; fp32 inline)
 // Inline for fp32, what every desktop GPU runs: the CPU models decode every pixel of every test frame with it.
 inline double roundToPrecision(double v, FloatPrecision p) {
     return p == FloatPrecision::Fp32 ? static_cast<double>(static_cast<float>(v)) : roundToReducedPrecision(v, p);

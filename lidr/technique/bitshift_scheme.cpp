@@ -104,9 +104,9 @@ std::vector<uint32_t> BitShiftScheme::decodeBytes(const std::vector<ShaderFloat>
         values(double(1 << groupBits_), p);
     std::vector<uint32_t> slots;
     slots.reserve(size_t(windows_) * size_t(windowSlots_));
+    std::vector<ShaderFloat> shifted = bytes;  // each window shifts its own targets' bytes in place
     for (int w = 0; w < windows_; ++w) {
-        std::vector<ShaderFloat> packed(bytes.begin() + w * windowTargets_ * 4,
-                                        bytes.begin() + (w + 1) * windowTargets_ * 4);
+        ShaderFloat* packed = shifted.data() + w * windowTargets_ * 4;
         for (int s = 0; s < windowSlots_; ++s) {
             // The index's low and high bytes, weighted separately (lidrHalves): never one float above 255.
             ShaderFloat low(0.0, p), high(0.0, p);
